@@ -1,0 +1,17 @@
+package lt.spindulys.accel;
+
+import lt.spindulys.math.Ray;
+import lt.spindulys.scene.Hit;
+import lt.spindulys.scene.TraceContext;
+
+/** A ray query structure over a {@link PrimitiveSet}. Immutable after construction; thread-safe. */
+public interface Accelerator {
+    /**
+     * Finds the nearest hit in (ray.tMin, ray.tMax), recording it in {@code hit}. On return
+     * ray.tMax is unchanged; hit.t holds the nearest distance if the result is true.
+     */
+    boolean intersect(Ray ray, Hit hit, TraceContext ctx);
+
+    /** True if any primitive blocks the ray in (ray.tMin, ray.tMax); stops at the first one found. */
+    boolean occluded(Ray ray, TraceContext ctx);
+}

@@ -1,0 +1,34 @@
+package lt.spindulys.accel;
+
+import lt.spindulys.math.Ray;
+import lt.spindulys.scene.Hit;
+import lt.spindulys.scene.TraceContext;
+
+/** Tests every primitive: the reference the real structures are checked against, and fine for a handful. */
+public final class BruteForce implements Accelerator {
+    private final PrimitiveSet set;
+
+    public BruteForce(PrimitiveSet set) { this.set = set; }
+
+    @Override
+    public boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
+        double saved = ray.tMax;
+        boolean any = false;
+        for (int i = 0, n = set.size(); i < n; i++) {
+            if (set.intersect(i, ray, hit, ctx)) {
+                any = true;
+                ray.tMax = hit.t;
+            }
+        }
+        ray.tMax = saved;
+        return any;
+    }
+
+    @Override
+    public boolean occluded(Ray ray, TraceContext ctx) {
+        for (int i = 0, n = set.size(); i < n; i++) {
+            if (set.occluded(i, ray, ctx)) return true;
+        }
+        return false;
+    }
+}

@@ -1,0 +1,45 @@
+package lt.spindulys.camera;
+
+import lt.spindulys.math.Ray;
+import lt.spindulys.math.Vec3;
+
+/** A pinhole camera: eye, look-at point, up vector and vertical field of view in degrees. */
+public final class PinholeCamera implements Camera {
+    private final Vec3 eye, lookAt, up;
+    private final double fovDegrees;
+    // Orthonormal frame: right, true up, forward; tanHalf scales the film plane at distance 1.
+    private final double rx, ry, rz, ux, uy, uz, fx, fy, fz, tanHalf;
+
+    public PinholeCamera(Vec3 eye, Vec3 lookAt, Vec3 up, double fovDegrees) {
+        if (!eye.isFinite() || !lookAt.isFinite() || !up.isFinite()) throw new IllegalArgumentException("camera vectors must be finite");
+        if (!(fovDegrees > 0 && fovDegrees < 180)) throw new IllegalArgumentException("fov must be between 0 and 180 degrees, found " + fovDegrees);
+        Vec3 forward = lookAt.minus(eye);
+        if (!(forward.length() > 0)) throw new IllegalArgumentException("camera eye and lookat are the same point " + eye);
+        if (!(up.length() > 0)) throw new IllegalArgumentException("camera up vector has zero length");
+        Vec3 f = forward.normalized();
+        Vec3 r = f.cross(up);
+        if (!(r.length() > 1e-12 * up.length())) throw new IllegalArgumentException("camera up vector " + up + " is parallel to the view direction");
+        r = r.normalized();
+        Vec3 u = r.cross(f);
+        this.eye = eye; this.lookAt = lookAt; this.up = up; this.fovDegrees = fovDegrees;
+        rx = r.x(); ry = r.y(); rz = r.z();
+        ux = u.x(); uy = u.y(); uz = u.z();
+        fx = f.x(); fy = f.y(); fz = f.z();
+        tanHalf = Math.tan(Math.toRadians(fovDegrees) / 2);
+    }
+
+    public Vec3 eye() { return eye; }
+    public Vec3 lookAt() { return lookAt; }
+    public Vec3 up() { return up; }
+    public double fovDegrees() { return fovDegrees; }
+
+    @Override
+    public void generateRay(double filmX, double filmY, double aspect, double lensU, double lensV, double time, Ray out) {
+        double sx = (2 * filmX - 1) * tanHalf * aspect;
+        double sy = (1 - 2 * filmY) * tanHalf;
+        double dx = fx + sx * rx + sy * ux, dy = fy + sx * ry + sy * uy, dz = fz + sx * rz + sy * uz;
+        double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
+        out.set(eye.x(), eye.y(), eye.z(), dx * inv, dy * inv, dz * inv, 0, Double.POSITIVE_INFINITY);
+        out.time = time;
+    }
+}

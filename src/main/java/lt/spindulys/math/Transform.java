@@ -1,0 +1,169 @@
+package lt.spindulys.math;
+
+/**
+ * Immutable affine transform (a 3x4 matrix) with its inverse precomputed.
+ * {@code a.then(b)} applies a first, then b, so a scene file's transform lines compose in the
+ * order they are written. The in-place methods serve the per-ray paths without allocation.
+ */
+public final class Transform {
+    public static final Transform IDENTITY = new Transform(new double[] {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0});
+
+    /** Row-major 3x4: m[0..3] is the first row (x' = m0 x + m1 y + m2 z + m3). */
+    private final double[] m;
+    private final double[] inv;
+    private final boolean identity;
+
+    private Transform(double[] m) {
+        this.m = m;
+        this.inv = invert(m);
+        boolean id = true;
+        double[] ref = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+        for (int i = 0; i < 12; i++) id &= m[i] == ref[i];
+        this.identity = id;
+    }
+
+    /** A transform from a row-major 3x4 matrix; throws if it is singular or not finite. */
+    public static Transform ofMatrix(double... rowMajor3x4) {
+        if (rowMajor3x4.length != 12) throw new IllegalArgumentException("expected 12 matrix entries, found " + rowMajor3x4.length);
+        return new Transform(rowMajor3x4.clone());
+    }
+
+    public static Transform translate(double x, double y, double z) {
+        return new Transform(new double[] {1, 0, 0, x, 0, 1, 0, y, 0, 0, 1, z});
+    }
+
+    public static Transform translate(Vec3 v) { return translate(v.x(), v.y(), v.z()); }
+
+    public static Transform scale(double x, double y, double z) {
+        return new Transform(new double[] {x, 0, 0, 0, 0, y, 0, 0, 0, 0, z, 0});
+    }
+
+    /** Rotation by {@code degrees} about {@code axis} (right-handed, counter-clockwise looking down the axis). */
+    public static Transform rotate(Vec3 axis, double degrees) {
+        Vec3 a = axis.normalized();
+        double rad = Math.toRadians(degrees), c = Math.cos(rad), s = Math.sin(rad), t = 1 - c;
+        double x = a.x(), y = a.y(), z = a.z();
+        return new Transform(new double[] {
+                t * x * x + c, t * x * y - s * z, t * x * z + s * y, 0,
+                t * x * y + s * z, t * y * y + c, t * y * z - s * x, 0,
+                t * x * z - s * y, t * y * z + s * x, t * z * z + c, 0});
+    }
+
+    public static Transform rotateX(double degrees) { return rotate(Vec3.X, degrees); }
+    public static Transform rotateY(double degrees) { return rotate(Vec3.Y, degrees); }
+    public static Transform rotateZ(double degrees) { return rotate(Vec3.Z, degrees); }
+
+    /** This transform followed by {@code next}. */
+    public Transform then(Transform next) {
+        if (identity) return next;
+        if (next.identity) return this;
+        return new Transform(multiply(next.m, m));
+    }
+
+    public Transform inverse() { return new Transform(inv.clone()); }
+    public boolean isIdentity() { return identity; }
+
+    public Vec3 point(Vec3 p) {
+        return new Vec3(m[0] * p.x() + m[1] * p.y() + m[2] * p.z() + m[3],
+                m[4] * p.x() + m[5] * p.y() + m[6] * p.z() + m[7],
+                m[8] * p.x() + m[9] * p.y() + m[10] * p.z() + m[11]);
+    }
+
+    public Vec3 vector(Vec3 v) {
+        return new Vec3(m[0] * v.x() + m[1] * v.y() + m[2] * v.z(),
+                m[4] * v.x() + m[5] * v.y() + m[6] * v.z(),
+                m[8] * v.x() + m[9] * v.y() + m[10] * v.z());
+    }
+
+    /** A surface normal mapped by the inverse transpose (not normalised). */
+    public Vec3 normal(Vec3 n) {
+        return new Vec3(inv[0] * n.x() + inv[4] * n.y() + inv[8] * n.z(),
+                inv[1] * n.x() + inv[5] * n.y() + inv[9] * n.z(),
+                inv[2] * n.x() + inv[6] * n.y() + inv[10] * n.z());
+    }
+
+    /** Writes {@code world} mapped into this transform's object space (the inverse) into {@code local}. */
+    public void toLocal(Ray world, Ray local) {
+        double x = world.ox, y = world.oy, z = world.oz;
+        local.ox = inv[0] * x + inv[1] * y + inv[2] * z + inv[3];
+        local.oy = inv[4] * x + inv[5] * y + inv[6] * z + inv[7];
+        local.oz = inv[8] * x + inv[9] * y + inv[10] * z + inv[11];
+        x = world.dx; y = world.dy; z = world.dz;
+        local.dx = inv[0] * x + inv[1] * y + inv[2] * z;
+        local.dy = inv[4] * x + inv[5] * y + inv[6] * z;
+        local.dz = inv[8] * x + inv[9] * y + inv[10] * z;
+        local.tMin = world.tMin;
+        local.tMax = world.tMax;
+        local.time = world.time;
+    }
+
+    /** Writes the point {@code world[0..2]} mapped into object space (the inverse) to {@code local[0..2]}. */
+    public void toLocalPoint(double[] world, double[] local) {
+        double x = world[0], y = world[1], z = world[2];
+        local[0] = inv[0] * x + inv[1] * y + inv[2] * z + inv[3];
+        local[1] = inv[4] * x + inv[5] * y + inv[6] * z + inv[7];
+        local[2] = inv[8] * x + inv[9] * y + inv[10] * z + inv[11];
+    }
+
+    /** Maps the vector {@code v[off..off+2]} in place from object to world space. */
+    public void vectorInPlace(double[] v, int off) {
+        double x = v[off], y = v[off + 1], z = v[off + 2];
+        v[off] = m[0] * x + m[1] * y + m[2] * z;
+        v[off + 1] = m[4] * x + m[5] * y + m[6] * z;
+        v[off + 2] = m[8] * x + m[9] * y + m[10] * z;
+    }
+
+    /** Maps the normal {@code n[off..off+2]} in place from object to world space and normalises it. */
+    public void normalInPlace(double[] n, int off) {
+        double x = n[off], y = n[off + 1], z = n[off + 2];
+        double nx = x, ny = y, nz = z;
+        if (!identity) {
+            nx = inv[0] * x + inv[4] * y + inv[8] * z;
+            ny = inv[1] * x + inv[5] * y + inv[9] * z;
+            nz = inv[2] * x + inv[6] * y + inv[10] * z;
+        }
+        double len = Math.sqrt(nx * nx + ny * ny + nz * nz);
+        if (len > 0) { nx /= len; ny /= len; nz /= len; }
+        n[off] = nx; n[off + 1] = ny; n[off + 2] = nz;
+    }
+
+    private static double[] multiply(double[] a, double[] b) {
+        double[] r = new double[12];
+        for (int i = 0; i < 3; i++) {
+            for (int j = 0; j < 4; j++) {
+                double s = a[i * 4] * b[j] + a[i * 4 + 1] * b[4 + j] + a[i * 4 + 2] * b[8 + j];
+                if (j == 3) s += a[i * 4 + 3];
+                r[i * 4 + j] = s;
+            }
+        }
+        return r;
+    }
+
+    private static double[] invert(double[] m) {
+        for (double v : m) if (!Double.isFinite(v)) throw new IllegalArgumentException("transform has a non-finite entry");
+        double a = m[0], b = m[1], c = m[2], d = m[4], e = m[5], f = m[6], g = m[8], h = m[9], k = m[10];
+        double A = e * k - f * h, B = -(d * k - f * g), C = d * h - e * g;
+        double det = a * A + b * B + c * C;
+        double scale = Math.max(Math.abs(a), Math.max(Math.abs(e), Math.abs(k)));
+        if (!(Math.abs(det) > 1e-300) || Math.abs(det) < 1e-18 * scale * scale * scale) {
+            throw new IllegalArgumentException("transform is singular (a scale of zero?)");
+        }
+        double id = 1 / det;
+        double[] r = new double[12];
+        r[0] = A * id; r[1] = -(b * k - c * h) * id; r[2] = (b * f - c * e) * id;
+        r[4] = B * id; r[5] = (a * k - c * g) * id; r[6] = -(a * f - c * d) * id;
+        r[8] = C * id; r[9] = -(a * h - b * g) * id; r[10] = (a * e - b * d) * id;
+        for (int i = 0; i < 3; i++) {
+            r[i * 4 + 3] = -(r[i * 4] * m[3] + r[i * 4 + 1] * m[7] + r[i * 4 + 2] * m[11]);
+        }
+        return r;
+    }
+
+    @Override public boolean equals(Object o) {
+        return o instanceof Transform t && java.util.Arrays.equals(m, t.m);
+    }
+
+    @Override public int hashCode() { return java.util.Arrays.hashCode(m); }
+
+    @Override public String toString() { return "Transform" + java.util.Arrays.toString(m); }
+}

@@ -1,0 +1,178 @@
+package lt.spindulys.scene;
+
+import lt.spindulys.math.Bounds;
+import lt.spindulys.math.Ray;
+import lt.spindulys.math.Transform;
+
+/**
+ * Base of every scene object (the thesis's name). An object is built in its own space, placed by
+ * a transform and given a material; the scene then freezes it, composing the transforms of every
+ * enclosing object into one object-to-world transform, after which it is immutable and safe to
+ * share between render threads.
+ *
+ * <p>Intersection has two phases, as in pbrt: {@link #intersect} finds the nearest (t, object,
+ * primitive, u, v) and nothing more; {@link #shade} derives point, normals, uv and derivatives once
+ * for the hit that is finally shaded. Closed solids also report every span the ray spends inside
+ * them ({@link #spans}), which is what CSG combines.
+ *
+ * <p>Leaf shapes implement the {@code *Local} methods in object space; this class maps the world
+ * ray into object space (direction not renormalised, so t is shared) and maps results back.
+ */
+public abstract class GObject {
+    private Transform transform = Transform.IDENTITY;
+    private Material material;
+    private String name;
+
+    /** Composed object-to-world transform; set by {@link #freeze}. */
+    protected Transform objectToWorld;
+    private Bounds worldBounds;
+    private int id = -1;
+
+    // ---- building (before the scene freezes) ----
+
+    /** Appends {@code t} to this object's placement (applied after the ones already given). */
+    public GObject transform(Transform t) {
+        checkMutable();
+        transform = transform.then(t);
+        return this;
+    }
+
+    public Transform transform() { return transform; }
+
+    /** Sets this object's material; null inherits the enclosing object's or the scene default. */
+    public GObject material(Material m) {
+        checkMutable();
+        material = m;
+        return this;
+    }
+
+    public Material material() { return material; }
+
+    public GObject name(String n) {
+        checkMutable();
+        name = n;
+        return this;
+    }
+
+    /** A name for messages: the one given, or the kind of object. */
+    public String name() { return name != null ? name : kind(); }
+
+    /** The kind of object for messages, for example "sphere". */
+    public abstract String kind();
+
+    protected final void checkMutable() {
+        if (objectToWorld != null) throw new IllegalStateException(name() + " is part of a frozen scene and cannot change");
+    }
+
+    // ---- freezing ----
+
+    /**
+     * Fixes this object in the scene: composes its transform with {@code parentToWorld}, computes
+     * world bounds and assigns ids. Containers override to freeze their children, then call super.
+     *
+     * @param ids next free object id; returns the next free id after this object and its children
+     */
+    public int freeze(Transform parentToWorld, Material inherited, int ids) {
+        if (objectToWorld != null) throw new IllegalStateException(name() + " is added to the scene twice");
+        objectToWorld = transform.then(parentToWorld);
+        if (material == null) material = inherited;
+        id = ids;
+        worldBounds = computeWorldBounds();
+        return ids + 1;
+    }
+
+    /** World bounds; the default transforms the object-space bounds' corners. */
+    protected Bounds computeWorldBounds() {
+        return localBounds().transformed(objectToWorld);
+    }
+
+    public final Bounds bounds() { return worldBounds; }
+
+    public final int id() { return id; }
+
+    public final boolean isFrozen() { return objectToWorld != null; }
+
+    /** Bounds in the object's own space. */
+    public abstract Bounds localBounds();
+
+    /** True if the object bounds a volume (spans and CSG are defined only then). */
+    public abstract boolean isClosed();
+
+    // ---- phase 1: nearest hit ----
+
+    /**
+     * Finds the nearest intersection with t in (ray.tMin, ray.tMax). On a hit records it in
+     * {@code hit} and returns true; the caller then shrinks ray.tMax to hit.t.
+     */
+    public boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
+        Ray local = toLocal(ray, ctx);
+        if (!intersectLocal(local, hit, ctx)) return false;
+        hit.object = this;
+        if (hit.material == null) hit.material = material;
+        return true;
+    }
+
+    /** True if anything blocks the ray in (tMin, tMax); may stop at the first hit found. */
+    public boolean occluded(Ray ray, TraceContext ctx) {
+        return intersect(ray, ctx.scratchHit.reset(ray.tMax), ctx);
+    }
+
+    /**
+     * Appends every span inside this (closed) object that overlaps (ray.tMin, ray.tMax), with its
+     * true endpoints, in increasing order. Open objects throw.
+     */
+    public void spans(Ray ray, SpanBuffer out, TraceContext ctx) {
+        if (!isClosed()) throw new UnsupportedOperationException(name() + " is not closed and has no inside");
+        spansLocal(toLocal(ray, ctx), out, ctx);
+    }
+
+    // ---- phase 2: shading data ----
+
+    /**
+     * Fills {@code sd} for {@code hit} (found on {@code ray} by this object): world point, outward
+     * normals (flipped if the hit says so), uv and derivatives, material.
+     */
+    public void shade(Ray ray, Hit hit, ShadingData sd) {
+        sd.p[0] = ray.pointX(hit.t);
+        sd.p[1] = ray.pointY(hit.t);
+        sd.p[2] = ray.pointZ(hit.t);
+        sd.object = this;
+        sd.prim = hit.prim;
+        sd.material = hit.material != null ? hit.material : material;
+        // Object-space point, for the shape's own parametrisation.
+        double[] q = sd.dpdu; // scratch; shadeLocal overwrites it
+        objectToWorld.toLocalPoint(sd.p, q);
+        double lx = q[0], ly = q[1], lz = q[2];
+        shadeLocal(lx, ly, lz, hit, sd);
+        if (!objectToWorld.isIdentity()) {
+            objectToWorld.vectorInPlace(sd.dpdu, 0);
+            objectToWorld.vectorInPlace(sd.dpdv, 0);
+        }
+        objectToWorld.normalInPlace(sd.ng, 0);
+        objectToWorld.normalInPlace(sd.ns, 0);
+        if (hit.flipNormal) sd.flipNormals();
+    }
+
+    // ---- what leaf shapes implement, in object space ----
+
+    /** Nearest hit of an object-space ray; set t, prim, u, v in {@code hit} (object and material are set by the caller). */
+    protected abstract boolean intersectLocal(Ray ray, Hit hit, TraceContext ctx);
+
+    /** Spans of an object-space ray; only closed shapes are asked. */
+    protected void spansLocal(Ray ray, SpanBuffer out, TraceContext ctx) {
+        throw new UnsupportedOperationException(name() + " does not report spans");
+    }
+
+    /**
+     * Shading data in object space at object-space point (x, y, z): normals (outward,
+     * unnormalised is fine: they are normalised after transforming), uv, dpdu, dpdv.
+     */
+    protected abstract void shadeLocal(double x, double y, double z, Hit hit, ShadingData sd);
+
+    /** The ray in object space: the world ray itself when the transform is the identity. */
+    protected final Ray toLocal(Ray ray, TraceContext ctx) {
+        if (objectToWorld.isIdentity()) return ray;
+        objectToWorld.toLocal(ray, ctx.localRay);
+        return ctx.localRay;
+    }
+}

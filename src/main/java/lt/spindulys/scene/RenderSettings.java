@@ -1,0 +1,46 @@
+package lt.spindulys.scene;
+
+import lt.spindulys.math.Color;
+
+/**
+ * Image and integrator settings of a scene, immutable; the {@code with*} methods validate and
+ * return a changed copy (the command line overrides a scene file's values this way).
+ *
+ * @param width           image width in pixels
+ * @param height          image height in pixels
+ * @param samplesPerPixel antialiasing samples per pixel, stratified on a grid as square as possible
+ * @param maxDepth        maximum number of reflection/refraction bounces
+ * @param minContribution secondary rays whose weight falls below this are not traced
+ * @param background      colour of rays that hit nothing
+ * @param ambient         ambient light intensity Ia
+ * @param srgb            encode the image as sRGB for 8-bit outputs (else linear values are written)
+ * @param seed            global seed of every random number, mixed with pixel and sample
+ */
+public record RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, double minContribution,
+                             Color background, Color ambient, boolean srgb, long seed) {
+    /** Largest accepted image side, so that a typo cannot ask for terabytes. */
+    public static final int MAX_SIDE = 32768;
+
+    public static final RenderSettings DEFAULT = new RenderSettings(640, 480, 1, 8, 0.001, Color.BLACK, Color.WHITE, false, 0);
+
+    public RenderSettings {
+        if (width < 1 || width > MAX_SIDE) throw new IllegalArgumentException("width must be between 1 and " + MAX_SIDE + ", found " + width);
+        if (height < 1 || height > MAX_SIDE) throw new IllegalArgumentException("height must be between 1 and " + MAX_SIDE + ", found " + height);
+        if (samplesPerPixel < 1 || samplesPerPixel > 65536) throw new IllegalArgumentException("samples per pixel must be between 1 and 65536, found " + samplesPerPixel);
+        if (maxDepth < 0 || maxDepth > 64) throw new IllegalArgumentException("maxdepth must be between 0 and 64, found " + maxDepth);
+        if (!(minContribution >= 0 && minContribution < 1)) throw new IllegalArgumentException("mincontribution must be in [0, 1), found " + minContribution);
+        if (!background.isFinite() || !background.isNonNegative()) throw new IllegalArgumentException("background must have non-negative finite components, found " + background);
+        if (!ambient.isFinite() || !ambient.isNonNegative()) throw new IllegalArgumentException("ambient must have non-negative finite components, found " + ambient);
+    }
+
+    public RenderSettings withSize(int w, int h) { return new RenderSettings(w, h, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed); }
+    public RenderSettings withSamplesPerPixel(int n) { return new RenderSettings(width, height, n, maxDepth, minContribution, background, ambient, srgb, seed); }
+    public RenderSettings withMaxDepth(int d) { return new RenderSettings(width, height, samplesPerPixel, d, minContribution, background, ambient, srgb, seed); }
+    public RenderSettings withMinContribution(double c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, c, background, ambient, srgb, seed); }
+    public RenderSettings withBackground(Color c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, c, ambient, srgb, seed); }
+    public RenderSettings withAmbient(Color c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, c, srgb, seed); }
+    public RenderSettings withSrgb(boolean s) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, s, seed); }
+    public RenderSettings withSeed(long s) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, s); }
+
+    public double aspect() { return (double) width / height; }
+}

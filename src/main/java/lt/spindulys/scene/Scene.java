@@ -1,0 +1,98 @@
+package lt.spindulys.scene;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import lt.spindulys.accel.Accelerator;
+import lt.spindulys.accel.BruteForce;
+import lt.spindulys.accel.PrimitiveSet;
+import lt.spindulys.camera.Camera;
+import lt.spindulys.math.Ray;
+import lt.spindulys.math.Transform;
+
+/**
+ * A frozen scene: objects with composed transforms and world bounds, an acceleration structure
+ * over them, lights, camera and settings. Immutable and shared by all render threads.
+ * Made by {@link SceneBuilder#build()}.
+ */
+public final class Scene {
+    private final RenderSettings settings;
+    private final Camera camera;
+    private final List<PointLight> lights;
+    private final PointLight[] lightArray;
+    private final List<GObject> objects;
+    private final GObject[] bounded;
+    private final GObject[] unbounded;
+    private final Accelerator accel;
+    private final int objectIds;
+
+    Scene(RenderSettings settings, Camera camera, List<PointLight> lights, List<GObject> objects) {
+        this.settings = settings;
+        this.camera = camera;
+        this.lights = List.copyOf(lights);
+        this.lightArray = lights.toArray(new PointLight[0]);
+        this.objects = List.copyOf(objects);
+        int ids = 0;
+        for (GObject o : objects) ids = o.freeze(Transform.IDENTITY, Material.DEFAULT, ids);
+        objectIds = ids;
+        List<GObject> b = new ArrayList<>(), u = new ArrayList<>();
+        for (GObject o : objects) {
+            if (o.bounds().isEmpty()) continue;
+            (o.bounds().isFinite() ? b : u).add(o);
+        }
+        bounded = b.toArray(new GObject[0]);
+        unbounded = u.toArray(new GObject[0]);
+        accel = new BruteForce(new ObjectSet(bounded));
+    }
+
+    public RenderSettings settings() { return settings; }
+    public Camera camera() { return camera; }
+    public List<PointLight> lights() { return lights; }
+    /** The lights as an array for the shading loop; do not modify. */
+    public PointLight[] lightArray() { return lightArray; }
+    /** The top-level objects, in the order they were added. */
+    public List<GObject> objects() { return objects; }
+    /** Number of object ids assigned (every object, containers and their children included). */
+    public int objectIdCount() { return objectIds; }
+
+    /** Nearest hit along the ray in (tMin, tMax); ray.tMax is left unchanged. */
+    public boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
+        hit.reset(ray.tMax);
+        double saved = ray.tMax;
+        boolean any = accel.intersect(ray, hit, ctx);
+        if (any) ray.tMax = hit.t;
+        for (GObject o : unbounded) {
+            if (o.intersect(ray, hit, ctx)) {
+                any = true;
+                ray.tMax = hit.t;
+            }
+        }
+        ray.tMax = saved;
+        return any;
+    }
+
+    /** True if anything blocks the ray in (tMin, tMax). */
+    public boolean occluded(Ray ray, TraceContext ctx) {
+        for (GObject o : unbounded) if (o.occluded(ray, ctx)) return true;
+        return accel.occluded(ray, ctx);
+    }
+
+    /** The scene's objects as primitives of the top-level structure. */
+    private record ObjectSet(GObject[] objects) implements PrimitiveSet {
+        @Override public int size() { return objects.length; }
+
+        @Override public void bounds(int i, double[] out) {
+            var b = objects[i].bounds();
+            out[0] = b.minX(); out[1] = b.minY(); out[2] = b.minZ();
+            out[3] = b.maxX(); out[4] = b.maxY(); out[5] = b.maxZ();
+        }
+
+        @Override public boolean intersect(int i, Ray ray, Hit hit, TraceContext ctx) {
+            return objects[i].intersect(ray, hit, ctx);
+        }
+
+        @Override public boolean occluded(int i, Ray ray, TraceContext ctx) {
+            return objects[i].occluded(ray, ctx);
+        }
+    }
+}

@@ -1,0 +1,40 @@
+package lt.spindulys.scene;
+
+/**
+ * Surface data at the nearest hit, in world space, computed once per shaded hit.
+ * Normals are unit length and point out of the object (not towards the ray); the integrator
+ * decides which side the ray came from. Mutable per-thread scratch.
+ */
+public final class ShadingData {
+    /** Hit point. */
+    public final double[] p = new double[3];
+    /** Geometric normal, outward. */
+    public final double[] ng = new double[3];
+    /** Shading normal (interpolated or perturbed), outward, on the same side as ng. */
+    public final double[] ns = new double[3];
+    /** Partial derivatives of the point with respect to u and v (not normalised). */
+    public final double[] dpdu = new double[3];
+    public final double[] dpdv = new double[3];
+    /** Surface texture coordinates. */
+    public double u, v;
+    public Material material;
+    public GObject object;
+    public int prim;
+
+    /** Sets both normals to (x, y, z) normalised. */
+    public void setNormal(double x, double y, double z) {
+        double len = Math.sqrt(x * x + y * y + z * z);
+        if (len > 0) { x /= len; y /= len; z /= len; }
+        ng[0] = ns[0] = x; ng[1] = ns[1] = y; ng[2] = ns[2] = z;
+    }
+
+    public void setDerivatives(double ux, double uy, double uz, double vx, double vy, double vz) {
+        dpdu[0] = ux; dpdu[1] = uy; dpdu[2] = uz;
+        dpdv[0] = vx; dpdv[1] = vy; dpdv[2] = vz;
+    }
+
+    /** Negates both normals (used where a CSG cut shows the inside of an operand). */
+    public void flipNormals() {
+        for (int i = 0; i < 3; i++) { ng[i] = -ng[i]; ns[i] = -ns[i]; }
+    }
+}

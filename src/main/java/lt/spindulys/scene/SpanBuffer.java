@@ -1,0 +1,79 @@
+package lt.spindulys.scene;
+
+/**
+ * The intervals along a ray that lie inside a closed solid: sorted, disjoint [entry, exit] pairs,
+ * each endpoint with the surface that bounds it (object, primitive, parameters), so CSG can pick
+ * a span boundary and shade it like an ordinary hit. Endpoints may be infinite (a half-space).
+ * Grows on demand; reused from per-thread scratch, so no allocation in steady state.
+ */
+public final class SpanBuffer {
+    private int count;
+    private double[] t = new double[8];
+    private GObject[] object = new GObject[8];
+    private int[] prim = new int[8];
+    private double[] u = new double[8], v = new double[8];
+    private boolean[] flip = new boolean[8];
+    private Material[] material = new Material[8];
+
+    public void clear() { count = 0; }
+
+    /** Number of spans (half the number of endpoints). */
+    public int size() { return count; }
+
+    /** Appends a span; spans must be appended in increasing, non-overlapping order. */
+    public void add(double tIn, GObject oIn, int pIn, double uIn, double vIn,
+                    double tOut, GObject oOut, int pOut, double uOut, double vOut) {
+        int i = 2 * count;
+        ensure(i + 2);
+        setEndpoint(i, tIn, oIn, pIn, uIn, vIn, false, oIn == null ? null : oIn.material());
+        setEndpoint(i + 1, tOut, oOut, pOut, uOut, vOut, false, oOut == null ? null : oOut.material());
+        count++;
+    }
+
+    /** Appends one endpoint copied from another buffer; pairs of calls make a span. */
+    public void addEndpoint(SpanBuffer from, int endpoint, boolean flipNormal) {
+        int i = 2 * count + pending;
+        ensure(i + 1);
+        setEndpoint(i, from.t[endpoint], from.object[endpoint], from.prim[endpoint], from.u[endpoint], from.v[endpoint],
+                from.flip[endpoint] ^ flipNormal, from.material[endpoint]);
+        if (++pending == 2) { pending = 0; count++; }
+    }
+
+    private int pending;
+
+    private void setEndpoint(int i, double tt, GObject o, int p, double uu, double vv, boolean f, Material m) {
+        t[i] = tt; object[i] = o; prim[i] = p; u[i] = uu; v[i] = vv; flip[i] = f; material[i] = m;
+    }
+
+    /** Overrides the material of every endpoint (an enclosing object with its own material). */
+    public void overrideMaterial(Material m) {
+        for (int i = 0; i < 2 * count; i++) material[i] = m;
+    }
+
+    public double entry(int span) { return t[2 * span]; }
+    public double exit(int span) { return t[2 * span + 1]; }
+    public double t(int endpoint) { return t[endpoint]; }
+
+    /** Copies endpoint {@code endpoint} (2*span for the entry, 2*span+1 for the exit) into a hit. */
+    public void toHit(int endpoint, Hit hit) {
+        hit.t = t[endpoint];
+        hit.object = object[endpoint];
+        hit.prim = prim[endpoint];
+        hit.u = u[endpoint];
+        hit.v = v[endpoint];
+        hit.flipNormal = flip[endpoint];
+        hit.material = material[endpoint];
+    }
+
+    private void ensure(int endpoints) {
+        if (endpoints <= t.length) return;
+        int n = Math.max(endpoints, t.length * 2);
+        t = java.util.Arrays.copyOf(t, n);
+        object = java.util.Arrays.copyOf(object, n);
+        prim = java.util.Arrays.copyOf(prim, n);
+        u = java.util.Arrays.copyOf(u, n);
+        v = java.util.Arrays.copyOf(v, n);
+        flip = java.util.Arrays.copyOf(flip, n);
+        material = java.util.Arrays.copyOf(material, n);
+    }
+}
