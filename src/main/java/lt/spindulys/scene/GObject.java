@@ -92,6 +92,11 @@ public abstract class GObject {
 
     public final boolean isFrozen() { return objectToWorld != null; }
 
+    /** Visits the material of this object and of every object inside it (after freezing). */
+    public void forEachMaterial(java.util.function.Consumer<Material> visitor) {
+        visitor.accept(material);
+    }
+
     /** Bounds in the object's own space. */
     public abstract Bounds localBounds();
 

@@ -25,6 +25,7 @@ public final class Scene {
     private final GObject[] unbounded;
     private final Accelerator accel;
     private final int objectIds;
+    private final boolean transparent;
 
     Scene(RenderSettings settings, Camera camera, List<PointLight> lights, List<GObject> objects) {
         this.settings = settings;
@@ -35,6 +36,9 @@ public final class Scene {
         int ids = 0;
         for (GObject o : objects) ids = o.freeze(Transform.IDENTITY, Material.DEFAULT, ids);
         objectIds = ids;
+        boolean[] anyTransparent = {false};
+        for (GObject o : objects) o.forEachMaterial(m -> anyTransparent[0] |= m.isTransparent());
+        transparent = anyTransparent[0];
         List<GObject> b = new ArrayList<>(), u = new ArrayList<>();
         for (GObject o : objects) {
             if (o.bounds().isEmpty()) continue;
@@ -54,6 +58,9 @@ public final class Scene {
     public List<GObject> objects() { return objects; }
     /** Number of object ids assigned (every object, containers and their children included). */
     public int objectIdCount() { return objectIds; }
+
+    /** True if some object transmits light, so shadow rays must look through surfaces. */
+    public boolean hasTransparentObjects() { return transparent; }
 
     /** Nearest hit along the ray in (tMin, tMax); ray.tMax is left unchanged. */
     public boolean intersect(Ray ray, Hit hit, TraceContext ctx) {

@@ -1,0 +1,68 @@
+package lt.spindulys.cli;
+
+import java.io.PrintStream;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+
+import lt.spindulys.io.SceneException;
+
+/**
+ * The {@code render} command line. {@link #run} does the work and returns the exit status, so
+ * tests call it in-process; {@link #main} only exits with that status. Bad usage and bad input
+ * print one line to stderr and exit 2; a failure while rendering or writing exits 1. Stack traces
+ * appear only with {@code --debug}.
+ */
+public final class Main {
+    private Main() {}
+
+    public static void main(String[] args) {
+        int status = run(args, System.out, System.err);
+        System.out.flush();
+        System.exit(status);
+    }
+
+    /** Runs the command line with the given streams; returns the process exit status. */
+    public static int run(String[] args, PrintStream out, PrintStream err) {
+        List<String> rest = new ArrayList<>(Arrays.asList(args));
+        boolean debug = rest.remove("--debug");
+        try {
+            if (rest.isEmpty() || rest.contains("--help") || rest.contains("-h")) {
+                (rest.isEmpty() ? err : out).println(RenderCommand.USAGE);
+                return rest.isEmpty() ? 2 : 0;
+            }
+            if (rest.contains("--version")) {
+                out.println("spindulys " + version());
+                return 0;
+            }
+            return new RenderCommand(rest.toArray(new String[0])).run(out, err);
+        } catch (UsageException e) {
+            err.println("render: " + e.getMessage());
+            return 2;
+        } catch (SceneException | RenderCommand.NoSuchFileException | IllegalArgumentException e) {
+            // Bad input: the message already names the place (file:line:column or the object).
+            err.println(e.getMessage());
+            if (debug) e.printStackTrace(err);
+            return 2;
+        } catch (InterruptedException e) {
+            err.println("render: interrupted; no image written");
+            return 1;
+        } catch (java.io.IOException e) {
+            err.println("render: " + e.getMessage());
+            if (debug) e.printStackTrace(err);
+            return 1;
+        } catch (OutOfMemoryError e) {
+            err.println("render: out of memory (give the JVM more with -Xmx, or lower the resolution)");
+            return 1;
+        } catch (RuntimeException e) {
+            err.println("render: internal error: " + e + (debug ? "" : " (run with --debug for details)"));
+            if (debug) e.printStackTrace(err);
+            return 1;
+        }
+    }
+
+    static String version() {
+        String v = Main.class.getPackage().getImplementationVersion();
+        return v != null ? v : "development build";
+    }
+}

@@ -1,0 +1,160 @@
+package lt.spindulys.cli;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+import lt.spindulys.image.ImageOptions;
+import lt.spindulys.image.ImageWriter;
+import lt.spindulys.io.SceneParser;
+import lt.spindulys.render.ProgressListener;
+import lt.spindulys.render.RenderStats;
+import lt.spindulys.render.Renderer;
+import lt.spindulys.render.TerminalProgress;
+import lt.spindulys.scene.RenderSettings;
+import lt.spindulys.scene.Scene;
+import lt.spindulys.scene.SceneBuilder;
+
+/** {@code render SCENE.dat [options]}: parse, override settings, render, write the image atomically. */
+final class RenderCommand {
+    static final String USAGE = """
+            usage: render SCENE.dat [-o OUT] [--width W] [--height H] [--spp N] [--threads N]
+                                    [--seed S] [--quality Q] [--stats] [--quiet] [--debug]
+                   render --help | --version
+
+              -o, --output OUT   image to write: .png .jpg .jpeg .tga .pfm (default: SCENE.png here)
+              --width W          image width in pixels (overrides the scene)
+              --height H         image height in pixels (overrides the scene)
+              --spp N            samples per pixel, stratified (overrides the scene)
+              --threads N        render threads (default: all cores)
+              --seed S           global random seed (overrides the scene)
+              --quality Q        JPEG quality from 0 to 1 (default 0.92)
+              --stats            print load, build and render times and ray counts
+              --quiet            no progress bar
+              --debug            stack traces on errors
+            Exit status: 0 success, 2 bad usage or bad input, 1 failure while rendering or writing.""";
+
+    private Path scene, output;
+    private Integer width, height, spp, threads;
+    private Long seed;
+    private double quality = ImageOptions.DEFAULT.jpegQuality();
+    private boolean stats, quiet;
+
+    /** Parses arguments (after --debug was taken out). */
+    RenderCommand(String[] args) throws UsageException {
+        for (int i = 0; i < args.length; i++) {
+            String a = args[i];
+            switch (a) {
+                case "-o", "--output" -> output = Path.of(value(args, ++i, a));
+                case "--width" -> width = intValue(args, ++i, a, 1, RenderSettings.MAX_SIDE);
+                case "--height" -> height = intValue(args, ++i, a, 1, RenderSettings.MAX_SIDE);
+                case "--spp" -> spp = intValue(args, ++i, a, 1, 65536);
+                case "--threads" -> threads = intValue(args, ++i, a, 1, 1024);
+                case "--seed" -> seed = longValue(args, ++i, a);
+                case "--quality" -> quality = doubleValue(args, ++i, a, 0, 1);
+                case "--stats" -> stats = true;
+                case "--quiet", "-q" -> quiet = true;
+                default -> {
+                    if (a.startsWith("-") && a.length() > 1) throw new UsageException("unknown option '" + a + "' (see render --help)");
+                    if (scene != null) throw new UsageException("more than one scene file given: '" + scene + "' and '" + a + "'");
+                    scene = Path.of(a);
+                }
+            }
+        }
+        if (scene == null) throw new UsageException("no scene file given (see render --help)");
+        if (output == null) {
+            String name = scene.getFileName().toString();
+            int dot = name.lastIndexOf('.');
+            output = Path.of((dot > 0 ? name.substring(0, dot) : name) + ".png");
+        }
+        try {
+            ImageWriter.checkFormat(output);
+        } catch (IllegalArgumentException e) {
+            throw new UsageException(e.getMessage());
+        }
+    }
+
+    /** Runs the command; returns the exit status. Bad input surfaces as exceptions handled by {@link Main}. */
+    int run(PrintStream out, PrintStream err) throws IOException, InterruptedException {
+        if (!Files.isRegularFile(scene)) throw new NoSuchFileException(scene);
+        Path dir = output.toAbsolutePath().getParent();
+        if (dir != null && !Files.isDirectory(dir)) {
+            throw new IOException("output folder " + dir + " does not exist");
+        }
+        long t0 = System.nanoTime();
+        SceneBuilder builder = SceneParser.parse(scene);
+        RenderSettings s = builder.settings();
+        if (width != null || height != null) s = s.withSize(width != null ? width : s.width(), height != null ? height : s.height());
+        if (spp != null) s = s.withSamplesPerPixel(spp);
+        if (seed != null) s = s.withSeed(seed);
+        builder.settings(s);
+        long t1 = System.nanoTime();
+        Scene built = builder.build();
+        long t2 = System.nanoTime();
+
+        int n = threads != null ? threads : Runtime.getRuntime().availableProcessors();
+        TerminalProgress bar = !quiet && System.console() != null ? new TerminalProgress(err) : null;
+        Renderer.Result result;
+        try {
+            result = Renderer.render(built, n, bar != null ? bar : ProgressListener.NONE);
+        } finally {
+            if (bar != null) bar.finish();
+        }
+        ImageWriter.write(result.image(), output, new ImageOptions(s.srgb(), quality));
+        if (stats) printStats(out, (t1 - t0) / 1e9, (t2 - t1) / 1e9, result.stats(), n);
+        return 0;
+    }
+
+    private static void printStats(PrintStream out, double load, double build, RenderStats r, int threads) {
+        Runtime rt = Runtime.getRuntime();
+        out.printf("load:    %.3f s%n", load);
+        out.printf("build:   %.3f s%n", build);
+        out.printf("render:  %.3f s (%d threads)%n", r.seconds(), threads);
+        out.printf("rays:    %d camera, %d shadow, %d reflection, %d refraction%n",
+                r.cameraRays(), r.shadowRays(), r.reflectionRays(), r.refractionRays());
+        out.printf("speed:   %.1f Mrays/s%n", r.mraysPerSecond());
+        out.printf("heap:    %.1f MiB in use at exit%n", (rt.totalMemory() - rt.freeMemory()) / 1048576.0);
+    }
+
+    private static String value(String[] args, int i, String option) throws UsageException {
+        if (i >= args.length) throw new UsageException("option " + option + " needs a value");
+        return args[i];
+    }
+
+    private static int intValue(String[] args, int i, String option, int min, int max) throws UsageException {
+        String v = value(args, i, option);
+        try {
+            int n = Integer.parseInt(v);
+            if (n < min || n > max) throw new UsageException(option + " must be between " + min + " and " + max + ", found " + v);
+            return n;
+        } catch (NumberFormatException e) {
+            throw new UsageException(option + " expects a whole number, found '" + v + "'");
+        }
+    }
+
+    private static long longValue(String[] args, int i, String option) throws UsageException {
+        String v = value(args, i, option);
+        try {
+            return Long.parseLong(v);
+        } catch (NumberFormatException e) {
+            throw new UsageException(option + " expects a whole number, found '" + v + "'");
+        }
+    }
+
+    private static double doubleValue(String[] args, int i, String option, double min, double max) throws UsageException {
+        String v = value(args, i, option);
+        try {
+            double d = Double.parseDouble(v);
+            if (!(d >= min && d <= max)) throw new UsageException(option + " must be between " + min + " and " + max + ", found " + v);
+            return d;
+        } catch (NumberFormatException e) {
+            throw new UsageException(option + " expects a number, found '" + v + "'");
+        }
+    }
+
+    /** The scene file is missing: bad input, reported like the parser's errors. */
+    static final class NoSuchFileException extends IOException {
+        NoSuchFileException(Path p) { super(p + ": scene file not found"); }
+    }
+}

@@ -1,0 +1,240 @@
+package lt.spindulys.shading;
+
+import lt.spindulys.math.Color;
+import lt.spindulys.math.Ray;
+import lt.spindulys.scene.Hit;
+import lt.spindulys.scene.Material;
+import lt.spindulys.scene.PointLight;
+import lt.spindulys.scene.RenderSettings;
+import lt.spindulys.scene.Scene;
+import lt.spindulys.scene.ShadingData;
+
+/**
+ * Recursive Whitted ray tracing, the thesis's model: at the nearest hit, ambient plus diffuse and
+ * Blinn-Phong specular from every point light that a shadow ray reaches, plus reflection and
+ * refraction traced recursively, all attenuated by e^(-beta d) over the distance travelled inside
+ * a medium. Transparent occluders tint shadows by kt*filter per surface crossing (and by the
+ * medium's attenuation) instead of blocking. Immutable; all per-ray state lives in the caller's
+ * {@link TracerScratch}.
+ */
+public final class WhittedIntegrator {
+    /** Surfaces a shadow ray may cross before the light counts as blocked. */
+    private static final int MAX_SHADOW_CROSSINGS = 64;
+
+    private final Scene scene;
+    private final RenderSettings settings;
+    private final PointLight[] lights;
+    private final boolean transparentShadows;
+
+    public WhittedIntegrator(Scene scene) {
+        this.scene = scene;
+        this.settings = scene.settings();
+        this.lights = scene.lightArray();
+        this.transparentShadows = scene.hasTransparentObjects();
+    }
+
+    /** A scratch sized for this scene's recursion depth, for one thread. */
+    public TracerScratch newScratch() { return new TracerScratch(settings.maxDepth()); }
+
+    /** Colour seen along a camera ray, written to out[0..2]. */
+    public void traceCamera(Ray ray, TracerScratch s, double[] out) {
+        s.cameraRays++;
+        s.mediaCount = 0;
+        trace(ray, 0, 1, s, out);
+    }
+
+    private void trace(Ray ray, int depth, double weight, TracerScratch s, double[] out) {
+        Hit hit = s.hits[depth];
+        Material medium = s.innermost();
+        double dlen = Math.sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
+        if (!scene.intersect(ray, hit, s.ctx)) {
+            Color bg = settings.background();
+            out[0] = bg.r(); out[1] = bg.g(); out[2] = bg.b();
+            if (medium != null) attenuate(medium, Double.POSITIVE_INFINITY, out);
+            return;
+        }
+        ShadingData sd = s.shading[depth];
+        hit.object.shade(ray, hit, sd);
+        Material m = sd.material;
+        double dx = ray.dx / dlen, dy = ray.dy / dlen, dz = ray.dz / dlen;
+
+        // Normals facing the incoming ray: nf geometric, sn shading (kept on nf's side).
+        boolean entering = sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz < 0;
+        double sign = entering ? 1 : -1;
+        double nfx = sign * sd.ng[0], nfy = sign * sd.ng[1], nfz = sign * sd.ng[2];
+        double snx = sign * sd.ns[0], sny = sign * sd.ns[1], snz = sign * sd.ns[2];
+        if (snx * dx + sny * dy + snz * dz >= 0) { snx = nfx; sny = nfy; snz = nfz; }
+        double px = sd.p[0], py = sd.p[1], pz = sd.p[2];
+        double eps = 1e-9 * Math.max(1, Math.max(Math.abs(px), Math.max(Math.abs(py), Math.abs(pz)))) + 1e-9 * hit.t * dlen;
+
+        localIllumination(m, px, py, pz, nfx, nfy, nfz, snx, sny, snz, dx, dy, dz, eps, s, out);
+
+        if (depth < settings.maxDepth() && (m.kr() > 0 || m.kt() > 0)) {
+            secondary(m, entering, px, py, pz, nfx, nfy, nfz, snx, sny, snz, dx, dy, dz, eps, ray.time, depth, weight, s, out);
+        }
+        if (medium != null) attenuate(medium, hit.t * dlen, out);
+    }
+
+    private void localIllumination(Material m, double px, double py, double pz,
+                                   double nfx, double nfy, double nfz, double snx, double sny, double snz,
+                                   double dx, double dy, double dz, double eps, TracerScratch s, double[] out) {
+        Color c = m.color();
+        Color ia = settings.ambient();
+        double ka = m.ka();
+        double r = ka * ia.r() * c.r(), g = ka * ia.g() * c.g(), b = ka * ia.b() * c.b();
+        double kd = m.kd(), ks = m.ks();
+        if (kd > 0 || ks > 0) {
+            double ox = px + nfx * eps, oy = py + nfy * eps, oz = pz + nfz * eps;
+            for (PointLight light : lights) {
+                double lx = light.position().x() - ox, ly = light.position().y() - oy, lz = light.position().z() - oz;
+                double dist2 = lx * lx + ly * ly + lz * lz, dist = Math.sqrt(dist2);
+                if (!(dist > 0)) continue;
+                double ux = lx / dist, uy = ly / dist, uz = lz / dist;
+                if (ux * nfx + uy * nfy + uz * nfz <= 0) continue; // light behind the surface
+                double ndotl = ux * snx + uy * sny + uz * snz;
+                if (ndotl <= 0) continue;
+                if (!shadowTransmission(ox, oy, oz, lx, ly, lz, dist, s)) continue;
+                double[] t = s.transmission;
+                double scale = light.intensity();
+                if (light.falloff() == PointLight.Falloff.INVERSE_SQUARE) scale /= dist2;
+                Color lc = light.color();
+                double ir = lc.r() * scale * t[0], ig = lc.g() * scale * t[1], ib = lc.b() * scale * t[2];
+                double diff = kd * ndotl;
+                r += diff * c.r() * ir; g += diff * c.g() * ig; b += diff * c.b() * ib;
+                if (ks > 0) {
+                    double hx = ux - dx, hy = uy - dy, hz = uz - dz;
+                    double hl = Math.sqrt(hx * hx + hy * hy + hz * hz);
+                    double nh = hl > 0 ? (hx * snx + hy * sny + hz * snz) / hl : 0;
+                    if (nh > 0) {
+                        double spec = ks * Math.pow(nh, m.shininess());
+                        r += spec * ir; g += spec * ig; b += spec * ib;
+                    }
+                }
+            }
+        }
+        out[0] = r; out[1] = g; out[2] = b;
+    }
+
+    /**
+     * Fraction of a light's colour that reaches the origin along (lx, ly, lz) (t = 1 at the light),
+     * written to s.transmission; false if nothing arrives.
+     */
+    private boolean shadowTransmission(double ox, double oy, double oz, double lx, double ly, double lz,
+                                       double dist, TracerScratch s) {
+        s.shadowRays++;
+        Ray ray = s.shadowRay.set(ox, oy, oz, lx, ly, lz, 0, 1);
+        double[] t = s.transmission;
+        t[0] = t[1] = t[2] = 1;
+        if (!transparentShadows) return !scene.occluded(ray, s.ctx);
+        Hit hit = s.shadowHit;
+        ShadingData sd = s.shadowShading;
+        // Walk through the surfaces between the point and the light; media entered along the way
+        // attenuate from their entry, a medium left without an entry did so from the origin.
+        Material inside = null;
+        double enteredAt = 0;
+        for (int crossing = 0; crossing < MAX_SHADOW_CROSSINGS; crossing++) {
+            if (!scene.intersect(ray, hit, s.ctx)) {
+                if (inside != null) attenuate(inside, (1 - enteredAt) * dist, t);
+                return t[0] > 0 || t[1] > 0 || t[2] > 0;
+            }
+            Material m = hit.material;
+            if (m.kt() <= 0) return false;
+            Color f = m.filter();
+            t[0] *= m.kt() * f.r(); t[1] *= m.kt() * f.g(); t[2] *= m.kt() * f.b();
+            if (m.attenuates()) {
+                hit.object.shade(ray, hit, sd);
+                boolean entering = sd.ng[0] * lx + sd.ng[1] * ly + sd.ng[2] * lz < 0;
+                if (entering) {
+                    inside = m;
+                    enteredAt = hit.t;
+                } else {
+                    attenuate(m, (hit.t - (inside == m ? enteredAt : 0)) * dist, t);
+                    inside = null;
+                }
+            }
+            if (t[0] <= 0 && t[1] <= 0 && t[2] <= 0) return false;
+            ray.tMin = hit.t + 1e-9;
+        }
+        return false;
+    }
+
+    private void secondary(Material m, boolean entering, double px, double py, double pz,
+                           double nfx, double nfy, double nfz, double snx, double sny, double snz,
+                           double dx, double dy, double dz, double eps, double time, int depth, double weight,
+                           TracerScratch s, double[] out) {
+        double kr = m.kr(), kt = m.kt();
+        double reflW = kr, refrW = kt;
+        double[] dir = s.dir;
+        boolean canRefract = false;
+        double n1 = 1, n2 = 1;
+        Material outside = null;
+        if (kt > 0) {
+            // Indices on both sides: entering goes from the current medium into m; leaving goes
+            // from m into whatever encloses it on the medium stack.
+            if (entering) {
+                n1 = ior(s.innermost());
+                n2 = m.ior();
+            } else {
+                outside = s.innermost() == m ? s.outer() : s.innermost();
+                n1 = m.ior();
+                n2 = ior(outside);
+            }
+            canRefract = Optics.refract(dx, dy, dz, snx, sny, snz, n1, n2, dir);
+            if (canRefract && dir[0] * nfx + dir[1] * nfy + dir[2] * nfz >= 0) {
+                canRefract = Optics.refract(dx, dy, dz, nfx, nfy, nfz, n1, n2, dir);
+            }
+            if (m.fresnel()) {
+                double fr = Optics.schlick(-(dx * snx + dy * sny + dz * snz), n1, n2);
+                reflW = kr + kt * fr;
+                refrW = kt * (1 - fr);
+            }
+            if (!canRefract) { // total internal reflection: the transmitted share is reflected
+                reflW += refrW;
+                refrW = 0;
+            }
+        }
+        double[] c = s.colour[depth + 1];
+        Ray next = s.rays[depth + 1];
+        next.time = time;
+        if (reflW > 0 && reflW * weight >= settings.minContribution()) {
+            Optics.reflect(dx, dy, dz, snx, sny, snz, dir);
+            if (dir[0] * nfx + dir[1] * nfy + dir[2] * nfz <= 0) Optics.reflect(dx, dy, dz, nfx, nfy, nfz, dir);
+            next.set(px + nfx * eps, py + nfy * eps, pz + nfz * eps, dir[0], dir[1], dir[2], 0, Double.POSITIVE_INFINITY);
+            s.reflectionRays++;
+            trace(next, depth + 1, weight * reflW, s, c);
+            out[0] += reflW * c[0]; out[1] += reflW * c[1]; out[2] += reflW * c[2];
+        }
+        Color f = m.filter();
+        if (refrW > 0 && refrW * f.max() * weight >= settings.minContribution()) {
+            // dir may have been overwritten by the reflection: recompute the refracted direction.
+            if (!Optics.refract(dx, dy, dz, snx, sny, snz, n1, n2, dir) || dir[0] * nfx + dir[1] * nfy + dir[2] * nfz >= 0) {
+                Optics.refract(dx, dy, dz, nfx, nfy, nfz, n1, n2, dir);
+            }
+            next.set(px - nfx * eps, py - nfy * eps, pz - nfz * eps, dir[0], dir[1], dir[2], 0, Double.POSITIVE_INFINITY);
+            s.refractionRays++;
+            if (entering) {
+                s.pushMedium(m);
+                trace(next, depth + 1, weight * refrW * f.max(), s, c);
+                s.mediaCount--;
+            } else if (s.innermost() == m) {
+                s.mediaCount--;
+                trace(next, depth + 1, weight * refrW * f.max(), s, c);
+                s.pushMedium(m);
+            } else {
+                trace(next, depth + 1, weight * refrW * f.max(), s, c);
+            }
+            out[0] += refrW * f.r() * c[0]; out[1] += refrW * f.g() * c[1]; out[2] += refrW * f.b() * c[2];
+        }
+    }
+
+    private static double ior(Material m) { return m == null ? 1 : m.ior(); }
+
+    /** Multiplies rgb by e^(-beta d) of the medium; an infinite distance leaves only channels with beta 0. */
+    private static void attenuate(Material medium, double distance, double[] rgb) {
+        if (!medium.attenuates()) return;
+        Color beta = medium.beta();
+        rgb[0] *= beta.r() == 0 ? 1 : Math.exp(-beta.r() * distance);
+        rgb[1] *= beta.g() == 0 ? 1 : Math.exp(-beta.g() * distance);
+        rgb[2] *= beta.b() == 0 ? 1 : Math.exp(-beta.b() * distance);
+    }
+}
