@@ -1,0 +1,116 @@
+package lt.spindulys.image;
+
+import java.util.Objects;
+
+/**
+ * A width x height image of linear RGB values in one flat {@code double[]}: row-major, y = 0 is
+ * the top row, three consecutive values (r, g, b) per pixel, so pixel (x, y) starts at index
+ * {@code 3 * (y * width + x)}.
+ *
+ * <p>Values are unbounded (HDR, negative or NaN values are stored as given); clamping happens only
+ * when converting to 8 bits. Render threads may write disjoint pixels concurrently; the buffer has
+ * no locking of its own.
+ */
+public final class FrameBuffer {
+    /** Largest pixel count whose three doubles still fit in one Java array. */
+    private static final long MAX_PIXELS = (Integer.MAX_VALUE - 8) / 3;
+
+    private final int width, height;
+    private final double[] data;
+
+    /** A black image; both dimensions must be at least 1. */
+    public FrameBuffer(int width, int height) {
+        if (width < 1 || height < 1) {
+            throw new IllegalArgumentException("image size must be at least 1x1, got " + width + "x" + height);
+        }
+        if ((long) width * height > MAX_PIXELS) {
+            throw new IllegalArgumentException("image size " + width + "x" + height + " is too large (at most "
+                    + MAX_PIXELS + " pixels)");
+        }
+        this.width = width;
+        this.height = height;
+        this.data = new double[3 * width * height];
+    }
+
+    public int width() { return width; }
+
+    public int height() { return height; }
+
+    /** Stores the linear colour of pixel (x, y). */
+    public void set(int x, int y, double r, double g, double b) {
+        int i = index(x, y);
+        data[i] = r;
+        data[i + 1] = g;
+        data[i + 2] = b;
+    }
+
+    /** One linear channel (0 = red, 1 = green, 2 = blue) of pixel (x, y). */
+    public double get(int x, int y, int channel) {
+        Objects.checkIndex(channel, 3);
+        return data[index(x, y) + channel];
+    }
+
+    /** The backing array itself (not a copy): 3 values per pixel, row-major, top row first. */
+    public double[] data() { return data; }
+
+    private int index(int x, int y) {
+        // Checked separately: a flat-index check alone would let x = width wrap into the next row.
+        Objects.checkIndex(x, width);
+        Objects.checkIndex(y, height);
+        return 3 * (y * width + x);
+    }
+
+    /**
+     * Converts to packed 8-bit {@code 0xRRGGBB} values, row-major, top row first. Each channel is
+     * clamped to [0, 1] (NaN counts as 0), encoded with the sRGB transfer function if {@code srgb}
+     * (otherwise left linear), then scaled by 255 and rounded to nearest.
+     */
+    public int[] toRgb8(boolean srgb) {
+        int n = width * height;
+        int[] out = new int[n];
+        for (int p = 0, i = 0; p < n; p++, i += 3) {
+            out[p] = (to8(data[i], srgb) << 16) | (to8(data[i + 1], srgb) << 8) | to8(data[i + 2], srgb);
+        }
+        return out;
+    }
+
+    /**
+     * The inverse of {@link #toRgb8}: builds a buffer from packed {@code 0xRRGGBB} values (the top
+     * byte is ignored), decoding sRGB to linear if {@code srgb}. {@code fromRgb8(...).toRgb8(srgb)}
+     * gives the same packed values back.
+     */
+    public static FrameBuffer fromRgb8(int width, int height, int[] packed, boolean srgb) {
+        FrameBuffer fb = new FrameBuffer(width, height);
+        if (packed.length != width * height) {
+            throw new IllegalArgumentException("expected " + width * height + " packed pixels for "
+                    + width + "x" + height + ", got " + packed.length);
+        }
+        double[] lut = new double[256];
+        for (int k = 0; k < 256; k++) lut[k] = srgb ? srgbToLinear(k / 255.0) : k / 255.0;
+        double[] d = fb.data;
+        for (int p = 0, i = 0; p < packed.length; p++, i += 3) {
+            int v = packed[p];
+            d[i] = lut[(v >>> 16) & 0xFF];
+            d[i + 1] = lut[(v >>> 8) & 0xFF];
+            d[i + 2] = lut[v & 0xFF];
+        }
+        return fb;
+    }
+
+    private static int to8(double v, boolean srgb) {
+        // The negated comparison also catches NaN.
+        if (!(v > 0)) return 0;
+        if (v >= 1) return 255;
+        return (int) Math.round((srgb ? linearToSrgb(v) : v) * 255.0);
+    }
+
+    /** The sRGB opto-electronic transfer function (IEC 61966-2-1) for a linear value in [0, 1]. */
+    public static double linearToSrgb(double linear) {
+        return linear <= 0.0031308 ? 12.92 * linear : 1.055 * Math.pow(linear, 1 / 2.4) - 0.055;
+    }
+
+    /** The inverse of {@link #linearToSrgb}, for an encoded value in [0, 1]. */
+    public static double srgbToLinear(double encoded) {
+        return encoded <= 0.04045 ? encoded / 12.92 : Math.pow((encoded + 0.055) / 1.055, 2.4);
+    }
+}
