@@ -1,6 +1,7 @@
 package lt.spindulys.scene;
 
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -42,7 +43,16 @@ public final class SceneBuilder {
 
     public SceneBuilder camera(Camera c) { camera = Objects.requireNonNull(c); return this; }
 
+    /** The camera given so far, or null (then {@link #build()} uses a default one). */
+    public Camera camera() { return camera; }
+
     public SceneBuilder light(PointLight l) { lights.add(Objects.requireNonNull(l)); return this; }
+
+    /** The lights added so far, in order (read-only view). */
+    public List<PointLight> lights() { return Collections.unmodifiableList(lights); }
+
+    /** The top-level objects added so far, in order (read-only view), to inspect before building. */
+    public List<GObject> objects() { return Collections.unmodifiableList(objects); }
 
     /** Registers a named material for later lookup with {@link #material(String)}. */
     public SceneBuilder defineMaterial(String name, Material m) {

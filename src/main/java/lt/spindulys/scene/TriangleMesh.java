@@ -11,7 +11,17 @@ import lt.spindulys.math.Vec3;
 public final class TriangleMesh extends GObject {
     private final MeshData data;
 
+    /** Interpolate vertex normals (true) or shade each triangle with its face normal (false). */
+    private boolean smooth;
+
     public TriangleMesh(MeshData data) { this.data = data; }
+
+    /** Chooses smooth (interpolated vertex normals) or flat shading; the scene file's 'shading' key. */
+    public TriangleMesh smooth(boolean s) {
+        checkMutable();
+        smooth = s;
+        return this;
+    }
 
     @Override public String kind() { return "mesh"; }
     @Override public Bounds localBounds() { throw new UnsupportedOperationException("TODO"); }

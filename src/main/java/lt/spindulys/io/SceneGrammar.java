@@ -1,0 +1,211 @@
+package lt.spindulys.io;
+
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.List;
+
+import lt.spindulys.math.Color;
+import lt.spindulys.math.Vec3;
+
+/**
+ * The statements of the scene language and the keys each block accepts, with their value kinds,
+ * whether they are required or repeatable, and defaults. This table is the one place that knows
+ * the grammar: the parser accepts exactly these keys, its did-you-mean suggestions draw from them,
+ * and a test checks that docs/scene-format.md documents each one.
+ */
+final class SceneGrammar {
+    private SceneGrammar() {}
+
+    /** How a key's value is written. */
+    enum Kind {
+        /** One finite number. */
+        NUMBER,
+        /** One integer literal that fits an int. */
+        INTEGER,
+        /** One integer literal that fits a long. */
+        LONG,
+        /** Three numbers. */
+        VECTOR,
+        /** One number (grey) or three (r g b). */
+        COLOR,
+        /** Nine numbers: three points. */
+        VERTICES,
+        /** true or false. */
+        BOOLEAN,
+        /** One of the key's choices, as a bare word. */
+        CHOICE,
+        /** A double-quoted string. */
+        STRING,
+        /** A material name defined earlier, or an inline { ... } material block. */
+        MATERIAL,
+        /** translate x y z. */
+        TRANSLATE,
+        /** rotate x|y|z degrees, or rotate ax ay az degrees. */
+        ROTATE,
+        /** scale s, or scale sx sy sz. */
+        SCALE
+    }
+
+    /** What a block makes, which decides how the parser turns its keys into builder calls. */
+    enum Category { SETTINGS, CAMERA, LIGHT, MATERIAL, OBJECT }
+
+    /**
+     * A key of a block.
+     *
+     * @param defaultValue the value used when the key is absent, or null when absence means "the
+     *                     builder's own default" (settings, materials) or the key is required
+     */
+    record Key(String name, Kind kind, boolean required, boolean repeatable, Object defaultValue, List<String> choices) {}
+
+    /** A statement keyword and the keys its block accepts, in documentation order. */
+    record Block(String keyword, Category category, List<Key> keys) {
+        Key key(String name) {
+            for (Key k : keys) if (k.name.equals(name)) return k;
+            return null;
+        }
+
+        List<String> keyNames() {
+            List<String> names = new ArrayList<>();
+            for (Key k : keys) names.add(k.name);
+            return names;
+        }
+    }
+
+    private static Key req(String name, Kind kind) { return new Key(name, kind, true, false, null, List.of()); }
+    private static Key opt(String name, Kind kind) { return new Key(name, kind, false, false, null, List.of()); }
+    private static Key opt(String name, Kind kind, Object dflt) { return new Key(name, kind, false, false, dflt, List.of()); }
+    private static Key choice(String name, String dflt, String... choices) { return new Key(name, Kind.CHOICE, false, false, dflt, List.of(choices)); }
+    private static Key repeat(String name, Kind kind) { return new Key(name, kind, false, true, null, List.of()); }
+
+    /** Keys every object block accepts after its own. */
+    static final List<Key> OBJECT_COMMON = List.of(
+            opt("material", Kind.MATERIAL),
+            repeat("translate", Kind.TRANSLATE),
+            repeat("rotate", Kind.ROTATE),
+            repeat("scale", Kind.SCALE),
+            opt("name", Kind.STRING));
+
+    static final Block SETTINGS = new Block("settings", Category.SETTINGS, List.of(
+            opt("width", Kind.INTEGER),
+            opt("height", Kind.INTEGER),
+            opt("samples", Kind.INTEGER),
+            opt("maxdepth", Kind.INTEGER),
+            opt("mincontribution", Kind.NUMBER),
+            opt("background", Kind.COLOR),
+            opt("ambient", Kind.COLOR),
+            choice("encoding", null, "linear", "srgb"),
+            opt("seed", Kind.LONG)));
+
+    static final Block CAMERA = new Block("camera", Category.CAMERA, List.of(
+            req("eye", Kind.VECTOR),
+            req("lookat", Kind.VECTOR),
+            opt("up", Kind.VECTOR, Vec3.Y),
+            opt("fov", Kind.NUMBER, 45.0)));
+
+    static final Block LIGHT = new Block("light", Category.LIGHT, List.of(
+            req("position", Kind.VECTOR),
+            opt("color", Kind.COLOR, Color.WHITE),
+            opt("intensity", Kind.NUMBER, 1.0),
+            choice("falloff", "none", "none", "inverse-square")));
+
+    static final Block MATERIAL = new Block("material", Category.MATERIAL, List.of(
+            opt("color", Kind.COLOR),
+            opt("ka", Kind.NUMBER),
+            opt("kd", Kind.NUMBER),
+            opt("ks", Kind.NUMBER),
+            opt("shininess", Kind.NUMBER),
+            opt("kr", Kind.NUMBER),
+            opt("kt", Kind.NUMBER),
+            opt("ior", Kind.NUMBER),
+            opt("beta", Kind.COLOR),
+            opt("filter", Kind.COLOR),
+            opt("fresnel", Kind.BOOLEAN)));
+
+    static final Block SPHERE = object("sphere",
+            opt("center", Kind.VECTOR, Vec3.ZERO),
+            opt("radius", Kind.NUMBER, 1.0));
+
+    static final Block PLANE = object("plane",
+            opt("normal", Kind.VECTOR, Vec3.Y),
+            opt("offset", Kind.NUMBER, 0.0));
+
+    static final Block BOX = object("box",
+            req("min", Kind.VECTOR),
+            req("max", Kind.VECTOR));
+
+    static final Block CYLINDER = object("cylinder",
+            req("base", Kind.VECTOR),
+            req("top", Kind.VECTOR),
+            opt("radius", Kind.NUMBER, 1.0));
+
+    static final Block TRIANGLE = object("triangle",
+            req("vertices", Kind.VERTICES));
+
+    // No default for shading: absent means "smooth if the OBJ has normals", decided after reading it.
+    static final Block MESH = object("mesh",
+            req("file", Kind.STRING),
+            choice("shading", null, "smooth", "flat"));
+
+    /** Every top-level statement, in documentation order. */
+    static final List<Block> STATEMENTS = List.of(SETTINGS, CAMERA, LIGHT, MATERIAL, SPHERE, PLANE, BOX, CYLINDER, TRIANGLE, MESH);
+
+    private static Block object(String keyword, Key... own) {
+        List<Key> keys = new ArrayList<>(List.of(own));
+        keys.addAll(OBJECT_COMMON);
+        return new Block(keyword, Category.OBJECT, List.copyOf(keys));
+    }
+
+    /** The statement with this keyword, or null. */
+    static Block statement(String keyword) {
+        for (Block b : STATEMENTS) if (b.keyword.equals(keyword)) return b;
+        return null;
+    }
+
+    static List<String> statementNames() {
+        List<String> names = new ArrayList<>();
+        for (Block b : STATEMENTS) names.add(b.keyword);
+        return names;
+    }
+
+    /**
+     * The candidate nearest to {@code word} by edit distance (a swap of neighbours counts as one
+     * edit), if it is at most 2 and less than the word's length (so that "ab" does not suggest an
+     * unrelated two-letter key); the first in the given order wins ties. Null if there is none.
+     */
+    static String nearest(String word, Collection<String> candidates) {
+        String best = null;
+        int bestDistance = Integer.MAX_VALUE;
+        for (String c : candidates) {
+            int d = editDistance(word, c);
+            if (d < bestDistance) {
+                best = c;
+                bestDistance = d;
+            }
+        }
+        return best != null && bestDistance <= 2 && bestDistance < word.length() ? best : null;
+    }
+
+    /** " (did you mean 'x'?)" for the nearest candidate, or "" when none is close. */
+    static String didYouMean(String word, Collection<String> candidates) {
+        String n = nearest(word, candidates);
+        return n == null ? "" : " (did you mean '" + n + "'?)";
+    }
+
+    /** Optimal string alignment distance: insertions, deletions, substitutions and adjacent swaps. */
+    static int editDistance(String a, String b) {
+        int[][] d = new int[a.length() + 1][b.length() + 1];
+        for (int i = 0; i <= a.length(); i++) d[i][0] = i;
+        for (int j = 0; j <= b.length(); j++) d[0][j] = j;
+        for (int i = 1; i <= a.length(); i++) {
+            for (int j = 1; j <= b.length(); j++) {
+                int cost = a.charAt(i - 1) == b.charAt(j - 1) ? 0 : 1;
+                int v = Math.min(Math.min(d[i - 1][j] + 1, d[i][j - 1] + 1), d[i - 1][j - 1] + cost);
+                if (i > 1 && j > 1 && a.charAt(i - 1) == b.charAt(j - 2) && a.charAt(i - 2) == b.charAt(j - 1)) {
+                    v = Math.min(v, d[i - 2][j - 2] + 1);
+                }
+                d[i][j] = v;
+            }
+        }
+        return d[a.length()][b.length()];
+    }
+}

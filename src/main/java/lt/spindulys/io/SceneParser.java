@@ -1,0 +1,556 @@
+package lt.spindulys.io;
+
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.CharBuffer;
+import java.nio.charset.CharsetDecoder;
+import java.nio.charset.CoderResult;
+import java.nio.charset.CodingErrorAction;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.regex.Pattern;
+
+import lt.spindulys.camera.PinholeCamera;
+import lt.spindulys.io.SceneGrammar.Block;
+import lt.spindulys.io.SceneGrammar.Key;
+import lt.spindulys.io.SceneLexer.Kind;
+import lt.spindulys.io.SceneLexer.Token;
+import lt.spindulys.math.Color;
+import lt.spindulys.math.Transform;
+import lt.spindulys.math.Vec3;
+import lt.spindulys.scene.Box;
+import lt.spindulys.scene.Cylinder;
+import lt.spindulys.scene.GObject;
+import lt.spindulys.scene.Material;
+import lt.spindulys.scene.MeshData;
+import lt.spindulys.scene.Plane;
+import lt.spindulys.scene.PointLight;
+import lt.spindulys.scene.RenderSettings;
+import lt.spindulys.scene.SceneBuilder;
+import lt.spindulys.scene.Sphere;
+import lt.spindulys.scene.Triangle;
+import lt.spindulys.scene.TriangleMesh;
+
+/**
+ * Reads a .dat scene file (the language is described in docs/scene-format.md) into a
+ * {@link SceneBuilder}, using only the builder's public API, so a scene read from a file and the
+ * same scene written in Java are built alike. The builder is returned unbuilt so that the command
+ * line can still override settings.
+ *
+ * <p>Every error is a {@link SceneException} naming file:line:column of the offending token; values
+ * the builder API refuses are reported at the key that gave them. The first error stops parsing.
+ */
+public final class SceneParser {
+    private final SceneLexer lex;
+    private final String file;
+    private final Path baseDir;
+    private final SceneBuilder builder = new SceneBuilder();
+    private Token settingsAt, cameraAt;
+    /** Where each named material was defined, for "already defined at" and suggestions. */
+    private final Map<String, Token> materialsAt = new LinkedHashMap<>();
+
+    private SceneParser(String text, String file, Path baseDir) {
+        this.lex = new SceneLexer(text, file);
+        this.file = file;
+        this.baseDir = baseDir;
+    }
+
+    /**
+     * Parses a scene file, which must be UTF-8. Relative mesh paths are resolved against the file's
+     * folder, and messages name the file as given.
+     *
+     * @throws IOException    if the file cannot be read
+     * @throws SceneException if its content is not a valid scene
+     */
+    public static SceneBuilder parse(Path file) throws IOException {
+        String name = file.toString();
+        String text = decodeUtf8(Files.readAllBytes(file), name);
+        return parse(text, name, file.toAbsolutePath().getParent());
+    }
+
+    /**
+     * Parses scene text.
+     *
+     * @param fileName name used in error messages (null: "&lt;input&gt;")
+     * @param baseDir  folder against which relative mesh paths are resolved (null: the working directory)
+     * @throws SceneException if the text is not a valid scene
+     */
+    public static SceneBuilder parse(String text, String fileName, Path baseDir) {
+        Path dir = (baseDir != null ? baseDir : Path.of("")).toAbsolutePath();
+        SceneParser p = new SceneParser(Objects.requireNonNull(text, "text"), fileName, dir);
+        p.statements();
+        return p.builder;
+    }
+
+    // ---- statements ----
+
+    private void statements() {
+        while (true) {
+            Token t = lex.next();
+            switch (t.kind()) {
+                case EOF -> { return; }
+                case WORD -> statement(t);
+                case CLOSE -> throw error(t, "unexpected '}': no block is open");
+                default -> throw error(t, "expected a statement (" + String.join(", ", SceneGrammar.statementNames())
+                        + "), found " + t.describe());
+            }
+        }
+    }
+
+    private void statement(Token kw) {
+        Block b = SceneGrammar.statement(kw.text());
+        if (b == null) throw unknownStatement(kw);
+        switch (b.category()) {
+            case SETTINGS -> settings(kw);
+            case CAMERA -> camera(kw);
+            case LIGHT -> light(kw);
+            case MATERIAL -> namedMaterial(kw);
+            case OBJECT -> object(kw, b);
+        }
+    }
+
+    private SceneException unknownStatement(Token kw) {
+        String w = kw.text();
+        String hint = SceneGrammar.didYouMean(w, SceneGrammar.statementNames());
+        if (hint.isEmpty()) {
+            // A property outside any block usually means a '}' came too early.
+            List<String> owners = new ArrayList<>();
+            for (Block b : SceneGrammar.STATEMENTS) if (b.key(w) != null) owners.add(b.keyword());
+            if (!owners.isEmpty()) hint = " ('" + w + "' is a property of " + orList(owners) + ": was a block closed too early?)";
+        }
+        return error(kw, "unknown statement '" + w + "'" + hint);
+    }
+
+    private void settings(Token kw) {
+        if (settingsAt != null) throw error(kw, "settings is already defined at " + settingsAt.position());
+        settingsAt = kw;
+        Props p = block(SceneGrammar.SETTINGS, kw, null);
+        RenderSettings s = builder.settings();
+        for (Prop pr : p.all) {
+            Object v = pr.value;
+            try {
+                s = switch (pr.key.name()) {
+                    case "width" -> s.withSize((Integer) v, s.height());
+                    case "height" -> s.withSize(s.width(), (Integer) v);
+                    case "samples" -> s.withSamplesPerPixel((Integer) v);
+                    case "maxdepth" -> s.withMaxDepth((Integer) v);
+                    case "mincontribution" -> s.withMinContribution((Double) v);
+                    case "background" -> s.withBackground((Color) v);
+                    case "ambient" -> s.withAmbient((Color) v);
+                    case "encoding" -> s.withSrgb("srgb".equals(v));
+                    case "seed" -> s.withSeed((Long) v);
+                    default -> throw unhandled(pr);
+                };
+            } catch (IllegalArgumentException e) {
+                throw wrap(pr.at, e);
+            }
+        }
+        builder.settings(s);
+    }
+
+    private void camera(Token kw) {
+        if (cameraAt != null) throw error(kw, "camera is already defined at " + cameraAt.position());
+        cameraAt = kw;
+        Props p = block(SceneGrammar.CAMERA, kw, null);
+        try {
+            builder.camera(new PinholeCamera(p.vec("eye"), p.vec("lookat"), p.vec("up"), p.num("fov")));
+        } catch (IllegalArgumentException e) {
+            throw blame(p, e);
+        }
+    }
+
+    private void light(Token kw) {
+        Props p = block(SceneGrammar.LIGHT, kw, null);
+        PointLight.Falloff falloff = switch ((String) p.get("falloff")) {
+            case "none" -> PointLight.Falloff.NONE;
+            case "inverse-square" -> PointLight.Falloff.INVERSE_SQUARE;
+            default -> throw new IllegalStateException("falloff choice without a mapping: " + p.get("falloff"));
+        };
+        try {
+            builder.light(new PointLight(p.vec("position"), (Color) p.get("color"), p.num("intensity"), falloff));
+        } catch (IllegalArgumentException e) {
+            throw blame(p, e);
+        }
+    }
+
+    private void namedMaterial(Token kw) {
+        Token n = lex.next();
+        if (n.kind() != Kind.WORD) {
+            throw error(n, "expected a material name after 'material', found " + n.describe()
+                    + (n.kind() == Kind.STRING ? " (material names are bare words, without quotes)" : ""));
+        }
+        Token first = materialsAt.get(n.text());
+        if (first != null) throw error(n, "material '" + n.text() + "' is already defined at " + first.position());
+        Material m = material(block(SceneGrammar.MATERIAL, kw, n.text()), n.text());
+        builder.defineMaterial(n.text(), m);
+        materialsAt.put(n.text(), kw);
+    }
+
+    /** A material from its block's keys, applied through the validating builder in the order written. */
+    private Material material(Props p, String name) {
+        Material.Builder mb = Material.builder();
+        for (Prop pr : p.all) {
+            Object v = pr.value;
+            try {
+                switch (pr.key.name()) {
+                    case "color" -> mb.color((Color) v);
+                    case "ka" -> mb.ka((Double) v);
+                    case "kd" -> mb.kd((Double) v);
+                    case "ks" -> mb.ks((Double) v);
+                    case "shininess" -> mb.shininess((Double) v);
+                    case "kr" -> mb.kr((Double) v);
+                    case "kt" -> mb.kt((Double) v);
+                    case "ior" -> mb.ior((Double) v);
+                    case "beta" -> mb.beta((Color) v);
+                    case "filter" -> mb.filter((Color) v);
+                    case "fresnel" -> mb.fresnel((Boolean) v);
+                    default -> throw unhandled(pr);
+                }
+            } catch (IllegalArgumentException e) {
+                throw wrap(pr.at, e);
+            }
+        }
+        if (name != null) mb.name(name);
+        return mb.build();
+    }
+
+    private void object(Token kw, Block b) {
+        Props p = block(b, kw, null);
+        GObject o;
+        if (b == SceneGrammar.MESH) {
+            o = mesh(p);
+        } else {
+            try {
+                o = switch (b.keyword()) {
+                    case "sphere" -> new Sphere(p.vec("center"), p.num("radius"));
+                    case "plane" -> new Plane(p.vec("normal"), p.num("offset"));
+                    case "box" -> new Box(p.vec("min"), p.vec("max"));
+                    case "cylinder" -> new Cylinder(p.vec("base"), p.vec("top"), p.num("radius"));
+                    case "triangle" -> {
+                        Vec3[] v = (Vec3[]) p.get("vertices");
+                        yield new Triangle(v[0], v[1], v[2]);
+                    }
+                    default -> throw new IllegalStateException("grammar has object '" + b.keyword() + "' that the parser cannot make");
+                };
+            } catch (IllegalArgumentException e) {
+                throw blame(p, e);
+            }
+        }
+        // Common keys; transforms compose in the order written (GObject.transform appends).
+        for (Prop pr : p.all) {
+            switch (pr.key.name()) {
+                case "material" -> o.material((Material) pr.value);
+                case "name" -> o.name((String) pr.value);
+                case "translate", "rotate", "scale" -> {
+                    try {
+                        o.transform((Transform) pr.value);
+                    } catch (IllegalArgumentException e) {
+                        throw wrap(pr.at, "invalid '" + pr.key.name() + "': ", e);
+                    }
+                }
+                default -> { } // the shape's own keys, used by its constructor above
+            }
+        }
+        builder.add(o);
+    }
+
+    private GObject mesh(Props p) {
+        Prop f = p.prop("file");
+        String rel = (String) f.value;
+        Path path;
+        try {
+            path = baseDir.resolve(rel).normalize();
+        } catch (InvalidPathException e) {
+            throw error(f.valueAt, "mesh file name '" + rel + "' is not a valid path: " + e.getReason());
+        }
+        // Checked here rather than left to the reader so the message points into the scene file.
+        if (!Files.isRegularFile(path)) throw error(f.valueAt, "mesh file '" + rel + "' not found (looked in " + path + ")");
+        MeshData data;
+        try {
+            data = ObjReader.read(path);
+        } catch (IOException e) {
+            throw error(f.valueAt, "cannot read mesh file '" + rel + "': " + e.getMessage());
+        }
+        TriangleMesh m;
+        try {
+            m = new TriangleMesh(data);
+        } catch (IllegalArgumentException e) {
+            throw wrap(f.valueAt, e);
+        }
+        Object shading = p.get("shading");
+        m.smooth(shading != null ? "smooth".equals(shading) : data.normals() != null);
+        return m;
+    }
+
+    // ---- blocks and values ----
+
+    /** One key as written: the key token, the first token of its value, and the value. */
+    private record Prop(Key key, Token at, Token valueAt, Object value) {}
+
+    /** The keys given in one block, in order, with the block's defaults behind them. */
+    private static final class Props {
+        final Block block;
+        final Token opener;
+        final List<Prop> all = new ArrayList<>();
+        final Map<String, Prop> first = new HashMap<>();
+
+        Props(Block block, Token opener) {
+            this.block = block;
+            this.opener = opener;
+        }
+
+        Prop prop(String name) { return first.get(name); }
+
+        /** The value given, else the grammar's default (null when the default is the builder's own). */
+        Object get(String name) {
+            Prop p = first.get(name);
+            if (p != null) return p.value;
+            Key k = block.key(name);
+            if (k == null) throw new IllegalStateException(block.keyword() + " has no key '" + name + "'");
+            return k.defaultValue();
+        }
+
+        Vec3 vec(String name) { return (Vec3) get(name); }
+        double num(String name) { return (Double) get(name); }
+    }
+
+    /**
+     * Reads "{ key value ... }" after {@code kw} (the statement keyword, or the 'material' key of
+     * an inline material) and checks that every required key is present.
+     *
+     * @param name the material's name for a named material, else null
+     */
+    private Props block(Block b, Token kw, String name) {
+        String label = name == null ? b.keyword() : b.keyword() + " '" + name + "'";
+        Token open = lex.next();
+        if (open.kind() != Kind.OPEN) {
+            throw error(open, "expected '{' after '" + b.keyword() + (name == null ? "" : " " + name) + "', found " + open.describe());
+        }
+        Props p = new Props(b, kw);
+        while (true) {
+            Token t = lex.next();
+            if (t.kind() == Kind.CLOSE) break;
+            if (t.kind() == Kind.EOF) {
+                throw error(t, "unexpected end of file: missing '}' to close '" + b.keyword() + "' opened at " + kw.position());
+            }
+            if (t.kind() != Kind.WORD) throw error(t, "expected a property of " + label + " or '}', found " + t.describe());
+            Key k = b.key(t.text());
+            if (k == null) throw unknownKey(t, b, label, kw);
+            Prop earlier = p.first.get(k.name());
+            if (earlier != null && !k.repeatable()) {
+                throw error(t, "'" + k.name() + "' given twice in " + label + " (first at " + earlier.at.position() + ")");
+            }
+            Token valueAt = lex.peek();
+            Prop pr = new Prop(k, t, valueAt, value(k, t));
+            p.all.add(pr);
+            p.first.putIfAbsent(k.name(), pr);
+        }
+        List<String> missing = new ArrayList<>();
+        for (Key k : b.keys()) if (k.required() && !p.first.containsKey(k.name())) missing.add("'" + k.name() + "'");
+        if (!missing.isEmpty()) throw error(kw, label + " needs " + andList(missing));
+        return p;
+    }
+
+    private SceneException unknownKey(Token t, Block b, String label, Token opener) {
+        String hint = SceneGrammar.didYouMean(t.text(), b.keyNames());
+        if (hint.isEmpty() && SceneGrammar.statement(t.text()) != null) {
+            hint = " (is a '}' missing to close '" + b.keyword() + "' opened at " + opener.position() + "?)";
+        }
+        return error(t, "unknown property '" + t.text() + "' in " + label + hint);
+    }
+
+    private Object value(Key k, Token keyToken) {
+        String n = k.name();
+        return switch (k.kind()) {
+            case NUMBER -> number("expected a number for '" + n + "'");
+            case INTEGER -> integer(n, false);
+            case LONG -> integer(n, true);
+            case VECTOR -> vector("expected 3 numbers for '" + n + "'");
+            case COLOR -> color(n);
+            case VERTICES -> {
+                String m = "expected 9 numbers (3 points) for '" + n + "'";
+                yield new Vec3[] {vector(m), vector(m), vector(m)};
+            }
+            case BOOLEAN -> "true".equals(choice(n, List.of("true", "false")));
+            case CHOICE -> choice(n, k.choices());
+            case STRING -> string(n);
+            case MATERIAL -> materialValue(keyToken);
+            case TRANSLATE -> {
+                Vec3 v = vector("expected 3 numbers for 'translate'");
+                yield transform(keyToken, () -> Transform.translate(v));
+            }
+            case ROTATE -> rotate(keyToken);
+            case SCALE -> {
+                double x = number("expected 1 or 3 numbers for 'scale'");
+                boolean three = numberAhead();
+                double y = three ? number("expected 1 or 3 numbers for 'scale'") : x;
+                double z = three ? number("expected 1 or 3 numbers for 'scale'") : x;
+                yield transform(keyToken, () -> Transform.scale(x, y, z));
+            }
+        };
+    }
+
+    /** A number, or an error "{expected}, found ...". */
+    private double number(String expected) {
+        Token t = lex.next();
+        if (t.kind() == Kind.NUMBER) return t.number();
+        if (t.kind() == Kind.WORD && SceneLexer.isNonFiniteSpelling(t.text())) {
+            throw error(t, expected + ", found " + t.describe() + " (NaN and Infinity are not allowed)");
+        }
+        throw error(t, expected + ", found " + t.describe());
+    }
+
+    /** True if the next token is meant as a number (including the refused NaN/Infinity words, so they are reported as such). */
+    private boolean numberAhead() {
+        Token t = lex.peek();
+        return t.kind() == Kind.NUMBER || (t.kind() == Kind.WORD && SceneLexer.isNonFiniteSpelling(t.text()));
+    }
+
+    private Object integer(String key, boolean isLong) {
+        String expected = "expected an integer for '" + key + "'";
+        Token t = lex.peek();
+        if (t.kind() == Kind.NUMBER && !SceneLexer.isIntegerLiteral(t.text())) {
+            lex.next();
+            throw error(t, expected + ", found " + t.describe());
+        }
+        number(expected);
+        long v;
+        try {
+            v = Long.parseLong(t.text().startsWith("+") ? t.text().substring(1) : t.text());
+        } catch (NumberFormatException e) {
+            throw error(t, "integer " + t.text() + " is out of range for '" + key + "'");
+        }
+        if (isLong) return v;
+        if (v < Integer.MIN_VALUE || v > Integer.MAX_VALUE) throw error(t, "integer " + t.text() + " is out of range for '" + key + "'");
+        return (int) v;
+    }
+
+    private Vec3 vector(String expected) {
+        return new Vec3(number(expected), number(expected), number(expected));
+    }
+
+    private Color color(String key) {
+        double r = number("expected a number for '" + key + "'");
+        if (!numberAhead()) return Color.grey(r);
+        String expected = "expected 1 or 3 numbers for '" + key + "'";
+        return new Color(r, number(expected), number(expected));
+    }
+
+    private String choice(String key, List<String> choices) {
+        Token t = lex.next();
+        if (t.kind() == Kind.WORD && choices.contains(t.text())) return t.text();
+        String hint = t.kind() == Kind.WORD ? SceneGrammar.didYouMean(t.text(), choices) : "";
+        throw error(t, "expected " + orList(choices) + " for '" + key + "', found " + t.describe() + hint);
+    }
+
+    private String string(String key) {
+        Token t = lex.next();
+        if (t.kind() == Kind.STRING) return t.text();
+        throw error(t, "expected a string in double quotes for '" + key + "', found " + t.describe());
+    }
+
+    /** After an object's 'material' key: a name defined earlier, or an inline block. */
+    private Material materialValue(Token keyToken) {
+        Token t = lex.peek();
+        if (t.kind() == Kind.OPEN) return material(block(SceneGrammar.MATERIAL, keyToken, null), null);
+        lex.next();
+        if (t.kind() != Kind.WORD) throw error(t, "expected a material name or '{' after 'material', found " + t.describe());
+        if (builder.hasMaterial(t.text())) return builder.material(t.text());
+        String hint = SceneGrammar.didYouMean(t.text(), materialsAt.keySet());
+        if (hint.isEmpty()) hint = " (a material must be defined before the objects that use it)";
+        throw error(t, "unknown material '" + t.text() + "'" + hint);
+    }
+
+    private Transform rotate(Token keyToken) {
+        Token t = lex.peek();
+        Vec3 axis;
+        if (t.isWord("x") || t.isWord("y") || t.isWord("z")) {
+            lex.next();
+            axis = t.isWord("x") ? Vec3.X : t.isWord("y") ? Vec3.Y : Vec3.Z;
+        } else if (numberAhead()) {
+            axis = vector("expected an axis (x, y, z or 3 numbers) and an angle for 'rotate'");
+        } else {
+            lex.next();
+            throw error(t, "expected x, y, z or an axis (3 numbers) for 'rotate', found " + t.describe());
+        }
+        double degrees = number("expected an angle in degrees for 'rotate'");
+        return transform(keyToken, () -> Transform.rotate(axis, degrees));
+    }
+
+    private Transform transform(Token keyToken, java.util.function.Supplier<Transform> make) {
+        try {
+            return make.get();
+        } catch (IllegalArgumentException e) {
+            throw wrap(keyToken, "invalid '" + keyToken.text() + "': ", e);
+        }
+    }
+
+    // ---- errors ----
+
+    private SceneException error(Token at, String message) {
+        return new SceneException(file, at.line(), at.column(), message);
+    }
+
+    private SceneException wrap(Token at, IllegalArgumentException e) {
+        return wrap(at, "", e);
+    }
+
+    private SceneException wrap(Token at, String prefix, IllegalArgumentException e) {
+        return new SceneException(file, at.line(), at.column(), prefix + e.getMessage(), e);
+    }
+
+    /**
+     * Places a constructor's complaint at the key it names (the first key of the block, in
+     * grammar order, that was given and that the message mentions as a word), else at the
+     * statement: "sphere radius must be ..." is reported at 'radius'.
+     */
+    private SceneException blame(Props p, IllegalArgumentException e) {
+        String message = e.getMessage() == null ? "" : e.getMessage();
+        for (Key k : p.block.keys()) {
+            Prop pr = p.first.get(k.name());
+            if (pr != null && Pattern.compile("(?<![A-Za-z0-9_])" + Pattern.quote(k.name()) + "(?![A-Za-z0-9_])").matcher(message).find()) {
+                return wrap(pr.at, e);
+            }
+        }
+        return wrap(p.opener, e);
+    }
+
+    private static IllegalStateException unhandled(Prop pr) {
+        return new IllegalStateException("grammar key '" + pr.key.name() + "' has no builder call");
+    }
+
+    private static String orList(List<String> words) { return list(words, "or"); }
+
+    private static String andList(List<String> words) { return list(words, "and"); }
+
+    private static String list(List<String> words, String conjunction) {
+        if (words.size() == 1) return words.get(0);
+        return String.join(", ", words.subList(0, words.size() - 1)) + " " + conjunction + " " + words.get(words.size() - 1);
+    }
+
+    /** Decodes strictly, so that a file in another encoding is reported rather than read as garbage. */
+    private static String decodeUtf8(byte[] bytes, String name) {
+        CharsetDecoder d = StandardCharsets.UTF_8.newDecoder()
+                .onMalformedInput(CodingErrorAction.REPORT)
+                .onUnmappableCharacter(CodingErrorAction.REPORT);
+        ByteBuffer in = ByteBuffer.wrap(bytes);
+        CharBuffer out = CharBuffer.allocate(bytes.length + 1);
+        CoderResult r = d.decode(in, out, true);
+        if (!r.isError()) r = d.flush(out);
+        out.flip();
+        if (r.isError()) {
+            int[] at = SceneLexer.endPosition(out.toString());
+            throw new SceneException(name, at[0], at[1],
+                    String.format("the file is not UTF-8 text: byte 0x%02X cannot be decoded", bytes[in.position()] & 0xff));
+        }
+        return out.toString();
+    }
+}

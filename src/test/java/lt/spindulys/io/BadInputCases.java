@@ -1,0 +1,120 @@
+package lt.spindulys.io;
+
+import java.nio.file.Path;
+import java.util.List;
+
+/**
+ * Malformed scenes and the exact error each must produce, shared by the parser's table test and
+ * by tests of the command line (which also check that no image is written). To add a case, append
+ * one line to {@link #scenes()}.
+ */
+public final class BadInputCases {
+    private BadInputCases() {}
+
+    /**
+     * One malformed scene.
+     *
+     * @param name     short description, shown as the test's name
+     * @param scene    the scene text
+     * @param expected "line:column: message" as reported after the file name; {@code ${dir}}
+     *                 stands for the absolute folder relative paths are resolved against
+     */
+    public record Case(String name, String scene, String expected) {
+        /** The full message expected for a scene read as {@code fileName} with paths relative to {@code baseDir}. */
+        public String expectedMessage(String fileName, Path baseDir) {
+            return fileName + ":" + expected.replace("${dir}", baseDir.toAbsolutePath().normalize().toString());
+        }
+
+        @Override public String toString() { return name; }
+    }
+
+    private static Case c(String name, String scene, String expected) { return new Case(name, scene, expected); }
+
+    /** Every case; none of them must produce an image. */
+    public static List<Case> scenes() {
+        String cam = "camera { eye 0 0 -5  lookat 0 0 0 }\n";
+        return List.of(
+                // ---- lexical ----
+                c("bad number", "sphere { radius 1.2.3 }", "1:17: malformed number '1.2.3'"),
+                c("number glued to letters", "sphere { radius 2x }", "1:17: malformed number '2x'"),
+                c("NaN word", "sphere { radius NaN }", "1:17: expected a number for 'radius', found 'NaN' (NaN and Infinity are not allowed)"),
+                c("signed infinity", "sphere { center 0 -Infinity 0 }", "1:19: NaN and Infinity are not allowed, found '-Infinity'"),
+                c("number overflows", "sphere { radius 1e999 }", "1:17: number '1e999' is out of range"),
+                c("unterminated string", "sphere {\n  name \"ball\n}", "2:8: unterminated string (a string must end with \" on the same line)"),
+                c("unknown escape", "sphere { name \"a\\tb\" }", "1:17: unknown escape '\\t' in string (only \\\" and \\\\ are allowed)"),
+                c("equals sign", "sphere { radius=1 }", "1:16: unexpected character '=' after 'radius' (write a value after its key, separated by a space)"),
+                c("stray character", "sphere { radius 1 } @", "1:21: unexpected character '@'"),
+                // ---- structure ----
+                c("unknown statement", "shpere { radius 1 }", "1:1: unknown statement 'shpere' (did you mean 'sphere'?)"),
+                c("property outside a block", "sphere { } radius 2", "1:12: unknown statement 'radius' ('radius' is a property of sphere or cylinder: was a block closed too early?)"),
+                c("number as statement", "42", "1:1: expected a statement (settings, camera, light, material, sphere, plane, box, cylinder, triangle, mesh), found '42'"),
+                c("stray closing brace", cam + "}", "2:1: unexpected '}': no block is open"),
+                c("missing '{'", "sphere radius 1 }", "1:8: expected '{' after 'sphere', found 'radius'"),
+                c("missing '{' at end of file", "box", "1:4: expected '{' after 'box', found end of file"),
+                c("unclosed block", cam + "sphere {\n  radius 1\n", "4:1: unexpected end of file: missing '}' to close 'sphere' opened at 2:1"),
+                c("unclosed inline material", "sphere { material { kd 0.5 ", "1:28: unexpected end of file: missing '}' to close 'material' opened at 1:10"),
+                c("missing '}' before next object", "sphere { radius 1\nsphere { radius 2 }", "2:1: unknown property 'sphere' in sphere (is a '}' missing to close 'sphere' opened at 1:1?)"),
+                c("number where a key belongs", "sphere { 1 }", "1:10: expected a property of sphere or '}', found '1'"),
+                // ---- keys ----
+                c("unknown key with suggestion", "sphere {\n  radus 1\n}", "2:3: unknown property 'radus' in sphere (did you mean 'radius'?)"),
+                c("unknown key, common key suggested", "box { min 0 0 0 max 1 1 1 translat 1 0 0 }", "1:27: unknown property 'translat' in box (did you mean 'translate'?)"),
+                c("unknown key without suggestion", "light { position 0 1 0 shadow true }", "1:24: unknown property 'shadow' in light"),
+                c("unknown key in named material", "material red { colr 1 0 0 }", "1:16: unknown property 'colr' in material 'red' (did you mean 'color'?)"),
+                c("duplicate key", "sphere {\n  radius 1\n  radius 2\n}", "3:3: 'radius' given twice in sphere (first at 2:3)"),
+                c("duplicate material key", "sphere { material { kd 1 } material { kd 2 } }", "1:28: 'material' given twice in sphere (first at 1:10)"),
+                c("box missing 'min'", "box { max 1 1 1 }", "1:1: box needs 'min'"),
+                c("camera missing eye and lookat", "camera { fov 30 }", "1:1: camera needs 'eye' and 'lookat'"),
+                c("light missing position", "light { intensity 2 }", "1:1: light needs 'position'"),
+                c("triangle missing vertices", "triangle { }", "1:1: triangle needs 'vertices'"),
+                c("mesh missing file", "mesh { shading flat }", "1:1: mesh needs 'file'"),
+                // ---- values ----
+                c("missing number", "sphere { radius }", "1:17: expected a number for 'radius', found '}'"),
+                c("word instead of number", "sphere { radius abc }", "1:17: expected a number for 'radius', found 'abc'"),
+                c("vector too short", "sphere { center 1 2 }", "1:21: expected 3 numbers for 'center', found '}'"),
+                c("colour with two numbers", "material m { color 1 0 }", "1:24: expected 1 or 3 numbers for 'color', found '}'"),
+                c("triangle with 8 numbers", "triangle { vertices 0 0 0  1 0 0  0 1 }", "1:39: expected 9 numbers (3 points) for 'vertices', found '}'"),
+                c("integer expected", "settings { width 1.5 }", "1:18: expected an integer for 'width', found '1.5'"),
+                c("integer with exponent", "settings { samples 1e2 }", "1:20: expected an integer for 'samples', found '1e2'"),
+                c("integer out of range", "settings { height 99999999999 }", "1:19: integer 99999999999 is out of range for 'height'"),
+                c("seed out of range", "settings { seed 99999999999999999999 }", "1:17: integer 99999999999999999999 is out of range for 'seed'"),
+                c("bad encoding", "settings { encoding gamma }", "1:21: expected linear or srgb for 'encoding', found 'gamma'"),
+                c("bad falloff", "light { position 0 5 0  falloff inverse_square }", "1:33: expected none or inverse-square for 'falloff', found 'inverse_square' (did you mean 'inverse-square'?)"),
+                c("bad boolean", "material m { fresnel yes }", "1:22: expected true or false for 'fresnel', found 'yes'"),
+                c("bad shading", "mesh { file \"a.obj\" shading smoth }", "1:29: expected smooth or flat for 'shading', found 'smoth' (did you mean 'smooth'?)"),
+                c("name without quotes", "sphere { name ball }", "1:15: expected a string in double quotes for 'name', found 'ball'"),
+                c("bad rotate axis", "sphere { rotate w 30 }", "1:17: expected x, y, z or an axis (3 numbers) for 'rotate', found 'w'"),
+                c("rotate missing angle", "sphere { rotate y }", "1:19: expected an angle in degrees for 'rotate', found '}'"),
+                c("material name missing", "material { kd 1 }", "1:10: expected a material name after 'material', found '{'"),
+                c("material name quoted", "material \"red\" { kd 1 }", "1:10: expected a material name after 'material', found string \"red\" (material names are bare words, without quotes)"),
+                c("named material missing '{'", "material red kd 1", "1:14: expected '{' after 'material red', found 'kd'"),
+                c("material reference is a number", "sphere { material 3 }", "1:19: expected a material name or '{' after 'material', found '3'"),
+                // ---- builder validation, reported at the key ----
+                c("width 0", "settings {\n  width 0\n}", "2:3: width must be between 1 and 32768, found 0"),
+                c("samples 0", "settings { samples 0 }", "1:12: samples per pixel must be between 1 and 65536, found 0"),
+                c("maxdepth too deep", "settings { maxdepth 65 }", "1:12: maxdepth must be between 0 and 64, found 65"),
+                c("mincontribution 1", "settings { mincontribution 1 }", "1:12: mincontribution must be in [0, 1), found 1.0"),
+                c("negative background", "settings { background -1 }", "1:12: background must have non-negative finite components, found (-1.0, -1.0, -1.0)"),
+                c("negative radius", "sphere { center 0 1 0  radius -1 }", "1:24: sphere radius must be a positive number, found -1.0"),
+                c("zero scale", "sphere { translate 1 0 0  scale 0 }", "1:27: invalid 'scale': transform is singular (a scale of zero?)"),
+                c("zero scale on one axis", "box { min 0 0 0  max 1 1 1  scale 1 0 1 }", "1:29: invalid 'scale': transform is singular (a scale of zero?)"),
+                c("zero rotation axis", "sphere { rotate 0 0 0 30 }", "1:10: invalid 'rotate': cannot normalise vector (0.0, 0.0, 0.0)"),
+                c("zero-length up vector", "camera { eye 0 0 -5  lookat 0 0 0  up 0 0 0 }", "1:36: camera up vector has zero length"),
+                c("camera eye equals lookat", "camera {\n  eye 1 2 3\n  lookat 1 2 3\n}", "2:3: camera eye and lookat are the same point (1.0, 2.0, 3.0)"),
+                c("camera fov 180", "camera { eye 0 0 -5  lookat 0 0 0  fov 180 }", "1:36: fov must be between 0 and 180 degrees, found 180.0"),
+                c("negative light intensity", "light { position 0 5 0  intensity -2 }", "1:25: light intensity must be a non-negative number, found -2.0"),
+                c("negative material coefficient", "material m { kd -0.5 }", "1:14: kd must be a non-negative number, found -0.5"),
+                c("ior 0", "material m { ior 0 }", "1:14: ior must be a positive number, found 0.0"),
+                c("negative inline filter", "sphere { material { filter 1 -1 1 } }", "1:21: filter must have non-negative finite components, found (1.0, -1.0, 1.0)"),
+                c("box of zero thickness", "box { min 0 0 0  max 1 0 1 }", "1:1: box has zero thickness: corners (0.0, 0.0, 0.0) and (1.0, 0.0, 1.0)"),
+                c("cylinder base equals top", "cylinder { base 0 1 0  top 0 1 0  radius 1 }", "1:12: cylinder base and top are the same point (0.0, 1.0, 0.0)"),
+                c("plane with zero normal", "plane { normal 0 0 0 }", "1:9: plane normal must be a non-zero finite vector, found (0.0, 0.0, 0.0)"),
+                c("triangle degenerate", "triangle { vertices 0 0 0  1 0 0  2 0 0 }", "1:1: triangle (0.0, 0.0, 0.0) (1.0, 0.0, 0.0) (2.0, 0.0, 0.0) is degenerate (zero area)"),
+                // ---- scene-level rules ----
+                c("duplicate camera", cam + "camera { eye 1 1 1  lookat 0 0 0 }", "2:1: camera is already defined at 1:1"),
+                c("duplicate settings", "settings { width 10 }\nsettings { height 10 }", "2:1: settings is already defined at 1:1"),
+                c("undefined material with suggestion", "material glass { kt 0.9 }\nsphere { material glas }", "2:19: unknown material 'glas' (did you mean 'glass'?)"),
+                c("material used before its definition", "sphere { material glass }\nmaterial glass { kt 0.9 }", "1:19: unknown material 'glass' (a material must be defined before the objects that use it)"),
+                c("material redefined", "material glass { kt 0.9 }\nmaterial glass { kt 0.8 }", "2:10: material 'glass' is already defined at 1:1"),
+                c("missing mesh file", "mesh { file \"models/x.obj\" }", "1:13: mesh file 'models/x.obj' not found (looked in ${dir}/models/x.obj)"));
+    }
+}
