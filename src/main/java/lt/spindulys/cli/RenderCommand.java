@@ -76,11 +76,12 @@ final class RenderCommand {
     }
 
     /** Runs the command; returns the exit status. Bad input surfaces as exceptions handled by {@link Main}. */
-    int run(PrintStream out, PrintStream err) throws IOException, InterruptedException {
+    int run(PrintStream out, PrintStream err) throws IOException, InterruptedException, UsageException {
         if (!Files.isRegularFile(scene)) throw new NoSuchFileException(scene);
-        Path dir = output.toAbsolutePath().getParent();
-        if (dir != null && !Files.isDirectory(dir)) {
-            throw new IOException("output folder " + dir + " does not exist");
+        try {
+            ImageWriter.checkOutput(output); // fail before rendering, not after
+        } catch (IOException e) {
+            throw new UsageException(e.getMessage());
         }
         long t0 = System.nanoTime();
         SceneBuilder builder = SceneParser.parse(scene);

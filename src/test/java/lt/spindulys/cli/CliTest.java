@@ -1,0 +1,117 @@
+package lt.spindulys.cli;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import lt.spindulys.image.FrameBuffer;
+import lt.spindulys.image.Images;
+
+class CliTest {
+    @TempDir Path dir;
+
+    /** Exit status, stdout and stderr of one in-process run. */
+    record Run(int status, String out, String err) {}
+
+    static Run run(String... args) {
+        ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
+        int status = Main.run(args, new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8));
+        return new Run(status, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
+    }
+
+    private Path scene(String text) throws IOException {
+        Path p = dir.resolve("scene.dat");
+        Files.writeString(p, text);
+        return p;
+    }
+
+    private static final String SMALL = """
+            settings { width 24 height 16 }
+            camera { eye 0 1 -4 lookat 0 0.5 0 }
+            light { position 3 5 -4 }
+            plane { normal 0 1 0 }
+            sphere { center 0 0.5 0 radius 0.5 material { color 1 0 0 } }
+            """;
+
+    @Test
+    void rendersEveryFormatWithOverrides() throws IOException {
+        Path scene = scene(SMALL);
+        for (String ext : new String[] {"png", "tga", "jpg", "pfm"}) {
+            Path out = dir.resolve("out." + ext);
+            Run r = run(scene.toString(), "-o", out.toString(), "--width", "20", "--height", "10", "--spp", "2", "--quiet");
+            assertEquals(0, r.status(), r.err());
+            FrameBuffer img = Images.read(out);
+            assertEquals(20, img.width());
+            assertEquals(10, img.height());
+        }
+    }
+
+    @Test
+    void statsPrintRaysAndThroughput() throws IOException {
+        Run r = run(scene(SMALL).toString(), "-o", dir.resolve("a.png").toString(), "--stats", "--threads", "1");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().contains("rays:    384 camera"), r.out());
+        assertTrue(r.out().matches("(?s).*speed: +\\d+\\.\\d Mrays/s.*"), r.out());
+    }
+
+    @Test
+    void helpAndVersion() {
+        Run help = run("--help");
+        assertEquals(0, help.status());
+        assertTrue(help.out().contains("usage: render SCENE.dat"));
+        Run version = run("--version");
+        assertEquals(0, version.status());
+        assertTrue(version.out().startsWith("spindulys "));
+        Run none = run();
+        assertEquals(2, none.status());
+    }
+
+    @Test
+    void badUsageIsOneLineAndExitsTwo() throws IOException {
+        Path scene = scene(SMALL);
+        String[][] cases = {
+                {"render: unknown option '--widht' (see render --help)", scene.toString(), "--widht", "3"},
+                {"render: --width expects a whole number, found 'ten'", scene.toString(), "--width", "ten"},
+                {"render: --spp must be between 1 and 65536, found 0", scene.toString(), "--spp", "0"},
+                {"render: option -o needs a value", scene.toString(), "-o"},
+                {"render: unsupported output format '.bmp' (expected .tga, .png, .jpg, .jpeg or .pfm)", scene.toString(), "-o", dir.resolve("x.bmp").toString()},
+                {"render: no scene file given (see render --help)", "--quiet"},
+        };
+        for (String[] c : cases) {
+            String[] args = java.util.Arrays.copyOfRange(c, 1, c.length);
+            Run r = run(args);
+            assertEquals(2, r.status(), String.join(" ", args));
+            assertEquals(c[0] + System.lineSeparator(), r.err(), String.join(" ", args));
+        }
+        Run missing = run(dir.resolve("nope.dat").toString(), "-o", dir.resolve("n.png").toString());
+        assertEquals(2, missing.status());
+        assertEquals(dir.resolve("nope.dat") + ": scene file not found" + System.lineSeparator(), missing.err());
+        Run noDir = run(scene.toString(), "-o", dir.resolve("no/such/dir/x.png").toString());
+        assertEquals(2, noDir.status());
+        assertTrue(noDir.err().contains("does not exist"), noDir.err());
+        try (var files = Files.list(dir)) {
+            assertEquals(1, files.count(), "nothing but the scene was created");
+        }
+    }
+
+    @Test
+    void badSceneKeepsAnExistingImageAndPrintsNoStackTrace() throws IOException {
+        Path out = dir.resolve("keep.png");
+        Files.write(out, new byte[] {1, 2, 3});
+        Run r = run(scene("sphere { radius -1 }").toString(), "-o", out.toString());
+        assertEquals(2, r.status());
+        assertEquals(1, r.err().lines().count(), r.err());
+        assertTrue(r.err().startsWith(dir.resolve("scene.dat") + ":1:"), r.err());
+        assertArrayEquals(new byte[] {1, 2, 3}, Files.readAllBytes(out), "existing output untouched");
+        Run debug = run(scene("sphere { radius -1 }").toString(), "-o", out.toString(), "--debug");
+        assertTrue(debug.err().lines().count() > 1, "--debug adds the stack trace");
+    }
+}
