@@ -1,0 +1,71 @@
+package lt.spindulys.cli;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+
+import lt.spindulys.io.BadInputCases;
+
+/**
+ * Every malformed scene of {@link BadInputCases}, and malformed OBJ meshes, run through the
+ * command line: exit status 2, exactly one line on stderr with the location and message, and no
+ * image (nor temporary file) left behind.
+ */
+class CliBadInputTest {
+    @TempDir Path dir;
+
+    static List<BadInputCases.Case> scenes() { return BadInputCases.scenes(); }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("scenes")
+    void malformedSceneFailsCleanly(BadInputCases.Case c) throws IOException {
+        Path scene = dir.resolve("scene.dat");
+        Files.writeString(scene, c.scene());
+        assertFailsCleanly(scene, c.expectedMessage(scene.toString(), dir));
+    }
+
+    /** A malformed OBJ file and the message expected after its path. */
+    record ObjCase(String name, String obj, String expected) {
+        @Override public String toString() { return name; }
+    }
+
+    static Stream<ObjCase> objs() {
+        return Stream.of(
+                new ObjCase("letters for a coordinate", "v 0 0 0\nv 1 abc 0\n", "2:5: expected a number for vertex y, found 'abc'"),
+                new ObjCase("vertex with two coordinates", "v 0 0\n", "1:6: expected a number for vertex z, found end of line"),
+                new ObjCase("face index out of range", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", "4:7: f index 4 out of range (the file has 3 vertices so far)"),
+                new ObjCase("face index zero", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "4:3: index 0 is not valid (OBJ indices start at 1)"),
+                new ObjCase("face with two corners", "v 0 0 0\nv 1 0 0\nf 1 2\n", "3:1: face has 2 vertices, expected at least 3"),
+                new ObjCase("unknown statement", "v 0 0 0\nvx 1 2 3\n", "2:1: unknown OBJ statement 'vx'"),
+                new ObjCase("negative index too far back", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\n", "4:9: f index -4 out of range (the file has 3 vertices so far)"));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("objs")
+    void malformedObjFailsCleanly(ObjCase c) throws IOException {
+        Path obj = dir.resolve("m.obj");
+        Files.writeString(obj, c.obj());
+        Path scene = dir.resolve("scene.dat");
+        Files.writeString(scene, "camera { eye 0 0 -5 lookat 0 0 0 }\nmesh { file \"m.obj\" }\n");
+        assertFailsCleanly(scene, obj.toAbsolutePath().normalize() + ":" + c.expected());
+    }
+
+    private void assertFailsCleanly(Path scene, String expected) throws IOException {
+        Path out = dir.resolve("out.png");
+        CliTest.Run r = CliTest.run(scene.toString(), "-o", out.toString(), "--quiet");
+        assertEquals(2, r.status(), r.err());
+        assertEquals(expected + System.lineSeparator(), r.err());
+        assertFalse(Files.exists(out), "no image written");
+        try (Stream<Path> files = Files.list(dir)) {
+            assertTrue(files.noneMatch(p -> p.getFileName().toString().endsWith(".tmp")), "no temporary file left");
+        }
+    }
+}
