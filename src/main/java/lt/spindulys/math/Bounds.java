@@ -46,20 +46,28 @@ public record Bounds(double minX, double minY, double minZ, double maxX, double 
 
     /**
      * Slab test: the parametric range of the ray inside the box, clipped to (tMin, tMax), or
-     * false if the ray misses. Infinite box extents work because IEEE division gives +-inf.
+     * false if the ray misses (always for an empty box). Infinite box extents work because IEEE
+     * arithmetic gives +-inf; a ray parallel to a slab is inside it exactly when its origin is
+     * (boundary included), whatever the sign of the zero direction component.
      */
     public boolean hitRange(Ray r, double[] outRange) {
+        // An inverted slab would otherwise be reordered by the swap below and look non-empty.
+        if (isEmpty()) return false;
         double t0 = r.tMin, t1 = r.tMax;
         for (int a = 0; a < 3; a++) {
             double o = a == 0 ? r.ox : a == 1 ? r.oy : r.oz;
             double d = a == 0 ? r.dx : a == 1 ? r.dy : r.dz;
             double lo = a == 0 ? minX : a == 1 ? minY : minZ;
             double hi = a == 0 ? maxX : a == 1 ? maxY : maxZ;
+            if (d == 0) {
+                // Parallel to this slab: inside it for every t or for none. Decided explicitly
+                // because 1/d is -inf for d == -0.0, and (lo - o) * inv is NaN for o on a plane.
+                if (o < lo || o > hi) return false;
+                continue;
+            }
             double inv = 1 / d;
             double tn = (lo - o) * inv, tf = (hi - o) * inv;
             if (tn > tf) { double s = tn; tn = tf; tf = s; }
-            if (Double.isNaN(tn)) tn = Double.NEGATIVE_INFINITY; // o on a slab plane with d parallel to it
-            if (Double.isNaN(tf)) tf = Double.POSITIVE_INFINITY;
             if (tn > t0) t0 = tn;
             if (tf < t1) t1 = tf;
             if (t0 > t1) return false;
