@@ -86,14 +86,16 @@ public final class WhittedIntegrator {
         if (kd > 0 || ks > 0) {
             double ox = px + nfx * eps, oy = py + nfy * eps, oz = pz + nfz * eps;
             for (PointLight light : lights) {
-                double lx = light.position().x() - ox, ly = light.position().y() - oy, lz = light.position().z() - oz;
+                // Shading uses the true point; only the shadow ray starts off the surface.
+                double lx = light.position().x() - px, ly = light.position().y() - py, lz = light.position().z() - pz;
                 double dist2 = lx * lx + ly * ly + lz * lz, dist = Math.sqrt(dist2);
                 if (!(dist > 0)) continue;
                 double ux = lx / dist, uy = ly / dist, uz = lz / dist;
                 if (ux * nfx + uy * nfy + uz * nfz <= 0) continue; // light behind the surface
                 double ndotl = ux * snx + uy * sny + uz * snz;
                 if (ndotl <= 0) continue;
-                if (!shadowTransmission(ox, oy, oz, lx, ly, lz, dist, s)) continue;
+                double sx = light.position().x() - ox, sy = light.position().y() - oy, sz = light.position().z() - oz;
+                if (!shadowTransmission(ox, oy, oz, sx, sy, sz, dist, s)) continue;
                 double[] t = s.transmission;
                 double scale = light.intensity();
                 if (light.falloff() == PointLight.Falloff.INVERSE_SQUARE) scale /= dist2;
