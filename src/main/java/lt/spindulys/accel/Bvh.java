@@ -221,9 +221,12 @@ public final class Bvh implements Accelerator {
 
     /** Build state; discarded once the flat arrays are made. */
     private static final class Builder {
-        final PrimitiveSet set;
         final int leafSize;
-        /** Bounds of every primitive, six per primitive, by original index. */
+        /**
+         * Bounds of the primitive in each slot of {@link #perm}, six per slot, moved along with
+         * perm so that every pass over a node reads memory in order (2M primitives' bounds do not
+         * fit in any cache, and following perm into them would miss on nearly every access).
+         */
         final double[] pb;
         final int[] perm;
         double[] box;
@@ -237,10 +240,9 @@ public final class Bvh implements Accelerator {
         final double[] scale = new double[3];
 
         Builder(PrimitiveSet set, int leafSize) {
-            this.set = set;
             this.leafSize = leafSize;
             int n = set.size();
-            pb = new double[6 * n];
+            double[] bb = new double[6 * n];
             int[] p = new int[n];
             int m = 0;
             double[] tmp = new double[6];
@@ -252,17 +254,26 @@ public final class Bvh implements Accelerator {
                         throw new IllegalArgumentException("primitive " + i + " has non-finite bounds " + java.util.Arrays.toString(tmp));
                     }
                 }
-                System.arraycopy(tmp, 0, pb, 6 * i, 6);
+                System.arraycopy(tmp, 0, bb, 6 * m, 6);
                 p[m++] = i;
             }
             perm = m == n ? p : java.util.Arrays.copyOf(p, m);
+            pb = m == n ? bb : java.util.Arrays.copyOf(bb, 6 * m);
             int cap = Math.max(1, 2 * (m / Math.max(1, leafSize)) + 1);
             box = new double[6 * cap];
             node = new int[2 * cap];
         }
 
-        private double centroid(int prim, int axis) {
-            return 0.5 * (pb[6 * prim + axis] + pb[6 * prim + 3 + axis]);
+        /** Centroid coordinate of the primitive in slot k. */
+        private double centroid(int k, int axis) {
+            return 0.5 * (pb[6 * k + axis] + pb[6 * k + 3 + axis]);
+        }
+
+        private void swap(int i, int j) {
+            int t = perm[i]; perm[i] = perm[j]; perm[j] = t;
+            for (int a = 6 * i, b = 6 * j, end = a + 6; a < end; a++, b++) {
+                double d = pb[a]; pb[a] = pb[b]; pb[b] = d;
+            }
         }
 
         void build() {
@@ -305,7 +316,7 @@ public final class Bvh implements Accelerator {
             double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
             double cx0 = x0, cy0 = x0, cz0 = x0, cx1 = x1, cy1 = x1, cz1 = x1;
             for (int k = s; k < e; k++) {
-                int o = 6 * perm[k];
+                int o = 6 * k;
                 double a = pb[o], b = pb[o + 1], c = pb[o + 2], A = pb[o + 3], B = pb[o + 4], C = pb[o + 5];
                 if (a < x0) x0 = a;
                 if (b < y0) y0 = b;
@@ -373,16 +384,20 @@ public final class Bvh implements Accelerator {
                 scale[a] = ext > 0 ? BINS / ext : 0;
             }
             for (int k = s; k < e; k++) {
-                int p = perm[k], po = 6 * p;
+                int po = 6 * k;
+                double x0 = pb[po], y0 = pb[po + 1], z0 = pb[po + 2], x1 = pb[po + 3], y1 = pb[po + 4], z1 = pb[po + 5];
                 for (int a = 0; a < 3; a++) {
                     if (scale[a] == 0) continue;
-                    int bi = a * BINS + bin(0.5 * (pb[po + a] + pb[po + 3 + a]), cb[a], scale[a]);
+                    double c = a == 0 ? 0.5 * (x0 + x1) : a == 1 ? 0.5 * (y0 + y1) : 0.5 * (z0 + z1);
+                    int bi = a * BINS + bin(c, cb[a], scale[a]);
                     binCount[bi]++;
                     int o = 6 * bi;
-                    for (int j = 0; j < 3; j++) {
-                        if (pb[po + j] < binBox[o + j]) binBox[o + j] = pb[po + j];
-                        if (pb[po + 3 + j] > binBox[o + 3 + j]) binBox[o + 3 + j] = pb[po + 3 + j];
-                    }
+                    binBox[o] = Math.min(binBox[o], x0);
+                    binBox[o + 1] = Math.min(binBox[o + 1], y0);
+                    binBox[o + 2] = Math.min(binBox[o + 2], z0);
+                    binBox[o + 3] = Math.max(binBox[o + 3], x1);
+                    binBox[o + 4] = Math.max(binBox[o + 4], y1);
+                    binBox[o + 5] = Math.max(binBox[o + 5], z1);
                 }
             }
             int o6 = 6 * n;
@@ -423,10 +438,10 @@ public final class Bvh implements Accelerator {
             double min = cb[bestAxis], sc = scale[bestAxis];
             int i = s, j = e - 1;
             while (i <= j) {
-                if (bin(centroid(perm[i], bestAxis), min, sc) <= bestBin) {
+                if (bin(centroid(i, bestAxis), min, sc) <= bestBin) {
                     i++;
                 } else {
-                    int t = perm[i]; perm[i] = perm[j]; perm[j] = t;
+                    swap(i, j);
                     j--;
                 }
             }
@@ -439,14 +454,14 @@ public final class Bvh implements Accelerator {
             while (hi - lo > 16) {
                 int m = (lo + hi) >>> 1;
                 // Median of three as the pivot keeps sorted inputs from degrading to quadratic time.
-                double a = centroid(perm[lo], axis), b = centroid(perm[m], axis), c = centroid(perm[hi], axis);
+                double a = centroid(lo, axis), b = centroid(m, axis), c = centroid(hi, axis);
                 double pivot = Math.max(Math.min(a, b), Math.min(Math.max(a, b), c));
                 int i = lo, j = hi;
                 while (i <= j) {
-                    while (centroid(perm[i], axis) < pivot) i++;
-                    while (centroid(perm[j], axis) > pivot) j--;
+                    while (centroid(i, axis) < pivot) i++;
+                    while (centroid(j, axis) > pivot) j--;
                     if (i <= j) {
-                        int t = perm[i]; perm[i] = perm[j]; perm[j] = t;
+                        swap(i, j);
                         i++;
                         j--;
                     }
@@ -456,14 +471,7 @@ public final class Bvh implements Accelerator {
                 else return;
             }
             for (int i = lo + 1; i <= hi; i++) {
-                int p = perm[i];
-                double c = centroid(p, axis);
-                int j = i - 1;
-                while (j >= lo && centroid(perm[j], axis) > c) {
-                    perm[j + 1] = perm[j];
-                    j--;
-                }
-                perm[j + 1] = p;
+                for (int j = i; j > lo && centroid(j - 1, axis) > centroid(j, axis); j--) swap(j - 1, j);
             }
         }
     }

@@ -403,6 +403,37 @@ class TriangleMeshTest {
     }
 
     @Test
+    void steadyStateQueriesAllocateNothing() {
+        TriangleMesh m = new TriangleMesh(TestMeshes.icosphere(3, 1));
+        m.transform(Transform.translate(0.1, 0.2, 0.3));
+        frozen(m);
+        TraceContext ctx = new TraceContext();
+        Ray r = new Ray();
+        Hit h = new Hit();
+        SpanBuffer out = new SpanBuffer();
+        Random rnd = new Random(5);
+        double[] dirs = new double[3 * 1024];
+        for (int i = 0; i < dirs.length; i++) dirs[i] = rnd.nextGaussian();
+        Runnable work = () -> {
+            for (int i = 0; i < 20_000; i++) {
+                int k = 3 * (i & 1023);
+                r.set(0, 0, 0, dirs[k], dirs[k + 1], dirs[k + 2], 0, Double.POSITIVE_INFINITY);
+                m.intersect(r, h.reset(r.tMax), ctx);
+                m.occluded(r, ctx);
+                out.clear();
+                m.spans(r, out, ctx);
+            }
+        };
+        work.run(); // warm up: scratch arrays grow once, the JIT compiles
+        work.run();
+        var bean = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+        long before = bean.getCurrentThreadAllocatedBytes();
+        work.run();
+        long allocated = bean.getCurrentThreadAllocatedBytes() - before;
+        assertTrue(allocated < 4096, "60,000 queries allocated " + allocated + " bytes");
+    }
+
+    @Test
     void spansRequireAClosedMesh() {
         TriangleMesh quad = frozen(obj(QUAD));
         assertThrows(UnsupportedOperationException.class, () -> spans(quad, 0, 0, 1, 0, 0, -1, 0, 1));
