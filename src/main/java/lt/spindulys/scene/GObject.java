@@ -113,7 +113,7 @@ public abstract class GObject {
         Ray local = toLocal(ray, ctx);
         if (!intersectLocal(local, hit, ctx)) return false;
         hit.object = this;
-        if (hit.material == null) hit.material = material;
+        hit.material = material; // a leaf's own; an enclosing object with a material overrides it after
         return true;
     }
 

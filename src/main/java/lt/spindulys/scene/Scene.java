@@ -5,6 +5,7 @@ import java.util.List;
 
 import lt.spindulys.accel.Accelerator;
 import lt.spindulys.accel.BruteForce;
+import lt.spindulys.accel.Bvh;
 import lt.spindulys.accel.PrimitiveSet;
 import lt.spindulys.camera.Camera;
 import lt.spindulys.math.Ray;
@@ -46,7 +47,9 @@ public final class Scene {
         }
         bounded = b.toArray(new GObject[0]);
         unbounded = u.toArray(new GObject[0]);
-        accel = new BruteForce(new ObjectSet(bounded));
+        // A handful of objects fit in one BVH leaf anyway; testing them directly is as fast.
+        ObjectSet set = new ObjectSet(bounded);
+        accel = bounded.length > Bvh.DEFAULT_LEAF_SIZE ? new Bvh(set) : new BruteForce(set);
     }
 
     public RenderSettings settings() { return settings; }

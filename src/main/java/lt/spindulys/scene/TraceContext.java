@@ -14,6 +14,25 @@ public final class TraceContext {
     /** Range output of bounds tests. */
     public final double[] range = new double[2];
 
+    /**
+     * Entries of {@link #stack(int)} below this index belong to traversals further up the call
+     * chain (a scene BVH whose primitive is a mesh with its own BVH): a traversal uses the entries
+     * from here on and raises it while it calls its primitives.
+     */
+    public int stackTop;
+
+    /**
+     * Per-ray constants of the watertight triangle test (TriangleMesh), valid while the ray
+     * direction equals (shearDx, shearDy, shearDz): the axis permutation and the shear.
+     */
+    public double shearDx = Double.NaN, shearDy = Double.NaN, shearDz = Double.NaN;
+    public double shearSx, shearSy, shearSz;
+    public int shearKx, shearKy, shearKz;
+
+    /** Grow-once scratch for the crossings of a line with a mesh (TriangleMesh spans), and how many are in it. */
+    public double[] crossings = new double[64];
+    public int crossingCount;
+
     private int[] stack = new int[64];
     private SpanBuffer[] spanPool = new SpanBuffer[8];
     private int spanDepth;

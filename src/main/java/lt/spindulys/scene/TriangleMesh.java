@@ -1,31 +1,551 @@
 package lt.spindulys.scene;
 
+import java.util.Arrays;
+
+import lt.spindulys.accel.Bvh;
+import lt.spindulys.accel.PrimitiveSet;
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
-import lt.spindulys.math.Vec3;
 
 /**
- * A triangle mesh held in flat arrays (no object per triangle) with its own acceleration
- * structure. Polygons are triangulated as fans. Closed when every edge has exactly two faces.
+ * A triangle mesh held in flat arrays (no object per triangle) with its own {@link Bvh}.
+ * Polygons are triangulated as fans; triangles of zero area are dropped (and counted). Closed
+ * when every undirected edge, with coinciding vertex positions treated as one vertex, belongs to
+ * exactly two triangles.
+ *
+ * <p>Ray/triangle tests are watertight (Woop, Benthin and Wald, "Watertight Ray/Triangle
+ * Intersection", JCGT 2013): a ray through an edge or vertex shared by several triangles hits at
+ * least one of them, so closed meshes have no cracks. A hit records the triangle index as
+ * {@code prim} and the barycentric weights of its second and third corner as {@code u}, {@code v}.
+ * Counter-clockwise winding seen from outside gives the outward normal.
+ *
+ * <p>The mesh is also the {@link PrimitiveSet} of its triangles (in object space), which is what
+ * its BVH indexes.
  */
-public final class TriangleMesh extends GObject {
+public final class TriangleMesh extends GObject implements PrimitiveSet {
     private final MeshData data;
+    private final double[] pos;
+    private final double[] normals;
+    private final double[] uvs;
+    /** Three position indices per triangle. */
+    private final int[] tri;
+    /** Three normal indices per triangle (-1 where a triangle has none), or null when none has any. */
+    private final int[] triNormal;
+    /** Three texture coordinate indices per triangle (-1 where a triangle has none), or null. */
+    private final int[] triUv;
+    private final int triangleCount, degenerateCount;
+    private final boolean needsVertexNormals;
+    private final boolean closed;
+    private final Bounds bounds;
+    private final Bvh bvh;
+    /** Made once so that collecting crossings allocates nothing per ray. */
+    private final Bvh.Visitor crossingCollector = this::collectCrossing;
 
-    /** Interpolate vertex normals (true) or shade each triangle with its face normal (false). */
     private boolean smooth;
+    /** Area-weighted normal per position, for smooth shading of triangles without file normals. */
+    private double[] vertexNormals;
 
-    public TriangleMesh(MeshData data) { this.data = data; }
+    /**
+     * Triangulates and indexes {@code data}. Shading is smooth when the data has normals, flat
+     * otherwise; see {@link #smooth(boolean)}.
+     *
+     * @throws IllegalArgumentException if the arrays are inconsistent, an index is out of range or a position is not finite
+     */
+    public TriangleMesh(MeshData data) {
+        this.data = data;
+        validate(data);
+        pos = data.positions();
+        normals = data.normals();
+        uvs = data.uvs();
+        int[] sizes = data.faceSizes(), vi = data.vertexIndex(), ni = data.normalIndex(), ti = data.uvIndex();
 
-    /** Chooses smooth (interpolated vertex normals) or flat shading; the scene file's 'shading' key. */
-    public TriangleMesh smooth(boolean s) {
+        long total = 0;
+        for (int s : sizes) total += s - 2;
+        if (3 * total > Integer.MAX_VALUE - 8) throw new IllegalArgumentException(where() + "too many triangles (" + total + ")");
+        int[] t = new int[(int) (3 * total)];
+        int[] tn = ni != null ? new int[t.length] : null;
+        int[] tu = ti != null ? new int[t.length] : null;
+        int k = 0, dropped = 0, corner = 0;
+        boolean anyNormal = false, anyWithout = false, anyUv = false;
+        double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+        for (int size : sizes) {
+            for (int j = 1; j + 1 < size; j++) {
+                int ca = corner, cb = corner + j, cc = corner + j + 1;
+                int a = vi[ca], b = vi[cb], c = vi[cc];
+                if (zeroArea(a, b, c)) {
+                    dropped++;
+                    continue;
+                }
+                int o = 3 * k;
+                t[o] = a; t[o + 1] = b; t[o + 2] = c;
+                boolean hasN = ni != null && ni[ca] >= 0 && ni[cb] >= 0 && ni[cc] >= 0;
+                if (tn != null) {
+                    tn[o] = hasN ? ni[ca] : -1; tn[o + 1] = hasN ? ni[cb] : -1; tn[o + 2] = hasN ? ni[cc] : -1;
+                }
+                anyNormal |= hasN;
+                anyWithout |= !hasN;
+                if (tu != null) {
+                    boolean hasUv = ti[ca] >= 0 && ti[cb] >= 0 && ti[cc] >= 0;
+                    tu[o] = hasUv ? ti[ca] : -1; tu[o + 1] = hasUv ? ti[cb] : -1; tu[o + 2] = hasUv ? ti[cc] : -1;
+                    anyUv |= hasUv;
+                }
+                for (int m = 0; m < 3; m++) {
+                    int v = 3 * t[o + m];
+                    double x = pos[v], y = pos[v + 1], z = pos[v + 2];
+                    x0 = Math.min(x0, x); y0 = Math.min(y0, y); z0 = Math.min(z0, z);
+                    x1 = Math.max(x1, x); y1 = Math.max(y1, y); z1 = Math.max(z1, z);
+                }
+                k++;
+            }
+            corner += size;
+        }
+        triangleCount = k;
+        degenerateCount = dropped;
+        tri = k == total ? t : Arrays.copyOf(t, 3 * k);
+        triNormal = anyNormal ? (k == total ? tn : Arrays.copyOf(tn, 3 * k)) : null;
+        triUv = anyUv ? (k == total ? tu : Arrays.copyOf(tu, 3 * k)) : null;
+        needsVertexNormals = anyWithout;
+        bounds = k == 0 ? Bounds.EMPTY : new Bounds(x0, y0, z0, x1, y1, z1);
+        closed = k > 0 && everyEdgeTwice();
+        smooth(data.normalIndex() != null);
+        bvh = new Bvh(this);
+    }
+
+    private String where() {
+        return data.source() == null ? "" : data.source() + ": ";
+    }
+
+    private static void validate(MeshData d) {
+        String w = d.source() == null ? "mesh: " : d.source() + ": ";
+        double[] p = d.positions();
+        if (p == null || p.length % 3 != 0) throw new IllegalArgumentException(w + "positions must hold three numbers per vertex");
+        for (double v : p) if (!Double.isFinite(v)) throw new IllegalArgumentException(w + "vertex positions must be finite, found " + v);
+        int[] sizes = d.faceSizes(), vi = d.vertexIndex();
+        long corners = 0;
+        for (int f = 0; f < sizes.length; f++) {
+            if (sizes[f] < 3) throw new IllegalArgumentException(w + "face " + (f + 1) + " has " + sizes[f] + " vertices, expected at least 3");
+            corners += sizes[f];
+        }
+        if (corners != vi.length) throw new IllegalArgumentException(w + "face sizes add up to " + corners + " corners but there are " + vi.length + " vertex indices");
+        checkIndices(w, "vertex", vi, p.length / 3, false);
+        checkOptional(w, "normal", d.normalIndex(), d.normals(), vi.length);
+        checkOptional(w, "texture coordinate", d.uvIndex(), d.uvs(), vi.length);
+        if (d.uvs() != null && d.uvs().length % 2 != 0) throw new IllegalArgumentException(w + "texture coordinates must hold two numbers each");
+    }
+
+    private static void checkOptional(String w, String what, int[] index, double[] values, int corners) {
+        if (index == null) return;
+        if (index.length != corners) throw new IllegalArgumentException(w + what + " indices: " + index.length + " for " + corners + " corners");
+        int stride = what.equals("normal") ? 3 : 2;
+        checkIndices(w, what, index, values == null ? 0 : values.length / stride, true);
+    }
+
+    private static void checkIndices(String w, String what, int[] index, int count, boolean optional) {
+        for (int i = 0; i < index.length; i++) {
+            int v = index[i];
+            if (v >= count || v < (optional ? -1 : 0)) {
+                throw new IllegalArgumentException(w + what + " index " + v + " at corner " + i + " is out of range (there are " + count + ")");
+            }
+        }
+    }
+
+    private boolean zeroArea(int a, int b, int c) {
+        double ax = pos[3 * a], ay = pos[3 * a + 1], az = pos[3 * a + 2];
+        double ux = pos[3 * b] - ax, uy = pos[3 * b + 1] - ay, uz = pos[3 * b + 2] - az;
+        double vx = pos[3 * c] - ax, vy = pos[3 * c + 1] - ay, vz = pos[3 * c + 2] - az;
+        return uy * vz - uz * vy == 0 && uz * vx - ux * vz == 0 && ux * vy - uy * vx == 0;
+    }
+
+    // ---- options and queries ----
+
+    /**
+     * Smooth shading interpolates normals (the file's where a triangle has them, otherwise
+     * area-weighted vertex normals); flat shading uses each triangle's geometric normal.
+     */
+    public TriangleMesh smooth(boolean on) {
         checkMutable();
-        smooth = s;
+        smooth = on;
+        if (on && needsVertexNormals && vertexNormals == null) vertexNormals = computeVertexNormals();
         return this;
     }
 
+    public boolean isSmooth() { return smooth; }
+    public MeshData data() { return data; }
+    public int triangleCount() { return triangleCount; }
+    /** Triangles dropped because their area is zero. */
+    public int degenerateCount() { return degenerateCount; }
+
+    /** Position index of corner {@code corner} (0..2) of triangle {@code t}. */
+    public int triangleVertex(int t, int corner) { return tri[3 * t + corner]; }
+
+    private double[] computeVertexNormals() {
+        double[] n = new double[pos.length];
+        for (int t = 0; t < triangleCount; t++) {
+            int a = 3 * tri[3 * t], b = 3 * tri[3 * t + 1], c = 3 * tri[3 * t + 2];
+            double ux = pos[b] - pos[a], uy = pos[b + 1] - pos[a + 1], uz = pos[b + 2] - pos[a + 2];
+            double vx = pos[c] - pos[a], vy = pos[c + 1] - pos[a + 1], vz = pos[c + 2] - pos[a + 2];
+            // The unnormalised cross product is twice the area: summing it weights by area.
+            double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+            n[a] += nx; n[a + 1] += ny; n[a + 2] += nz;
+            n[b] += nx; n[b + 1] += ny; n[b + 2] += nz;
+            n[c] += nx; n[c + 1] += ny; n[c + 2] += nz;
+        }
+        return n;
+    }
+
+    /**
+     * Every undirected edge in exactly two triangles. Vertices are first merged by position, so
+     * a mesh whose file repeats a position (split at a texture seam, say) still counts as closed;
+     * the watertight test sees such copies as the same point.
+     */
+    private boolean everyEdgeTwice() {
+        int[] id = weld(pos);
+        long[] keys = new long[3 * triangleCount];
+        for (int t = 0; t < triangleCount; t++) {
+            for (int e = 0; e < 3; e++) {
+                int a = id[tri[3 * t + e]], b = id[tri[3 * t + (e + 1) % 3]];
+                keys[3 * t + e] = ((long) Math.min(a, b) << 32) | Math.max(a, b);
+            }
+        }
+        Arrays.sort(keys);
+        for (int i = 0; i < keys.length; ) {
+            int j = i + 1;
+            while (j < keys.length && keys[j] == keys[i]) j++;
+            if (j - i != 2) return false;
+            i = j;
+        }
+        return true;
+    }
+
+    /** For each vertex, the lowest index of a vertex at the same position (open-addressing hash). */
+    private static int[] weld(double[] p) {
+        int n = p.length / 3;
+        int cap = 16;
+        while (cap < 2 * n) cap <<= 1;
+        int mask = cap - 1;
+        int[] table = new int[cap];
+        Arrays.fill(table, -1);
+        int[] id = new int[n];
+        for (int v = 0; v < n; v++) {
+            double x = p[3 * v], y = p[3 * v + 1], z = p[3 * v + 2];
+            // + 0.0 turns -0.0 into 0.0, which compare equal and must hash alike.
+            long h = Double.doubleToLongBits(x + 0.0) * 0x9E3779B97F4A7C15L
+                    ^ Double.doubleToLongBits(y + 0.0) * 0xC2B2AE3D27D4EB4FL
+                    ^ Double.doubleToLongBits(z + 0.0) * 0x165667B19E3779F9L;
+            int slot = (int) (h ^ (h >>> 29) ^ (h >>> 47)) & mask;
+            while (true) {
+                int u = table[slot];
+                if (u < 0) {
+                    table[slot] = v;
+                    id[v] = v;
+                    break;
+                }
+                if (p[3 * u] == x && p[3 * u + 1] == y && p[3 * u + 2] == z) {
+                    id[v] = u;
+                    break;
+                }
+                slot = (slot + 1) & mask;
+            }
+        }
+        return id;
+    }
+
+    // ---- GObject ----
+
     @Override public String kind() { return "mesh"; }
-    @Override public Bounds localBounds() { throw new UnsupportedOperationException("TODO"); }
-    @Override public boolean isClosed() { throw new UnsupportedOperationException("TODO"); }
-    @Override protected boolean intersectLocal(Ray ray, Hit hit, TraceContext ctx) { throw new UnsupportedOperationException("TODO"); }
-    @Override protected void shadeLocal(double x, double y, double z, Hit hit, ShadingData sd) { throw new UnsupportedOperationException("TODO"); }
+    @Override public Bounds localBounds() { return bounds; }
+    @Override public boolean isClosed() { return closed; }
+
+    @Override
+    protected boolean intersectLocal(Ray ray, Hit hit, TraceContext ctx) {
+        return bvh.intersect(ray, hit, ctx);
+    }
+
+    @Override
+    public boolean occluded(Ray ray, TraceContext ctx) {
+        return bvh.occluded(toLocal(ray, ctx), ctx);
+    }
+
+    @Override
+    protected void shadeLocal(double x, double y, double z, Hit hit, ShadingData sd) {
+        int i3 = 3 * hit.prim;
+        int a = 3 * tri[i3], b = 3 * tri[i3 + 1], c = 3 * tri[i3 + 2];
+        double b1 = hit.u, b2 = hit.v, b0 = 1 - b1 - b2;
+        double e1x = pos[b] - pos[a], e1y = pos[b + 1] - pos[a + 1], e1z = pos[b + 2] - pos[a + 2];
+        double e2x = pos[c] - pos[a], e2y = pos[c + 1] - pos[a + 1], e2z = pos[c + 2] - pos[a + 2];
+        double gx = e1y * e2z - e1z * e2y, gy = e1z * e2x - e1x * e2z, gz = e1x * e2y - e1y * e2x;
+        sd.ng[0] = gx; sd.ng[1] = gy; sd.ng[2] = gz;
+        double sx = gx, sy = gy, sz = gz;
+        if (smooth) {
+            double[] src;
+            int na, nb, nc;
+            if (triNormal != null && triNormal[i3] >= 0) {
+                src = normals;
+                na = 3 * triNormal[i3]; nb = 3 * triNormal[i3 + 1]; nc = 3 * triNormal[i3 + 2];
+            } else {
+                src = vertexNormals;
+                na = a; nb = b; nc = c;
+            }
+            double nx = b0 * src[na] + b1 * src[nb] + b2 * src[nc];
+            double ny = b0 * src[na + 1] + b1 * src[nb + 1] + b2 * src[nc + 1];
+            double nz = b0 * src[na + 2] + b1 * src[nb + 2] + b2 * src[nc + 2];
+            double len2 = nx * nx + ny * ny + nz * nz;
+            if (len2 > 0 && Double.isFinite(len2)) {
+                // Interpolated normals may disagree with the winding; keep them on the outward side.
+                double s = nx * gx + ny * gy + nz * gz < 0 ? -1 : 1;
+                sx = s * nx; sy = s * ny; sz = s * nz;
+            }
+        }
+        sd.ns[0] = sx; sd.ns[1] = sy; sd.ns[2] = sz;
+
+        if (triUv != null && triUv[i3] >= 0) {
+            int ta = 2 * triUv[i3], tb = 2 * triUv[i3 + 1], tc = 2 * triUv[i3 + 2];
+            double u0 = uvs[ta], v0 = uvs[ta + 1], u1 = uvs[tb], v1 = uvs[tb + 1], u2 = uvs[tc], v2 = uvs[tc + 1];
+            sd.u = b0 * u0 + b1 * u1 + b2 * u2;
+            sd.v = b0 * v0 + b1 * v1 + b2 * v2;
+            // Solve p = p2 + (u - u2) dpdu + (v - v2) dpdv on the two edges meeting at corner 2.
+            double du02 = u0 - u2, dv02 = v0 - v2, du12 = u1 - u2, dv12 = v1 - v2;
+            double det = du02 * dv12 - dv02 * du12;
+            if (Math.abs(det) > 1e-12 * (Math.abs(du02 * dv12) + Math.abs(dv02 * du12)) && Double.isFinite(1 / det)) {
+                double inv = 1 / det;
+                double p02x = pos[a] - pos[c], p02y = pos[a + 1] - pos[c + 1], p02z = pos[a + 2] - pos[c + 2];
+                double p12x = pos[b] - pos[c], p12y = pos[b + 1] - pos[c + 1], p12z = pos[b + 2] - pos[c + 2];
+                sd.setDerivatives((dv12 * p02x - dv02 * p12x) * inv, (dv12 * p02y - dv02 * p12y) * inv, (dv12 * p02z - dv02 * p12z) * inv,
+                        (du02 * p12x - du12 * p02x) * inv, (du02 * p12y - du12 * p02y) * inv, (du02 * p12z - du12 * p02z) * inv);
+                return;
+            }
+        } else {
+            sd.u = b1;
+            sd.v = b2;
+        }
+        // Without a usable uv map the barycentrics are the parametrisation: p = a + u e1 + v e2.
+        sd.setDerivatives(e1x, e1y, e1z, e2x, e2y, e2z);
+    }
+
+    /**
+     * Collects every crossing of the whole line (ignoring tMin/tMax, so the inside state at any t
+     * is known), sorts them, merges the duplicates a line through a shared edge or vertex produces,
+     * and pairs entering (against the outward normal) with leaving crossings by a running count.
+     */
+    @Override
+    protected void spansLocal(Ray ray, SpanBuffer out, TraceContext ctx) {
+        double tMin = ray.tMin, tMax = ray.tMax;
+        ctx.crossingCount = 0;
+        ray.tMin = Double.NEGATIVE_INFINITY;
+        ray.tMax = Double.POSITIVE_INFINITY;
+        try {
+            bvh.visit(ray, ctx, crossingCollector);
+        } finally {
+            ray.tMin = tMin;
+            ray.tMax = tMax;
+        }
+        int n = ctx.crossingCount;
+        double[] c = ctx.crossings;
+        sortCrossings(c, n);
+        int inside = 0, start = -1;
+        for (int k = 0; k < n; k++) {
+            int o = 4 * k;
+            boolean entering = c[o + 1] >= 0;
+            if (k > 0 && c[o] == c[o - 4] && entering == (c[o - 3] >= 0)) continue; // same point, same facing
+            if (entering) {
+                if (inside++ == 0) start = o;
+            } else if (inside > 0 && --inside == 0) {
+                // Zero-length spans (a line grazing an edge or vertex from outside) enclose nothing.
+                double tIn = c[start], tOut = c[o];
+                if (tOut > tIn && tOut > tMin && tIn < tMax) {
+                    out.add(tIn, this, (int) c[start + 1], c[start + 2], c[start + 3],
+                            tOut, this, (int) (-1 - c[o + 1]), c[o + 2], c[o + 3]);
+                }
+            }
+            // A leaving crossing while outside can only come from an inconsistently wound mesh; ignored.
+        }
+    }
+
+    /**
+     * Appends the crossing of the line with triangle {@code i}, if any, to the context's
+     * crossing list as (t, code, u, v) with code = i when entering and -1 - i when leaving. A
+     * line through an edge or vertex gets a t that depends only on that edge or vertex, so the
+     * duplicates from the triangles sharing it compare exactly equal.
+     */
+    private void collectCrossing(int i, Ray ray, TraceContext ctx) {
+        if (ray.dx != ctx.shearDx || ray.dy != ctx.shearDy || ray.dz != ctx.shearDz) prepareShear(ray, ctx);
+        final int kx = ctx.shearKx, ky = ctx.shearKy, kz = ctx.shearKz;
+        final double sx = ctx.shearSx, sy = ctx.shearSy, sz = ctx.shearSz;
+        final double okx = kx == 0 ? ray.ox : kx == 1 ? ray.oy : ray.oz;
+        final double oky = ky == 0 ? ray.ox : ky == 1 ? ray.oy : ray.oz;
+        final double okz = kz == 0 ? ray.ox : kz == 1 ? ray.oy : ray.oz;
+        final int i3 = 3 * i;
+        final int a = 3 * tri[i3], b = 3 * tri[i3 + 1], c = 3 * tri[i3 + 2];
+        final double az = pos[a + kz] - okz, bz = pos[b + kz] - okz, cz = pos[c + kz] - okz;
+        final double ax = pos[a + kx] - okx - sx * az, ay = pos[a + ky] - oky - sy * az;
+        final double bx = pos[b + kx] - okx - sx * bz, by = pos[b + ky] - oky - sy * bz;
+        final double cx = pos[c + kx] - okx - sx * cz, cy = pos[c + ky] - oky - sy * cz;
+        final double u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
+        if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return;
+        final double det = u + v + w;
+        if (det == 0) return;
+        final double saz = sz * az, sbz = sz * bz, scz = sz * cz;
+        double t;
+        if (u != 0 && v != 0 && w != 0) {
+            t = (u * saz + v * sbz + w * scz) / det;
+        } else if (v == 0 && w == 0) {
+            t = saz;
+        } else if (u == 0 && w == 0) {
+            t = sbz;
+        } else if (u == 0 && v == 0) {
+            t = scz;
+        } else if (u == 0) {
+            t = edgeT(bx, by, sbz, cx, cy, scz);
+        } else if (v == 0) {
+            t = edgeT(ax, ay, saz, cx, cy, scz);
+        } else {
+            t = edgeT(ax, ay, saz, bx, by, sbz);
+        }
+        int k = ctx.crossingCount, o = 4 * k;
+        double[] list = ctx.crossings;
+        if (o + 4 > list.length) list = ctx.crossings = Arrays.copyOf(list, Math.max(2 * list.length, 64));
+        double inv = 1 / det;
+        list[o] = t;
+        // The signed projected area det is positive exactly when dot(ng, d) < 0: the line enters.
+        list[o + 1] = det > 0 ? i : -1 - i;
+        list[o + 2] = v * inv;
+        list[o + 3] = w * inv;
+        ctx.crossingCount = k + 1;
+    }
+
+    /**
+     * Where the line (the sheared origin, (0, 0)) crosses edge pq, computed from the two ends in a
+     * fixed order so that both triangles sharing the edge get the identical value.
+     */
+    private static double edgeT(double px, double py, double pz, double qx, double qy, double qz) {
+        if (px > qx || px == qx && (py > qy || py == qy && pz > qz)) {
+            double s = px; px = qx; qx = s;
+            s = py; py = qy; qy = s;
+            s = pz; pz = qz; qz = s;
+        }
+        double dx = qx - px, dy = qy - py;
+        double f = Math.abs(dx) >= Math.abs(dy) ? -px / dx : -py / dy;
+        return pz + f * (qz - pz);
+    }
+
+    /** Sorts (t, code, u, v) records by t, entering before leaving at equal t. */
+    private static void sortCrossings(double[] c, int n) {
+        if (n <= 32) {
+            for (int i = 1; i < n; i++) {
+                for (int j = i; j > 0 && before(c, j, j - 1); j--) swap(c, j, j - 1);
+            }
+            return;
+        }
+        // Heapsort: in place and O(n log n) for the rare line that crosses a dense mesh many times.
+        for (int i = n / 2 - 1; i >= 0; i--) siftDown(c, i, n);
+        for (int end = n - 1; end > 0; end--) {
+            swap(c, 0, end);
+            siftDown(c, 0, end);
+        }
+    }
+
+    private static void siftDown(double[] c, int i, int n) {
+        while (true) {
+            int l = 2 * i + 1;
+            if (l >= n) return;
+            int m = l + 1 < n && before(c, l, l + 1) ? l + 1 : l;
+            if (!before(c, i, m)) return;
+            swap(c, i, m);
+            i = m;
+        }
+    }
+
+    private static boolean before(double[] c, int i, int j) {
+        double ti = c[4 * i], tj = c[4 * j];
+        return ti < tj || ti == tj && c[4 * i + 1] >= 0 && c[4 * j + 1] < 0;
+    }
+
+    private static void swap(double[] c, int i, int j) {
+        for (int k = 0; k < 4; k++) {
+            double s = c[4 * i + k];
+            c[4 * i + k] = c[4 * j + k];
+            c[4 * j + k] = s;
+        }
+    }
+
+    // ---- PrimitiveSet: the triangles, in object space ----
+
+    @Override public int size() { return triangleCount; }
+
+    @Override
+    public void bounds(int i, double[] out) {
+        int a = 3 * tri[3 * i], b = 3 * tri[3 * i + 1], c = 3 * tri[3 * i + 2];
+        for (int k = 0; k < 3; k++) {
+            out[k] = Math.min(pos[a + k], Math.min(pos[b + k], pos[c + k]));
+            out[k + 3] = Math.max(pos[a + k], Math.max(pos[b + k], pos[c + k]));
+        }
+    }
+
+    @Override
+    public boolean intersect(int i, Ray ray, Hit hit, TraceContext ctx) {
+        return test(i, ray, hit, ctx);
+    }
+
+    @Override
+    public boolean occluded(int i, Ray ray, TraceContext ctx) {
+        return test(i, ray, null, ctx);
+    }
+
+    /**
+     * The watertight test. Vertices are translated to the ray origin, permuted so the ray runs
+     * along the (new) z axis and sheared so it becomes the z axis itself; the 2D edge functions
+     * of the vertices then decide the hit. Each vertex is transformed the same way whichever
+     * triangle it is used by, and an edge's function in one triangle is exactly the negation of
+     * its function in the neighbour (products commute, IEEE subtraction is antisymmetric), so a
+     * ray can never pass between two triangles that share the edge.
+     */
+    private boolean test(int i, Ray ray, Hit hit, TraceContext ctx) {
+        if (ray.dx != ctx.shearDx || ray.dy != ctx.shearDy || ray.dz != ctx.shearDz) prepareShear(ray, ctx);
+        final int kx = ctx.shearKx, ky = ctx.shearKy, kz = ctx.shearKz;
+        final double sx = ctx.shearSx, sy = ctx.shearSy, sz = ctx.shearSz;
+        final double okx = kx == 0 ? ray.ox : kx == 1 ? ray.oy : ray.oz;
+        final double oky = ky == 0 ? ray.ox : ky == 1 ? ray.oy : ray.oz;
+        final double okz = kz == 0 ? ray.ox : kz == 1 ? ray.oy : ray.oz;
+        final int i3 = 3 * i;
+        final int a = 3 * tri[i3], b = 3 * tri[i3 + 1], c = 3 * tri[i3 + 2];
+        final double az = pos[a + kz] - okz, bz = pos[b + kz] - okz, cz = pos[c + kz] - okz;
+        final double ax = pos[a + kx] - okx - sx * az, ay = pos[a + ky] - oky - sy * az;
+        final double bx = pos[b + kx] - okx - sx * bz, by = pos[b + ky] - oky - sy * bz;
+        final double cx = pos[c + kx] - okx - sx * cz, cy = pos[c + ky] - oky - sy * cz;
+        final double u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
+        if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return false;
+        final double det = u + v + w;
+        if (det == 0) return false;
+        final double t = (u * (sz * az) + v * (sz * bz) + w * (sz * cz)) / det;
+        if (!(t > ray.tMin && t < ray.tMax)) return false;
+        if (hit != null) {
+            double inv = 1 / det;
+            hit.t = t;
+            hit.prim = i;
+            hit.u = v * inv;
+            hit.v = w * inv;
+        }
+        return true;
+    }
+
+    /**
+     * Per-direction constants of the watertight test: kz is the dominant axis; kx, ky are swapped
+     * when the ray runs along -kz so that the winding (and with it the sign of the edge
+     * functions) is preserved.
+     */
+    private static void prepareShear(Ray ray, TraceContext ctx) {
+        double dx = ray.dx, dy = ray.dy, dz = ray.dz;
+        double ax = Math.abs(dx), ay = Math.abs(dy), az = Math.abs(dz);
+        int kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+        int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
+        double dkz = kz == 0 ? dx : kz == 1 ? dy : dz;
+        if (dkz < 0) { int s = kx; kx = ky; ky = s; }
+        double dkx = kx == 0 ? dx : kx == 1 ? dy : dz;
+        double dky = ky == 0 ? dx : ky == 1 ? dy : dz;
+        ctx.shearKx = kx; ctx.shearKy = ky; ctx.shearKz = kz;
+        ctx.shearSx = dkx / dkz;
+        ctx.shearSy = dky / dkz;
+        ctx.shearSz = 1 / dkz;
+        ctx.shearDx = dx; ctx.shearDy = dy; ctx.shearDz = dz;
+    }
 }

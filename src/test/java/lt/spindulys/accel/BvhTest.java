@@ -1,0 +1,293 @@
+package lt.spindulys.accel;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+
+import org.junit.jupiter.api.Test;
+
+import lt.spindulys.math.Bounds;
+import lt.spindulys.math.Ray;
+import lt.spindulys.math.Transform;
+import lt.spindulys.scene.GObject;
+import lt.spindulys.scene.Hit;
+import lt.spindulys.scene.MeshData;
+import lt.spindulys.scene.Scene;
+import lt.spindulys.scene.SceneBuilder;
+import lt.spindulys.scene.TestMeshes;
+import lt.spindulys.scene.TraceContext;
+import lt.spindulys.scene.TriangleMesh;
+
+class BvhTest {
+
+    /** Random triangles: a centre in the unit cube, corners spread by a size drawn log-uniformly from [lo, hi]. */
+    private static double[] soup(Random r, int n, double lo, double hi) {
+        double[] c = new double[9 * n];
+        for (int i = 0; i < n; i++) {
+            double size = lo * Math.pow(hi / lo, r.nextDouble());
+            double x = r.nextDouble(), y = r.nextDouble(), z = r.nextDouble();
+            for (int k = 0; k < 3; k++) {
+                c[9 * i + 3 * k] = x + size * r.nextGaussian();
+                c[9 * i + 3 * k + 1] = y + size * r.nextGaussian();
+                c[9 * i + 3 * k + 2] = z + size * r.nextGaussian();
+            }
+        }
+        return c;
+    }
+
+    private static double[] concat(double[]... parts) {
+        int n = 0;
+        for (double[] p : parts) n += p.length;
+        double[] out = new double[n];
+        int o = 0;
+        for (double[] p : parts) {
+            System.arraycopy(p, 0, out, o, p.length);
+            o += p.length;
+        }
+        return out;
+    }
+
+    /**
+     * Shoots seeded random rays (general, axis-parallel, aimed at a primitive's vertex, with and
+     * without finite tMin/tMax) and requires the BVH to agree with brute force.
+     */
+    private static void compare(PrimitiveSet set, Bvh bvh, Bounds region, int rays, long seed) {
+        BruteForce brute = new BruteForce(set);
+        TraceContext ctx = new TraceContext();
+        Random r = new Random(seed);
+        Ray ray = new Ray();
+        Hit hb = new Hit(), hf = new Hit(), check = new Hit();
+        double[] box = new double[6];
+        int hits = 0;
+        for (int i = 0; i < rays; i++) {
+            double ox = region.minX() + r.nextDouble() * (region.maxX() - region.minX());
+            double oy = region.minY() + r.nextDouble() * (region.maxY() - region.minY());
+            double oz = region.minZ() + r.nextDouble() * (region.maxZ() - region.minZ());
+            double dx = r.nextGaussian(), dy = r.nextGaussian(), dz = r.nextGaussian();
+            switch (i % 4) {
+                case 1 -> { // axis-parallel: infinite inverse components
+                    int keep = r.nextInt(3);
+                    if (keep != 0) dx = 0;
+                    if (keep != 1) dy = 0;
+                    if (keep != 2) dz = 0;
+                }
+                case 2 -> { // aimed at a corner of a primitive's box
+                    set.bounds(r.nextInt(set.size()), box);
+                    int c = r.nextInt(8);
+                    dx = box[(c & 1) == 0 ? 0 : 3] - ox;
+                    dy = box[(c & 2) == 0 ? 1 : 4] - oy;
+                    dz = box[(c & 4) == 0 ? 2 : 5] - oz;
+                }
+                default -> { }
+            }
+            double tMin = r.nextInt(3) == 0 ? r.nextDouble() * 0.5 : 0;
+            double tMax = r.nextInt(3) == 0 ? tMin + r.nextDouble() * 2 : Double.POSITIVE_INFINITY;
+            ray.set(ox, oy, oz, dx, dy, dz, tMin, tMax);
+            boolean f = brute.intersect(ray, hf.reset(tMax), ctx);
+            boolean b = bvh.intersect(ray, hb.reset(tMax), ctx);
+            assertEquals(tMax, ray.tMax, "tMax restored");
+            final int n = i;
+            assertEquals(f, b, () -> "ray " + n + " " + ray);
+            if (f) {
+                hits++;
+                assertEquals(hf.t, hb.t, 1e-12 * Math.abs(hf.t), () -> "ray " + n + " " + ray);
+                if (hf.prim != hb.prim) {
+                    // A tie: the BVH's primitive must itself be hit at (nearly) the same distance.
+                    assertTrue(set.intersect(hb.prim, ray, check.reset(tMax), ctx));
+                    assertEquals(hb.t, check.t);
+                }
+            }
+            assertEquals(brute.occluded(ray, ctx), bvh.occluded(ray, ctx), () -> "occluded, ray " + n + " " + ray);
+        }
+        assertTrue(hits > rays / 50, "the rays should find something: " + hits);
+    }
+
+    private static void compareMesh(double[] coords, int rays, long seed) {
+        TriangleMesh m = new TriangleMesh(TestMeshes.soup(coords));
+        Bvh bvh = new Bvh(m);
+        assertEquals(m.triangleCount(), bvh.primitiveCount());
+        Bounds b = m.localBounds();
+        double ex = b.maxX() - b.minX(), ey = b.maxY() - b.minY(), ez = b.maxZ() - b.minZ();
+        double pad = 0.25 * Math.max(ex, Math.max(ey, ez));
+        compare(m, bvh, new Bounds(b.minX() - pad, b.minY() - pad, b.minZ() - pad, b.maxX() + pad, b.maxY() + pad, b.maxZ() + pad), rays, seed);
+    }
+
+    @Test
+    void agreesWithBruteForceOnARandomSoup() {
+        compareMesh(soup(new Random(1), 300, 0.005, 0.2), 100_000, 2);
+    }
+
+    @Test
+    void agreesWithBruteForceWhenEverythingLiesInOnePlane() {
+        double[] c = soup(new Random(3), 500, 0.01, 0.15);
+        for (int i = 2; i < c.length; i += 3) c[i] = 0.5;
+        compareMesh(c, 25_000, 4);
+    }
+
+    @Test
+    void agreesWithBruteForceOnIdenticalTriangles() {
+        double[] one = {0.2, 0.2, 0.3, 0.8, 0.3, 0.5, 0.4, 0.9, 0.7};
+        double[][] parts = new double[301][];
+        for (int i = 0; i < 300; i++) parts[i] = one;
+        parts[300] = soup(new Random(5), 100, 0.01, 0.1);
+        compareMesh(concat(parts), 25_000, 6);
+    }
+
+    @Test
+    void agreesWithBruteForceOnTinyAndHugeTriangles() {
+        Random r = new Random(7);
+        double[] tiny = soup(r, 300, 1e-7, 1e-5);
+        double[] huge = soup(r, 10, 10, 1000);
+        double[] medium = soup(r, 100, 0.01, 0.1);
+        compareMesh(concat(tiny, huge, medium), 25_000, 8);
+    }
+
+    @Test
+    void agreesWithBruteForceOnAClosedGridMesh() {
+        // Axis-aligned faces: flat node boxes, rays aimed at shared edges and corners.
+        TriangleMesh m = new TriangleMesh(TestMeshes.gridCube(6));
+        compare(m, new Bvh(m), new Bounds(-2, -2, -2, 2, 2, 2), 25_000, 9);
+    }
+
+    /** Spheres, to show the hierarchy works over any primitive set. */
+    private record Spheres(double[] c) implements PrimitiveSet {
+        @Override public int size() { return c.length / 4; }
+
+        @Override public void bounds(int i, double[] out) {
+            for (int k = 0; k < 3; k++) {
+                out[k] = c[4 * i + k] - c[4 * i + 3];
+                out[k + 3] = c[4 * i + k] + c[4 * i + 3];
+            }
+        }
+
+        @Override public boolean intersect(int i, Ray ray, Hit hit, TraceContext ctx) {
+            double px = ray.ox - c[4 * i], py = ray.oy - c[4 * i + 1], pz = ray.oz - c[4 * i + 2];
+            double a = ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz;
+            double b = px * ray.dx + py * ray.dy + pz * ray.dz;
+            double cc = px * px + py * py + pz * pz - c[4 * i + 3] * c[4 * i + 3];
+            double disc = b * b - a * cc;
+            if (disc < 0) return false;
+            double s = Math.sqrt(disc);
+            double t = (-b - s) / a;
+            if (!(t > ray.tMin)) t = (-b + s) / a;
+            if (!(t > ray.tMin && t < ray.tMax)) return false;
+            hit.t = t;
+            hit.prim = i;
+            return true;
+        }
+    }
+
+    @Test
+    void agreesWithBruteForceOverOtherPrimitives() {
+        Random r = new Random(10);
+        double[] c = new double[4 * 500];
+        for (int i = 0; i < c.length; i++) c[i] = i % 4 == 3 ? 0.002 + 0.03 * r.nextDouble() : r.nextDouble();
+        Spheres s = new Spheres(c);
+        compare(s, new Bvh(s), new Bounds(-0.2, -0.2, -0.2, 1.2, 1.2, 1.2), 25_000, 11);
+    }
+
+    @Test
+    void depthStaysBoundedOnAdversarialInput() {
+        // Exponentially spaced triangles: SAH would peel them off one by one, 2000 levels deep.
+        int n = 2000;
+        double[] c = new double[9 * n];
+        for (int i = 0; i < n; i++) {
+            double x = Math.pow(1.01, i);
+            double[] t = {x, 0, 0, x * 1.001, 1, 0, x, 0, 1};
+            System.arraycopy(t, 0, c, 9 * i, 9);
+        }
+        TriangleMesh m = new TriangleMesh(TestMeshes.soup(c));
+        Bvh bvh = new Bvh(m);
+        assertTrue(bvh.depth() <= 48 + 11, "depth " + bvh.depth());
+        compare(m, bvh, new Bounds(0, -1, -1, Math.pow(1.01, n), 2, 2), 5_000, 12);
+    }
+
+    @Test
+    void everyPrimitiveIsReachableAndEmptyOnesAreLeftOut() {
+        Random r = new Random(13);
+        double[] c = new double[4 * 3000];
+        for (int i = 0; i < c.length; i++) c[i] = i % 4 == 3 ? (i % 40 == 3 ? -1 : 0.01) : r.nextDouble();
+        Spheres s = new Spheres(c); // every tenth has a negative radius: empty bounds
+        Bvh bvh = new Bvh(s);
+        assertEquals(2700, bvh.primitiveCount());
+        int[] seen = new int[s.size()];
+        Ray all = new Ray().set(0.5, 0.5, 0.5, 1, 0, 0, Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY);
+        // A line through the middle with infinite limits visits only the leaves it passes; the root
+        // box of everything at once is checked by visiting along each primitive's own centre.
+        for (int i = 0; i < s.size(); i++) {
+            if (c[4 * i + 3] < 0) continue;
+            all.set(c[4 * i], c[4 * i + 1], c[4 * i + 2], 1, 0, 0, Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY);
+            final int want = i;
+            boolean[] found = {false};
+            bvh.visit(all, new TraceContext(), (prim, ray, ctx) -> {
+                seen[prim]++;
+                if (prim == want) found[0] = true;
+            });
+            assertTrue(found[0], "primitive " + i + " is reachable");
+        }
+        for (int i = 0; i < s.size(); i++) if (c[4 * i + 3] < 0) assertEquals(0, seen[i], "empty primitive " + i);
+        Bvh empty = new Bvh(new Spheres(new double[0]));
+        assertEquals(0, empty.nodeCount());
+        assertFalse(empty.intersect(all, new Hit().reset(1), new TraceContext()));
+        assertFalse(empty.occluded(all, new TraceContext()));
+    }
+
+    @Test
+    void nestedHierarchiesInASceneAgreeWithTestingEveryObject() {
+        // A scene BVH over meshes that have BVHs of their own shares one per-thread stack.
+        Random r = new Random(14);
+        SceneBuilder b = new SceneBuilder();
+        MeshData sphere = TestMeshes.icosphere(2, 1);
+        for (int i = 0; i < 40; i++) {
+            TriangleMesh m = new TriangleMesh(sphere);
+            double s = 0.2 + r.nextDouble();
+            m.transform(Transform.scale(s, s * (0.5 + r.nextDouble()), s).then(Transform.translate(r.nextDouble() * 10, r.nextDouble() * 10, r.nextDouble() * 10)));
+            b.add(m);
+        }
+        Scene scene = b.build();
+        List<GObject> objects = new ArrayList<>(scene.objects());
+        TraceContext ctx = new TraceContext();
+        Ray ray = new Ray();
+        Hit hs = new Hit(), hb = new Hit();
+        int hits = 0;
+        for (int i = 0; i < 20_000; i++) {
+            ray.set(r.nextDouble() * 14 - 2, r.nextDouble() * 14 - 2, r.nextDouble() * 14 - 2, r.nextGaussian(), r.nextGaussian(), r.nextGaussian(), 0, Double.POSITIVE_INFINITY);
+            boolean s = scene.intersect(ray, hs, ctx);
+            hb.reset(ray.tMax);
+            boolean any = false;
+            for (GObject o : objects) {
+                if (o.intersect(ray, hb, ctx)) {
+                    any = true;
+                    ray.tMax = hb.t;
+                }
+            }
+            ray.tMax = Double.POSITIVE_INFINITY;
+            assertEquals(any, s);
+            if (any) {
+                hits++;
+                assertEquals(hb.t, hs.t, 1e-12 * hb.t);
+                assertEquals(hb.object, hs.object);
+                assertEquals(hb.prim, hs.prim);
+            }
+            assertEquals(any, scene.occluded(ray, ctx));
+            assertEquals(0, ctx.stackTop);
+        }
+        assertTrue(hits > 1000, "hits " + hits);
+    }
+
+    @Test
+    void buildsLargeSetsIteratively() {
+        // 100,000 triangles through the iterative build (no recursion to overflow).
+        TriangleMesh m = new TriangleMesh(TestMeshes.soup(soup(new Random(15), 100_000, 1e-4, 1e-2)));
+        Bvh bvh = new Bvh(m);
+        assertEquals(100_000, bvh.primitiveCount());
+        assertTrue(bvh.depth() < 64, "depth " + bvh.depth());
+        assertEquals(new Bounds(m.localBounds().minX(), m.localBounds().minY(), m.localBounds().minZ(),
+                m.localBounds().maxX(), m.localBounds().maxY(), m.localBounds().maxZ()), bvh.bounds());
+        compare(m, bvh, new Bounds(-0.1, -0.1, -0.1, 1.1, 1.1, 1.1), 100, 16);
+    }
+}
