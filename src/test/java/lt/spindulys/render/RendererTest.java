@@ -51,4 +51,21 @@ class RendererTest {
     void rejectsZeroThreads() {
         assertThrows(IllegalArgumentException.class, () -> Renderer.render(scene(1), 0, ProgressListener.NONE));
     }
+
+    @Test
+    void nearerHitKeepsItsOwnMaterialWhateverTheTestOrder() throws InterruptedException {
+        for (int far = 0; far < 8; far++) { // enough objects for a BVH too; the far one comes first
+            SceneBuilder b = new SceneBuilder()
+                    .settings(RenderSettings.DEFAULT.withSize(1, 1).withAmbient(Color.WHITE))
+                    .camera(new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, 10));
+            Material blue = Material.builder().color(new Color(0, 0, 1)).ka(1).kd(0).build();
+            Material red = Material.builder().color(new Color(1, 0, 0)).ka(1).kd(0).build();
+            b.add(new Sphere(new Vec3(0, 0, 3), 1).material(blue));
+            for (int i = 0; i < far; i++) b.add(new Sphere(new Vec3(10 + 3 * i, 0, 0), 1).material(blue));
+            b.add(new Sphere(new Vec3(0, 0, 0), 1).material(red));
+            var img = Renderer.render(b.build(), 1, ProgressListener.NONE).image();
+            assertEquals(1, img.get(0, 0, 0), 1e-12, "red sphere in front");
+            assertEquals(0, img.get(0, 0, 2), 1e-12);
+        }
+    }
 }
