@@ -1,0 +1,9 @@
+package lt.spindulys.subdiv;
+
+/** Uniform Catmull-Clark refinement with OpenSubdiv's rules. Stateless. */
+public final class CatmullClark {
+    private CatmullClark() {}
+
+    /** The mesh refined {@code level} times (0 gives the control mesh itself as a RefinedMesh). */
+    public static RefinedMesh refine(ControlMesh mesh, int level) { throw new UnsupportedOperationException("TODO"); }
+}
