@@ -5,9 +5,16 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
 
 import lt.spindulys.scene.MeshData;
+import lt.spindulys.subdiv.SubdivInput;
+import lt.spindulys.subdiv.SubdivOptions;
+import lt.spindulys.subdiv.SubdivTags;
 
 /**
  * Reads Wavefront OBJ meshes: {@code v} (x y z, an optional w and an optional r g b colour are
@@ -16,6 +23,11 @@ import lt.spindulys.scene.MeshData;
  * from 1 or, when negative, back from the latest element. {@code o}, {@code g}, {@code s},
  * {@code usemtl}, {@code mtllib} and OpenSubdiv's {@code t} tags are skipped; {@code #} starts a
  * comment; a backslash at the end of a line continues it. Anything else is an error.
+ *
+ * <p>{@link #readSubdiv} reads the same files as the control mesh of a subdivision surface: then the
+ * {@code t} tags are parsed (OpenSubdiv's grammar {@code t name nints/nfloats/nstrings ints...
+ * floats... strings...}; see docs/mesh-formats.md) into {@link SubdivTags}, every index checked
+ * against the mesh, and texture coordinates must be on every face or none.
  *
  * <p>The file is read as bytes and parsed in place, numbers by hand (exactly rounded: the fast
  * path is taken only where it is exact, other numbers go to {@link Double#parseDouble}), with no
@@ -27,21 +39,37 @@ public final class ObjReader {
 
     /** Reads the file; malformed input throws {@link SceneException} naming file:line:column. */
     public static MeshData read(Path file) throws IOException {
+        return new Parser(readBytes(file), file.toString(), false).parse();
+    }
+
+    /** Parses OBJ text; {@code fileName} is used in messages and as the mesh's source. */
+    public static MeshData parse(String text, String fileName) {
+        return new Parser(text.getBytes(StandardCharsets.UTF_8), fileName, false).parse();
+    }
+
+    /**
+     * Reads the file as a subdivision control mesh with its {@code t} tags; malformed input,
+     * unknown tags and tag indices that do not fit the mesh throw {@link SceneException} naming
+     * file:line:column.
+     */
+    public static SubdivInput readSubdiv(Path file) throws IOException {
+        return new Parser(readBytes(file), file.toString(), true).parseSubdiv();
+    }
+
+    /** Parses OBJ text as a subdivision control mesh; see {@link #readSubdiv}. */
+    public static SubdivInput parseSubdiv(String text, String fileName) {
+        return new Parser(text.getBytes(StandardCharsets.UTF_8), fileName, true).parseSubdiv();
+    }
+
+    private static byte[] readBytes(Path file) throws IOException {
         String name = file.toString();
-        byte[] bytes;
         try {
-            bytes = Files.readAllBytes(file);
+            return Files.readAllBytes(file);
         } catch (NoSuchFileException e) {
             throw new SceneException(name, 0, 0, "OBJ file not found (looked in " + file.toAbsolutePath().normalize() + ")");
         } catch (IOException e) {
             throw new SceneException(name, 0, 0, "cannot read OBJ file: " + e.getMessage(), e);
         }
-        return new Parser(bytes, name).parse();
-    }
-
-    /** Parses OBJ text; {@code fileName} is used in messages and as the mesh's source. */
-    public static MeshData parse(String text, String fileName) {
-        return new Parser(text.getBytes(StandardCharsets.UTF_8), fileName).parse();
     }
 
     /** Growable primitive arrays: one allocation per doubling, none per element. */
@@ -86,10 +114,18 @@ public final class ObjReader {
         private final Ints faceSizes = new Ints(), vertexIndex = new Ints(), normalIndex = new Ints(), uvIndex = new Ints();
         private boolean anyNormalIndex, anyUvIndex;
 
-        Parser(byte[] bytes, String file) {
+        /** Reading a subdivision control mesh: parse {@code t} tags, require UVs on all faces or none. */
+        private final boolean subdiv;
+        /** Line of the first face, and whether it has texture coordinates (subdiv mode). */
+        private int firstFaceLine;
+        private boolean firstFaceUv;
+        private final TagCollector tags = new TagCollector();
+
+        Parser(byte[] bytes, String file, boolean subdiv) {
             this.b = bytes;
             this.end = bytes.length;
             this.file = file;
+            this.subdiv = subdiv;
             // A UTF-8 byte order mark is not part of the first statement.
             if (end >= 3 && (bytes[0] & 0xff) == 0xEF && (bytes[1] & 0xff) == 0xBB && (bytes[2] & 0xff) == 0xBF) {
                 pos = lineStart = 3;
@@ -115,6 +151,8 @@ public final class ObjReader {
                     normal();
                 } else if (len == 2 && c0 == 'v' && b[start + 1] == 't') {
                     texture();
+                } else if (subdiv && len == 1 && c0 == 't') {
+                    tag();
                 } else if (isSkipped(start, len)) {
                     skipStatement();
                 } else {
@@ -235,9 +273,257 @@ public final class ObjReader {
                 corners++;
             }
             if (corners < 3) throw error(keyword, "face has " + corners + (corners == 1 ? " vertex" : " vertices") + ", expected at least 3");
+            if (subdiv) {
+                // Face-varying UVs need a value at every corner of the surface.
+                if (faceSizes.n == 0) {
+                    firstFaceLine = line;
+                    firstFaceUv = withUv;
+                } else if (withUv != firstFaceUv) {
+                    throw error(keyword, (withUv ? "face has texture coordinates, but the face on line " + firstFaceLine + " has none"
+                            : "face has no texture coordinates, but the face on line " + firstFaceLine + " has")
+                            + " (a subdivision surface needs them on every face or none)");
+                }
+            }
             faceSizes.add(corners);
             anyUvIndex |= withUv;
             anyNormalIndex |= withNormal;
+        }
+
+
+        // ---- OpenSubdiv tags (subdivision mode) ----
+
+        /**
+         * {@code t name nints/nfloats/nstrings ints... floats... strings...}. The counts are
+         * checked against what each tag needs and against the arguments on the line; indices are
+         * checked against the mesh once the whole file is read.
+         */
+        private void tag() {
+            skipBlanks();
+            int nameAt = pos;
+            if (atLineEnd()) throw error(nameAt, "expected a tag name after 't', found " + describe(nameAt));
+            String name = token();
+            if (!TAGS.contains(name)) {
+                throw error(nameAt, "unknown tag '" + name + "'" + SceneGrammar.didYouMean(name, TAGS)
+                        + " (known: " + String.join(", ", TAGS) + ")");
+            }
+            skipBlanks();
+            int countsAt = pos;
+            int[] counts = tagCounts(name);
+            int ni = counts[0], nf = counts[1], ns = counts[2];
+            String countsText = ni + "/" + nf + "/" + ns;
+            String shape = switch (name) {
+                case "crease" -> ni >= 2 && ni % 2 == 0 && (nf == 1 || nf == ni / 2) && ns == 0 ? null
+                        : "vertex pairs and one sharpness for all pairs or one per pair (such as 2/1/0 or 4/2/0)";
+                case "corner" -> ni >= 1 && (nf == 1 || nf == ni) && ns == 0 ? null
+                        : "vertices and one sharpness for all or one per vertex (such as 1/1/0 or 3/3/0)";
+                case "hole" -> ni >= 1 && nf == 0 && ns == 0 ? null : "face indices only (such as 1/0/0 or 3/0/0)";
+                case "interpolateboundary", "facevaryinginterpolateboundary", "facevaryingpropagatecorners" ->
+                        ni == 1 && nf == 0 && ns == 0 ? null : "one integer (1/0/0)";
+                case "creasemethod", "smoothtriangles" -> ni == 0 && nf == 0 && ns == 1 ? null : "one string (0/0/1)";
+                default -> null; // hierarchical edits: read and ignored, as OpenSubdiv's Far does
+            };
+            if (shape != null) throw error(countsAt, "tag '" + name + "' takes " + shape + ", found " + countsText);
+
+            String argsSay = " (its counts " + countsText + " say " + plural(ni, "integer") + ", " + plural(nf, "float")
+                    + " and " + plural(ns, "string") + ")";
+            long[] ints = new long[ni];
+            int[] intLine = new int[ni], intColumn = new int[ni];
+            for (int i = 0; i < ni; i++) {
+                skipBlanks();
+                intLine[i] = line;
+                intColumn[i] = column(pos);
+                ints[i] = tagInteger(name, "integer " + (i + 1) + " of " + ni + argsSay);
+            }
+            float[] floats = new float[nf];
+            for (int i = 0; i < nf; i++) {
+                skipBlanks();
+                int at = pos;
+                boolean sharpness = name.equals("crease") || name.equals("corner");
+                double v = number((sharpness ? "sharpness " : "float ") + (i + 1) + " of " + nf + " of tag '" + name + "'" + argsSay);
+                if (sharpness && v < 0) throw error(at, name + " sharpness must not be negative, found " + text(at, pos));
+                floats[i] = (float) v; // OpenSubdiv keeps sharpness as float
+            }
+            String[] strings = new String[ns];
+            int[] stringAt = new int[ns];
+            for (int i = 0; i < ns; i++) {
+                skipBlanks();
+                stringAt[i] = pos;
+                if (atLineEnd()) {
+                    throw error(pos, "expected string " + (i + 1) + " of " + ns + " of tag '" + name + "'" + argsSay + ", found " + describe(pos));
+                }
+                strings[i] = token();
+            }
+            skipBlanks();
+            if (!atLineEnd()) {
+                throw error(pos, "unexpected " + describe(pos) + " after the arguments of tag '" + name + "'" + argsSay);
+            }
+
+            switch (name) {
+                case "crease" -> {
+                    for (int i = 0; i < ni; i += 2) {
+                        float s = floats[nf == 1 ? 0 : i / 2];
+                        tags.creases.add(new TagIndex(ints[i], intLine[i], intColumn[i]));
+                        tags.creases.add(new TagIndex(ints[i + 1], intLine[i + 1], intColumn[i + 1]));
+                        tags.creaseSharpness.add(s);
+                    }
+                }
+                case "corner" -> {
+                    for (int i = 0; i < ni; i++) {
+                        tags.corners.add(new TagIndex(ints[i], intLine[i], intColumn[i]));
+                        tags.cornerSharpness.add(floats[nf == 1 ? 0 : i]);
+                    }
+                }
+                case "hole" -> {
+                    for (int i = 0; i < ni; i++) tags.holes.add(new TagIndex(ints[i], intLine[i], intColumn[i]));
+                }
+                case "interpolateboundary" -> {
+                    SubdivOptions.Boundary[] modes = {SubdivOptions.Boundary.NONE, SubdivOptions.Boundary.EDGE_AND_CORNER, SubdivOptions.Boundary.EDGE_ONLY};
+                    long v = ints[0];
+                    if (v < 0 || v > 2) {
+                        throw new SceneException(file, intLine[0], intColumn[0],
+                                "expected 0 (none), 1 (edge and corner) or 2 (edge only) for tag 'interpolateboundary', found " + v);
+                    }
+                    tags.options = tags.options.withBoundary(modes[(int) v]);
+                }
+                case "facevaryinginterpolateboundary" -> {
+                    SubdivOptions.FaceVarying[] modes = SubdivOptions.FaceVarying.values();
+                    long v = ints[0];
+                    if (v < 0 || v >= modes.length) {
+                        throw new SceneException(file, intLine[0], intColumn[0],
+                                "expected 0 (none), 1 (corners only), 2 (corners plus1), 3 (corners plus2), 4 (boundaries) or 5 (all)"
+                                        + " for tag 'facevaryinginterpolateboundary', found " + v);
+                    }
+                    tags.options = tags.options.withFaceVarying(modes[(int) v]);
+                }
+                case "creasemethod" -> {
+                    tags.options = tags.options.withCreasing(switch (strings[0]) {
+                        case "normal" -> SubdivOptions.Creasing.UNIFORM;
+                        case "chaikin" -> SubdivOptions.Creasing.CHAIKIN;
+                        default -> throw error(stringAt[0], "expected normal or chaikin for tag 'creasemethod', found '" + strings[0] + "'"
+                                + SceneGrammar.didYouMean(strings[0], List.of("normal", "chaikin")));
+                    });
+                }
+                case "smoothtriangles" -> {
+                    tags.options = tags.options.withTriangles(switch (strings[0]) {
+                        case "catmark" -> SubdivOptions.Triangles.CATMARK;
+                        case "smooth" -> SubdivOptions.Triangles.SMOOTH;
+                        default -> throw error(stringAt[0], "expected catmark or smooth for tag 'smoothtriangles', found '" + strings[0] + "'"
+                                + SceneGrammar.didYouMean(strings[0], List.of("catmark", "smooth")));
+                    });
+                }
+                default -> {
+                    if (!tags.ignored.contains(name)) tags.ignored.add(name);
+                }
+            }
+        }
+
+        /** "nints/nfloats/nstrings": three counts from 0, separated by slashes. */
+        private int[] tagCounts(String name) {
+            int start = pos;
+            int[] counts = new int[3];
+            for (int k = 0; k < 3; k++) {
+                if (k > 0) {
+                    if (pos >= end || b[pos] != '/') { pos = start; counts = null; break; }
+                    pos++;
+                }
+                int digits = 0;
+                long v = 0;
+                while (pos < end && b[pos] >= '0' && b[pos] <= '9') {
+                    if (v < 1L << 40) v = v * 10 + (b[pos] - '0');
+                    digits++;
+                    pos++;
+                }
+                if (digits == 0 || v > 1_000_000_000) { pos = start; counts = null; break; }
+                counts[k] = (int) v;
+            }
+            if (counts == null || !atTokenEnd()) {
+                pos = start;
+                throw error(start, "expected the argument counts nints/nfloats/nstrings (such as 2/1/0) after 't " + name + "', found " + describe(start));
+            }
+            return counts;
+        }
+
+        /** A decimal integer argument of a tag. */
+        private long tagInteger(String name, String what) {
+            int start = pos;
+            if (atLineEnd()) throw error(start, "expected " + what + " of tag '" + name + "', found " + describe(start));
+            boolean neg = false;
+            if (b[pos] == '-' || b[pos] == '+') neg = b[pos++] == '-';
+            long v = 0;
+            int digits = 0;
+            while (pos < end && b[pos] >= '0' && b[pos] <= '9') {
+                if (v < 1L << 40) v = v * 10 + (b[pos] - '0');
+                digits++;
+                pos++;
+            }
+            if (digits == 0 || !atTokenEnd()) {
+                pos = start;
+                throw error(start, "expected " + what + " of tag '" + name + "', found " + describe(start));
+            }
+            return neg ? -v : v;
+        }
+
+        /** The token at pos (up to a blank, a comment or the line's end), consumed. */
+        private String token() {
+            int start = pos;
+            while (pos < end && !isBlank(b[pos]) && !isLineEnd(b[pos]) && b[pos] != '#') pos++;
+            return text(start, pos);
+        }
+
+        private static String plural(int n, String word) {
+            return n + " " + word + (n == 1 ? "" : "s");
+        }
+
+        /** The mesh and its tags, the tags' indices checked against the whole file's vertices, faces and edges. */
+        SubdivInput parseSubdiv() {
+            MeshData mesh = parse();
+            int nv = mesh.vertexCount(), nf = mesh.faceCount();
+            int[] creases = new int[tags.creases.size()];
+            Set<Long> edges = null;
+            for (int i = 0; i < creases.length; i += 2) {
+                TagIndex a = tags.creases.get(i), c = tags.creases.get(i + 1);
+                creases[i] = checkIndex(a, nv, "crease vertex", "vertices");
+                creases[i + 1] = checkIndex(c, nv, "crease vertex", "vertices");
+                if (creases[i] == creases[i + 1]) {
+                    throw new SceneException(file, c.line, c.column, "crease from vertex " + a.value + " to itself (a crease is an edge: two different vertices)");
+                }
+                if (edges == null) edges = edges(mesh);
+                if (!edges.contains(edgeKey(creases[i], creases[i + 1]))) {
+                    throw new SceneException(file, a.line, a.column, "crease " + a.value + " " + c.value + " is not an edge of the mesh (no face has vertices "
+                            + a.value + " and " + c.value + " next to each other; tag indices count from 0)");
+                }
+            }
+            int[] corners = new int[tags.corners.size()];
+            for (int i = 0; i < corners.length; i++) corners[i] = checkIndex(tags.corners.get(i), nv, "corner vertex", "vertices");
+            int[] holes = new int[tags.holes.size()];
+            for (int i = 0; i < holes.length; i++) holes[i] = checkIndex(tags.holes.get(i), nf, "hole face", "faces");
+            float[] cs = new float[tags.creaseSharpness.size()], ks = new float[tags.cornerSharpness.size()];
+            for (int i = 0; i < cs.length; i++) cs[i] = tags.creaseSharpness.get(i);
+            for (int i = 0; i < ks.length; i++) ks[i] = tags.cornerSharpness.get(i);
+            return new SubdivInput(mesh, new SubdivTags(creases, cs, corners, ks, holes, tags.options, tags.ignored));
+        }
+
+        private int checkIndex(TagIndex t, int count, String what, String plural) {
+            if (t.value < 0 || t.value >= count) {
+                throw new SceneException(file, t.line, t.column, what + " " + t.value + " out of range (the file has " + count + " " + plural
+                        + "; tag indices count from 0)");
+            }
+            return (int) t.value;
+        }
+
+        private static long edgeKey(int a, int c) {
+            return ((long) Math.min(a, c) << 32) | Math.max(a, c);
+        }
+
+        private static Set<Long> edges(MeshData m) {
+            Set<Long> set = new HashSet<>();
+            int[] sizes = m.faceSizes(), vi = m.vertexIndex();
+            int corner = 0;
+            for (int size : sizes) {
+                for (int j = 0; j < size; j++) set.add(edgeKey(vi[corner + j], vi[corner + (j + 1) % size]));
+                corner += size;
+            }
+            return set;
         }
 
         /**
@@ -399,10 +685,14 @@ public final class ObjReader {
         // ---- messages ----
 
         private SceneException error(int at, String message) {
-            // Columns count characters, not bytes: skip UTF-8 continuation bytes.
+            return new SceneException(file, line, column(at), message);
+        }
+
+        /** Column of {@code at} on the current line; columns count characters, not bytes (UTF-8 continuation bytes are skipped). */
+        private int column(int at) {
             int column = 1;
             for (int i = lineStart; i < at && i < end; i++) if ((b[i] & 0xC0) != 0x80) column++;
-            return new SceneException(file, line, column, message);
+            return column;
         }
 
         private String text(int from, int to) {
@@ -420,5 +710,21 @@ public final class ObjReader {
             while (e < end && !isBlank(b[e]) && !isLineEnd(b[e]) && e - at < 40) e++;
             return "'" + text(at, e) + "'";
         }
+    }
+
+    /** The tag names OpenSubdiv's shape files use; any other name is an error. */
+    private static final List<String> TAGS = List.of("crease", "corner", "hole", "interpolateboundary",
+            "facevaryinginterpolateboundary", "facevaryingpropagatecorners", "creasemethod", "smoothtriangles",
+            "vertexedit", "edgeedit", "faceedit");
+
+    /** An index given in a tag, with where it was written, checked once the mesh is complete. */
+    private record TagIndex(long value, int line, int column) {}
+
+    /** Tags as they are read; tags are few, so plain lists do. */
+    private static final class TagCollector {
+        final List<TagIndex> creases = new ArrayList<>(), corners = new ArrayList<>(), holes = new ArrayList<>();
+        final List<Float> creaseSharpness = new ArrayList<>(), cornerSharpness = new ArrayList<>();
+        final List<String> ignored = new ArrayList<>();
+        SubdivOptions options = SubdivOptions.DEFAULT;
     }
 }
