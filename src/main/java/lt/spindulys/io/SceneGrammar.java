@@ -146,8 +146,19 @@ final class SceneGrammar {
             req("file", Kind.STRING),
             choice("shading", null, "smooth", "flat"));
 
+    // No defaults for the scheme options: absent means "as the file's tags say, else OpenSubdiv's default".
+    static final Block SUBDIV = object("subdiv",
+            req("file", Kind.STRING),
+            opt("level", Kind.INTEGER, 3),
+            choice("boundary", null, "edge-only", "edge-and-corner", "none"),
+            choice("uvinterpolation", null, "none", "corners-only", "corners-plus1", "corners-plus2", "boundaries", "all"),
+            choice("creasing", null, "uniform", "chaikin"),
+            choice("triangles", null, "catmark", "smooth"),
+            choice("shading", "smooth", "smooth", "flat"),
+            opt("uv", Kind.STRING));
+
     /** Every top-level statement, in documentation order. */
-    static final List<Block> STATEMENTS = List.of(SETTINGS, CAMERA, LIGHT, MATERIAL, SPHERE, PLANE, BOX, CYLINDER, TRIANGLE, MESH);
+    static final List<Block> STATEMENTS = List.of(SETTINGS, CAMERA, LIGHT, MATERIAL, SPHERE, PLANE, BOX, CYLINDER, TRIANGLE, MESH, SUBDIV);
 
     private static Block object(String keyword, Key... own) {
         List<Key> keys = new ArrayList<>(List.of(own));

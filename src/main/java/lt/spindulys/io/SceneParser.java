@@ -36,8 +36,12 @@ import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.SceneBuilder;
 import lt.spindulys.scene.Sphere;
+import lt.spindulys.scene.SubdivisionSurface;
 import lt.spindulys.scene.Triangle;
 import lt.spindulys.scene.TriangleMesh;
+import lt.spindulys.subdiv.ControlMesh;
+import lt.spindulys.subdiv.SubdivInput;
+import lt.spindulys.subdiv.SubdivOptions;
 
 /**
  * Reads a .dat scene file (the language is described in docs/scene-format.md) into a
@@ -227,6 +231,8 @@ public final class SceneParser {
         GObject o;
         if (b == SceneGrammar.MESH) {
             o = mesh(p);
+        } else if (b == SceneGrammar.SUBDIV) {
+            o = subdiv(p);
         } else {
             try {
                 o = switch (b.keyword()) {
@@ -288,6 +294,107 @@ public final class SceneParser {
         Object shading = p.get("shading");
         m.smooth(shading != null ? "smooth".equals(shading) : data.normals() != null);
         return m;
+    }
+
+    /**
+     * A subdivision surface: the control mesh from an OBJ (with its tags) or a Workframe .dat
+     * file, an optional .tex unwrap as its UVs, the block's scheme keys over the file's options.
+     */
+    private GObject subdiv(Props p) {
+        Prop levelProp = p.prop("level");
+        int level = (Integer) p.get("level");
+        Token levelAt = levelProp != null ? levelProp.at : p.opener;
+        try {
+            SubdivisionSurface.checkLevel(level);
+        } catch (IllegalArgumentException e) {
+            throw wrap(levelAt, e);
+        }
+        Prop f = p.prop("file");
+        String rel = (String) f.value;
+        Path path = existingFile(f, "subdivision mesh file");
+        String ext = extension(rel);
+        if (!ext.equals("obj") && !ext.equals("dat")) {
+            throw error(f.valueAt, "subdivision mesh file '" + rel + "' must be a Wavefront .obj or a Workframe .dat file");
+        }
+        SubdivInput input;
+        try {
+            input = ext.equals("obj") ? ObjReader.readSubdiv(path) : SubdivInput.of(WorkframeReader.readMesh(path));
+        } catch (IOException e) {
+            throw error(f.valueAt, "cannot read subdivision mesh file '" + rel + "': " + e.getMessage());
+        }
+        Prop uv = p.prop("uv");
+        if (uv != null) {
+            Path uvPath = existingFile(uv, "unwrap file");
+            try {
+                input = input.withCornerUvs(WorkframeReader.readUnwrap(uvPath, input.mesh()));
+            } catch (IOException e) {
+                throw error(uv.valueAt, "cannot read unwrap file '" + uv.value + "': " + e.getMessage());
+            }
+        }
+        input = input.withOptions(options(p, input.options()));
+        ControlMesh control;
+        try {
+            SubdivisionSurface.checkLevel(level, input.refinedFaceCount(level));
+        } catch (IllegalArgumentException e) {
+            throw wrap(levelAt, e);
+        }
+        try {
+            control = input.toControlMesh();
+            return new SubdivisionSurface(control, level, "smooth".equals(p.get("shading")));
+        } catch (IllegalArgumentException e) {
+            throw wrap(f.valueAt, e);
+        }
+    }
+
+    /** The file's options with the block's scheme keys, where given, in their place. */
+    private static SubdivOptions options(Props p, SubdivOptions o) {
+        Object v;
+        if ((v = p.get("boundary")) != null) {
+            o = o.withBoundary(switch ((String) v) {
+                case "edge-only" -> SubdivOptions.Boundary.EDGE_ONLY;
+                case "edge-and-corner" -> SubdivOptions.Boundary.EDGE_AND_CORNER;
+                case "none" -> SubdivOptions.Boundary.NONE;
+                default -> throw new IllegalStateException("boundary choice without a mapping: " + v);
+            });
+        }
+        if ((v = p.get("uvinterpolation")) != null) {
+            o = o.withFaceVarying(switch ((String) v) {
+                case "none" -> SubdivOptions.FaceVarying.NONE;
+                case "corners-only" -> SubdivOptions.FaceVarying.CORNERS_ONLY;
+                case "corners-plus1" -> SubdivOptions.FaceVarying.CORNERS_PLUS1;
+                case "corners-plus2" -> SubdivOptions.FaceVarying.CORNERS_PLUS2;
+                case "boundaries" -> SubdivOptions.FaceVarying.BOUNDARIES;
+                case "all" -> SubdivOptions.FaceVarying.ALL;
+                default -> throw new IllegalStateException("uvinterpolation choice without a mapping: " + v);
+            });
+        }
+        if ((v = p.get("creasing")) != null) {
+            o = o.withCreasing("chaikin".equals(v) ? SubdivOptions.Creasing.CHAIKIN : SubdivOptions.Creasing.UNIFORM);
+        }
+        if ((v = p.get("triangles")) != null) {
+            o = o.withTriangles("smooth".equals(v) ? SubdivOptions.Triangles.SMOOTH : SubdivOptions.Triangles.CATMARK);
+        }
+        return o;
+    }
+
+    /** The file a string key names, resolved against the scene's folder; an error at the value if it does not exist. */
+    private Path existingFile(Prop f, String what) {
+        String rel = (String) f.value;
+        Path path;
+        try {
+            path = baseDir.resolve(rel).normalize();
+        } catch (InvalidPathException e) {
+            throw error(f.valueAt, what + " name '" + rel + "' is not a valid path: " + e.getReason());
+        }
+        if (!Files.isRegularFile(path)) throw error(f.valueAt, what + " '" + rel + "' not found (looked in " + path + ")");
+        return path;
+    }
+
+    /** The lower-case extension of a file name ("" when it has none). */
+    private static String extension(String name) {
+        String base = name.substring(Math.max(name.lastIndexOf('/'), name.lastIndexOf('\\')) + 1);
+        int dot = base.lastIndexOf('.');
+        return dot < 0 ? "" : base.substring(dot + 1).toLowerCase(java.util.Locale.ROOT);
     }
 
     // ---- blocks and values ----

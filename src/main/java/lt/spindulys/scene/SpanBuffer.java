@@ -45,6 +45,19 @@ public final class SpanBuffer {
         t[i] = tt; object[i] = o; prim[i] = p; u[i] = uu; v[i] = vv; flip[i] = f; material[i] = m;
     }
 
+    /**
+     * Makes {@code o} the surface (and {@code o.material()} the material) of every endpoint of the
+     * spans from {@code fromSpan} on: for an object that reports the spans of an inner object it
+     * owns, so that they are shaded through the outer one.
+     */
+    public void relabel(int fromSpan, GObject o) {
+        Material m = o.material();
+        for (int i = 2 * fromSpan; i < 2 * count; i++) {
+            object[i] = o;
+            material[i] = m;
+        }
+    }
+
     /** Overrides the material of every endpoint (an enclosing object with its own material). */
     public void overrideMaterial(Material m) {
         for (int i = 0; i < 2 * count; i++) material[i] = m;

@@ -1,0 +1,282 @@
+package lt.spindulys.io;
+
+import java.io.IOException;
+import java.nio.charset.CharacterCodingException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Pattern;
+
+import lt.spindulys.scene.MeshData;
+
+/**
+ * Reads the two files of the thesis's modeller (Workframe): a {@code .dat} polygon mesh and a
+ * {@code .tex} unwrap with one texture point per face corner. Both are line based: blank lines and
+ * {@code #} comments are skipped, and every other line holds whitespace-separated numbers.
+ *
+ * <pre>
+ * mesh (.dat):  point_count face_count          unwrap (.tex):  corner_count
+ *               x y z            (point_count lines)             u v   (corner_count lines, face after face)
+ *               n i0 i1 ... i(n-1)  (face_count lines, 0-based)
+ * </pre>
+ *
+ * The full description is in docs/mesh-formats.md. Errors are {@link SceneException}s naming
+ * file:line:column of the offending number (or of the end of the file when lines are missing).
+ */
+public final class WorkframeReader {
+    private WorkframeReader() {}
+
+    private static final Pattern INTEGER = Pattern.compile("[+-]?[0-9]+");
+    private static final Pattern NUMBER = Pattern.compile("[+-]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][+-]?[0-9]+)?");
+
+    /** Reads a {@code .dat} mesh file. */
+    public static MeshData readMesh(Path file) throws IOException {
+        return parseMesh(readText(file, "mesh"), file.toString());
+    }
+
+    /** Parses {@code .dat} mesh text; {@code fileName} names it in messages and is the mesh's source. */
+    public static MeshData parseMesh(String text, String fileName) {
+        Lines in = new Lines(text, fileName);
+        Line header = in.next();
+        if (header == null) throw in.errorAtEnd("empty mesh file: expected the header 'point_count face_count'");
+        if (header.size() != 2) {
+            throw in.error(header.size() > 2 ? header.at(2) : header.end(),
+                    "expected the header 'point_count face_count' (two integers), found " + header.describe());
+        }
+        int points = in.count(header, 0, "point count", 3);
+        int faces = in.count(header, 1, "face count", 1);
+
+        double[] positions = new double[3 * points];
+        for (int i = 0; i < points; i++) {
+            Line l = in.next();
+            if (l == null) throw in.errorAtEnd("the file ends after " + i + " of the " + points + " points the header announces (at " + header.position(0) + ")");
+            if (l.size() != 3) {
+                String hint = i > 0 && looksLikeFace(l) ? "; this looks like a face: does the header at " + header.position(0) + " count too many points?" : "";
+                throw in.error(l.size() > 3 ? l.at(3) : l.end(), "point " + i + " has " + plural(l.size(), "number") + ", expected 3 (x y z)" + hint);
+            }
+            for (int k = 0; k < 3; k++) positions[3 * i + k] = in.number(l, k, "point " + i + " " + "xyz".charAt(k));
+        }
+
+        int[] sizes = new int[faces];
+        List<Integer> corners = new ArrayList<>();
+        for (int f = 0; f < faces; f++) {
+            Line l = in.next();
+            if (l == null) throw in.errorAtEnd("the file ends after " + f + " of the " + faces + " faces the header announces (at " + header.position(1) + ")");
+            if (f == 0 && l.size() == 3 && !in.isInteger(l, 0)) {
+                throw in.error(l.at(0), "expected face 0 ('n i0 i1 ...'), found a point: does the header at " + header.position(0)
+                        + " count too few points?");
+            }
+            long n = in.integer(l, 0, "face " + f + " vertex count");
+            if (n < 3) throw in.error(l.at(0), "face " + f + " has " + n + " vertices, expected at least 3");
+            if (l.size() - 1 != n) {
+                throw in.error(l.size() - 1 > n ? l.at((int) n + 1) : l.end(),
+                        "face " + f + " says " + n + " vertices but lists " + plural(l.size() - 1, "index", "indices"));
+            }
+            sizes[f] = (int) n;
+            for (int j = 1; j <= n; j++) {
+                long v = in.integer(l, j, "face " + f + " vertex index");
+                if (v < 0 || v >= points) {
+                    throw in.error(l.at(j), "face " + f + " uses point " + v + ", out of range (the mesh has " + points
+                            + " points, numbered from 0)");
+                }
+                corners.add((int) v);
+            }
+        }
+        Line extra = in.next();
+        if (extra != null) {
+            throw in.error(extra.at(0), "unexpected " + extra.describe() + " after the last of the " + faces
+                    + " faces the header announces (at " + header.position(1) + ")");
+        }
+        int[] vi = new int[corners.size()];
+        for (int i = 0; i < vi.length; i++) vi[i] = corners.get(i);
+        return new MeshData(positions, null, null, sizes, vi, null, null, fileName);
+    }
+
+    /** Reads a {@code .tex} unwrap for {@code mesh}: (u, v) for every face corner of it, face after face. */
+    public static double[] readUnwrap(Path file, MeshData mesh) throws IOException {
+        return parseUnwrap(readText(file, "unwrap"), file.toString(), mesh);
+    }
+
+    /** Parses {@code .tex} unwrap text for {@code mesh}; see {@link #readUnwrap}. */
+    public static double[] parseUnwrap(String text, String fileName, MeshData mesh) {
+        Lines in = new Lines(text, fileName);
+        int expected = mesh.vertexIndex().length;
+        Line header = in.next();
+        if (header == null) throw in.errorAtEnd("empty unwrap file: expected the header 'corner_count'");
+        if (header.size() != 1) {
+            throw in.error(header.size() > 1 ? header.at(1) : header.end(), "expected the header 'corner_count' (one integer), found " + header.describe());
+        }
+        int count = in.count(header, 0, "corner count", 0);
+        if (count != expected) {
+            String meshName = mesh.source() == null ? "the mesh" : "the mesh " + mesh.source();
+            throw in.error(header.at(0), "the unwrap has " + plural(count, "corner") + " but " + meshName + " has " + plural(expected, "face corner")
+                    + " (one 'u v' per corner, face after face)");
+        }
+        double[] uv = new double[2 * count];
+        for (int i = 0; i < count; i++) {
+            Line l = in.next();
+            if (l == null) throw in.errorAtEnd("the file ends after " + i + " of the " + count + " corners the header announces (at " + header.position(0) + ")");
+            if (l.size() != 2) {
+                throw in.error(l.size() > 2 ? l.at(2) : l.end(), "corner " + i + " has " + plural(l.size(), "number") + ", expected 2 (u v)");
+            }
+            uv[2 * i] = in.number(l, 0, "corner " + i + " u");
+            uv[2 * i + 1] = in.number(l, 1, "corner " + i + " v");
+        }
+        Line extra = in.next();
+        if (extra != null) {
+            throw in.error(extra.at(0), "unexpected " + extra.describe() + " after the last of the " + count
+                    + " corners the header announces (at " + header.position(0) + ")");
+        }
+        return uv;
+    }
+
+    private static boolean looksLikeFace(Line l) {
+        if (!INTEGER.matcher(l.text(0)).matches()) return false;
+        for (int i = 1; i < l.size(); i++) if (!INTEGER.matcher(l.text(i)).matches()) return false;
+        try {
+            return Long.parseLong(l.text(0).replace("+", "")) == l.size() - 1;
+        } catch (NumberFormatException e) {
+            return false;
+        }
+    }
+
+    private static String plural(long n, String word) {
+        return plural(n, word, word + "s");
+    }
+
+    private static String plural(long n, String one, String many) {
+        return n + " " + (n == 1 ? one : many);
+    }
+
+    private static String readText(Path file, String what) throws IOException {
+        String name = file.toString();
+        byte[] bytes;
+        try {
+            bytes = Files.readAllBytes(file);
+        } catch (NoSuchFileException e) {
+            throw new SceneException(name, 0, 0, what + " file not found (looked in " + file.toAbsolutePath().normalize() + ")");
+        } catch (IOException e) {
+            throw new SceneException(name, 0, 0, "cannot read " + what + " file: " + e.getMessage(), e);
+        }
+        try {
+            return StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(bytes)).toString();
+        } catch (CharacterCodingException e) {
+            throw new SceneException(name, 0, 0, "the " + what + " file is not UTF-8 text");
+        }
+    }
+
+    /** One line's tokens with their 1-based columns. */
+    private record Line(int number, List<String> tokens, int[] columns) {
+        int size() { return tokens.size(); }
+        String text(int i) { return tokens.get(i); }
+        int[] at(int i) { return new int[] {number, columns[i]}; }
+        /** Just after the last token: where a missing number would have been. */
+        int[] end() {
+            int last = tokens.size() - 1;
+            return new int[] {number, columns[last] + tokens.get(last).length()};
+        }
+        String position(int i) { return number + ":" + columns[i]; }
+
+        String describe() {
+            return tokens.isEmpty() ? "an empty line" : "'" + String.join(" ", tokens) + "'";
+        }
+    }
+
+    /** The non-blank, comment-stripped lines of a text, one at a time. */
+    private static final class Lines {
+        private final String text, file;
+        private int pos, line;
+        /** Line and column just after the last character, for "the file ends" messages. */
+        private int endLine = 1, endColumn = 1;
+
+        Lines(String text, String file) {
+            this.text = text.startsWith("\uFEFF") ? text.substring(1) : text;
+            this.file = file;
+        }
+
+        /** The next line with at least one token, or null at the end of the text. */
+        Line next() {
+            while (pos < text.length()) {
+                line++;
+                int start = pos;
+                int stop = start;
+                while (stop < text.length() && text.charAt(stop) != '\n' && text.charAt(stop) != '\r') stop++;
+                pos = stop;
+                if (pos < text.length()) {
+                    if (text.charAt(pos) == '\r' && pos + 1 < text.length() && text.charAt(pos + 1) == '\n') pos++;
+                    pos++;
+                }
+                endLine = line;
+                endColumn = stop - start + 1;
+                List<String> tokens = new ArrayList<>();
+                List<Integer> cols = new ArrayList<>();
+                int i = start;
+                while (i < stop) {
+                    char c = text.charAt(i);
+                    if (c == '#') break;
+                    if (Character.isWhitespace(c)) {
+                        i++;
+                        continue;
+                    }
+                    int t = i;
+                    while (i < stop && !Character.isWhitespace(text.charAt(i)) && text.charAt(i) != '#') i++;
+                    tokens.add(text.substring(t, i));
+                    cols.add(t - start + 1);
+                }
+                if (pos >= text.length() && stop < text.length()) {
+                    // The text ends with a line break: the end is the start of the (empty) next line.
+                    endLine = line + 1;
+                    endColumn = 1;
+                }
+                if (!tokens.isEmpty()) {
+                    int[] c = new int[cols.size()];
+                    for (int k = 0; k < c.length; k++) c[k] = cols.get(k);
+                    return new Line(line, tokens, c);
+                }
+            }
+            return null;
+        }
+
+        SceneException error(int[] at, String message) {
+            return new SceneException(file, at[0], at[1], message);
+        }
+
+        SceneException errorAtEnd(String message) {
+            return new SceneException(file, endLine, endColumn, message);
+        }
+
+        boolean isInteger(Line l, int i) {
+            return INTEGER.matcher(l.text(i)).matches();
+        }
+
+        long integer(Line l, int i, String what) {
+            String t = l.text(i);
+            if (!INTEGER.matcher(t).matches()) throw error(l.at(i), "expected an integer for the " + what + ", found '" + t + "'");
+            try {
+                return Long.parseLong(t.startsWith("+") ? t.substring(1) : t);
+            } catch (NumberFormatException e) {
+                throw error(l.at(i), "integer " + t + " is out of range for the " + what);
+            }
+        }
+
+        /** A count in a header: an integer from {@code min} that fits an array. */
+        int count(Line l, int i, String what, int min) {
+            long v = integer(l, i, what);
+            if (v < min || v > 100_000_000) {
+                throw error(l.at(i), what + " must be between " + min + " and 100000000, found " + v);
+            }
+            return (int) v;
+        }
+
+        double number(Line l, int i, String what) {
+            String t = l.text(i);
+            if (!NUMBER.matcher(t).matches()) throw error(l.at(i), "expected a number for " + what + ", found '" + t + "'");
+            double v = Double.parseDouble(t);
+            if (!Double.isFinite(v)) throw error(l.at(i), "number " + t + " is too large for " + what);
+            return v;
+        }
+    }
+}
