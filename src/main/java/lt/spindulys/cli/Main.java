@@ -8,7 +8,8 @@ import java.util.List;
 import lt.spindulys.io.SceneException;
 
 /**
- * The {@code render} command line. {@link #run} does the work and returns the exit status, so
+ * The {@code render} command line: {@code render SCENE.dat ...} renders ({@link RenderCommand}),
+ * {@code render subdivide ...} refines a mesh ({@link SubdivideCommand}). {@link #run} does the work and returns the exit status, so
  * tests call it in-process; {@link #main} only exits with that status. Bad usage and bad input
  * print one line to stderr and exit 2; a failure while rendering or writing exits 1. Stack traces
  * appear only with {@code --debug}.
@@ -27,6 +28,14 @@ public final class Main {
         List<String> rest = new ArrayList<>(Arrays.asList(args));
         boolean debug = rest.remove("--debug");
         try {
+            if (!rest.isEmpty() && rest.get(0).equals("subdivide")) {
+                rest.remove(0);
+                if (rest.contains("--help") || rest.contains("-h")) {
+                    out.println(SubdivideCommand.USAGE);
+                    return 0;
+                }
+                return new SubdivideCommand(rest.toArray(new String[0])).run(out, err);
+            }
             if (rest.isEmpty() || rest.contains("--help") || rest.contains("-h")) {
                 (rest.isEmpty() ? err : out).println(RenderCommand.USAGE);
                 return rest.isEmpty() ? 2 : 0;

@@ -21,6 +21,7 @@ final class RenderCommand {
     static final String USAGE = """
             usage: render SCENE.dat [-o OUT] [--width W] [--height H] [--spp N] [--threads N]
                                     [--seed S] [--quality Q] [--stats] [--quiet] [--debug]
+                   render subdivide MESH.obj|MESH.dat --level N -o OUT.obj [...]   (see render subdivide --help)
                    render --help | --version
 
               -o, --output OUT   image to write: .png .jpg .jpeg .tga .pfm (default: SCENE.png here)
