@@ -348,31 +348,44 @@ public final class SceneParser {
 
     /** The file's options with the block's scheme keys, where given, in their place. */
     private static SubdivOptions options(Props p, SubdivOptions o) {
-        Object v;
-        if ((v = p.get("boundary")) != null) {
-            o = o.withBoundary(switch ((String) v) {
+        return subdivOptions(o, (String) p.get("boundary"), (String) p.get("uvinterpolation"), (String) p.get("creasing"), (String) p.get("triangles"));
+    }
+
+    /** {@code base} with each scheme choice of a subdiv block (its grammar word, or null to keep base's) in its place. */
+    static SubdivOptions subdivOptions(SubdivOptions base, String boundary, String uvinterpolation, String creasing, String triangles) {
+        SubdivOptions o = base;
+        if (boundary != null) {
+            o = o.withBoundary(switch (boundary) {
                 case "edge-only" -> SubdivOptions.Boundary.EDGE_ONLY;
                 case "edge-and-corner" -> SubdivOptions.Boundary.EDGE_AND_CORNER;
                 case "none" -> SubdivOptions.Boundary.NONE;
-                default -> throw new IllegalStateException("boundary choice without a mapping: " + v);
+                default -> throw new IllegalStateException("boundary choice without a mapping: " + boundary);
             });
         }
-        if ((v = p.get("uvinterpolation")) != null) {
-            o = o.withFaceVarying(switch ((String) v) {
+        if (uvinterpolation != null) {
+            o = o.withFaceVarying(switch (uvinterpolation) {
                 case "none" -> SubdivOptions.FaceVarying.NONE;
                 case "corners-only" -> SubdivOptions.FaceVarying.CORNERS_ONLY;
                 case "corners-plus1" -> SubdivOptions.FaceVarying.CORNERS_PLUS1;
                 case "corners-plus2" -> SubdivOptions.FaceVarying.CORNERS_PLUS2;
                 case "boundaries" -> SubdivOptions.FaceVarying.BOUNDARIES;
                 case "all" -> SubdivOptions.FaceVarying.ALL;
-                default -> throw new IllegalStateException("uvinterpolation choice without a mapping: " + v);
+                default -> throw new IllegalStateException("uvinterpolation choice without a mapping: " + uvinterpolation);
             });
         }
-        if ((v = p.get("creasing")) != null) {
-            o = o.withCreasing("chaikin".equals(v) ? SubdivOptions.Creasing.CHAIKIN : SubdivOptions.Creasing.UNIFORM);
+        if (creasing != null) {
+            o = o.withCreasing(switch (creasing) {
+                case "uniform" -> SubdivOptions.Creasing.UNIFORM;
+                case "chaikin" -> SubdivOptions.Creasing.CHAIKIN;
+                default -> throw new IllegalStateException("creasing choice without a mapping: " + creasing);
+            });
         }
-        if ((v = p.get("triangles")) != null) {
-            o = o.withTriangles("smooth".equals(v) ? SubdivOptions.Triangles.SMOOTH : SubdivOptions.Triangles.CATMARK);
+        if (triangles != null) {
+            o = o.withTriangles(switch (triangles) {
+                case "catmark" -> SubdivOptions.Triangles.CATMARK;
+                case "smooth" -> SubdivOptions.Triangles.SMOOTH;
+                default -> throw new IllegalStateException("triangles choice without a mapping: " + triangles);
+            });
         }
         return o;
     }

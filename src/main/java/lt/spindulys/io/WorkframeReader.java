@@ -54,8 +54,11 @@ public final class WorkframeReader {
             Line l = in.next();
             if (l == null) throw in.errorAtEnd("the file ends after " + i + " of the " + points + " points the header announces (at " + header.position(0) + ")");
             if (l.size() != 3) {
-                String hint = i > 0 && looksLikeFace(l) ? "; this looks like a face: does the header at " + header.position(0) + " count too many points?" : "";
-                throw in.error(l.size() > 3 ? l.at(3) : l.end(), "point " + i + " has " + plural(l.size(), "number") + ", expected 3 (x y z)" + hint);
+                String what = "point " + i + " has " + plural(l.size(), "number") + ", expected 3 (x y z)";
+                if (i > 0 && looksLikeFace(l)) {
+                    throw in.error(l.at(0), what + "; this looks like a face: does the header at " + header.position(0) + " count too many points?");
+                }
+                throw in.error(l.size() > 3 ? l.at(3) : l.end(), what);
             }
             for (int k = 0; k < 3; k++) positions[3 * i + k] = in.number(l, k, "point " + i + " " + "xyz".charAt(k));
         }
@@ -65,7 +68,9 @@ public final class WorkframeReader {
         for (int f = 0; f < faces; f++) {
             Line l = in.next();
             if (l == null) throw in.errorAtEnd("the file ends after " + f + " of the " + faces + " faces the header announces (at " + header.position(1) + ")");
-            if (f == 0 && l.size() == 3 && !in.isInteger(l, 0)) {
+            // Three numbers that do not start with a 2 (a face too small) are a point too many.
+            if (f == 0 && l.size() == 3 && in.isNumber(l, 0) && in.isNumber(l, 1) && in.isNumber(l, 2)
+                    && !(INTEGER.matcher(l.text(0)).matches() && l.text(0).replace("+", "").equals("2"))) {
                 throw in.error(l.at(0), "expected face 0 ('n i0 i1 ...'), found a point: does the header at " + header.position(0)
                         + " count too few points?");
             }
@@ -133,8 +138,9 @@ public final class WorkframeReader {
         return uv;
     }
 
+    /** n followed by n integers, n at least 3. */
     private static boolean looksLikeFace(Line l) {
-        if (!INTEGER.matcher(l.text(0)).matches()) return false;
+        if (l.size() < 4 || !INTEGER.matcher(l.text(0)).matches()) return false;
         for (int i = 1; i < l.size(); i++) if (!INTEGER.matcher(l.text(i)).matches()) return false;
         try {
             return Long.parseLong(l.text(0).replace("+", "")) == l.size() - 1;
@@ -248,8 +254,8 @@ public final class WorkframeReader {
             return new SceneException(file, endLine, endColumn, message);
         }
 
-        boolean isInteger(Line l, int i) {
-            return INTEGER.matcher(l.text(i)).matches();
+        boolean isNumber(Line l, int i) {
+            return NUMBER.matcher(l.text(i)).matches();
         }
 
         long integer(Line l, int i, String what) {

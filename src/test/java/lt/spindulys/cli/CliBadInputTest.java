@@ -29,6 +29,7 @@ class CliBadInputTest {
     void malformedSceneFailsCleanly(BadInputCases.Case c) throws IOException {
         Path scene = dir.resolve("scene.dat");
         Files.writeString(scene, c.scene());
+        c.writeFiles(dir);
         assertFailsCleanly(scene, c.expectedMessage(scene.toString(), dir));
     }
 

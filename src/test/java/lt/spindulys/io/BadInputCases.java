@@ -1,34 +1,72 @@
 package lt.spindulys.io;
 
+import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.Map;
 
 /**
  * Malformed scenes and the exact error each must produce, shared by the parser's table test and
  * by tests of the command line (which also check that no image is written). To add a case, append
- * one line to {@link #scenes()}.
+ * one line to {@link #scenes()}; a case may bring files (meshes) to be written next to the scene.
  */
 public final class BadInputCases {
     private BadInputCases() {}
 
     /**
-     * One malformed scene.
+     * One malformed scene, with the files it refers to.
      *
-     * @param name     short description, shown as the test's name
-     * @param scene    the scene text
-     * @param expected "line:column: message" as reported after the file name; {@code ${dir}}
-     *                 stands for the absolute folder relative paths are resolved against
+     * @param name      short description, shown as the test's name
+     * @param scene     the scene text
+     * @param expected  "line:column: message" as reported after the file name; {@code ${dir}}
+     *                  stands for the absolute folder relative paths are resolved against
+     * @param files     further files (name relative to the scene's folder, then content) that
+     *                  must be written next to the scene
+     * @param errorFile the file, among {@code files}, that the error is in; null for the scene itself
      */
-    public record Case(String name, String scene, String expected) {
+    public record Case(String name, String scene, String expected, Map<String, String> files, String errorFile) {
+        public Case(String name, String scene, String expected) {
+            this(name, scene, expected, Map.of(), null);
+        }
+
         /** The full message expected for a scene read as {@code fileName} with paths relative to {@code baseDir}. */
         public String expectedMessage(String fileName, Path baseDir) {
-            return fileName + ":" + expected.replace("${dir}", baseDir.toAbsolutePath().normalize().toString());
+            return expectedFile(fileName, baseDir) + ":" + expected.replace("${dir}", baseDir.toAbsolutePath().normalize().toString());
+        }
+
+        /** The file the message must name: the scene as named, or the other file as the parser resolved it. */
+        public String expectedFile(String fileName, Path baseDir) {
+            return errorFile == null ? fileName : baseDir.toAbsolutePath().normalize().resolve(errorFile).toString();
+        }
+
+        /** Writes {@link #files} into {@code dir}. */
+        public void writeFiles(Path dir) throws IOException {
+            for (Map.Entry<String, String> f : files.entrySet()) {
+                Path p = dir.resolve(f.getKey());
+                Files.createDirectories(p.getParent());
+                Files.writeString(p, f.getValue());
+            }
         }
 
         @Override public String toString() { return name; }
     }
 
     private static Case c(String name, String scene, String expected) { return new Case(name, scene, expected); }
+
+    /** A case whose scene refers to {@code file} with {@code content}; {@code errorInFile}: the error is reported in that file. */
+    private static Case withFile(String name, String scene, String file, String content, boolean errorInFile, String expected) {
+        return new Case(name, scene, expected, Map.of(file, content), errorInFile ? file : null);
+    }
+
+    /** As {@link #withFile}, with two files; the error is in the second. */
+    private static Case withFiles(String name, String scene, String file1, String content1, String file2, String content2, String expected) {
+        return new Case(name, scene, expected, Map.of(file1, content1, file2, content2), file2);
+    }
+
+    private static final String CUBE_DAT = "8 6\n-1 -1 -1\n1 -1 -1\n1 1 -1\n-1 1 -1\n-1 -1 1\n1 -1 1\n1 1 1\n-1 1 1\n"
+            + "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 1 2 6 5\n4 0 4 7 3\n";
+    private static final String QUAD_OBJ = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
 
     /** Every case; none of them must produce an image. */
     public static List<Case> scenes() {
@@ -47,7 +85,7 @@ public final class BadInputCases {
                 // ---- structure ----
                 c("unknown statement", "shpere { radius 1 }", "1:1: unknown statement 'shpere' (did you mean 'sphere'?)"),
                 c("property outside a block", "sphere { } radius 2", "1:12: unknown statement 'radius' ('radius' is a property of sphere or cylinder: was a block closed too early?)"),
-                c("number as statement", "42", "1:1: expected a statement (settings, camera, light, material, sphere, plane, box, cylinder, triangle, mesh), found '42'"),
+                c("number as statement", "42", "1:1: expected a statement (settings, camera, light, material, sphere, plane, box, cylinder, triangle, mesh, subdiv), found '42'"),
                 c("stray closing brace", cam + "}", "2:1: unexpected '}': no block is open"),
                 c("missing '{'", "sphere radius 1 }", "1:8: expected '{' after 'sphere', found 'radius'"),
                 c("missing '{' at end of file", "box", "1:4: expected '{' after 'box', found end of file"),
@@ -115,6 +153,36 @@ public final class BadInputCases {
                 c("undefined material with suggestion", "material glass { kt 0.9 }\nsphere { material glas }", "2:19: unknown material 'glas' (did you mean 'glass'?)"),
                 c("material used before its definition", "sphere { material glass }\nmaterial glass { kt 0.9 }", "1:19: unknown material 'glass' (a material must be defined before the objects that use it)"),
                 c("material redefined", "material glass { kt 0.9 }\nmaterial glass { kt 0.8 }", "2:10: material 'glass' is already defined at 1:1"),
-                c("missing mesh file", "mesh { file \"models/x.obj\" }", "1:13: mesh file 'models/x.obj' not found (looked in ${dir}/models/x.obj)"));
+                c("missing mesh file", "mesh { file \"models/x.obj\" }", "1:13: mesh file 'models/x.obj' not found (looked in ${dir}/models/x.obj)"),
+                // ---- subdivision surfaces ----
+                c("subdiv missing file", "subdiv { level 2 }", "1:1: subdiv needs 'file'"),
+                c("subdiv file not found", "subdiv {\n  file \"models/cube.obj\"\n}", "2:8: subdivision mesh file 'models/cube.obj' not found (looked in ${dir}/models/cube.obj)"),
+                c("subdiv level out of range", "subdiv { file \"cube.obj\"  level 9 }", "1:27: subdivision level must be between 0 and 8, found 9"),
+                c("subdiv negative level", "subdiv { level -1  file \"cube.obj\" }", "1:10: subdivision level must be between 0 and 8, found -1"),
+                c("subdiv fractional level", "subdiv { file \"cube.obj\"  level 2.5 }", "1:33: expected an integer for 'level', found '2.5'"),
+                c("subdiv unknown boundary mode", "subdiv { file \"cube.obj\"  boundary edge_only }", "1:36: expected edge-only, edge-and-corner or none for 'boundary', found 'edge_only' (did you mean 'edge-only'?)"),
+                c("subdiv unknown uv interpolation", "subdiv { file \"cube.obj\"  uvinterpolation linear }",
+                        "1:43: expected none, corners-only, corners-plus1, corners-plus2, boundaries or all for 'uvinterpolation', found 'linear'"),
+                c("subdiv unknown creasing", "subdiv { file \"cube.obj\"  creasing chaikn }", "1:36: expected uniform or chaikin for 'creasing', found 'chaikn' (did you mean 'chaikin'?)"),
+                c("subdiv unknown triangle rule", "subdiv { file \"cube.obj\"  triangles loop }", "1:37: expected catmark or smooth for 'triangles', found 'loop'"),
+                c("subdiv unknown key", "subdiv { file \"cube.obj\"  levle 2 }", "1:27: unknown property 'levle' in subdiv (did you mean 'level'?)"),
+                withFile("subdiv file of another kind", "subdiv { file \"cube.ply\" }", "cube.ply", "ply\n", false,
+                        "1:15: subdivision mesh file 'cube.ply' must be a Wavefront .obj or a Workframe .dat file"),
+                withFile("subdiv malformed tag line", "subdiv { file \"m.obj\" }", "m.obj", QUAD_OBJ + "t crease 2/1/0 0 1\n", true,
+                        "6:19: expected a number for sharpness 1 of 1 of tag 'crease' (its counts 2/1/0 say 2 integers, 1 float and 0 strings), found end of line"),
+                withFile("subdiv unknown tag", "subdiv { file \"m.obj\" }", "m.obj", QUAD_OBJ + "t sharpness 1/1/0 0 1\n", true,
+                        "6:3: unknown tag 'sharpness' (known: crease, corner, hole, interpolateboundary, facevaryinginterpolateboundary, "
+                                + "facevaryingpropagatecorners, creasemethod, smoothtriangles, vertexedit, edgeedit, faceedit)"),
+                withFile("subdiv tag index out of range", "subdiv { file \"m.obj\" }", "m.obj", QUAD_OBJ + "t corner 1/1/0 4 10\n", true,
+                        "6:16: corner vertex 4 out of range (the file has 4 vertices; tag indices count from 0)"),
+                withFile("subdiv .dat with too few points", "subdiv { file \"m.dat\" }", "m.dat", "4 1\n0 0 0\n1 0 0\n1 1 0\n4 0 1 2 3\n", true,
+                        "5:1: point 3 has 5 numbers, expected 3 (x y z); this looks like a face: does the header at 1:1 count too many points?"),
+                withFile("subdiv .dat with too many faces", "subdiv { file \"m.dat\" }", "m.dat", "3 2\n0 0 0\n1 0 0\n1 1 0\n3 0 1 2\n", true,
+                        "6:1: the file ends after 1 of the 2 faces the header announces (at 1:3)"),
+                withFile("subdiv unwrap not found", "subdiv { file \"cube.dat\"  uv \"cube.tex\" }", "cube.dat", CUBE_DAT, false,
+                        "1:30: unwrap file 'cube.tex' not found (looked in ${dir}/cube.tex)"),
+                withFiles("subdiv unwrap with the wrong number of corners", "subdiv { file \"cube.dat\"  uv \"cube.tex\" }", "cube.dat", CUBE_DAT,
+                        "cube.tex", "# one per corner\n20\n" + "0 0\n".repeat(20),
+                        "2:1: the unwrap has 20 corners but the mesh ${dir}/cube.dat has 24 face corners (one 'u v' per corner, face after face)"));
     }
 }
