@@ -11,8 +11,9 @@ import lt.spindulys.subdiv.RefinedMesh;
  * A Catmull-Clark subdivision surface: a control mesh refined uniformly to a fixed level once, at
  * construction, and rendered as the triangles of the refined quads. Hole faces are left out; each
  * quad is split into two triangles along its shorter diagonal. Smooth shading interpolates the
- * limit-surface normals of the refined vertices, which makes even a low level look round; flat
- * shading uses each triangle's own normal and shows the facets.
+ * limit-surface normals of the refined vertices, which makes even a low level look round (at a
+ * sharp edge, where the limit surface has a tangent plane on either side, each side keeps its own
+ * normal); flat shading uses each triangle's own normal and shows the facets.
  *
  * <p>The triangles are an ordinary {@link TriangleMesh} (positions of the refined vertices, limit
  * normals, refined face-varying UVs), and every query is delegated to it: the surface hits,
@@ -85,10 +86,9 @@ public final class SubdivisionSurface extends GObject {
     }
 
     /**
-     * The triangles of a refined mesh as MeshData: its positions, its limit normals (smooth
-     * shading only: one per vertex, indexed like the positions) and its face-varying UVs; quads
-     * split along the shorter diagonal, other polygons (at level 0) left to TriangleMesh's fans,
-     * holes dropped.
+     * The triangles of a refined mesh as MeshData: its positions, its face-varying UVs and, for
+     * smooth shading, a normal per corner (see {@link #cornerNormals}); quads split along the
+     * shorter diagonal, other polygons (at level 0) left to TriangleMesh's fans, holes dropped.
      */
     static MeshData triangles(RefinedMesh r, boolean smooth) {
         double[] p = r.positions();
@@ -106,10 +106,7 @@ public final class SubdivisionSurface extends GObject {
         for (int f = 0, c = 0; f < sizes.length; c += sizes[f], f++) {
             if (r.isHole(f)) continue;
             if (sizes[f] == 4) {
-                int a = fv[c], b = fv[c + 1], cc = fv[c + 2], d = fv[c + 3];
-                // The shorter diagonal keeps the two triangles closest to the (curved) quad.
-                int s = dist2(p, a, cc) <= dist2(p, b, d) ? 0 : 1;
-                int[] order = s == 0 ? SPLIT_AC : SPLIT_BD;
+                int[] order = split(p, fv, c);
                 for (int j : order) {
                     outV[k] = fv[c + j];
                     if (withUv) outUv[k] = fuv[c + j];
@@ -184,7 +181,7 @@ public final class SubdivisionSurface extends GObject {
         int k = 0;
         for (int f = 0; f < nf; f++) {
             if (r.isHole(f)) continue;
-            int[] order = sizes[f] != 4 ? null : dist2(p, fv[start[f]], fv[start[f] + 2]) <= dist2(p, fv[start[f] + 1], fv[start[f] + 3]) ? SPLIT_AC : SPLIT_BD;
+            int[] order = sizes[f] == 4 ? split(p, fv, start[f]) : null;
             int n = order != null ? 6 : sizes[f];
             for (int m = 0; m < n; m++) {
                 int v = fv[start[f] + (order != null ? order[m] : m)];
@@ -227,6 +224,14 @@ public final class SubdivisionSurface extends GObject {
 
     /** Corners of the two triangles of a quad abcd cut along ac, or along bd; both keep the winding. */
     private static final int[] SPLIT_AC = {0, 1, 2, 0, 2, 3}, SPLIT_BD = {0, 1, 3, 1, 2, 3};
+
+    /**
+     * How the quad whose corners start at {@code c} is cut: along the shorter diagonal, which keeps
+     * the two triangles closest to the (curved) quad.
+     */
+    private static int[] split(double[] p, int[] fv, int c) {
+        return dist2(p, fv[c], fv[c + 2]) <= dist2(p, fv[c + 1], fv[c + 3]) ? SPLIT_AC : SPLIT_BD;
+    }
 
     private static double dist2(double[] p, int a, int b) {
         double dx = p[3 * a] - p[3 * b], dy = p[3 * a + 1] - p[3 * b + 1], dz = p[3 * a + 2] - p[3 * b + 2];
