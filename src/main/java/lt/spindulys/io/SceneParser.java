@@ -332,14 +332,13 @@ public final class SceneParser {
             }
         }
         input = input.withOptions(options(p, input.options()));
-        ControlMesh control;
         try {
             SubdivisionSurface.checkLevel(level, input.refinedFaceCount(level));
         } catch (IllegalArgumentException e) {
             throw wrap(levelAt, e);
         }
         try {
-            control = input.toControlMesh();
+            ControlMesh control = input.toControlMesh();
             return new SubdivisionSurface(control, level, "smooth".equals(p.get("shading")));
         } catch (IllegalArgumentException e) {
             throw wrap(f.valueAt, e);
