@@ -5,5 +5,10 @@ public final class CatmullClark {
     private CatmullClark() {}
 
     /** The mesh refined {@code level} times (0 gives the control mesh itself as a RefinedMesh). */
-    public static RefinedMesh refine(ControlMesh mesh, int level) { throw new UnsupportedOperationException("TODO"); }
+    public static RefinedMesh refine(ControlMesh mesh, int level) {
+        if (level < 0) throw new IllegalArgumentException("refinement level " + level + " is negative");
+        RefinedMesh r = RefinedMesh.base(mesh);
+        for (int i = 0; i < level; i++) r = r.refine();
+        return r;
+    }
 }

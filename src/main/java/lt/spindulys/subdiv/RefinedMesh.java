@@ -1,30 +1,136 @@
 package lt.spindulys.subdiv;
 
+import java.util.Arrays;
+
 /**
  * One level of a subdivided mesh: positions, faces (quads after the first level), which faces
  * are holes, face-varying UVs, and, on request, limit positions and normals of its vertices.
  * Arrays returned are the mesh's own; do not modify them.
+ *
+ * <p><b>Numbering</b> (OpenSubdiv Far's, with {@code orderVerticesFromFacesFirst=false}): the
+ * vertices of level L are, in order, the children of the vertices of level L-1 (same indices),
+ * one point per face of level L-1 (in face order), and one point per edge of level L-1 (in the
+ * order of {@link #edgeVertices()} of level L-1). The faces of level L are the children of the
+ * faces of level L-1 in order, one per parent corner j: for a quad parent (v0..v3) child j keeps
+ * v_j at position j, for other parents child j is (v_j, point of edge j, face point, point of
+ * edge j-1).
  */
 public final class RefinedMesh {
-    RefinedMesh() { throw new UnsupportedOperationException("TODO"); }
+    private final ControlMesh control;
+    private final int level;
+    final Level topo;
+    private final double[] positions;
+    private final FaceVarying.Channel uv;
+    private int[] faceSizes;
+    private double[] limitPositions, limitNormals;
 
-    public int level() { throw new UnsupportedOperationException("TODO"); }
-    public int vertexCount() { throw new UnsupportedOperationException("TODO"); }
+    private RefinedMesh(ControlMesh control, int level, Level topo, double[] positions, FaceVarying.Channel uv) {
+        this.control = control;
+        this.level = level;
+        this.topo = topo;
+        this.positions = positions;
+        this.uv = uv;
+    }
+
+    /** Level 0: the control mesh itself. */
+    static RefinedMesh base(ControlMesh m) {
+        return new RefinedMesh(m, 0, m.base, m.positions(), m.uvChannel);
+    }
+
+    /** The next level: this mesh refined once. */
+    public RefinedMesh refine() {
+        SubdivOptions opt = control.options();
+        Level c = topo.refine(opt.creasing() == SubdivOptions.Creasing.CHAIKIN, null);
+        double[] p = new double[3 * c.nV];
+        PrimvarRefiner.interpolate(topo, c, opt, 3, positions, p, false);
+        FaceVarying.Channel cuv = uv == null ? null : uv.refine(c, opt);
+        return new RefinedMesh(control, level + 1, c, p, cuv);
+    }
+
+    public ControlMesh controlMesh() { return control; }
+
+    public int level() { return level; }
+
+    public int vertexCount() { return topo.nV; }
+
     /** x, y, z per vertex. */
-    public double[] positions() { throw new UnsupportedOperationException("TODO"); }
-    public int faceCount() { throw new UnsupportedOperationException("TODO"); }
+    public double[] positions() { return positions; }
+
+    public int faceCount() { return topo.nF; }
+
     /** Corners per face (all 4 after level 0). */
-    public int[] faceSizes() { throw new UnsupportedOperationException("TODO"); }
+    public synchronized int[] faceSizes() {
+        if (faceSizes == null) {
+            if (level == 0) {
+                faceSizes = control.faceSizes();
+            } else {
+                faceSizes = new int[topo.nF];
+                Arrays.fill(faceSizes, 4);
+            }
+        }
+        return faceSizes;
+    }
+
     /** Vertex index of every face corner, face after face. */
-    public int[] faceVertices() { throw new UnsupportedOperationException("TODO"); }
+    public int[] faceVertices() { return topo.hOrig; }
+
     /** True if face f is a hole (refined, but not rendered). */
-    public boolean isHole(int face) { throw new UnsupportedOperationException("TODO"); }
+    public boolean isHole(int face) { return topo.hole != null && topo.hole[face]; }
+
+    /** True if any face is a hole. */
+    public boolean hasHoles() {
+        if (topo.hole == null) return false;
+        for (boolean b : topo.hole) if (b) return true;
+        return false;
+    }
+
     /** (u, v) pairs, or null when the mesh has no UVs. */
-    public double[] uvs() { throw new UnsupportedOperationException("TODO"); }
+    public double[] uvs() {
+        if (uv == null) return null;
+        return level == 0 ? control.uvs() : uv.values();
+    }
+
     /** Index into {@link #uvs()} of every face corner, parallel to {@link #faceVertices()}, or null. */
-    public int[] faceUvs() { throw new UnsupportedOperationException("TODO"); }
+    public int[] faceUvs() {
+        if (uv == null) return null;
+        return level == 0 ? control.faceUvIndices() : uv.level().hOrig;
+    }
+
+    /** Number of edges (Far's edges: a non-manifold edge counts once per instance). */
+    public int edgeCount() { return topo.nE; }
+
+    /**
+     * The two vertices of every edge, in Far's edge order and vertex order: the point of edge e
+     * is vertex {@code vertexCount() + faceCount() + e} of the next level.
+     */
+    public int[] edgeVertices() {
+        int[] ev = new int[2 * topo.nE];
+        for (int h = 0; h < topo.nH; h++) {
+            if (!topo.primary(h)) continue;
+            int e = topo.edge(h);
+            ev[2 * e] = topo.edgeV0(h);
+            ev[2 * e + 1] = topo.edgeV1(h);
+        }
+        return ev;
+    }
+
     /** Limit-surface position of every vertex (x, y, z each). */
-    public double[] limitPositions() { throw new UnsupportedOperationException("TODO"); }
+    public double[] limitPositions() {
+        computeLimit();
+        return limitPositions;
+    }
+
     /** Unit limit-surface normal of every vertex (x, y, z each), on the side the faces wind counter-clockwise. */
-    public double[] limitNormals() { throw new UnsupportedOperationException("TODO"); }
+    public double[] limitNormals() {
+        computeLimit();
+        return limitNormals;
+    }
+
+    private synchronized void computeLimit() {
+        if (limitPositions != null) return;
+        double[] pos = new double[3 * topo.nV], nrm = new double[3 * topo.nV];
+        Limit.evaluate(topo, positions, pos, nrm);
+        limitNormals = nrm;
+        limitPositions = pos;
+    }
 }
