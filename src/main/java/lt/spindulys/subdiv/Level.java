@@ -58,6 +58,8 @@ final class Level {
      * (0 or 1) the vertex is.
      */
     int[] nmVert = new int[0], nmVertStart = {0}, nmVertHalf = new int[0], nmVertOther = new int[0], nmVertEnd = new int[0];
+    /** Per non-manifold vertex (parallel to {@link #nmVert}), its corners in Far's vertex-face order. */
+    int[] nmFaceStart = {0}, nmFaceHalf = new int[0];
 
     Level(int depth, int nV, int nF, int nE, int[] faceStart, int[] hFace, int[] hOrig, int[] hTwin, int[] hEdge, int[] vOut) {
         this.depth = depth;
@@ -343,6 +345,17 @@ final class Level {
             }
             lv.nmVertStart[++i] = k;
         }
+        lv.nmFaceStart = new int[nmCount + 1];
+        for (int i = 0; i < nmCount; i++) lv.nmFaceStart[i + 1] = lv.nmFaceStart[i] + fCount[lv.nmVert[i]];
+        lv.nmFaceHalf = new int[lv.nmFaceStart[nmCount]];
+        int[] nmSlot = new int[nV];
+        Arrays.fill(nmSlot, -1);
+        for (int i = 0; i < nmCount; i++) nmSlot[lv.nmVert[i]] = i;
+        int[] faceFill = new int[nmCount];
+        for (int h = 0; h < nH; h++) {
+            int i = nmSlot[hOrig[h]];
+            if (i >= 0) lv.nmFaceHalf[lv.nmFaceStart[i] + faceFill[i]++] = h;
+        }
         // Scratch for tagging: kept on the instance until tagBase has run.
         lv.base = b;
         lv.baseFaceCount = fCount;
@@ -532,7 +545,9 @@ final class Level {
             else if (Crease.isSharp(vs[v])) t |= T_SEMI_SHARP;
             tags[v] = (byte) t;
             if (t != 0 || vs[v] != 0f) any = true;
-            if (makeHoles && boundaryEdges > 0) {
+            // Far 3.5 with boundary NONE: the faces at a boundary vertex become holes unless all
+            // its boundary edges were tagged infinitely sharp.
+            if (makeHoles && boundaryEdges > 0 && hasUntaggedBoundaryEdge(v, nm, ringBuf, eSharpIn)) {
                 if (holes == null) holes = new boolean[nF];
                 if (!nm) {
                     for (int i = 0; i < faceCount; i++) holes[face(ringBuf[i])] = true;
@@ -549,6 +564,23 @@ final class Level {
         base = null;
         baseFaceCount = null;
         baseNm = null;
+    }
+
+    private boolean hasUntaggedBoundaryEdge(int v, boolean nm, int[] ringBuf, float[] tagged) {
+        if (!nm) {
+            int n = ring(v, ringBuf);
+            for (int i = 0; i <= n; i++) {
+                int h = ringBuf[i];
+                if (hTwin[h] < 0 && (tagged == null || !Crease.isInfinite(tagged[edge(h)]))) return true;
+            }
+            return false;
+        }
+        int i = nmVertIndex(v);
+        for (int k = nmVertStart[i]; k < nmVertStart[i + 1]; k++) {
+            int e = nmVertEnd[k] >> 1;
+            if (base.eFaceCount[e] < 2 && (tagged == null || !Crease.isInfinite(tagged[e]))) return true;
+        }
+        return false;
     }
 
     // ---------------------------------------------------------------- refinement
@@ -589,6 +621,7 @@ final class Level {
             c.hole = ch;
         }
         refineNonManifold(c);
+        refineNonManifoldFaces(c);
         refineSharpness(c, chaikin);
         if (sharpSource != null) c.eSharp = sharpnessFrom(c, sharpSource);
         refineTags(c);
@@ -743,6 +776,31 @@ final class Level {
                 k++;
             }
             c.nmVertStart[nmv + i + 1] = k;
+        }
+    }
+
+    /** Far's vertex-face order for the child's non-manifold vertices (as corner half-edges). */
+    private void refineNonManifoldFaces(Level c) {
+        int nmv = nmVert.length, nme = nmEdge.length;
+        c.nmFaceStart = new int[nmv + nme + 1];
+        int total = nmFaceHalf.length;
+        for (int i = 0; i < nme; i++) total += 2 * (nmEdgeStart[i + 1] - nmEdgeStart[i]);
+        c.nmFaceHalf = new int[total];
+        int k = 0;
+        for (int i = 0; i < nmv; i++) {
+            for (int j = nmFaceStart[i]; j < nmFaceStart[i + 1]; j++) {
+                int h = nmFaceHalf[j];
+                c.nmFaceHalf[k++] = 4 * h + (rot(h) & 3);
+            }
+            c.nmFaceStart[i + 1] = k;
+        }
+        for (int i = 0; i < nme; i++) {
+            for (int j = nmEdgeStart[i]; j < nmEdgeStart[i + 1]; j++) {
+                int x = nmEdgeHalf[j], xn = next(x);
+                c.nmFaceHalf[k++] = 4 * xn + ((rot(xn) + 3) & 3);
+                c.nmFaceHalf[k++] = 4 * x + ((rot(x) + 1) & 3);
+            }
+            c.nmFaceStart[nmv + i + 1] = k;
         }
     }
 

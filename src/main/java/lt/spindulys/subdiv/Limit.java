@@ -35,7 +35,11 @@ final class Limit {
                     other[nEdges] = lv.nmVertOther[k];
                     sharp[nEdges] = lv.edgeSharpness(lv.nmVertHalf[k]);
                 }
+                // Far's vertex-face order of a non-manifold vertex, as its masks index it.
                 nFaces = 0;
+                for (int k = lv.nmFaceStart[nmi]; k < lv.nmFaceStart[nmi + 1]; k++, nFaces++) {
+                    opp[nFaces] = lv.hOrig[lv.next(lv.next(lv.nmFaceHalf[k]))];
+                }
             } else {
                 int n = lv.ring(v, ring);
                 boolean boundary = lv.hTwin[lv.vOut[v]] < 0;
@@ -126,20 +130,7 @@ final class Limit {
                 t1e[c0] = 0.5;
                 t1e[c1] = -0.5;
                 int interior = c1 - c0 - 1;
-                if (nmi >= 0) {
-                    // Non-manifold: no face order to follow; span the non-crease edges instead.
-                    t2v = 0.0;
-                    int count = 0;
-                    for (int j = 0; j < nEdges; j++) if (j != c0 && j != c1) count++;
-                    if (count == 0) {
-                        t2v = -6.0;
-                        t2e[c0] = 3.0;
-                        t2e[c1] = 3.0;
-                    } else {
-                        t2v = -1.0;
-                        for (int j = 0; j < nEdges; j++) if (j != c0 && j != c1) t2e[j] = 1.0 / count;
-                    }
-                } else if (interior == 1) {
+                if (interior == 1) {
                     t2v = -4.0 / 6.0;
                     t2e[c0] = -1.0 / 6.0;
                     t2e[c0 + 1] = 4.0 / 6.0;
@@ -199,10 +190,9 @@ final class Limit {
                 }
             }
             if (nrm != null) {
-                int tf = nmi >= 0 ? 0 : nFaces;
                 for (int d = 0; d < 3; d++) {
                     double a = 0.0, b = 0.0;
-                    for (int j = 0; j < tf; j++) {
+                    for (int j = 0; j < nFaces; j++) {
                         double q = p[3 * opp[j] + d];
                         a += t1f[j] * q;
                         b += t2f[j] * q;

@@ -12,8 +12,8 @@ package lt.spindulys.subdiv;
 final class PrimvarRefiner {
     private PrimvarRefiner() {}
 
-    /** Far's smooth-triangle edge weight, a float constant in Sdc. */
-    private static final double TRI_EDGE_WEIGHT = 0.470f;
+    /** Far's smooth-triangle edge weight (after Hbr). */
+    private static final double TRI_EDGE_WEIGHT = 0.470;
 
     /**
      * @param src    {@code stride} values per vertex of {@code p}
