@@ -26,7 +26,23 @@ final class Limit {
         double[] ew = new double[cap], fw = new double[cap], t1e = new double[cap], t1f = new double[cap],
                 t2e = new double[cap], t2f = new double[cap];
         double[] t = new double[6];
+        boolean quads = lv.faceStart == null;
+        boolean anyNm = lv.nmVert.length > 0;
+        // Regular vertices first, visited in half-edge order (each at its leading half-edge),
+        // which keeps the 1-ring lookups close in memory; the rest vertex by vertex.
+        boolean[] done = null;
+        if (quads) {
+            done = new boolean[lv.nV];
+            int[] orig = lv.hOrig, out = lv.vOut;
+            for (int h = 0; h < lv.nH; h++) {
+                int v = orig[h];
+                if (out[v] == h && lv.rule(v) <= Crease.RULE_DART && !(anyNm && lv.isNonManifold(v))) {
+                    done[v] = regular(lv, p, v, pos, nrm);
+                }
+            }
+        }
         for (int v = 0; v < lv.nV; v++) {
+            if (done != null && done[v]) continue;
             int nEdges, nFaces;
             int nmi = lv.nmVertIndex(v);
             if (nmi >= 0) {
@@ -220,6 +236,52 @@ final class Limit {
                 }
             }
         }
+    }
+
+    /**
+     * The smooth masks at an interior vertex of valence 4 in a quad level, unrolled. Returns
+     * false (having written nothing) for any other vertex.
+     */
+    private static boolean regular(Level lv, double[] p, int v, double[] pos, double[] nrm) {
+        int[] orig = lv.hOrig, twin = lv.hTwin;
+        int h0 = lv.vOut[v];
+        int h1 = twin[(h0 & ~3) | ((h0 + 3) & 3)];
+        if (h1 < 0) return false;
+        int h2 = twin[(h1 & ~3) | ((h1 + 3) & 3)];
+        if (h2 < 0) return false;
+        int h3 = twin[(h2 & ~3) | ((h2 + 3) & 3)];
+        if (h3 < 0 || twin[(h3 & ~3) | ((h3 + 3) & 3)] != h0) return false;
+        int e0 = 3 * orig[(h0 & ~3) | ((h0 + 1) & 3)], e1 = 3 * orig[(h1 & ~3) | ((h1 + 1) & 3)];
+        int e2 = 3 * orig[(h2 & ~3) | ((h2 + 1) & 3)], e3 = 3 * orig[(h3 & ~3) | ((h3 + 1) & 3)];
+        int o0 = 3 * orig[(h0 & ~3) | ((h0 + 2) & 3)], o1 = 3 * orig[(h1 & ~3) | ((h1 + 2) & 3)];
+        int o2 = 3 * orig[(h2 & ~3) | ((h2 + 2) & 3)], o3 = 3 * orig[(h3 & ~3) | ((h3 + 2) & 3)];
+        int vp = 3 * v;
+        if (pos != null) {
+            final double fw = 1.0 / 36.0, ew = 1.0 / 9.0, vw = 4.0 / 9.0;
+            for (int d = 0; d < 3; d++) {
+                pos[vp + d] = fw * p[o0 + d] + fw * p[o1 + d] + fw * p[o2 + d] + fw * p[o3 + d]
+                        + ew * p[e0 + d] + ew * p[e1 + d] + ew * p[e2 + d] + ew * p[e3 + d] + vw * p[vp + d];
+            }
+        }
+        if (nrm != null) {
+            double ax = 4 * (p[e0] - p[e2]) + (p[o0] - p[o1] - p[o2] + p[o3]);
+            double ay = 4 * (p[e0 + 1] - p[e2 + 1]) + (p[o0 + 1] - p[o1 + 1] - p[o2 + 1] + p[o3 + 1]);
+            double az = 4 * (p[e0 + 2] - p[e2 + 2]) + (p[o0 + 2] - p[o1 + 2] - p[o2 + 2] + p[o3 + 2]);
+            double bx = 4 * (p[e1] - p[e3]) + (p[o0] + p[o1] - p[o2] - p[o3]);
+            double by = 4 * (p[e1 + 1] - p[e3 + 1]) + (p[o0 + 1] + p[o1 + 1] - p[o2 + 1] - p[o3 + 1]);
+            double bz = 4 * (p[e1 + 2] - p[e3 + 2]) + (p[o0 + 2] + p[o1 + 2] - p[o2 + 2] - p[o3 + 2]);
+            double nx = ay * bz - az * by, ny = az * bx - ax * bz, nz = ax * by - ay * bx;
+            double len = Math.sqrt(nx * nx + ny * ny + nz * nz);
+            double scale = Math.sqrt(ax * ax + ay * ay + az * az) * Math.sqrt(bx * bx + by * by + bz * bz);
+            if (!(len > 1e-12 * scale && len > 0)) {
+                fallbackNormal(lv, p, v, nrm);
+            } else {
+                nrm[vp] = nx / len;
+                nrm[vp + 1] = ny / len;
+                nrm[vp + 2] = nz / len;
+            }
+        }
+        return true;
     }
 
     /** The normalised sum of the (area-weighted) normals of the faces at v; zero if none. */

@@ -114,23 +114,32 @@ public final class RefinedMesh {
         return ev;
     }
 
-    /** Limit-surface position of every vertex (x, y, z each). */
-    public double[] limitPositions() {
-        computeLimit();
+    /**
+     * Limit-surface position of every vertex (x, y, z each), from Sdc's limit masks: exact for
+     * smooth, crease and corner vertices; where semi-sharp features have not yet decayed, Far's
+     * value (the sharp rule applied as if infinitely sharp). Computed on first use.
+     */
+    public synchronized double[] limitPositions() {
+        if (limitPositions == null) {
+            double[] pos = new double[3 * topo.nV];
+            Limit.evaluate(topo, positions, pos, null);
+            limitPositions = pos;
+        }
         return limitPositions;
     }
 
-    /** Unit limit-surface normal of every vertex (x, y, z each), on the side the faces wind counter-clockwise. */
-    public double[] limitNormals() {
-        computeLimit();
+    /**
+     * Unit limit-surface normal of every vertex (x, y, z each), on the side the faces wind
+     * counter-clockwise: the cross product of Sdc's two limit tangents (exact for smooth vertices
+     * and regular creases and boundaries; Far's tangent conventions at corners and irregular
+     * crease spans). Computed on first use.
+     */
+    public synchronized double[] limitNormals() {
+        if (limitNormals == null) {
+            double[] nrm = new double[3 * topo.nV];
+            Limit.evaluate(topo, positions, null, nrm);
+            limitNormals = nrm;
+        }
         return limitNormals;
-    }
-
-    private synchronized void computeLimit() {
-        if (limitPositions != null) return;
-        double[] pos = new double[3 * topo.nV], nrm = new double[3 * topo.nV];
-        Limit.evaluate(topo, positions, pos, nrm);
-        limitNormals = nrm;
-        limitPositions = pos;
     }
 }
