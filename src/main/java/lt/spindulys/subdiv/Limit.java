@@ -248,7 +248,7 @@ final class Limit {
         int h1 = twin[(h0 & ~3) | ((h0 + 3) & 3)];
         if (h1 < 0) return false;
         int h2 = twin[(h1 & ~3) | ((h1 + 3) & 3)];
-        if (h2 < 0) return false;
+        if (h2 < 0 || h2 == h0) return false; // valence 1 or 2 closes early
         int h3 = twin[(h2 & ~3) | ((h2 + 3) & 3)];
         if (h3 < 0 || twin[(h3 & ~3) | ((h3 + 3) & 3)] != h0) return false;
         int e0 = 3 * orig[(h0 & ~3) | ((h0 + 1) & 3)], e1 = 3 * orig[(h1 & ~3) | ((h1 + 1) & 3)];
