@@ -8,7 +8,11 @@ public final class CatmullClark {
     public static RefinedMesh refine(ControlMesh mesh, int level) {
         if (level < 0) throw new IllegalArgumentException("refinement level " + level + " is negative");
         RefinedMesh r = RefinedMesh.base(mesh);
-        for (int i = 0; i < level; i++) r = r.refine();
+        for (int i = 0; i < level; i++) {
+            RefinedMesh next = r.refine();
+            if (i == level - 1) next.compactAfter(r);
+            r = next;
+        }
         return r;
     }
 }

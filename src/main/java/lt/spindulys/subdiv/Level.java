@@ -42,7 +42,9 @@ final class Level {
     final int[] faceStart;
     /** Face of each half-edge, only when faces are not all quads. */
     final int[] hFace;
-    final int[] hOrig, hTwin, hEdge;
+    final int[] hOrig, hTwin;
+    /** Edge codes; null after {@link #dropEdgeCodes} until {@link #edgeCodes()} rebuilds them. */
+    int[] hEdge;
     final int[] vOut;
 
     byte[] vTag;
@@ -596,9 +598,11 @@ final class Level {
     Level refine(boolean chaikin, Level sharpSource) {
         int cV = nV + nF + nE, cF = nH, cE = nH + 2 * nE, cH = 4 * nH;
         if (cH < 0 || (long) cE * 4 > Integer.MAX_VALUE) throw new IllegalStateException("refined mesh too large for int indices");
+        edgeCodes();
         int[] o = new int[cH], tw = new int[cH], ed = new int[cH];
-        if (faceStart == null) refineQuads(o, tw, ed);
-        else refineGeneral(o, tw, ed);
+        if (faceStart == null) refineQuads(o, tw);
+        else refineGeneral(o, tw);
+        childEdgeCodes(hEdge, faceStart, nF, ed);
         int[] out = new int[cV];
         for (int v = 0; v < nV; v++) {
             int h = vOut[v];
@@ -628,6 +632,68 @@ final class Level {
         return c;
     }
 
+    private int[] parentCodes, parentFaceStart;
+    private int parentNF;
+
+    /**
+     * Frees this level's edge codes (a quarter of its topology): they follow from the parent's
+     * codes, which are kept instead, and are rebuilt by {@link #edgeCodes()} when needed.
+     */
+    void dropEdgeCodes(Level parent) {
+        parentCodes = parent.edgeCodes();
+        parentFaceStart = parent.faceStart;
+        parentNF = parent.nF;
+        hEdge = null;
+    }
+
+    /** Ints held for edge codes: this level's, or the parent's they are rebuilt from. */
+    synchronized long retainedEdgeCodeInts() {
+        return hEdge != null ? hEdge.length : parentCodes.length + (parentFaceStart == null ? 0 : parentFaceStart.length);
+    }
+
+    /** The edge codes, rebuilt from the parent's if they were dropped. */
+    synchronized int[] edgeCodes() {
+        if (hEdge == null) {
+            int[] ed = new int[nH];
+            childEdgeCodes(parentCodes, parentFaceStart, parentNF, ed);
+            hEdge = ed;
+            parentCodes = parentFaceStart = null;
+        }
+        return hEdge;
+    }
+
+    /**
+     * The edge codes of the child of a level with the given codes and faces. A child edge is
+     * either inside a parent face (numbered like the parent's half-edge it meets, running from
+     * the face point) or half of a parent edge (2e + end, running from the edge point), and its
+     * primary half-edge lies in the child of the parent edge's first face.
+     */
+    static void childEdgeCodes(int[] code, int[] faceStart, int nF, int[] ed) {
+        int faceEdges = code.length;
+        if (faceStart == null) {
+            for (int h = 0; h < faceEdges; h++) {
+                int k = h & 3, hp = (h & ~3) | ((h + 3) & 3), base = h << 2;
+                int ch = code[h], cp = code[hp];
+                ed[base + k] = (faceEdges + 2 * (ch >>> 2) + (~ch & 1)) << 2 | (ch & E_PRIMARY);
+                ed[base + ((k + 1) & 3)] = h << 2 | E_PRIMARY;
+                ed[base + ((k + 2) & 3)] = hp << 2 | E_FWD;
+                ed[base + ((k + 3) & 3)] = (faceEdges + 2 * (cp >>> 2) + (cp & 1)) << 2 | (cp & E_PRIMARY) | E_FWD;
+            }
+            return;
+        }
+        for (int f = 0; f < nF; f++) {
+            int s = faceStart[f], n = faceStart[f + 1] - s;
+            for (int k = 0; k < n; k++) {
+                int h = s + k, hp = k > 0 ? h - 1 : s + n - 1, r = n == 4 ? k : 0, base = h << 2;
+                int ch = code[h], cp = code[hp];
+                ed[base + (r & 3)] = (faceEdges + 2 * (ch >>> 2) + (~ch & 1)) << 2 | (ch & E_PRIMARY);
+                ed[base + ((r + 1) & 3)] = h << 2 | E_PRIMARY;
+                ed[base + ((r + 2) & 3)] = hp << 2 | E_FWD;
+                ed[base + ((r + 3) & 3)] = (faceEdges + 2 * (cp >>> 2) + (cp & 1)) << 2 | (cp & E_PRIMARY) | E_FWD;
+            }
+        }
+    }
+
     /** The rotation of the child faces of h's face: quads keep the parent corner in place. */
     private int rot(int h) {
         if (faceStart == null) return h & 3;
@@ -635,7 +701,7 @@ final class Level {
         return faceStart[f + 1] - faceStart[f] == 4 ? h - faceStart[f] : 0;
     }
 
-    private void refineQuads(int[] o, int[] tw, int[] ed) {
+    private void refineQuads(int[] o, int[] tw) {
         final int[] orig = hOrig, twin = hTwin, code = hEdge;
         final int vFace = nV, vEdge = nV + nF, faceEdges = nH;
         for (int f = 0, h0 = 0; f < nF; f++, h0 += 4) {
@@ -650,10 +716,6 @@ final class Level {
                 o[c1] = vEdge + (ch >>> 2);
                 o[c2] = fv;
                 o[c3] = vEdge + (cp >>> 2);
-                ed[c0] = (faceEdges + 2 * (ch >>> 2) + (~ch & 1)) << 2 | (ch & E_PRIMARY);
-                ed[c1] = h << 2 | E_PRIMARY;
-                ed[c2] = hp << 2 | E_FWD;
-                ed[c3] = (faceEdges + 2 * (cp >>> 2) + (cp & 1)) << 2 | (cp & E_PRIMARY) | E_FWD;
                 tw[c1] = (hn << 2) + ((k + 3) & 3);
                 tw[c2] = (hp << 2) + k;
                 int t = twin[h];
@@ -669,7 +731,7 @@ final class Level {
         }
     }
 
-    private void refineGeneral(int[] o, int[] tw, int[] ed) {
+    private void refineGeneral(int[] o, int[] tw) {
         final int vFace = nV, vEdge = nV + nF, faceEdges = nH;
         for (int f = 0; f < nF; f++) {
             int s = faceStart[f], n = faceStart[f + 1] - s;
@@ -685,10 +747,6 @@ final class Level {
                 o[c1] = vEdge + (ch >>> 2);
                 o[c2] = vFace + f;
                 o[c3] = vEdge + (cp >>> 2);
-                ed[c0] = (faceEdges + 2 * (ch >>> 2) + (~ch & 1)) << 2 | (ch & E_PRIMARY);
-                ed[c1] = h << 2 | E_PRIMARY;
-                ed[c2] = hp << 2 | E_FWD;
-                ed[c3] = (faceEdges + 2 * (cp >>> 2) + (cp & 1)) << 2 | (cp & E_PRIMARY) | E_FWD;
                 tw[c1] = (hn << 2) + ((rot(hn) + 2) & 3);
                 tw[c2] = (hp << 2) + ((rot(hp) + 1) & 3);
                 int t = hTwin[h];

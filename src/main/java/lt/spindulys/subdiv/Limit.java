@@ -20,6 +20,7 @@ final class Limit {
      * @param nrm receives the unit limit normal of every vertex (3 per vertex), or null
      */
     static void evaluate(Level lv, double[] p, double[] pos, double[] nrm) {
+        if (lv.eSharp != null) lv.edgeCodes(); // edge sharpness is looked up by edge index
         int cap = lv.maxValence() + 2;
         int[] ring = new int[cap + 1], other = new int[cap], opp = new int[cap];
         float[] sharp = new float[cap];

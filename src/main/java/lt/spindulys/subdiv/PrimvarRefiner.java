@@ -22,6 +22,7 @@ final class PrimvarRefiner {
      *               interpolation): face centroids, edge midpoints, vertices kept
      */
     static void interpolate(Level p, Level c, SubdivOptions opt, int stride, double[] src, double[] dst, boolean linear) {
+        p.edgeCodes();
         faces(p, stride, src, dst);
         if (linear) {
             linearEdgesAndVertices(p, stride, src, dst);

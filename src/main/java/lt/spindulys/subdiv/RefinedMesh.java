@@ -37,6 +37,14 @@ public final class RefinedMesh {
         return new RefinedMesh(m, 0, m.base, m.positions(), m.uvChannel);
     }
 
+    /**
+     * Frees memory the last level does not need until it is refined again or asked for its
+     * edges: see {@link Level#dropEdgeCodes}.
+     */
+    void compactAfter(RefinedMesh parent) {
+        topo.dropEdgeCodes(parent.topo);
+    }
+
     /** The next level: this mesh refined once. */
     public RefinedMesh refine() {
         SubdivOptions opt = control.options();
@@ -104,6 +112,7 @@ public final class RefinedMesh {
      * is vertex {@code vertexCount() + faceCount() + e} of the next level.
      */
     public int[] edgeVertices() {
+        topo.edgeCodes();
         int[] ev = new int[2 * topo.nE];
         for (int h = 0; h < topo.nH; h++) {
             if (!topo.primary(h)) continue;

@@ -39,7 +39,7 @@ public final class RefineBenchmark {
         }
         int quads = r.faceCount();
         Level t = r.topo;
-        long topo = 4L * (t.hOrig.length + t.hTwin.length + t.hEdge.length + t.vOut.length)
+        long topo = 4L * (t.hOrig.length + t.hTwin.length + t.vOut.length) + 4L * t.retainedEdgeCodeInts()
                 + (t.vTag == null ? 0 : t.vTag.length) + (t.vSharp == null ? 0 : 4L * t.vSharp.length)
                 + (t.eSharp == null ? 0 : 4L * t.eSharp.length) + (t.hole == null ? 0 : t.hole.length);
         long pos = 8L * r.positions().length, nrm = 8L * r.limitNormals().length;
