@@ -77,7 +77,9 @@ final class PrimvarRefiner {
             int out = (vEdge + e) * stride;
             int v0 = p.edgeV0(h) * stride, v1 = p.edgeV1(h) * stride;
             float sharp = p.edgeSharpness(h);
-            if (Crease.isSharp(sharp) && c.rule(vEdge + e) == Crease.RULE_CREASE) {
+            // Sdc's edge mask: a crease if the child stays a crease; an infinitely sharp edge
+            // always is one (a face-varying boundary edge's point may be pinned as a corner).
+            if (Crease.isSharp(sharp) && (Crease.isInfinite(sharp) || c.rule(vEdge + e) == Crease.RULE_CREASE)) {
                 for (int d = 0; d < stride; d++) dst[out + d] = 0.5 * src[v0 + d] + 0.5 * src[v1 + d];
                 continue;
             }

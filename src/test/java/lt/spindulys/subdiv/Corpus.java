@@ -78,6 +78,11 @@ final class Corpus {
 
     /** The shape as a control mesh: v/vt/f through the project's OBJ reader, t lines through {@link SubdivTags}. */
     static ControlMesh load(String shape) {
+        return load(shape, o -> o);
+    }
+
+    /** The shape with its options (after its tags) changed by {@code options}. */
+    static ControlMesh load(String shape, java.util.function.UnaryOperator<SubdivOptions> options) {
         String obj = text(shape + ".obj");
         MeshData md = ObjReader.parse(obj, shape + ".obj");
         ControlMesh.Builder b = ControlMesh.builder(md.positions(), md.faceSizes(), md.vertexIndex()).source(shape);
@@ -85,12 +90,17 @@ final class Corpus {
         for (String line : obj.split("\n")) {
             if (line.startsWith("t ")) SubdivTags.apply(line, b);
         }
-        return b.build();
+        return b.options(options.apply(b.options())).build();
     }
 
     static Oracle oracle(String shape, int level) {
         String file = shape + ".L" + level + ".txt";
         return ORACLES.computeIfAbsent(file, f -> parse(f, level));
+    }
+
+    /** A reference file by its name (without .gz) under the corpus directory. */
+    static Oracle oracle(String file, int level, boolean cached) {
+        return cached ? ORACLES.computeIfAbsent(file, f -> parse(f, level)) : parse(file, level);
     }
 
     private static Oracle parse(String file, int level) {
