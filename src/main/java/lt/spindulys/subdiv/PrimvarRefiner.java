@@ -229,13 +229,12 @@ final class PrimvarRefiner {
         void compute(Level p, Level c, int v, boolean chaikin) {
             int pRule = p.rule(v), cRule = c.rule(v);
             float pVs = p.vertexSharpness(v), cVs = c.vertexSharpness(v);
-            assign(pRule, pSharp, vwHolder, ew, fw);
-            vw = vwHolder[0];
+            vw = assign(pRule, pSharp, ew, fw);
             hasEdges = edgesSet;
             hasFaces = facesSet;
             if (cRule == pRule) return;
-            assign(cRule, cSharp, vwHolder, ewChild, fwChild);
-            double cvw = vwHolder[0];
+            // Sdc blends the parent's mask with the child's by the fractional weight.
+            double cvw = assign(cRule, cSharp, ewChild, fwChild);
             boolean cEdges = edgesSet, cFaces = facesSet;
             double pw = Crease.fractionalWeight(pVs, cVs, nEdges, pSharp, chaikin ? cSharp : null);
             double cw = 1.0 - pw;
@@ -250,33 +249,38 @@ final class PrimvarRefiner {
             }
         }
 
-        private final double[] vwHolder = new double[1];
+        /** Whether the mask last assigned has edge and face weights. */
         private boolean edgesSet, facesSet;
 
-        private void assign(int rule, float[] sharp, double[] vwOut, double[] e, double[] f) {
+        /**
+         * Sdc's Catmark mask of one rule into e (edge ends) and f (face points); returns the
+         * vertex's own weight. Smooth (and dart): (n-2)/n, 1/n^2 each; crease: 3/4 and 1/8 on
+         * the first and last sharp edge; corner: the vertex alone.
+         */
+        private double assign(int rule, float[] sharp, double[] e, double[] f) {
             if (rule <= Crease.RULE_DART) {
                 int n = nFaces;
                 double fwt = 1.0 / (n * n);
-                vwOut[0] = (double) (n - 2) / (double) n;
                 for (int j = 0; j < n; j++) {
                     e[j] = fwt;
                     f[j] = fwt;
                 }
                 edgesSet = facesSet = true;
-            } else if (rule == Crease.RULE_CREASE) {
+                return (double) (n - 2) / (double) n;
+            }
+            if (rule == Crease.RULE_CREASE) {
                 int c0 = 0, c1 = nEdges - 1;
-                while (c0 < nEdges && !Crease.isSharp(sharp[c0])) c0++;
+                while (c0 < nEdges - 1 && !Crease.isSharp(sharp[c0])) c0++;
                 while (c1 > 0 && !Crease.isSharp(sharp[c1])) c1--;
-                vwOut[0] = 0.75;
                 for (int j = 0; j < nEdges; j++) e[j] = 0.0;
                 e[c0] = 0.125;
                 e[c1] = 0.125;
                 edgesSet = true;
                 facesSet = false;
-            } else {
-                vwOut[0] = 1.0;
-                edgesSet = facesSet = false;
+                return 0.75;
             }
+            edgesSet = facesSet = false;
+            return 1.0;
         }
     }
 }
