@@ -99,8 +99,6 @@ final class Level {
 
     int dest(int h) { return hOrig[next(h)]; }
 
-    static int edgeOf(int code) { return code >>> 2; }
-
     int edge(int h) { return hEdge[h] >>> 2; }
 
     boolean fwd(int h) { return (hEdge[h] & E_FWD) != 0; }
@@ -128,8 +126,6 @@ final class Level {
 
     /** Index of v in {@link #nmVert}, or a negative number. */
     int nmVertIndex(int v) { return Arrays.binarySearch(nmVert, v); }
-
-    boolean isNonManifoldEdge(int e) { return nmEdge.length > 0 && Arrays.binarySearch(nmEdge, e) >= 0; }
 
     /**
      * Collects the 1-ring of a manifold vertex in Far's order into {@code out}: the outgoing
@@ -163,10 +159,6 @@ final class Level {
             if (t < 0 || t == start) return n;
             h = t;
         }
-    }
-
-    boolean isBoundaryVertex(int v) {
-        return hTwin[vOut[v]] < 0;
     }
 
     private int maxValence = -1;

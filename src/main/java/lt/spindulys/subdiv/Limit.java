@@ -295,7 +295,8 @@ final class Limit {
                 x = lv.hTwin[lv.prev(x)];
             } while (x >= 0 && x != start);
         } else {
-            for (int h = 0; h < lv.nH; h++) if (lv.hOrig[h] == v) addCornerNormal(lv, p, h, n);
+            int i = lv.nmVertIndex(v);
+            if (i >= 0) for (int k = lv.nmFaceStart[i]; k < lv.nmFaceStart[i + 1]; k++) addCornerNormal(lv, p, lv.nmFaceHalf[k], n);
         }
         double len = Math.sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         int vp = 3 * v;
