@@ -15,11 +15,15 @@ package lt.spindulys.subdiv;
 final class FaceVarying {
     private FaceVarying() {}
 
-    /** A value mesh level with the UVs of its vertices. */
+    /**
+     * A value mesh level with the UVs of its vertices. A linear channel's levels after the
+     * first carry only faces and edges (no twins, rings or tags): bilinear refinement needs no
+     * more.
+     */
     record Channel(Level level, double[] values, boolean linear, boolean linearBoundaries) {
         Channel refine(Level geomChild, SubdivOptions opt) {
             boolean chaikin = opt.creasing() == SubdivOptions.Creasing.CHAIKIN;
-            Level c = level.refine(chaikin, linear ? null : geomChild);
+            Level c = linear ? level.refineCornersAndEdges() : level.refine(chaikin, geomChild);
             if (linearBoundaries && !linear) pinBoundaries(c);
             double[] cv = new double[2 * c.nV];
             PrimvarRefiner.interpolate(level, c, opt, 2, values, cv, linear);

@@ -43,6 +43,7 @@ public final class RefinedMesh {
      */
     void compactAfter(RefinedMesh parent) {
         topo.dropEdgeCodes(parent.topo);
+        if (uv != null) uv.level().dropEdgeCodes(parent.uv.level());
     }
 
     /** The next level: this mesh refined once. */
@@ -103,6 +104,9 @@ public final class RefinedMesh {
         if (uv == null) return null;
         return level == 0 ? control.faceUvIndices() : uv.level().hOrig;
     }
+
+    /** The UV value mesh of this level, or null (for tests and benchmarks). */
+    Level uvTopology() { return uv == null ? null : uv.level(); }
 
     /** Number of edges (Far's edges: a non-manifold edge counts once per instance). */
     public int edgeCount() { return topo.nE; }

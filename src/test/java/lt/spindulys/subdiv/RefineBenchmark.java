@@ -43,9 +43,16 @@ public final class RefineBenchmark {
                 + (t.vTag == null ? 0 : t.vTag.length) + (t.vSharp == null ? 0 : 4L * t.vSharp.length)
                 + (t.eSharp == null ? 0 : 4L * t.eSharp.length) + (t.hole == null ? 0 : t.hole.length);
         long pos = 8L * r.positions().length, nrm = 8L * r.limitNormals().length;
+        long uvBytes = 0;
+        if (r.uvs() != null) {
+            Level u = r.uvTopology();
+            uvBytes = 4L * (u.hOrig.length + (u.hTwin == null ? 0 : u.hTwin.length) + (u.vOut == null ? 0 : u.vOut.length))
+                    + 4L * u.retainedEdgeCodeInts() + 8L * r.uvs().length;
+        }
         System.out.printf(Locale.ROOT, "%s level %d%s: %d quads, refine %.3f s = %.2f M quads/s; limit normals %.3f s%n",
                 shape, level, uv ? " with UVs" : "", quads, best, quads / best / 1e6, bestNormals);
         System.out.printf(Locale.ROOT, "bytes per quad: topology %.1f + positions %.1f + normals %.1f = %.1f%n",
                 (double) topo / quads, (double) pos / quads, (double) nrm / quads, (double) (topo + pos + nrm) / quads);
+        if (uvBytes > 0) System.out.printf(Locale.ROOT, "UVs (value mesh and values): %.1f bytes per quad%n", (double) uvBytes / quads);
     }
 }
