@@ -36,6 +36,14 @@ public final class Main {
                 }
                 return new SubdivideCommand(rest.toArray(new String[0])).run(out, err);
             }
+            if (!rest.isEmpty() && rest.get(0).equals("bench")) {
+                rest.remove(0);
+                if (rest.contains("--help") || rest.contains("-h")) {
+                    out.println(BenchCommand.USAGE);
+                    return 0;
+                }
+                return new BenchCommand(rest.toArray(new String[0])).run(out);
+            }
             if (rest.isEmpty() || rest.contains("--help") || rest.contains("-h")) {
                 (rest.isEmpty() ? err : out).println(RenderCommand.USAGE);
                 return rest.isEmpty() ? 2 : 0;

@@ -22,6 +22,7 @@ final class RenderCommand {
             usage: render SCENE.dat [-o OUT] [--width W] [--height H] [--spp N] [--threads N]
                                     [--seed S] [--quality Q] [--stats] [--quiet] [--debug]
                    render subdivide MESH.obj|MESH.dat --level N -o OUT.obj [...]   (see render subdivide --help)
+                   render bench [--only NAME] [--runs N] [--list]                 (see render bench --help)
                    render --help | --version
 
               -o, --output OUT   image to write: .png .jpg .jpeg .tga .pfm (default: SCENE.png here)

@@ -1,9 +1,7 @@
 package lt.spindulys.subdiv;
 
-import java.util.ArrayList;
-import java.util.HashMap;
-import java.util.List;
-import java.util.Map;
+import java.util.Arrays;
+import java.util.Objects;
 
 /**
  * The input of subdivision: a polygon mesh (faces of any size) as flat index arrays, optional
@@ -12,96 +10,140 @@ import java.util.Map;
  * Sharpness is kept as {@code float}, as OpenSubdiv stores it, so semi-sharp results match it
  * bit for bit; 10 and above is infinitely sharp.
  *
- * <p>TEMPORARY body for the renderer branch: simple storage, replaced by the core's version.
+ * <p>Topology is accepted wherever OpenSubdiv's Far accepts it, and treated the same way:
+ * non-manifold edges (more than two faces, or two faces winding the same way, or an edge used
+ * twice by one face), faces that repeat a vertex, unused vertices and vertices where separate
+ * fans of faces meet are all allowed; such edges and vertices become infinitely sharp. What is
+ * refused (with an {@link IllegalArgumentException} naming the face, vertex or tag) is input
+ * that does not describe a mesh: indices out of range, faces with fewer than 3 corners,
+ * non-finite coordinates, tags naming missing vertices, edges or faces.
  */
 public final class ControlMesh {
     /** Sharpness at or above which an edge or vertex is infinitely sharp. */
     public static final float INFINITELY_SHARP = 10f;
 
-    final double[] positions;
-    final int[] faceSizes, faceVertices;
-    final double[] uvs;
-    final int[] faceUvs;
-    /** Edge key (see {@link #edgeKey}) to sharpness. */
-    final Map<Long, Float> creases;
-    final float[] corners;
-    final boolean[] holes;
-    final SubdivOptions options;
-    final String source;
+    private final double[] positions;
+    private final int[] faceSizes, faceVertices;
+    private final double[] uvs;
+    private final int[] faceUvIndices;
+    private final SubdivOptions options;
+    private final String source;
+    /** Level-0 topology with its tags. */
+    final Level base;
+    /** Level-0 UV value mesh, or null without UVs. */
+    final FaceVarying.Channel uvChannel;
 
-    ControlMesh(Builder b) {
-        positions = b.positions;
-        faceSizes = b.faceSizes;
-        faceVertices = b.faceVertices;
-        uvs = b.uvs;
-        faceUvs = b.faceUvs;
-        creases = new HashMap<>(b.creases);
-        int n = positions.length / 3;
-        corners = new float[n];
-        for (int[] c : b.cornerList) corners[c[0]] = Float.intBitsToFloat(c[1]);
-        holes = new boolean[faceSizes.length];
-        for (int h : b.holeList) holes[h] = true;
-        options = b.options;
-        source = b.source;
-    }
-
-    static long edgeKey(int a, int b) {
-        return ((long) Math.min(a, b) << 32) | Math.max(a, b);
+    private ControlMesh(Builder b, Level base, FaceVarying.Channel uvChannel) {
+        this.positions = b.positions;
+        this.faceSizes = b.faceSizes;
+        this.faceVertices = b.faceVertices;
+        this.uvs = b.uvs;
+        this.faceUvIndices = b.faceUvs;
+        this.options = b.options;
+        this.source = b.source;
+        this.base = base;
+        this.uvChannel = uvChannel;
     }
 
     /**
      * Starts a mesh from positions (x, y, z per vertex), face sizes and the vertex index of every
-     * face corner (face after face).
+     * face corner (face after face). The arrays are copied when the mesh is built.
      */
     public static Builder builder(double[] positions, int[] faceSizes, int[] faceVertices) {
         return new Builder(positions, faceSizes, faceVertices);
     }
 
+    public int vertexCount() { return positions.length / 3; }
+
+    public int faceCount() { return faceSizes.length; }
+
+    /** x, y, z per vertex (the mesh's own array: do not modify). */
+    public double[] positions() { return positions; }
+
+    /** Corners per face (the mesh's own array: do not modify). */
+    public int[] faceSizes() { return faceSizes; }
+
+    /** Vertex index of every face corner, face after face (the mesh's own array). */
+    public int[] faceVertices() { return faceVertices; }
+
+    /** (u, v) pairs, or null without UVs. */
+    public double[] uvs() { return uvs; }
+
+    /** Index into {@link #uvs()} of every face corner, or null without UVs. */
+    public int[] faceUvIndices() { return faceUvIndices; }
+
+    public SubdivOptions options() { return options; }
+
+    /** The name given with {@link Builder#source}, or null. */
+    public String source() { return source; }
+
     /** Collects UVs, tags and options; {@link #build()} validates and names the face or vertex at fault. */
     public static final class Builder {
-        private final double[] positions;
-        private final int[] faceSizes, faceVertices;
+        private double[] positions;
+        private int[] faceSizes, faceVertices;
         private double[] uvs;
         private int[] faceUvs;
-        private final Map<Long, Float> creases = new HashMap<>();
-        private final List<int[]> cornerList = new ArrayList<>();
-        private final List<Integer> holeList = new ArrayList<>();
+        private int[] creases = new int[16];
+        private float[] creaseSharp = new float[8];
+        private int creaseCount;
+        private int[] corners = new int[8];
+        private float[] cornerSharp = new float[8];
+        private int cornerCount;
+        private int[] holes = new int[8];
+        private int holeCount;
         private SubdivOptions options = SubdivOptions.DEFAULT;
         private String source;
 
-        Builder(double[] positions, int[] faceSizes, int[] faceVertices) {
-            this.positions = positions;
-            this.faceSizes = faceSizes;
-            this.faceVertices = faceVertices;
+        private Builder(double[] positions, int[] faceSizes, int[] faceVertices) {
+            this.positions = Objects.requireNonNull(positions, "positions");
+            this.faceSizes = Objects.requireNonNull(faceSizes, "faceSizes");
+            this.faceVertices = Objects.requireNonNull(faceVertices, "faceVertices");
         }
 
         /** Face-varying texture coordinates: (u, v) pairs and one index into them per face corner. */
         public Builder uvs(double[] uvs, int[] faceUvIndices) {
-            this.uvs = uvs;
-            this.faceUvs = faceUvIndices;
+            this.uvs = Objects.requireNonNull(uvs, "uvs");
+            this.faceUvs = Objects.requireNonNull(faceUvIndices, "faceUvIndices");
             return this;
         }
 
-        /** A crease on the edge between vertices a and b. */
+        /** A crease on the edge between vertices a and b; a later crease on the same edge replaces it. */
         public Builder crease(int a, int b, float sharpness) {
-            creases.put(edgeKey(a, b), sharpness);
+            if (2 * creaseCount + 2 > creases.length) {
+                creases = Arrays.copyOf(creases, 2 * creases.length);
+                creaseSharp = Arrays.copyOf(creaseSharp, 2 * creaseSharp.length);
+            }
+            creases[2 * creaseCount] = a;
+            creases[2 * creaseCount + 1] = b;
+            creaseSharp[creaseCount++] = sharpness;
             return this;
         }
 
+        /** Sharpness of a vertex (a corner when sharp); a later value for the same vertex replaces it. */
         public Builder corner(int vertex, float sharpness) {
-            cornerList.add(new int[] {vertex, Float.floatToIntBits(sharpness)});
+            if (cornerCount == corners.length) {
+                corners = Arrays.copyOf(corners, 2 * corners.length);
+                cornerSharp = Arrays.copyOf(cornerSharp, 2 * cornerSharp.length);
+            }
+            corners[cornerCount] = vertex;
+            cornerSharp[cornerCount++] = sharpness;
             return this;
         }
 
+        /** Marks a face as a hole: it is refined like the others but not part of the surface. */
         public Builder hole(int face) {
-            holeList.add(face);
+            if (holeCount == holes.length) holes = Arrays.copyOf(holes, 2 * holes.length);
+            holes[holeCount++] = face;
             return this;
         }
 
         public Builder options(SubdivOptions options) {
-            this.options = options;
+            this.options = Objects.requireNonNull(options, "options");
             return this;
         }
+
+        /** The options set so far ({@link SubdivOptions#DEFAULT} until set). */
+        public SubdivOptions options() { return options; }
 
         /** A name for error messages, such as the file the mesh came from. */
         public Builder source(String name) {
@@ -111,21 +153,99 @@ public final class ControlMesh {
 
         /** Validates and freezes; throws IllegalArgumentException naming the face or vertex at fault. */
         public ControlMesh build() {
-            String w = source == null ? "" : source + ": ";
-            int n = positions.length / 3;
-            int corner = 0;
-            for (int f = 0; f < faceSizes.length; f++) {
-                if (faceSizes[f] < 3) throw new IllegalArgumentException(w + "face " + f + " has fewer than 3 vertices");
-                for (int j = 0; j < faceSizes[f]; j++, corner++) {
-                    int v = faceVertices[corner];
-                    if (v < 0 || v >= n) throw new IllegalArgumentException(w + "face " + f + " uses vertex " + v + ", which does not exist");
+            String at = source == null ? "" : source + ": ";
+            if (positions.length % 3 != 0) {
+                throw new IllegalArgumentException(at + "positions hold " + positions.length + " numbers, not a multiple of 3 (x, y, z per vertex)");
+            }
+            int nV = positions.length / 3;
+            for (int i = 0; i < positions.length; i++) {
+                if (!Double.isFinite(positions[i])) {
+                    throw new IllegalArgumentException(at + "vertex " + i / 3 + " has a non-finite coordinate (" + positions[i] + ")");
                 }
             }
-            if (corner != faceVertices.length) throw new IllegalArgumentException(w + "face sizes do not match the corners");
-            if (faceUvs != null && faceUvs.length != faceVertices.length) throw new IllegalArgumentException(w + "one UV index per corner is needed");
-            for (int[] c : cornerList) if (c[0] < 0 || c[0] >= n) throw new IllegalArgumentException(w + "corner vertex " + c[0] + " does not exist");
-            for (int h : holeList) if (h < 0 || h >= faceSizes.length) throw new IllegalArgumentException(w + "hole face " + h + " does not exist");
-            return new ControlMesh(this);
+            int nF = faceSizes.length;
+            if (nF == 0) throw new IllegalArgumentException(at + "the mesh has no faces");
+            long cornerTotal = 0;
+            for (int f = 0; f < nF; f++) {
+                if (faceSizes[f] < 3) {
+                    throw new IllegalArgumentException(at + "face " + f + " has " + faceSizes[f] + " corners; a face needs at least 3");
+                }
+                cornerTotal += faceSizes[f];
+            }
+            if (cornerTotal != faceVertices.length) {
+                throw new IllegalArgumentException(at + "the face sizes add up to " + cornerTotal + " corners, but " + faceVertices.length + " vertex indices were given");
+            }
+            if (cornerTotal > Integer.MAX_VALUE / 64) throw new IllegalArgumentException(at + "too many face corners (" + cornerTotal + ")");
+            for (int f = 0, h = 0; f < nF; f++) {
+                for (int k = 0; k < faceSizes[f]; k++, h++) {
+                    int v = faceVertices[h];
+                    if (v < 0 || v >= nV) {
+                        throw new IllegalArgumentException(at + "face " + f + " uses vertex " + v + ", but the mesh has " + nV + " vertices");
+                    }
+                }
+            }
+            if (uvs != null) {
+                if (uvs.length % 2 != 0) throw new IllegalArgumentException(at + "UVs hold " + uvs.length + " numbers, not (u, v) pairs");
+                if (faceUvs.length != faceVertices.length) {
+                    throw new IllegalArgumentException(at + faceUvs.length + " UV indices for " + faceVertices.length + " face corners");
+                }
+                int nUv = uvs.length / 2;
+                for (int f = 0, h = 0; f < nF; f++) {
+                    for (int k = 0; k < faceSizes[f]; k++, h++) {
+                        int u = faceUvs[h];
+                        if (u < 0) {
+                            throw new IllegalArgumentException(at + "face " + f + " corner " + k + " has no UV (with UVs, every face corner needs one)");
+                        }
+                        if (u >= nUv) {
+                            throw new IllegalArgumentException(at + "face " + f + " uses UV " + u + ", but the mesh has " + nUv + " UVs");
+                        }
+                    }
+                }
+            }
+            double[] pos = positions.clone();
+            int[] sizes = faceSizes.clone(), verts = faceVertices.clone();
+            Level base = Level.fromPolygons(nV, sizes, verts);
+            float[] eSharp = null;
+            for (int i = 0; i < creaseCount; i++) {
+                int a = creases[2 * i], b = creases[2 * i + 1];
+                float s = creaseSharp[i];
+                for (int v : new int[] {a, b}) {
+                    if (v < 0 || v >= nV) {
+                        throw new IllegalArgumentException(at + "crease " + i + " (vertices " + a + " and " + b + ") names vertex " + v + ", but the mesh has " + nV + " vertices");
+                    }
+                }
+                if (Float.isNaN(s)) throw new IllegalArgumentException(at + "crease " + i + " (vertices " + a + " and " + b + ") has sharpness NaN");
+                int e = base.findBaseEdge(a, b);
+                if (e < 0) throw new IllegalArgumentException(at + "crease " + i + ": vertices " + a + " and " + b + " share no edge");
+                if (eSharp == null) eSharp = new float[base.nE];
+                eSharp[e] = s;
+            }
+            float[] vSharp = null;
+            for (int i = 0; i < cornerCount; i++) {
+                int v = corners[i];
+                if (v < 0 || v >= nV) throw new IllegalArgumentException(at + "corner " + i + " names vertex " + v + ", but the mesh has " + nV + " vertices");
+                if (Float.isNaN(cornerSharp[i])) throw new IllegalArgumentException(at + "corner " + i + " (vertex " + v + ") has sharpness NaN");
+                if (vSharp == null) vSharp = new float[nV];
+                vSharp[v] = cornerSharp[i];
+            }
+            boolean[] hole = null;
+            for (int i = 0; i < holeCount; i++) {
+                int f = holes[i];
+                if (f < 0 || f >= nF) throw new IllegalArgumentException(at + "hole " + i + " names face " + f + ", but the mesh has " + nF + " faces");
+                if (hole == null) hole = new boolean[nF];
+                hole[f] = true;
+            }
+            base.tagBase(options.boundary(), eSharp, vSharp, null, hole);
+            Builder frozen = new Builder(pos, sizes, verts);
+            frozen.options = options;
+            frozen.source = source;
+            FaceVarying.Channel channel = null;
+            if (uvs != null) {
+                frozen.uvs = uvs.clone();
+                frozen.faceUvs = faceUvs.clone();
+                channel = FaceVarying.build(base, sizes, frozen.faceUvs, frozen.uvs, options);
+            }
+            return new ControlMesh(frozen, base, channel);
         }
     }
 }

@@ -1,71 +1,167 @@
 package lt.spindulys.subdiv;
 
+import java.util.Arrays;
+
 /**
  * One level of a subdivided mesh: positions, faces (quads after the first level), which faces
  * are holes, face-varying UVs, and, on request, limit positions and normals of its vertices.
  * Arrays returned are the mesh's own; do not modify them.
  *
- * <p>TEMPORARY body for the renderer branch: limit positions are the positions and limit normals
- * area-weighted face normals; replaced by the core's version.
+ * <p><b>Numbering</b> (OpenSubdiv Far's, with {@code orderVerticesFromFacesFirst=false}): the
+ * vertices of level L are, in order, the children of the vertices of level L-1 (same indices),
+ * one point per face of level L-1 (in face order), and one point per edge of level L-1 (in the
+ * order of {@link #edgeVertices()} of level L-1). The faces of level L are the children of the
+ * faces of level L-1 in order, one per parent corner j: for a quad parent (v0..v3) child j keeps
+ * v_j at position j, for other parents child j is (v_j, point of edge j, face point, point of
+ * edge j-1).
  */
 public final class RefinedMesh {
+    private final ControlMesh control;
     private final int level;
+    final Level topo;
     private final double[] positions;
-    private final int[] faceSizes, faceVertices;
-    private final boolean[] holes;
-    private final double[] uvs;
-    private final int[] faceUvs;
-    private double[] normals;
+    private final FaceVarying.Channel uv;
+    private int[] faceSizes;
+    private double[] limitPositions, limitNormals;
 
-    RefinedMesh(int level, double[] positions, int[] faceSizes, int[] faceVertices, boolean[] holes, double[] uvs, int[] faceUvs) {
+    private RefinedMesh(ControlMesh control, int level, Level topo, double[] positions, FaceVarying.Channel uv) {
+        this.control = control;
         this.level = level;
+        this.topo = topo;
         this.positions = positions;
-        this.faceSizes = faceSizes;
-        this.faceVertices = faceVertices;
-        this.holes = holes;
-        this.uvs = uvs;
-        this.faceUvs = faceUvs;
+        this.uv = uv;
     }
 
+    /** Level 0: the control mesh itself. */
+    static RefinedMesh base(ControlMesh m) {
+        return new RefinedMesh(m, 0, m.base, m.positions(), m.uvChannel);
+    }
+
+    /**
+     * Frees memory the last level does not need until it is refined again or asked for its
+     * edges: see {@link Level#dropEdgeCodes}.
+     */
+    void compactAfter(RefinedMesh parent) {
+        topo.dropEdgeCodes(parent.topo);
+        if (uv != null) uv.level().dropEdgeCodes(parent.uv.level());
+    }
+
+    /** The next level: this mesh refined once. */
+    public RefinedMesh refine() {
+        SubdivOptions opt = control.options();
+        Level c = topo.refine(opt.creasing() == SubdivOptions.Creasing.CHAIKIN, null);
+        double[] p = new double[3 * c.nV];
+        PrimvarRefiner.interpolate(topo, c, opt, 3, positions, p, false);
+        FaceVarying.Channel cuv = uv == null ? null : uv.refine(c, opt);
+        return new RefinedMesh(control, level + 1, c, p, cuv);
+    }
+
+    public ControlMesh controlMesh() { return control; }
+
     public int level() { return level; }
-    public int vertexCount() { return positions.length / 3; }
+
+    public int vertexCount() { return topo.nV; }
+
     /** x, y, z per vertex. */
     public double[] positions() { return positions; }
-    public int faceCount() { return faceSizes.length; }
-    /** Corners per face (all 4 after level 0). */
-    public int[] faceSizes() { return faceSizes; }
-    /** Vertex index of every face corner, face after face. */
-    public int[] faceVertices() { return faceVertices; }
-    /** True if face f is a hole (refined, but not rendered). */
-    public boolean isHole(int face) { return holes[face]; }
-    /** (u, v) pairs, or null when the mesh has no UVs. */
-    public double[] uvs() { return uvs; }
-    /** Index into {@link #uvs()} of every face corner, parallel to {@link #faceVertices()}, or null. */
-    public int[] faceUvs() { return faceUvs; }
-    /** Limit-surface position of every vertex (x, y, z each). */
-    public double[] limitPositions() { return positions; }
 
-    /** Unit limit-surface normal of every vertex (x, y, z each), on the side the faces wind counter-clockwise. */
-    public synchronized double[] limitNormals() {
-        if (normals != null) return normals;
-        double[] n = new double[positions.length];
-        int c = 0;
-        for (int f = 0; f < faceSizes.length; f++) {
-            int s = faceSizes[f];
-            for (int j = 0; j < s; j++) {
-                int p = 3 * faceVertices[c + (j + s - 1) % s], q = 3 * faceVertices[c + j], r = 3 * faceVertices[c + (j + 1) % s];
-                double ux = positions[r] - positions[q], uy = positions[r + 1] - positions[q + 1], uz = positions[r + 2] - positions[q + 2];
-                double vx = positions[p] - positions[q], vy = positions[p + 1] - positions[q + 1], vz = positions[p + 2] - positions[q + 2];
-                n[q] += uy * vz - uz * vy;
-                n[q + 1] += uz * vx - ux * vz;
-                n[q + 2] += ux * vy - uy * vx;
+    public int faceCount() { return topo.nF; }
+
+    /** Corners per face (all 4 after level 0). */
+    public synchronized int[] faceSizes() {
+        if (faceSizes == null) {
+            if (level == 0) {
+                faceSizes = control.faceSizes();
+            } else {
+                faceSizes = new int[topo.nF];
+                Arrays.fill(faceSizes, 4);
             }
-            c += s;
         }
-        for (int i = 0; i < n.length; i += 3) {
-            double l = Math.sqrt(n[i] * n[i] + n[i + 1] * n[i + 1] + n[i + 2] * n[i + 2]);
-            if (l > 0) { n[i] /= l; n[i + 1] /= l; n[i + 2] /= l; }
+        return faceSizes;
+    }
+
+    /** Vertex index of every face corner, face after face. */
+    public int[] faceVertices() { return topo.hOrig; }
+
+    /** True if face f is a hole (refined, but not rendered). */
+    public boolean isHole(int face) { return topo.hole != null && topo.hole[face]; }
+
+    /** True if any face is a hole. */
+    public boolean hasHoles() {
+        if (topo.hole == null) return false;
+        for (boolean b : topo.hole) if (b) return true;
+        return false;
+    }
+
+    /** (u, v) pairs, or null when the mesh has no UVs. */
+    public double[] uvs() {
+        if (uv == null) return null;
+        return level == 0 ? control.uvs() : uv.values();
+    }
+
+    /** Index into {@link #uvs()} of every face corner, parallel to {@link #faceVertices()}, or null. */
+    public int[] faceUvs() {
+        if (uv == null) return null;
+        return level == 0 ? control.faceUvIndices() : uv.level().hOrig;
+    }
+
+    /** The UV value mesh of this level, or null (for tests and benchmarks). */
+    Level uvTopology() { return uv == null ? null : uv.level(); }
+
+    /** Number of edges (Far's edges: a non-manifold edge counts once per instance). */
+    public int edgeCount() { return topo.nE; }
+
+    /**
+     * The two vertices of every edge, in Far's edge order and vertex order: the point of edge e
+     * is vertex {@code vertexCount() + faceCount() + e} of the next level.
+     */
+    public int[] edgeVertices() {
+        topo.edgeCodes();
+        int[] ev = new int[2 * topo.nE];
+        for (int h = 0; h < topo.nH; h++) {
+            if (!topo.primary(h)) continue;
+            int e = topo.edge(h);
+            ev[2 * e] = topo.edgeV0(h);
+            ev[2 * e + 1] = topo.edgeV1(h);
         }
-        return normals = n;
+        return ev;
+    }
+
+    /**
+     * Bytes of the refined surface as the renderer holds it: this level's topology, its positions
+     * and one limit normal per vertex (counted whether or not normals were asked for yet). UVs
+     * are not included.
+     */
+    public long memoryBytes() {
+        return topo.memoryBytes() + 8L * positions.length + 24L * topo.nV;
+    }
+
+    /**
+     * Limit-surface position of every vertex (x, y, z each), from Sdc's limit masks: exact for
+     * smooth, crease and corner vertices; where semi-sharp features have not yet decayed, Far's
+     * value (the sharp rule applied as if infinitely sharp). Computed on first use.
+     */
+    public synchronized double[] limitPositions() {
+        if (limitPositions == null) {
+            double[] pos = new double[3 * topo.nV];
+            Limit.evaluate(topo, positions, pos, null);
+            limitPositions = pos;
+        }
+        return limitPositions;
+    }
+
+    /**
+     * Unit limit-surface normal of every vertex (x, y, z each), on the side the faces wind
+     * counter-clockwise: the cross product of Sdc's two limit tangents (exact for smooth vertices
+     * and regular creases and boundaries; Far's tangent conventions at corners and irregular
+     * crease spans). Computed on first use.
+     */
+    public synchronized double[] limitNormals() {
+        if (limitNormals == null) {
+            double[] nrm = new double[3 * topo.nV];
+            Limit.evaluate(topo, positions, null, nrm);
+            limitNormals = nrm;
+        }
+        return limitNormals;
     }
 }

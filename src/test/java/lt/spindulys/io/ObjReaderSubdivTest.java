@@ -1,7 +1,6 @@
 package lt.spindulys.io;
 
 import static org.junit.jupiter.api.Assertions.*;
-import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -187,14 +186,23 @@ class ObjReaderSubdivTest {
 
     // ---- OpenSubdiv's own shapes ----
 
-    /** OpenSubdiv's regression shapes with reference data (see its README); -Dsubdiv.reference=DIR to point elsewhere. */
-    private static final Path SHAPES = Path.of(System.getProperty("subdiv.reference", "/work/shared/subdiv-reference"), "shapes");
+    /** OpenSubdiv's regression shapes and reference data, gzipped in the test resources (subdiv/). */
+    private static Path shapes() throws Exception {
+        java.net.URL url = ObjReaderSubdivTest.class.getClassLoader().getResource("subdiv/OPENSUBDIV-LICENSE.txt");
+        assertNotNull(url, "test resources subdiv/ not on the class path");
+        return Path.of(url.toURI()).getParent();
+    }
+
+    private static String gunzip(Path p) throws IOException {
+        try (var in = new java.util.zip.GZIPInputStream(Files.newInputStream(p))) {
+            return new String(in.readAllBytes(), java.nio.charset.StandardCharsets.US_ASCII);
+        }
+    }
 
     @TestFactory
-    Stream<DynamicTest> readsOpenSubdivShapes() throws IOException {
-        assumeTrue(Files.isDirectory(SHAPES), "no OpenSubdiv reference shapes at " + SHAPES);
-        try (Stream<Path> s = Files.list(SHAPES)) {
-            return s.filter(p -> p.toString().endsWith(".obj")).sorted().toList().stream()
+    Stream<DynamicTest> readsOpenSubdivShapes() throws Exception {
+        try (Stream<Path> s = Files.list(shapes())) {
+            return s.filter(p -> p.toString().endsWith(".obj.gz")).sorted().toList().stream()
                     .map(p -> DynamicTest.dynamicTest(p.getFileName().toString(), () -> readsOpenSubdivShapeAsFarDoes(p)));
         }
     }
@@ -204,9 +212,9 @@ class ObjReaderSubdivTest {
      * and ignored tags that the reference data's header says Far applied.
      */
     private static void readsOpenSubdivShapeAsFarDoes(Path obj) throws IOException {
-        String name = obj.getFileName().toString().replaceAll("\\.obj$", "");
-        List<String> header = Files.readAllLines(obj.resolveSibling(name + ".L1.txt")).stream().filter(l -> l.startsWith("#")).toList();
-        SubdivInput in = ObjReader.readSubdiv(obj);
+        String name = obj.getFileName().toString().replaceAll("\\.obj\\.gz$", "");
+        List<String> header = gunzip(obj.resolveSibling(name + ".L1.txt.gz")).lines().filter(l -> l.startsWith("#")).toList();
+        SubdivInput in = ObjReader.parseSubdiv(gunzip(obj), name + ".obj");
         SubdivTags t = in.tags();
 
         Map<String, String> option = new java.util.HashMap<>();

@@ -1,0 +1,40 @@
+package lt.spindulys.cli;
+
+import java.io.PrintStream;
+import java.util.ArrayList;
+import java.util.List;
+
+/** A plain-text table: columns sized to their widest cell, numbers right-aligned. */
+final class BenchTable {
+    private final String[] header;
+    private final List<String[]> rows = new ArrayList<>();
+
+    BenchTable(String... header) { this.header = header; }
+
+    void add(String... cells) {
+        if (cells.length != header.length) throw new IllegalArgumentException("row has " + cells.length + " cells, table has " + header.length + " columns");
+        rows.add(cells);
+    }
+
+    void print(PrintStream out) {
+        int[] w = new int[header.length];
+        for (int i = 0; i < w.length; i++) w[i] = header[i].length();
+        for (String[] r : rows) for (int i = 0; i < w.length; i++) w[i] = Math.max(w[i], r[i].length());
+        line(out, header, w, false);
+        StringBuilder rule = new StringBuilder();
+        for (int i = 0; i < w.length; i++) rule.append(i == 0 ? "" : "  ").append("-".repeat(w[i]));
+        out.println(rule);
+        for (String[] r : rows) line(out, r, w, true);
+    }
+
+    private static void line(PrintStream out, String[] cells, int[] w, boolean alignNumbers) {
+        StringBuilder s = new StringBuilder();
+        for (int i = 0; i < cells.length; i++) {
+            if (i > 0) s.append("  ");
+            boolean right = alignNumbers && !cells[i].isEmpty() && (Character.isDigit(cells[i].charAt(0)) || cells[i].charAt(0) == '-');
+            String pad = " ".repeat(w[i] - cells[i].length());
+            s.append(right ? pad + cells[i] : cells[i] + (i == cells.length - 1 ? "" : pad));
+        }
+        out.println(s.toString().stripTrailing());
+    }
+}

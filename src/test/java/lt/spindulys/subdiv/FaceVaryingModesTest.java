@@ -1,0 +1,61 @@
+package lt.spindulys.subdiv;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+
+/**
+ * UVs under every face-varying interpolation mode but ALL (which the main corpus covers), against
+ * Far: the shapes whose UVs have seams, refined twice with the mode set after their tags. The
+ * reference files under {@code subdiv/fvar/} were written with Far 3.5.0's
+ * {@code PrimvarRefinerReal<double>::InterpolateFaceVarying} (see the README there).
+ */
+class FaceVaryingModesTest {
+    static Stream<Arguments> cases() {
+        List<Arguments> out = new ArrayList<>();
+        Pattern p = Pattern.compile("(catmark_\\w+)\\.fvar(\\d)\\.L(\\d)\\.txt\\.gz");
+        try (Stream<Path> files = Files.list(Corpus.dir().resolve("fvar"))) {
+            files.map(f -> f.getFileName().toString()).sorted().forEach(name -> {
+                Matcher m = p.matcher(name);
+                if (m.matches()) out.add(Arguments.of(m.group(1), SubdivOptions.FaceVarying.values()[Integer.parseInt(m.group(2))], Integer.parseInt(m.group(3))));
+            });
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        return out.stream();
+    }
+
+    @ParameterizedTest(name = "{0} {1} L{2}")
+    @MethodSource("cases")
+    void uvsMatchFar(String shape, SubdivOptions.FaceVarying mode, int level) {
+        ControlMesh cm = Corpus.load(shape, o -> o.withFaceVarying(mode));
+        Corpus.Oracle o = Corpus.oracle("fvar/" + shape + ".fvar" + mode.ordinal() + ".L" + level + ".txt", level, false);
+        RefinedMesh r = CatmullClark.refine(cm, level);
+        double size = 0;
+        for (double x : cm.uvs()) size = Math.max(size, Math.abs(x));
+        double[][] ruv = o.section("uvs"), rf = o.section("faceuvs");
+        double[] uv = r.uvs();
+        int[] fuv = r.faceUvs();
+        OpenSubdivCorpusTest.Mismatches mm = new OpenSubdivCorpusTest.Mismatches(shape + " " + mode + " L" + level + ": ");
+        for (int f = 0; f < rf.length; f++) {
+            for (int j = 0; j < 4; j++) {
+                double[] e = ruv[(int) rf[f][j]];
+                int u = fuv[4 * f + j];
+                if (!(Math.abs(uv[2 * u] - e[0]) <= 1e-12 * size && Math.abs(uv[2 * u + 1] - e[1]) <= 1e-12 * size)) {
+                    mm.add("face " + f + " corner " + j + " (" + uv[2 * u] + ", " + uv[2 * u + 1] + "), Far (" + e[0] + ", " + e[1] + ")");
+                }
+            }
+        }
+        mm.check();
+    }
+}
