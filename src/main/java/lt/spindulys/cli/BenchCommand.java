@@ -119,14 +119,15 @@ final class BenchCommand {
         double far = ExternalTimer.farPerfRefineSeconds(obj, level, Math.min(runs, 3));
 
         BenchTable table = new BenchTable("row", "control faces", "level", "quads", "refine s", "Mquads/s", "limit normals s",
-                "bytes/quad", "far_perf s", "far_perf/ours speed");
+                "bytes/quad", "far_perf s", "speed vs far_perf");
         table.add("refine-" + file.replace("catmark_", "").replace(".obj", ""), Integer.toString(mesh.faceCount()), Integer.toString(level),
                 String.format(Locale.ROOT, "%,d", quads), fmt(t, 3), fmt(quads / t / 1e6, 2), fmt(normalSeconds, 3), fmt(bytesPerQuad, 1),
                 Double.isNaN(far) ? "not installed" : fmt(far, 3),
                 Double.isNaN(far) ? "-" : fmt(far / t, 2) + "x");
         table.print(out);
         out.println("  refine s: positions and topology of every level up to the last (one thread); far_perf s: OpenSubdiv's");
-        out.println("  TopologyRefiner::Refine alone (topology only, no positions), so the ratio is conservative for us.");
+        out.println("  TopologyRefiner::Refine alone (topology only, no positions), so the ratio is conservative for us;");
+        out.println("  speed vs far_perf = far_perf s / refine s (above 1: Spindulys is faster).");
         out.println("  bytes/quad: the refined level's topology, positions and limit normals, divided by its quads.");
     }
 

@@ -114,4 +114,17 @@ class CliTest {
         Run debug = run(scene("sphere { radius -1 }").toString(), "-o", out.toString(), "--debug");
         assertTrue(debug.err().lines().count() > 1, "--debug adds the stack trace");
     }
+
+    @Test
+    void benchListsItsRowsAndRefusesUnknownOnes() {
+        Run list = run("bench", "--list");
+        assertEquals(0, list.status(), list.err());
+        assertTrue(list.out().startsWith("refine-bishop "), list.out());
+        Run unknown = run("bench", "--only", "nope");
+        assertEquals(2, unknown.status());
+        assertEquals("render: unknown bench row 'nope' (rows: refine-bishop)" + System.lineSeparator(), unknown.err());
+        Run badRuns = run("bench", "--runs", "0");
+        assertEquals(2, badRuns.status());
+        assertEquals(0, run("bench", "--help").status());
+    }
 }
