@@ -1,5 +1,6 @@
 package lt.spindulys.io;
 
+import lt.spindulys.scene.TestMeshes;
 import static org.junit.jupiter.api.Assertions.*;
 
 import java.io.IOException;
@@ -27,23 +28,7 @@ import lt.spindulys.subdiv.SubdivTags;
 
 /** OpenSubdiv's t tags read by {@link ObjReader#readSubdiv}: values, options, and every malformed form with its location. */
 class ObjReaderSubdivTest {
-    /** The cube [-1, 1]^3, outward quads; vertices 0..7 as in scenes/models/crease-cube.obj. */
-    static final String CUBE = """
-            v -1 -1 -1
-            v  1 -1 -1
-            v  1  1 -1
-            v -1  1 -1
-            v -1 -1  1
-            v  1 -1  1
-            v  1  1  1
-            v -1  1  1
-            f 1 4 3 2
-            f 5 6 7 8
-            f 1 2 6 5
-            f 3 4 8 7
-            f 2 3 7 6
-            f 1 5 8 4
-            """;
+    static final String CUBE = TestMeshes.CUBE_OBJ;
 
     private static SubdivTags tags(String tagLines) {
         return ObjReader.parseSubdiv(CUBE + tagLines, "cube.obj").tags();

@@ -19,22 +19,7 @@ import lt.spindulys.subdiv.SubdivInput;
 
 /** A subdivision surface is a closed (or open) triangle mesh like any other: hits, spans, normals, UVs. */
 class SubdivisionSurfaceTest {
-    private static final String CUBE = """
-            v -1 -1 -1
-            v  1 -1 -1
-            v  1  1 -1
-            v -1  1 -1
-            v -1 -1  1
-            v  1 -1  1
-            v  1  1  1
-            v -1  1  1
-            f 1 4 3 2
-            f 5 6 7 8
-            f 1 2 6 5
-            f 3 4 8 7
-            f 2 3 7 6
-            f 1 5 8 4
-            """;
+    static final String CUBE = TestMeshes.CUBE_OBJ;
 
     private static ControlMesh cube(String tags) {
         return ObjReader.parseSubdiv(CUBE + tags, "cube.obj").toControlMesh();

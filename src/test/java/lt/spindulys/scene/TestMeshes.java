@@ -7,6 +7,24 @@ import java.util.Map;
 
 /** Meshes generated for tests: closed solids with shared vertices, and triangle soups. */
 public final class TestMeshes {
+    /** The cube [-1, 1]^3 as OBJ text, outward quads; vertices 0..7 as in scenes/models/crease-cube.obj. */
+    public static final String CUBE_OBJ = """
+            v -1 -1 -1
+            v  1 -1 -1
+            v  1  1 -1
+            v -1  1 -1
+            v -1 -1  1
+            v  1 -1  1
+            v  1  1  1
+            v -1  1  1
+            f 1 4 3 2
+            f 5 6 7 8
+            f 1 2 6 5
+            f 3 4 8 7
+            f 2 3 7 6
+            f 1 5 8 4
+            """;
+
     private TestMeshes() {}
 
     /** Triangles given as nine coordinates each (a soup: no shared vertices). */

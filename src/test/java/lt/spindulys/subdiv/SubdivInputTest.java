@@ -1,5 +1,6 @@
 package lt.spindulys.subdiv;
 
+import lt.spindulys.scene.TestMeshes;
 import static org.junit.jupiter.api.Assertions.*;
 
 import java.util.List;
@@ -70,22 +71,7 @@ class SubdivInputTest {
         assertThrows(IllegalArgumentException.class, () -> new SubdivTags(new int[0], new float[0], new int[] {1, 2}, new float[] {1}, new int[0], SubdivOptions.DEFAULT, List.of()));
     }
 
-    private static final String CUBE = """
-            v -1 -1 -1
-            v  1 -1 -1
-            v  1  1 -1
-            v -1  1 -1
-            v -1 -1  1
-            v  1 -1  1
-            v  1  1  1
-            v -1  1  1
-            f 1 4 3 2
-            f 5 6 7 8
-            f 1 2 6 5
-            f 3 4 8 7
-            f 2 3 7 6
-            f 1 5 8 4
-            """;
+    static final String CUBE = TestMeshes.CUBE_OBJ;
 
     /** Largest |coordinate| of each vertex: 1 on the cube's surface. */
     private static double[] extent(RefinedMesh r) {
