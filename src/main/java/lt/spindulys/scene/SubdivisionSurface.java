@@ -129,97 +129,100 @@ public final class SubdivisionSurface extends GObject {
         return new MeshData(p, normals, withUv ? uvs : null, outSizes, outV, outN, outUv, null);
     }
 
-    /** Faces meeting at more than this angle (between their normals) form a sharp edge for shading. */
-    static final double SHARP_DEGREES = 60;
-
     /**
      * The shading normal of every output corner, written as an index into the returned array to
      * {@code outN} (in the order {@link #triangles} emits corners): the vertex's limit normal,
-     * except at a vertex on a sharp edge (an infinitely sharp crease or corner, where the limit
-     * surface has a tangent plane on each side and no single normal is right for both). There a
-     * corner gets the area-weighted normal of the faces around the vertex on its own side, those
-     * within {@link #SHARP_DEGREES} of its face, so the crease stays crisp in shading.
+     * except where infinitely sharp edges (creases, boundaries, corners) cut the faces around a
+     * vertex into several sectors. The limit surface has a tangent plane per sector there and no
+     * single normal is right for all, so each corner gets the area-weighted normal of the faces in
+     * its own sector and the crease stays crisp in shading.
      */
     private static double[] cornerNormals(RefinedMesh r, int[] outN) {
         double[] p = r.positions(), limit = r.limitNormals();
-        int[] sizes = r.faceSizes(), fv = r.faceVertices();
-        int nv = p.length / 3, nf = sizes.length;
-        int[] start = new int[nf + 1];
-        for (int f = 0; f < nf; f++) start[f + 1] = start[f] + sizes[f];
-        // Area-weighted face normals (Newell's method: the vector's length is twice the area).
-        double[] fn = new double[3 * nf];
+        int[] sizes = r.faceSizes(), fv = r.faceVertices(), twin = r.cornerTwins();
+        boolean[] sharp = r.sharpEdges();
+        int nv = p.length / 3, nf = sizes.length, nc = fv.length;
+        int[] start = new int[nf + 1], faceOf = new int[nc];
+        for (int f = 0; f < nf; f++) {
+            start[f + 1] = start[f] + sizes[f];
+            for (int c = start[f]; c < start[f + 1]; c++) faceOf[c] = f;
+        }
+        // Sectors: corners at the same vertex joined across every edge that is neither sharp nor
+        // next to a hole (union-find over corners).
+        int[] parent = new int[nc];
+        for (int c = 0; c < nc; c++) parent[c] = c;
+        for (int c = 0; c < nc; c++) {
+            int t = twin[c];
+            if (t < c || sharp[c] || r.isHole(faceOf[c]) || r.isHole(faceOf[t])) continue;
+            // c runs a -> b in its face, t runs b -> a in the neighbour.
+            union(parent, c, next(t, faceOf, start));
+            union(parent, next(c, faceOf, start), t);
+        }
+        // Area-weighted face normals (Newell's method) summed per sector.
+        double[] sector = new double[3 * nc];
+        int[] vertexRoot = new int[nv];
+        boolean[] split = new boolean[nv];
+        java.util.Arrays.fill(vertexRoot, -1);
         for (int f = 0; f < nf; f++) {
             if (r.isHole(f)) continue;
-            for (int j = 0; j < sizes[f]; j++) {
-                int a = 3 * fv[start[f] + j], b = 3 * fv[start[f] + (j + 1) % sizes[f]];
-                fn[3 * f] += (p[a + 1] - p[b + 1]) * (p[a + 2] + p[b + 2]);
-                fn[3 * f + 1] += (p[a + 2] - p[b + 2]) * (p[a] + p[b]);
-                fn[3 * f + 2] += (p[a] - p[b]) * (p[a + 1] + p[b + 1]);
+            double x = 0, y = 0, z = 0;
+            for (int c = start[f]; c < start[f + 1]; c++) {
+                int a = 3 * fv[c], b = 3 * fv[next(c, faceOf, start)];
+                x += (p[a + 1] - p[b + 1]) * (p[a + 2] + p[b + 2]);
+                y += (p[a + 2] - p[b + 2]) * (p[a] + p[b]);
+                z += (p[a] - p[b]) * (p[a + 1] + p[b + 1]);
+            }
+            for (int c = start[f]; c < start[f + 1]; c++) {
+                int root = find(parent, c), v = fv[c];
+                sector[3 * root] += x; sector[3 * root + 1] += y; sector[3 * root + 2] += z;
+                if (vertexRoot[v] < 0) vertexRoot[v] = root;
+                else if (vertexRoot[v] != root) split[v] = true;
             }
         }
-        // The faces around each vertex, as compressed rows.
-        int[] rowStart = new int[nv + 1];
-        for (int f = 0; f < nf; f++) if (!r.isHole(f)) for (int c = start[f]; c < start[f + 1]; c++) rowStart[fv[c] + 1]++;
-        for (int v = 0; v < nv; v++) rowStart[v + 1] += rowStart[v];
-        int[] fill = java.util.Arrays.copyOf(rowStart, nv), around = new int[rowStart[nv]];
-        for (int f = 0; f < nf; f++) if (!r.isHole(f)) for (int c = start[f]; c < start[f + 1]; c++) around[fill[fv[c]]++] = f;
-
-        double cosSharp = Math.cos(Math.toRadians(SHARP_DEGREES));
-        boolean[] sharp = new boolean[nv];
-        for (int v = 0; v < nv; v++) {
-            for (int i = rowStart[v]; i < rowStart[v + 1] && !sharp[v]; i++) {
-                for (int j = i + 1; j < rowStart[v + 1]; j++) {
-                    if (cosAngle(fn, around[i], around[j]) < cosSharp) {
-                        sharp[v] = true;
-                        break;
-                    }
-                }
-            }
-        }
-        double[] normals = java.util.Arrays.copyOf(limit, limit.length);
-        int count = nv;
-        int k = 0;
+        double[] normals = java.util.Arrays.copyOf(limit, limit.length + 3 * nc);
+        int[] sectorNormal = new int[nc];
+        java.util.Arrays.fill(sectorNormal, -1);
+        int count = nv, k = 0;
         for (int f = 0; f < nf; f++) {
             if (r.isHole(f)) continue;
             int[] order = sizes[f] == 4 ? split(p, fv, start[f]) : null;
             int n = order != null ? 6 : sizes[f];
             for (int m = 0; m < n; m++) {
-                int v = fv[start[f] + (order != null ? order[m] : m)];
-                if (!sharp[v]) {
-                    outN[k++] = v;
-                    continue;
-                }
-                double x = 0, y = 0, z = 0;
-                for (int i = rowStart[v]; i < rowStart[v + 1]; i++) {
-                    int g = around[i];
-                    if (g == f || cosAngle(fn, f, g) >= cosSharp) {
-                        x += fn[3 * g];
-                        y += fn[3 * g + 1];
-                        z += fn[3 * g + 2];
-                    }
-                }
-                // Unit length like the limit normals, so that interpolation between the two weighs them alike.
+                int c = start[f] + (order != null ? order[m] : m), v = fv[c];
+                int root = find(parent, c);
+                double x = sector[3 * root], y = sector[3 * root + 1], z = sector[3 * root + 2];
                 double len = Math.sqrt(x * x + y * y + z * z);
-                if (!(len > 0) || !Double.isFinite(len)) {
+                if (!split[v] || !(len > 0) || !Double.isFinite(len)) {
                     outN[k++] = v;
                     continue;
                 }
-                if (3 * count + 3 > normals.length) normals = java.util.Arrays.copyOf(normals, 2 * normals.length + 3);
-                normals[3 * count] = x / len;
-                normals[3 * count + 1] = y / len;
-                normals[3 * count + 2] = z / len;
-                outN[k++] = count++;
+                if (sectorNormal[root] < 0) {
+                    // Unit length like the limit normals, so that interpolation weighs them alike.
+                    normals[3 * count] = x / len;
+                    normals[3 * count + 1] = y / len;
+                    normals[3 * count + 2] = z / len;
+                    sectorNormal[root] = count++;
+                }
+                outN[k++] = sectorNormal[root];
             }
         }
         return java.util.Arrays.copyOf(normals, 3 * count);
     }
 
-    /** Cosine of the angle between the normals of faces f and g (1 when either is degenerate: no evidence of an edge). */
-    private static double cosAngle(double[] fn, int f, int g) {
-        double ax = fn[3 * f], ay = fn[3 * f + 1], az = fn[3 * f + 2], bx = fn[3 * g], by = fn[3 * g + 1], bz = fn[3 * g + 2];
-        double la = ax * ax + ay * ay + az * az, lb = bx * bx + by * by + bz * bz;
-        if (la == 0 || lb == 0) return 1;
-        return (ax * bx + ay * by + az * bz) / Math.sqrt(la * lb);
+    private static int next(int c, int[] faceOf, int[] start) {
+        int f = faceOf[c];
+        return c + 1 == start[f + 1] ? start[f] : c + 1;
+    }
+
+    private static int find(int[] parent, int c) {
+        while (parent[c] != c) c = parent[c] = parent[parent[c]];
+        return c;
+    }
+
+    private static void union(int[] parent, int a, int b) {
+        a = find(parent, a);
+        b = find(parent, b);
+        if (a != b) parent[Math.max(a, b)] = Math.min(a, b);
     }
 
     /** Corners of the two triangles of a quad abcd cut along ac, or along bd; both keep the winding. */

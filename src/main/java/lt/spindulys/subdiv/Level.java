@@ -54,7 +54,7 @@ final class Level {
 
     /** Bytes held by this level's arrays (topology, tags, sharpness), for the benchmark's memory figure. */
     long memoryBytes() {
-        long b = 4L * (len(faceStart) + len(hFace) + len(hOrig) + len(hTwin) + len(hEdge) + len(vOut)
+        long b = 4L * (len(faceStart) + len(hFace) + len(hOrig) + len(hTwin) + retainedEdgeCodeInts() + len(vOut)
                 + len(nmEdge) + len(nmEdgeStart) + len(nmEdgeHalf) + len(nmVert) + len(nmVertStart) + len(nmVertHalf) + len(nmVertOther) + len(nmVertEnd));
         b += (vTag == null ? 0 : vTag.length) + 4L * (len(vSharp) + len(eSharp)) + (hole == null ? 0 : hole.length);
         return b;

@@ -128,6 +128,24 @@ public final class RefinedMesh {
     }
 
     /**
+     * For every face corner (in {@link #faceVertices()} order), the corner of the neighbouring face
+     * that starts the same edge from the other end, or -1 on a boundary or non-manifold edge.
+     */
+    public int[] cornerTwins() { return topo.hTwin; }
+
+    /**
+     * For every face corner, whether the edge from it to the face's next corner is infinitely sharp
+     * at this level: a boundary or non-manifold edge, or an infinitely sharp crease. The limit
+     * surface has a tangent plane on each side of such an edge.
+     */
+    public boolean[] sharpEdges() {
+        if (topo.eSharp != null) topo.edgeCodes();
+        boolean[] sharp = new boolean[topo.nH];
+        for (int h = 0; h < sharp.length; h++) sharp[h] = Crease.isInfinite(topo.edgeSharpness(h));
+        return sharp;
+    }
+
+    /**
      * Bytes of the refined surface as the renderer holds it: this level's topology, its positions
      * and one limit normal per vertex (counted whether or not normals were asked for yet). UVs
      * are not included.
