@@ -55,6 +55,8 @@ public final class Octree implements Accelerator {
     private final int[] refs;
     private final int nodeCount, depth, primitiveCount;
     private final int stackNeed;
+    /** Side of a cell at each level, side / 2^level (exact), so the walk need not compute it. */
+    private final double[] cellSide;
 
     public Octree(PrimitiveSet set) { this(set, DEFAULT_LEAF_SIZE, DEFAULT_MAX_DEPTH); }
 
@@ -75,6 +77,8 @@ public final class Octree implements Accelerator {
         depth = b.depth;
         primitiveCount = b.m;
         stackNeed = ENTRY * (7 * depth + 1);
+        cellSide = new double[depth + 2];
+        for (int l = 0; l < cellSide.length; l++) cellSide[l] = Math.scalb(side, -l);
     }
 
     public PrimitiveSet set() { return set; }
@@ -179,7 +183,7 @@ public final class Octree implements Accelerator {
                 }
                 final int level = stack[sp + 1] + 1;
                 final int cx = 2 * stack[sp + 2], cy = 2 * stack[sp + 3], cz = 2 * stack[sp + 4];
-                final double h = Math.scalb(side, -level);
+                final double h = cellSide[level];
                 // Entry and exit t of the low and high half on each axis (NaN when the ray runs
                 // inside a plane: the comparisons below then ignore that axis, as in Bvh).
                 double xl0 = (minX + cx * h - ox) * ix, xm = (minX + (cx + 1) * h - ox) * ix, xh1 = (minX + (cx + 2) * h - ox) * ix;
