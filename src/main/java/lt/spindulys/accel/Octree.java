@@ -42,7 +42,8 @@ public final class Octree implements Accelerator {
     private static final double PAD = 4 * 3 * 0x1p-53 / (1 - 3 * 0x1p-53);
     /**
      * Ints per pending cell on the traversal stack: node, level, x, y, z, entry t (rounded down
-     * to a float) and exit t (rounded down): both roundings err on the side of visiting.
+     * to a float) and exit t (rounded down): both roundings err on the side of visiting. An inner
+     * node replaces itself by at most four children, so a walk needs 3 * depth + 1 entries.
      */
     private static final int ENTRY = 7;
 
@@ -76,7 +77,7 @@ public final class Octree implements Accelerator {
         nodeCount = b.count;
         depth = b.depth;
         primitiveCount = b.m;
-        stackNeed = ENTRY * (7 * depth + 1);
+        stackNeed = ENTRY * (3 * depth + 1);
         cellSide = new double[depth + 2];
         for (int l = 0; l < cellSide.length; l++) cellSide[l] = Math.scalb(side, -l);
     }
@@ -127,8 +128,8 @@ public final class Octree implements Accelerator {
         final double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         final double ix = 1 / ray.dx, iy = 1 / ray.dy, iz = 1 / ray.dz;
         final boolean nx = ix < 0, ny = iy < 0, nz = iz < 0;
-        // Child c = i ^ flip for i = 0..7 is a front-to-back order: along the ray each coordinate
-        // only grows in the flipped frame, so a cell entered later has a superset of the bits.
+        // Children are named in a frame flipped on every axis the ray runs down, where each
+        // coordinate only grows along the ray: child = bits ^ flip.
         final int flip = (nx ? 1 : 0) | (ny ? 2 : 0) | (nz ? 4 : 0);
         final double saved = ray.tMax;
         final int base = ctx.stackTop;
@@ -184,42 +185,61 @@ public final class Octree implements Accelerator {
                 final int level = stack[sp + 1] + 1;
                 final int cx = 2 * stack[sp + 2], cy = 2 * stack[sp + 3], cz = 2 * stack[sp + 4];
                 final double h = cellSide[level];
-                // Entry and exit t of the low and high half on each axis (NaN when the ray runs
-                // inside a plane: the comparisons below then ignore that axis, as in Bvh).
-                double xl0 = (minX + cx * h - ox) * ix, xm = (minX + (cx + 1) * h - ox) * ix, xh1 = (minX + (cx + 2) * h - ox) * ix;
-                double yl0 = (minY + cy * h - oy) * iy, ym = (minY + (cy + 1) * h - oy) * iy, yh1 = (minY + (cy + 2) * h - oy) * iy;
-                double zl0 = (minZ + cz * h - oz) * iz, zm = (minZ + (cz + 1) * h - oz) * iz, zh1 = (minZ + (cz + 2) * h - oz) * iz;
-                double xle = nx ? xm : xl0, xlf = nx ? xl0 : xm, xhe = nx ? xh1 : xm, xhf = nx ? xm : xh1;
-                double yle = ny ? ym : yl0, ylf = ny ? yl0 : ym, yhe = ny ? yh1 : ym, yhf = ny ? ym : yh1;
-                double zle = nz ? zm : zl0, zlf = nz ? zl0 : zm, zhe = nz ? zh1 : zm, zhf = nz ? zm : zh1;
-                final int first = node[2 * n];
-                final double tMin = ray.tMin, tMax = ray.tMax;
-                // Pushed last to first, so the first child along the ray is popped first.
-                for (int i = 7; i >= 0; i--) {
-                    int c = i ^ flip;
-                    if ((info & (1 << c)) == 0) continue;
-                    near = Double.NEGATIVE_INFINITY;
-                    far = Double.POSITIVE_INFINITY;
-                    e = (c & 1) == 0 ? xle : xhe; f = (c & 1) == 0 ? xlf : xhf;
-                    if (e > near) near = e;
-                    if (f < far) far = f;
-                    e = (c & 2) == 0 ? yle : yhe; f = (c & 2) == 0 ? ylf : yhf;
-                    if (e > near) near = e;
-                    if (f < far) far = f;
-                    e = (c & 4) == 0 ? zle : zhe; f = (c & 4) == 0 ? zlf : zhf;
-                    if (e > near) near = e;
-                    if (f < far) far = f;
-                    pn = near * (near > 0 ? 1 - PAD : 1 + PAD);
-                    pf = far * (far > 0 ? 1 + PAD : 1 - PAD);
-                    if (!(pn <= pf && pn <= tMax && pf >= tMin)) continue;
-                    stack[sp] = first + Integer.bitCount(info & ((1 << c) - 1));
-                    stack[sp + 1] = level;
-                    stack[sp + 2] = cx + (c & 1);
-                    stack[sp + 3] = cy + ((c >> 1) & 1);
-                    stack[sp + 4] = cz + (c >> 2);
-                    stack[sp + 5] = floatDown(pn);
-                    stack[sp + 6] = floatDown(far);
-                    sp += ENTRY;
+                // Where the ray crosses the node's low, middle and high plane on each axis (NaN
+                // when it runs inside a plane: the comparisons below then ignore it, as in Bvh).
+                double x0 = (minX + cx * h - ox) * ix, xm = (minX + (cx + 1) * h - ox) * ix, x1 = (minX + (cx + 2) * h - ox) * ix;
+                double y0 = (minY + cy * h - oy) * iy, ym = (minY + (cy + 1) * h - oy) * iy, y1 = (minY + (cy + 2) * h - oy) * iy;
+                double z0 = (minZ + cz * h - oz) * iz, zm = (minZ + (cz + 1) * h - oz) * iz, z1 = (minZ + (cz + 2) * h - oz) * iz;
+                near = Double.NEGATIVE_INFINITY;
+                far = Double.POSITIVE_INFINITY;
+                e = nx ? x1 : x0; f = nx ? x0 : x1;
+                if (e > near) near = e;
+                if (f < far) far = f;
+                e = ny ? y1 : y0; f = ny ? y0 : y1;
+                if (e > near) near = e;
+                if (f < far) far = f;
+                e = nz ? z1 : z0; f = nz ? z0 : z1;
+                if (e > near) near = e;
+                if (f < far) far = f;
+                // The node's padded interval clipped to the ray's: its children split it at the
+                // middle-plane crossings, so together they cover every t of it.
+                double t = Math.max(near * (near > 0 ? 1 - PAD : 1 + PAD), ray.tMin);
+                final double end = Math.min(far * (far > 0 ? 1 + PAD : 1 - PAD), ray.tMax);
+                if (!(t <= end)) continue;
+                // In the flipped frame a bit is set once the ray is past that middle plane; each
+                // crossing sets one (several at once through an edge or corner), so at most four
+                // children are visited, in order.
+                int bits = (xm < t ? 1 : 0) | (ym < t ? 2 : 0) | (zm < t ? 4 : 0);
+                final int first = node[2 * n], from = sp;
+                while (true) {
+                    double next = end;
+                    if ((bits & 1) == 0 && xm < next) next = xm;
+                    if ((bits & 2) == 0 && ym < next) next = ym;
+                    if ((bits & 4) == 0 && zm < next) next = zm;
+                    int c = bits ^ flip;
+                    if ((info & (1 << c)) != 0) {
+                        stack[sp] = first + Integer.bitCount(info & ((1 << c) - 1));
+                        stack[sp + 1] = level;
+                        stack[sp + 2] = cx + (c & 1);
+                        stack[sp + 3] = cy + ((c >> 1) & 1);
+                        stack[sp + 4] = cz + (c >> 2);
+                        stack[sp + 5] = floatDown(t);
+                        stack[sp + 6] = floatDown(next);
+                        sp += ENTRY;
+                    }
+                    if (!(next < end)) break;
+                    if ((bits & 1) == 0 && xm == next) bits |= 1;
+                    if ((bits & 2) == 0 && ym == next) bits |= 2;
+                    if ((bits & 4) == 0 && zm == next) bits |= 4;
+                    t = next;
+                }
+                // Pushed in ray order; reversed so that the first child is popped first.
+                for (int a = from, b = sp - ENTRY; a < b; a += ENTRY, b -= ENTRY) {
+                    for (int k = 0; k < ENTRY; k++) {
+                        int v = stack[a + k];
+                        stack[a + k] = stack[b + k];
+                        stack[b + k] = v;
+                    }
                 }
             }
         } finally {
