@@ -11,25 +11,26 @@ import lt.spindulys.scene.TraceContext;
  * An octree over a {@link PrimitiveSet} (the thesis's "Octobox"): a cube around everything,
  * split recursively into eight equal cubes, each primitive referenced from every leaf its bounds
  * overlap. Stored flat: two ints per node (an inner node holds its first child and an 8-bit mask
- * of the children that exist, stored consecutively; a leaf holds a range of {@link #refs}) and
- * one int per reference. Immutable after construction; thread-safe.
+ * of the children that exist, stored consecutively; a leaf holds a range of the reference list)
+ * and one int per reference. Immutable after construction; thread-safe.
  *
  * <p>Cells are never stored: a cell is named by its level and integer coordinates, and its
  * planes are computed as {@code min + i * (side / 2^level)}, which gives a plane shared by
  * neighbouring cells, at any levels, exactly the same value. Traversal walks the cells front to
  * back (children in the ray's entry order) and stops once the nearest hit found lies before the
  * current leaf's exit: a primitive hit beyond the leaf it was found in is kept but does not end
- * the walk, since a nearer one may wait in the next cell.
+ * the walk, since a nearer one may wait in the next cell. A primitive in several leaves the ray
+ * passes is tested in each (no mailbox: the structure stays free of per-ray state).
  *
- * <p>Memory stays bounded for any input: the tree is at most {@link #DEFAULT_MAX_DEPTH} levels
- * deep, a node is not split when its children would hold more than {@link #SPLIT_GROWTH} times
- * its references (primitives larger than the children, or many identical ones, gain nothing from
- * splitting), and the build stops splitting once all references would exceed
+ * <p>Memory stays bounded for any input: the tree is at most maxDepth levels deep (default
+ * {@link #DEFAULT_MAX_DEPTH}; identical tiny primitives, which no split separates, make a chain to
+ * that depth), a node is not split when its children would hold more than {@link #SPLIT_GROWTH}
+ * times its references (primitives as large as the children gain nothing from splitting), and the build stops splitting once all references would exceed
  * {@link #REFS_PER_PRIMITIVE} per primitive. The build is breadth first, so that budget goes to
  * the shallow levels of every region before the deep levels of any one.
  */
 public final class Octree implements Accelerator {
-    /** Largest number of primitives in a leaf that may still be split. */
+    /** A node with at most this many primitives is not split. */
     public static final int DEFAULT_LEAF_SIZE = 8;
     public static final int DEFAULT_MAX_DEPTH = 16;
     /** Deepest allowed level: cell coordinates and their plane products must stay exact in ints and doubles. */
