@@ -14,4 +14,12 @@ public interface Accelerator {
 
     /** True if any primitive blocks the ray in (ray.tMin, ray.tMax); stops at the first one found. */
     boolean occluded(Ray ray, TraceContext ctx);
+
+    /**
+     * Calls {@code visitor} for every primitive the structure cannot rule out for the ray within
+     * [ray.tMin, ray.tMax] (infinite limits allowed), in no particular order and possibly more than
+     * once (a structure may reference a primitive from several cells). The visitor must not change
+     * the ray. Used to collect all crossings of a line (mesh spans).
+     */
+    void visit(Ray ray, TraceContext ctx, Bvh.Visitor visitor);
 }

@@ -31,4 +31,9 @@ public final class BruteForce implements Accelerator {
         }
         return false;
     }
+
+    @Override
+    public void visit(Ray ray, TraceContext ctx, Bvh.Visitor visitor) {
+        for (int i = 0, n = set.size(); i < n; i++) visitor.visit(i, ray, ctx);
+    }
 }

@@ -5,6 +5,7 @@ import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
+import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.image.ImageOptions;
 import lt.spindulys.image.ImageWriter;
 import lt.spindulys.io.SceneParser;
@@ -20,7 +21,7 @@ import lt.spindulys.scene.SceneBuilder;
 final class RenderCommand {
     static final String USAGE = """
             usage: render SCENE.dat [-o OUT] [--width W] [--height H] [--spp N] [--threads N]
-                                    [--seed S] [--quality Q] [--stats] [--quiet] [--debug]
+                                    [--seed S] [--accel A] [--quality Q] [--stats] [--quiet] [--debug]
                    render subdivide MESH.obj|MESH.dat --level N -o OUT.obj [...]   (see render subdivide --help)
                    render bench [--only NAME] [--runs N] [--list]                 (see render bench --help)
                    render --help | --version
@@ -31,6 +32,7 @@ final class RenderCommand {
               --spp N            samples per pixel, stratified (overrides the scene)
               --threads N        render threads (default: all cores)
               --seed S           global random seed (overrides the scene)
+              --accel A          acceleration structure: bvh, octree or bruteforce (overrides the scene)
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
               --stats            print load, build and render times and ray counts
               --quiet            no progress bar
@@ -40,6 +42,7 @@ final class RenderCommand {
     private Path scene, output;
     private Integer width, height, spp, threads;
     private Long seed;
+    private AcceleratorKind accel;
     private double quality = ImageOptions.DEFAULT.jpegQuality();
     private boolean stats, quiet;
 
@@ -54,6 +57,13 @@ final class RenderCommand {
                 case "--spp" -> spp = intValue(args, ++i, a, 1, 65536);
                 case "--threads" -> threads = intValue(args, ++i, a, 1, 1024);
                 case "--seed" -> seed = longValue(args, ++i, a);
+                case "--accel" -> {
+                    String v = value(args, ++i, a);
+                    if (!AcceleratorKind.keywords().contains(v)) {
+                        throw new UsageException(a + " expects one of " + String.join(", ", AcceleratorKind.keywords()) + ", found '" + v + "'");
+                    }
+                    accel = AcceleratorKind.fromKeyword(v);
+                }
                 case "--quality" -> quality = doubleValue(args, ++i, a, 0, 1);
                 case "--stats" -> stats = true;
                 case "--quiet", "-q" -> quiet = true;
@@ -91,6 +101,7 @@ final class RenderCommand {
         if (width != null || height != null) s = s.withSize(width != null ? width : s.width(), height != null ? height : s.height());
         if (spp != null) s = s.withSamplesPerPixel(spp);
         if (seed != null) s = s.withSeed(seed);
+        if (accel != null) s = s.withAccelerator(accel);
         builder.settings(s);
         long t1 = System.nanoTime();
         Scene built = builder.build();

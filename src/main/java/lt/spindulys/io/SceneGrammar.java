@@ -94,7 +94,8 @@ final class SceneGrammar {
             opt("background", Kind.COLOR),
             opt("ambient", Kind.COLOR),
             choice("encoding", null, "linear", "srgb"),
-            opt("seed", Kind.LONG)));
+            opt("seed", Kind.LONG),
+            choice("accelerator", null, "bvh", "octree", "bruteforce")));
 
     static final Block CAMERA = new Block("camera", Category.CAMERA, List.of(
             req("eye", Kind.VECTOR),

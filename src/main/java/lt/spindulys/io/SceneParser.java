@@ -18,6 +18,7 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.regex.Pattern;
 
+import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.io.SceneGrammar.Block;
 import lt.spindulys.io.SceneGrammar.Key;
@@ -151,6 +152,7 @@ public final class SceneParser {
                     case "ambient" -> s.withAmbient((Color) v);
                     case "encoding" -> s.withSrgb("srgb".equals(v));
                     case "seed" -> s.withSeed((Long) v);
+                    case "accelerator" -> s.withAccelerator(AcceleratorKind.fromKeyword((String) v));
                     default -> throw unhandled(pr);
                 };
             } catch (IllegalArgumentException e) {

@@ -1,5 +1,6 @@
 package lt.spindulys.scene;
 
+import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
@@ -66,13 +67,21 @@ public abstract class GObject {
 
     // ---- freezing ----
 
+    /** {@link #freeze(Transform, Material, int, AcceleratorKind)} with the default acceleration structure. */
+    public final int freeze(Transform parentToWorld, Material inherited, int ids) {
+        return freeze(parentToWorld, inherited, ids, AcceleratorKind.DEFAULT);
+    }
+
     /**
      * Fixes this object in the scene: composes its transform with {@code parentToWorld}, computes
-     * world bounds and assigns ids. Containers override to freeze their children, then call super.
+     * world bounds and assigns ids. Containers override to freeze their children, then call super;
+     * objects with primitives of their own (meshes) build their acceleration structure here, of
+     * the kind the scene chose.
      *
-     * @param ids next free object id; returns the next free id after this object and its children
+     * @param ids   next free object id; returns the next free id after this object and its children
+     * @param accel the structure for objects that index their own primitives, passed on to children
      */
-    public int freeze(Transform parentToWorld, Material inherited, int ids) {
+    public int freeze(Transform parentToWorld, Material inherited, int ids, AcceleratorKind accel) {
         if (objectToWorld != null) throw new IllegalStateException(name() + " is added to the scene twice");
         objectToWorld = transform.then(parentToWorld);
         if (material == null) material = inherited;

@@ -1,5 +1,6 @@
 package lt.spindulys.scene;
 
+import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.math.Color;
 
 /**
@@ -15,13 +16,20 @@ import lt.spindulys.math.Color;
  * @param ambient         ambient light intensity Ia
  * @param srgb            encode the image as sRGB for 8-bit outputs (else linear values are written)
  * @param seed            global seed of every random number, mixed with pixel and sample
+ * @param accelerator     the acceleration structure of the scene over its objects and of each mesh over its triangles
  */
 public record RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, double minContribution,
-                             Color background, Color ambient, boolean srgb, long seed) {
+                             Color background, Color ambient, boolean srgb, long seed, AcceleratorKind accelerator) {
     /** Largest accepted image side, so that a typo cannot ask for terabytes. */
     public static final int MAX_SIDE = 32768;
 
     public static final RenderSettings DEFAULT = new RenderSettings(640, 480, 1, 8, 0.001, Color.BLACK, Color.WHITE, false, 0);
+
+    /** Settings with the default acceleration structure. */
+    public RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, double minContribution,
+                          Color background, Color ambient, boolean srgb, long seed) {
+        this(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, AcceleratorKind.DEFAULT);
+    }
 
     public RenderSettings {
         if (width < 1 || width > MAX_SIDE) throw new IllegalArgumentException("width must be between 1 and " + MAX_SIDE + ", found " + width);
@@ -31,16 +39,19 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         if (!(minContribution >= 0 && minContribution < 1)) throw new IllegalArgumentException("mincontribution must be in [0, 1), found " + minContribution);
         if (!background.isFinite() || !background.isNonNegative()) throw new IllegalArgumentException("background must have non-negative finite components, found " + background);
         if (!ambient.isFinite() || !ambient.isNonNegative()) throw new IllegalArgumentException("ambient must have non-negative finite components, found " + ambient);
+        java.util.Objects.requireNonNull(accelerator, "accelerator");
     }
 
-    public RenderSettings withSize(int w, int h) { return new RenderSettings(w, h, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed); }
-    public RenderSettings withSamplesPerPixel(int n) { return new RenderSettings(width, height, n, maxDepth, minContribution, background, ambient, srgb, seed); }
-    public RenderSettings withMaxDepth(int d) { return new RenderSettings(width, height, samplesPerPixel, d, minContribution, background, ambient, srgb, seed); }
-    public RenderSettings withMinContribution(double c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, c, background, ambient, srgb, seed); }
-    public RenderSettings withBackground(Color c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, c, ambient, srgb, seed); }
-    public RenderSettings withAmbient(Color c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, c, srgb, seed); }
-    public RenderSettings withSrgb(boolean s) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, s, seed); }
-    public RenderSettings withSeed(long s) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, s); }
+    public RenderSettings withSize(int w, int h) { return new RenderSettings(w, h, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, accelerator); }
+    public RenderSettings withSamplesPerPixel(int n) { return new RenderSettings(width, height, n, maxDepth, minContribution, background, ambient, srgb, seed, accelerator); }
+    public RenderSettings withMaxDepth(int d) { return new RenderSettings(width, height, samplesPerPixel, d, minContribution, background, ambient, srgb, seed, accelerator); }
+    public RenderSettings withMinContribution(double c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, c, background, ambient, srgb, seed, accelerator); }
+    public RenderSettings withBackground(Color c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, c, ambient, srgb, seed, accelerator); }
+    public RenderSettings withAmbient(Color c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, c, srgb, seed, accelerator); }
+    public RenderSettings withSrgb(boolean s) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, s, seed, accelerator); }
+    public RenderSettings withSeed(long s) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, s, accelerator); }
+
+    public RenderSettings withAccelerator(AcceleratorKind a) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, a); }
 
     public double aspect() { return (double) width / height; }
 }

@@ -35,7 +35,7 @@ public final class Scene {
         this.lightArray = lights.toArray(new PointLight[0]);
         this.objects = List.copyOf(objects);
         int ids = 0;
-        for (GObject o : objects) ids = o.freeze(Transform.IDENTITY, Material.DEFAULT, ids);
+        for (GObject o : objects) ids = o.freeze(Transform.IDENTITY, Material.DEFAULT, ids, settings.accelerator());
         objectIds = ids;
         boolean[] anyTransparent = {false};
         for (GObject o : objects) o.forEachMaterial(m -> anyTransparent[0] |= m.isTransparent());
@@ -47,9 +47,9 @@ public final class Scene {
         }
         bounded = b.toArray(new GObject[0]);
         unbounded = u.toArray(new GObject[0]);
-        // A handful of objects fit in one BVH leaf anyway; testing them directly is as fast.
+        // A handful of objects fit in one leaf anyway; testing them directly is as fast.
         ObjectSet set = new ObjectSet(bounded);
-        accel = bounded.length > Bvh.DEFAULT_LEAF_SIZE ? new Bvh(set) : new BruteForce(set);
+        accel = bounded.length > Bvh.DEFAULT_LEAF_SIZE ? settings.accelerator().build(set) : new BruteForce(set);
     }
 
     public RenderSettings settings() { return settings; }

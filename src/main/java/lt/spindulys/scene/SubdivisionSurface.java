@@ -1,5 +1,6 @@
 package lt.spindulys.scene;
 
+import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
@@ -47,9 +48,15 @@ public final class SubdivisionSurface extends GObject {
         this.refined = CatmullClark.refine(control, level);
         this.mesh = new TriangleMesh(triangles(refined, smooth));
         mesh.smooth(smooth);
+    }
+
+    @Override
+    public int freeze(Transform parentToWorld, Material inherited, int ids, AcceleratorKind accel) {
+        int next = super.freeze(parentToWorld, inherited, ids, accel);
         // The inner mesh is never part of a scene; frozen in place, its own queries (occluded)
         // take the object-space rays this surface hands it unchanged.
-        mesh.freeze(Transform.IDENTITY, null, 0);
+        mesh.freeze(Transform.IDENTITY, null, 0, accel);
+        return next;
     }
 
     /**

@@ -2,13 +2,17 @@ package lt.spindulys.scene;
 
 import java.util.Arrays;
 
+import lt.spindulys.accel.Accelerator;
+import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.accel.Bvh;
 import lt.spindulys.accel.PrimitiveSet;
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
+import lt.spindulys.math.Transform;
 
 /**
- * A triangle mesh held in flat arrays (no object per triangle) with its own {@link Bvh}.
+ * A triangle mesh held in flat arrays (no object per triangle) with its own acceleration
+ * structure, of the scene's {@link AcceleratorKind}, built when the mesh is frozen.
  * Polygons are triangulated as fans; triangles of zero area are dropped (and counted). Closed
  * when every undirected edge, with coinciding vertex positions treated as one vertex, belongs to
  * exactly two triangles.
@@ -20,7 +24,7 @@ import lt.spindulys.math.Ray;
  * Counter-clockwise winding seen from outside gives the outward normal.
  *
  * <p>The mesh is also the {@link PrimitiveSet} of its triangles (in object space), which is what
- * its BVH indexes.
+ * its acceleration structure indexes.
  */
 public final class TriangleMesh extends GObject implements PrimitiveSet {
     private final MeshData data;
@@ -37,7 +41,8 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     private final boolean needsVertexNormals;
     private final boolean closed;
     private final Bounds bounds;
-    private final Bvh bvh;
+    /** Built by {@link #freeze}; written once before the scene is shared. */
+    private Accelerator accel;
     /** Made once so that collecting crossings allocates nothing per ray. */
     private final Bvh.Visitor crossingCollector = this::collectCrossing;
 
@@ -108,7 +113,6 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         bounds = k == 0 ? Bounds.EMPTY : new Bounds(x0, y0, z0, x1, y1, z1);
         closed = k > 0 && everyEdgeTwice();
         smooth(data.normalIndex() != null);
-        bvh = new Bvh(this);
     }
 
     private String where() {
@@ -257,13 +261,20 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     @Override public boolean isClosed() { return closed; }
 
     @Override
+    public int freeze(Transform parentToWorld, Material inherited, int ids, AcceleratorKind kind) {
+        int next = super.freeze(parentToWorld, inherited, ids, kind);
+        accel = kind.build(this);
+        return next;
+    }
+
+    @Override
     protected boolean intersectLocal(Ray ray, Hit hit, TraceContext ctx) {
-        return bvh.intersect(ray, hit, ctx);
+        return accel.intersect(ray, hit, ctx);
     }
 
     @Override
     public boolean occluded(Ray ray, TraceContext ctx) {
-        return bvh.occluded(toLocal(ray, ctx), ctx);
+        return accel.occluded(toLocal(ray, ctx), ctx);
     }
 
     @Override
@@ -334,7 +345,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         ray.tMin = Double.NEGATIVE_INFINITY;
         ray.tMax = Double.POSITIVE_INFINITY;
         try {
-            bvh.visit(ray, ctx, crossingCollector);
+            accel.visit(ray, ctx, crossingCollector);
         } finally {
             ray.tMin = tMin;
             ray.tMax = tMax;

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
+import java.util.function.Supplier;
 
 import org.junit.jupiter.api.Test;
 
@@ -25,7 +26,7 @@ import lt.spindulys.scene.TriangleMesh;
 class BvhTest {
 
     /** Random triangles: a centre in the unit cube, corners spread by a size drawn log-uniformly from [lo, hi]. */
-    private static double[] soup(Random r, int n, double lo, double hi) {
+    static double[] soup(Random r, int n, double lo, double hi) {
         double[] c = new double[9 * n];
         for (int i = 0; i < n; i++) {
             double size = lo * Math.pow(hi / lo, r.nextDouble());
@@ -39,7 +40,7 @@ class BvhTest {
         return c;
     }
 
-    private static double[] concat(double[]... parts) {
+    static double[] concat(double[]... parts) {
         int n = 0;
         for (double[] p : parts) n += p.length;
         double[] out = new double[n];
@@ -53,14 +54,13 @@ class BvhTest {
 
     /**
      * Shoots seeded random rays (general, axis-parallel, aimed at a primitive's vertex, with and
-     * without finite tMin/tMax) and requires the BVH to agree with brute force.
+     * without finite tMin/tMax) and requires the structure to agree with brute force.
      */
-    private static void compare(PrimitiveSet set, Bvh bvh, Bounds region, int rays, long seed) {
+    static void compare(PrimitiveSet set, Accelerator bvh, Bounds region, int rays, long seed) {
         BruteForce brute = new BruteForce(set);
         TraceContext ctx = new TraceContext();
         Random r = new Random(seed);
         Ray ray = new Ray();
-        Hit hb = new Hit(), hf = new Hit(), check = new Hit();
         double[] box = new double[6];
         int hits = 0;
         for (int i = 0; i < rays; i++) {
@@ -87,33 +87,51 @@ class BvhTest {
             double tMin = r.nextInt(3) == 0 ? r.nextDouble() * 0.5 : 0;
             double tMax = r.nextInt(3) == 0 ? tMin + r.nextDouble() * 2 : Double.POSITIVE_INFINITY;
             ray.set(ox, oy, oz, dx, dy, dz, tMin, tMax);
-            boolean f = brute.intersect(ray, hf.reset(tMax), ctx);
-            boolean b = bvh.intersect(ray, hb.reset(tMax), ctx);
-            assertEquals(tMax, ray.tMax, "tMax restored");
             final int n = i;
-            assertEquals(f, b, () -> "ray " + n + " " + ray);
-            if (f) {
-                hits++;
-                assertEquals(hf.t, hb.t, 1e-12 * Math.abs(hf.t), () -> "ray " + n + " " + ray);
-                if (hf.prim != hb.prim) {
-                    // A tie: the BVH's primitive must itself be hit at (nearly) the same distance.
-                    assertTrue(set.intersect(hb.prim, ray, check.reset(tMax), ctx));
-                    assertEquals(hb.t, check.t);
-                }
-            }
-            assertEquals(brute.occluded(ray, ctx), bvh.occluded(ray, ctx), () -> "occluded, ray " + n + " " + ray);
+            if (agree(set, brute, bvh, ray, ctx, () -> "ray " + n + " " + ray)) hits++;
         }
         assertTrue(hits > rays / 50, "the rays should find something: " + hits);
+    }
+
+    /**
+     * Requires {@code acc} to give brute force's answers for one ray: the same hit or miss, the
+     * same nearest t (to 1e-12 relative), the same primitive unless the two tie, the same
+     * occluded answer, and ray and stack left as they were. Returns whether the ray hit.
+     */
+    static boolean agree(PrimitiveSet set, BruteForce brute, Accelerator acc, Ray ray, TraceContext ctx, Supplier<String> what) {
+        Hit hf = new Hit(), hb = new Hit();
+        double tMax = ray.tMax;
+        boolean f = brute.intersect(ray, hf.reset(tMax), ctx);
+        boolean b = acc.intersect(ray, hb.reset(tMax), ctx);
+        assertEquals(tMax, ray.tMax, "tMax restored");
+        assertEquals(0, ctx.stackTop, "stack top restored");
+        assertEquals(f, b, what);
+        if (f) {
+            assertEquals(hf.t, hb.t, 1e-12 * Math.abs(hf.t), what);
+            if (hf.prim != hb.prim) {
+                // A tie: the structure's primitive must itself be hit at (nearly) the same distance.
+                Hit check = new Hit();
+                assertTrue(set.intersect(hb.prim, ray, check.reset(tMax), ctx), what);
+                assertEquals(hb.t, check.t, what);
+            }
+        }
+        assertEquals(brute.occluded(ray, ctx), acc.occluded(ray, ctx), () -> "occluded, " + what.get());
+        return f;
     }
 
     private static void compareMesh(double[] coords, int rays, long seed) {
         TriangleMesh m = new TriangleMesh(TestMeshes.soup(coords));
         Bvh bvh = new Bvh(m);
         assertEquals(m.triangleCount(), bvh.primitiveCount());
+        compare(m, bvh, around(m), rays, seed);
+    }
+
+    /** The mesh's bounds widened by a quarter of their largest side on every side: rays start inside and outside. */
+    static Bounds around(TriangleMesh m) {
         Bounds b = m.localBounds();
         double ex = b.maxX() - b.minX(), ey = b.maxY() - b.minY(), ez = b.maxZ() - b.minZ();
         double pad = 0.25 * Math.max(ex, Math.max(ey, ez));
-        compare(m, bvh, new Bounds(b.minX() - pad, b.minY() - pad, b.minZ() - pad, b.maxX() + pad, b.maxY() + pad, b.maxZ() + pad), rays, seed);
+        return new Bounds(b.minX() - pad, b.minY() - pad, b.minZ() - pad, b.maxX() + pad, b.maxY() + pad, b.maxZ() + pad);
     }
 
     @Test
@@ -154,7 +172,7 @@ class BvhTest {
     }
 
     /** Spheres, to show the hierarchy works over any primitive set. */
-    private record Spheres(double[] c) implements PrimitiveSet {
+    record Spheres(double[] c) implements PrimitiveSet {
         @Override public int size() { return c.length / 4; }
 
         @Override public void bounds(int i, double[] out) {

@@ -55,6 +55,30 @@ class CliTest {
     }
 
     @Test
+    void everyAcceleratorRendersTheSameImage() throws IOException {
+        // Enough objects for a scene-level structure, and meshes with structures of their own.
+        StringBuilder text = new StringBuilder(SMALL.replace("settings { width 24 height 16 }", "settings { width 24 height 16 accelerator octree }"));
+        for (int i = 0; i < 6; i++) {
+            text.append("mesh { file \"tri.obj\" translate ").append(i * 0.3 - 0.9).append(" 0.2 ").append(i % 2).append(" }\n");
+        }
+        Files.writeString(dir.resolve("tri.obj"), "v 0 0 0\nv 0.3 0 0\nv 0 0.4 0.1\nv 0.3 0.4 0.2\nf 1 2 3\nf 2 4 3\n");
+        Path scene = scene(text.toString());
+        FrameBuffer first = null;
+        for (String kind : new String[] {"bvh", "octree", "bruteforce", null}) {
+            Path out = dir.resolve("acc-" + kind + ".pfm");
+            Run r = kind == null ? run(scene.toString(), "-o", out.toString(), "--quiet")
+                    : run(scene.toString(), "-o", out.toString(), "--accel", kind, "--quiet");
+            assertEquals(0, r.status(), r.err());
+            FrameBuffer img = Images.read(out);
+            if (first == null) {
+                first = img;
+                continue;
+            }
+            org.junit.jupiter.api.Assertions.assertArrayEquals(first.data(), img.data(), String.valueOf(kind));
+        }
+    }
+
+    @Test
     void statsPrintRaysAndThroughput() throws IOException {
         Run r = run(scene(SMALL).toString(), "-o", dir.resolve("a.png").toString(), "--stats", "--threads", "1");
         assertEquals(0, r.status(), r.err());
@@ -81,6 +105,7 @@ class CliTest {
                 {"render: unknown option '--widht' (see render --help)", scene.toString(), "--widht", "3"},
                 {"render: --width expects a whole number, found 'ten'", scene.toString(), "--width", "ten"},
                 {"render: --spp must be between 1 and 65536, found 0", scene.toString(), "--spp", "0"},
+                {"render: --accel expects one of bvh, octree, bruteforce, found 'kdtree'", scene.toString(), "--accel", "kdtree"},
                 {"render: option -o needs a value", scene.toString(), "-o"},
                 {"render: unsupported output format '.bmp' (expected .tga, .png, .jpg, .jpeg or .pfm)", scene.toString(), "-o", dir.resolve("x.bmp").toString()},
                 {"render: no scene file given (see render --help)", "--quiet"},

@@ -116,6 +116,7 @@ public final class BadInputCases {
                 c("integer out of range", "settings { height 99999999999 }", "1:19: integer 99999999999 is out of range for 'height'"),
                 c("seed out of range", "settings { seed 99999999999999999999 }", "1:17: integer 99999999999999999999 is out of range for 'seed'"),
                 c("bad encoding", "settings { encoding gamma }", "1:21: expected linear or srgb for 'encoding', found 'gamma'"),
+                c("unknown accelerator", "settings { accelerator grid }", "1:24: expected bvh, octree or bruteforce for 'accelerator', found 'grid'"),
                 c("bad falloff", "light { position 0 5 0  falloff inverse_square }", "1:33: expected none or inverse-square for 'falloff', found 'inverse_square' (did you mean 'inverse-square'?)"),
                 c("bad boolean", "material m { fresnel yes }", "1:22: expected true or false for 'fresnel', found 'yes'"),
                 c("bad shading", "mesh { file \"a.obj\" shading smoth }", "1:29: expected smooth or flat for 'shading', found 'smoth' (did you mean 'smooth'?)"),

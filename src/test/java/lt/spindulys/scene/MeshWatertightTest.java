@@ -5,14 +5,16 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Random;
 
-import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
 
+import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
 
 /**
  * Rays from inside a closed mesh must hit it, whatever they pass through: shared edges and
- * vertices included. Every count below is exact.
+ * vertices included, through each real acceleration structure. Every count below is exact.
  */
 class MeshWatertightTest {
 
@@ -62,8 +64,8 @@ class MeshWatertightTest {
         return misses;
     }
 
-    private static TriangleMesh frozen(TriangleMesh m) {
-        m.freeze(Transform.IDENTITY, Material.DEFAULT, 0);
+    private static TriangleMesh frozen(TriangleMesh m, AcceleratorKind kind) {
+        m.freeze(Transform.IDENTITY, Material.DEFAULT, 0, kind);
         return m;
     }
 
@@ -81,32 +83,36 @@ class MeshWatertightTest {
         for (int k = 0; k < 3; k++) out[k] = r.nextBoolean() ? (r.nextInt(127) - 63) / 64.0 : 1.98 * r.nextDouble() - 0.99;
     };
 
-    @Test
-    void everyRayFromInsideAnIcosphereHitsIt() {
-        TriangleMesh m = frozen(new TriangleMesh(TestMeshes.icosphere(4, 1)));
+    @ParameterizedTest
+    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "OCTREE"})
+    void everyRayFromInsideAnIcosphereHitsIt(AcceleratorKind kind) {
+        TriangleMesh m = frozen(new TriangleMesh(TestMeshes.icosphere(4, 1)), kind);
         assertTrue(m.isClosed());
         assertEquals(0, misses(m, BALL, 100_000, 1));
     }
 
-    @Test
-    void everyRayFromInsideAGridCubeHitsIt() {
-        TriangleMesh m = frozen(new TriangleMesh(TestMeshes.gridCube(8)));
+    @ParameterizedTest
+    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "OCTREE"})
+    void everyRayFromInsideAGridCubeHitsIt(AcceleratorKind kind) {
+        TriangleMesh m = frozen(new TriangleMesh(TestMeshes.gridCube(8)), kind);
         assertTrue(m.isClosed());
         assertEquals(0, misses(m, BOX, 100_000, 2));
     }
 
-    @Test
-    void everyRayFromInsideATransformedMeshHitsIt() {
+    @ParameterizedTest
+    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "OCTREE"})
+    void everyRayFromInsideATransformedMeshHitsIt(AcceleratorKind kind) {
         TriangleMesh m = new TriangleMesh(TestMeshes.icosphere(3, 1));
         m.transform(Transform.scale(3, 0.5, 1.5).then(Transform.rotate(new lt.spindulys.math.Vec3(1, 2, 3), 37)).then(Transform.translate(5, -2, 7)));
-        frozen(m);
+        frozen(m, kind);
         assertEquals(0, misses(m, BALL, 30_000, 3));
     }
 
-    @Test
-    void raysFromTheCentreThroughEveryVertexAndEdgeMidpointHit() {
+    @ParameterizedTest
+    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "OCTREE"})
+    void raysFromTheCentreThroughEveryVertexAndEdgeMidpointHit(AcceleratorKind kind) {
         for (MeshData d : new MeshData[] {TestMeshes.icosphere(3, 1), TestMeshes.gridCube(16)}) {
-            TriangleMesh m = frozen(new TriangleMesh(d));
+            TriangleMesh m = frozen(new TriangleMesh(d), kind);
             double[] p = d.positions();
             TraceContext ctx = new TraceContext();
             Ray ray = new Ray();
