@@ -76,6 +76,11 @@ public final class Bvh implements Accelerator {
         return new Bounds(box[0], box[1], box[2], box[3], box[4], box[5]);
     }
 
+    /** Bytes held by the node bounds, node links and primitive permutation (array headers left out). */
+    public long memoryBytes() {
+        return 8L * box.length + 4L * node.length + 4L * perm.length;
+    }
+
     private int stackNeed() { return depth + 2; }
 
     @Override

@@ -175,6 +175,21 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     /** Triangles dropped because their area is zero. */
     public int degenerateCount() { return degenerateCount; }
 
+    /**
+     * Bytes held by the mesh's arrays (positions, normals, texture coordinates, triangle and
+     * per-corner indices, vertex normals, the source polygon record) and its BVH; array headers
+     * and the few fixed fields are left out.
+     */
+    public long memoryBytes() {
+        long b = bytes(pos) + bytes(normals) + bytes(uvs) + bytes(tri) + bytes(triNormal) + bytes(triUv) + bytes(vertexNormals);
+        if (data != null) b += bytes(data.faceSizes()) + bytes(data.vertexIndex()) + bytes(data.normalIndex()) + bytes(data.uvIndex());
+        return b + (bvh != null ? bvh.memoryBytes() : 0);
+    }
+
+    private static long bytes(double[] a) { return a == null ? 0 : 8L * a.length; }
+    private static long bytes(float[] a) { return a == null ? 0 : 4L * a.length; }
+    private static long bytes(int[] a) { return a == null ? 0 : 4L * a.length; }
+
     /** Position index of corner {@code corner} (0..2) of triangle {@code t}. */
     public int triangleVertex(int t, int corner) { return tri[3 * t + corner]; }
 
