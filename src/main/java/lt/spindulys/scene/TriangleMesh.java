@@ -23,7 +23,12 @@ import lt.spindulys.math.Ray;
  * its BVH indexes.
  */
 public final class TriangleMesh extends GObject implements PrimitiveSet {
-    private final MeshData data;
+    /**
+     * Where the mesh came from, for messages. The polygon record itself is not kept: its
+     * per-corner index arrays would cost another 18 bytes per triangle of a quad mesh, and the
+     * triangle arrays below carry everything rendering needs.
+     */
+    private final String source;
     private final double[] pos;
     private final double[] normals;
     private final double[] uvs;
@@ -52,7 +57,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
      * @throws IllegalArgumentException if the arrays are inconsistent, an index is out of range or a position is not finite
      */
     public TriangleMesh(MeshData data) {
-        this.data = data;
+        this.source = data.source();
         validate(data);
         pos = data.positions();
         normals = data.normals();
@@ -112,7 +117,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     }
 
     private String where() {
-        return data.source() == null ? "" : data.source() + ": ";
+        return source == null ? "" : source + ": ";
     }
 
     private static void validate(MeshData d) {
@@ -170,24 +175,30 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     }
 
     public boolean isSmooth() { return smooth; }
-    public MeshData data() { return data; }
+    /**
+     * The mesh as triangles (degenerate ones dropped), sharing this mesh's arrays: positions,
+     * normals and texture coordinates as given, one face of three corners per triangle.
+     */
+    public MeshData data() {
+        int[] sizes = new int[triangleCount];
+        Arrays.fill(sizes, 3);
+        return new MeshData(pos, normals, uvs, sizes, tri, triNormal, triUv, source);
+    }
     public int triangleCount() { return triangleCount; }
     /** Triangles dropped because their area is zero. */
     public int degenerateCount() { return degenerateCount; }
 
     /**
      * Bytes held by the mesh's arrays (positions, normals, texture coordinates, triangle and
-     * per-corner indices, vertex normals, the source polygon record) and its BVH; array headers
+     * per-corner indices, vertex normals) and its BVH; array headers
      * and the few fixed fields are left out.
      */
     public long memoryBytes() {
         long b = bytes(pos) + bytes(normals) + bytes(uvs) + bytes(tri) + bytes(triNormal) + bytes(triUv) + bytes(vertexNormals);
-        if (data != null) b += bytes(data.faceSizes()) + bytes(data.vertexIndex()) + bytes(data.normalIndex()) + bytes(data.uvIndex());
         return b + (bvh != null ? bvh.memoryBytes() : 0);
     }
 
     private static long bytes(double[] a) { return a == null ? 0 : 8L * a.length; }
-    private static long bytes(float[] a) { return a == null ? 0 : 4L * a.length; }
     private static long bytes(int[] a) { return a == null ? 0 : 4L * a.length; }
 
     /** Position index of corner {@code corner} (0..2) of triangle {@code t}. */
