@@ -90,45 +90,65 @@ public final class Bvh implements Accelerator {
 
     private int stackNeed() { return depth + 2; }
 
+    /**
+     * Nearest hit. At an inner node both children's boxes are tested; the nearer one is entered
+     * and the other pushed with its entry distance (rounded down to a float, so the stack stays
+     * an int array of (node, distance bits) pairs), and a popped node whose entry lies beyond the
+     * nearest hit found since is skipped without touching its box.
+     */
     @Override
     public boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
         if (nodeCount == 0) return false;
         final double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         final double ix = 1 / ray.dx, iy = 1 / ray.dy, iz = 1 / ray.dz;
-        final boolean nx = ix < 0, ny = iy < 0, nz = iz < 0;
+        final int xn = ix < 0 ? 3 : 0, yn = iy < 0 ? 3 : 0, zn = iz < 0 ? 3 : 0;
+        if (Double.isNaN(entry(0, ox, oy, oz, ix, iy, iz, xn, yn, zn, ray.tMin, ray.tMax))) return false;
         final double saved = ray.tMax;
-        final int base = ctx.stackTop;
-        final int[] stack = ctx.stack(base + stackNeed());
-        ctx.stackTop = base + stackNeed();
+        final int base = ctx.stackTop, need = 2 * stackNeed();
+        final int[] stack = ctx.stack(base + need);
+        final int[] node = this.node;
+        ctx.stackTop = base + need;
         boolean any = false;
         try {
             int sp = base, n = 0;
             while (true) {
-                if (boxHit(n, ox, oy, oz, ix, iy, iz, nx, ny, nz, ray.tMin, ray.tMax)) {
-                    int count = node[2 * n + 1];
-                    if (count > 0) {
-                        for (int k = node[2 * n], end = k + count; k < end; k++) {
-                            if (set.intersect(perm[k], ray, hit, ctx)) {
-                                any = true;
-                                ray.tMax = hit.t;
-                            }
+                int count = node[2 * n + 1];
+                if (count > 0) {
+                    for (int k = node[2 * n], end = k + count; k < end; k++) {
+                        if (set.intersect(perm[k], ray, hit, ctx)) {
+                            any = true;
+                            ray.tMax = hit.t;
                         }
-                    } else {
-                        // Descend into the child on the ray's near side of the split first.
-                        int axis = -1 - count;
-                        boolean neg = axis == 0 ? nx : axis == 1 ? ny : nz;
-                        if (neg) {
-                            stack[sp++] = n + 1;
-                            n = node[2 * n];
-                        } else {
-                            stack[sp++] = node[2 * n];
-                            n = n + 1;
-                        }
+                    }
+                } else {
+                    int l = n + 1, r = node[2 * n];
+                    double tMin = ray.tMin, tMax = ray.tMax;
+                    double tl = entry(l, ox, oy, oz, ix, iy, iz, xn, yn, zn, tMin, tMax);
+                    double tr = entry(r, ox, oy, oz, ix, iy, iz, xn, yn, zn, tMin, tMax);
+                    boolean hl = !Double.isNaN(tl), hr = !Double.isNaN(tr);
+                    if (hl && hr) {
+                        boolean leftFirst = tl <= tr;
+                        stack[sp] = leftFirst ? r : l;
+                        stack[sp + 1] = Float.floatToRawIntBits(down(leftFirst ? tr : tl));
+                        sp += 2;
+                        n = leftFirst ? l : r;
+                        continue;
+                    }
+                    if (hl || hr) {
+                        n = hl ? l : r;
                         continue;
                     }
                 }
-                if (sp == base) break;
-                n = stack[--sp];
+                // Pop the next pending node that may still hold something nearer than the best hit.
+                n = -1;
+                while (sp > base) {
+                    sp -= 2;
+                    if (Float.intBitsToFloat(stack[sp + 1]) <= ray.tMax) {
+                        n = stack[sp];
+                        break;
+                    }
+                }
+                if (n < 0) break;
             }
         } finally {
             ray.tMax = saved;
@@ -204,31 +224,38 @@ public final class Bvh implements Accelerator {
         }
     }
 
-    /**
-     * Slab test of node {@code n} against [tMin, tMax], widened by {@link #PAD}. A zero direction
-     * component gives an infinite inverse; when the origin lies exactly on that slab plane the
-     * product is NaN, which the comparisons below ignore (the ray runs inside the plane).
-     */
     private boolean boxHit(int n, double ox, double oy, double oz, double ix, double iy, double iz,
                            boolean nx, boolean ny, boolean nz, double tMin, double tMax) {
+        return !Double.isNaN(entry(n, ox, oy, oz, ix, iy, iz, nx ? 3 : 0, ny ? 3 : 0, nz ? 3 : 0, tMin, tMax));
+    }
+
+    /**
+     * Slab test of node {@code n} against [tMin, tMax], widened by {@link #PAD}: the distance
+     * at which the ray enters the box, or NaN if it misses. {@code xn} is 3 when the ray runs
+     * towards -x (its near x plane is the box's max) and 0 otherwise; likewise yn, zn. A zero
+     * direction component gives an infinite inverse; when the origin lies exactly on that slab
+     * plane the product is NaN, which the comparisons below ignore (the ray runs inside the plane).
+     */
+    private double entry(int n, double ox, double oy, double oz, double ix, double iy, double iz,
+                         int xn, int yn, int zn, double tMin, double tMax) {
         final float[] b = box;
         final int o = 6 * n;
         double near = Double.NEGATIVE_INFINITY, far = Double.POSITIVE_INFINITY;
-        double t0 = ((nx ? b[o + 3] : b[o]) - ox) * ix;
-        double t1 = ((nx ? b[o] : b[o + 3]) - ox) * ix;
+        double t0 = (b[o + xn] - ox) * ix;
+        double t1 = (b[o + 3 - xn] - ox) * ix;
         if (t0 > near) near = t0;
         if (t1 < far) far = t1;
-        t0 = ((ny ? b[o + 4] : b[o + 1]) - oy) * iy;
-        t1 = ((ny ? b[o + 1] : b[o + 4]) - oy) * iy;
+        t0 = (b[o + 1 + yn] - oy) * iy;
+        t1 = (b[o + 4 - yn] - oy) * iy;
         if (t0 > near) near = t0;
         if (t1 < far) far = t1;
-        t0 = ((nz ? b[o + 5] : b[o + 2]) - oz) * iz;
-        t1 = ((nz ? b[o + 2] : b[o + 5]) - oz) * iz;
+        t0 = (b[o + 2 + zn] - oz) * iz;
+        t1 = (b[o + 5 - zn] - oz) * iz;
         if (t0 > near) near = t0;
         if (t1 < far) far = t1;
         near *= near > 0 ? 1 - PAD : 1 + PAD;
         far *= far > 0 ? 1 + PAD : 1 - PAD;
-        return near <= far && near <= tMax && far >= tMin;
+        return near <= far && near <= tMax && far >= tMin ? near : Double.NaN;
     }
 
     /** Largest float not above v: node bounds must never shrink when narrowed from double. */
