@@ -10,8 +10,8 @@ import lt.spindulys.scene.TraceContext;
 
 /**
  * Bounding volume hierarchy over a {@link PrimitiveSet}, built with the binned surface-area
- * heuristic and stored flat: six floats of bounds (rounded outward) and two ints per node in depth-first order
- * (a node's left child directly follows it), and a permutation of the primitive indices so each
+ * heuristic and stored flat: eight ints per node, six float bounds (rounded outward, as bits) and
+ * two links, in depth-first order (a node's left child directly follows it), and a permutation of the primitive indices so each
  * leaf owns a contiguous range. Immutable after construction; thread-safe.
  *
  * <p>The build is iterative (an explicit task stack), so millions of primitives cannot overflow
@@ -32,14 +32,12 @@ public final class Bvh implements Accelerator {
 
     private final PrimitiveSet set;
     /**
-     * minX, minY, minZ, maxX, maxY, maxZ per node, as floats rounded outward from the exact
-     * double bounds: half the memory of doubles, and a box that only grows keeps every
-     * primitive inside it, so the watertight primitive tests are unaffected.
-     */
-    private final float[] box;
-    /**
-     * Two ints per node: a leaf holds (first index into {@link #perm}, count > 0); an inner node
-     * holds (right child index, -1 - split axis). The left child of node i is node i + 1.
+     * Eight ints per node, so that one node is one 32-byte record (one memory fetch where a
+     * separate link array would need a second): minX, minY, minZ, maxX, maxY, maxZ as the bits
+     * of floats rounded outward from the exact double bounds (half the memory of doubles; a box
+     * that only grows keeps every primitive inside it, so the watertight primitive tests are
+     * unaffected), then two links: a leaf holds (first index into {@link #perm}, count > 0); an
+     * inner node holds (right child index, -1 - split axis). The left child of node i is node i + 1.
      */
     private final int[] node;
     private final int[] perm;
@@ -65,7 +63,6 @@ public final class Bvh implements Accelerator {
         this.set = set;
         Builder b = new Builder(set, maxLeafSize);
         b.build();
-        box = b.box;
         node = b.node;
         perm = b.perm;
         bounds = b.exact;
@@ -85,7 +82,7 @@ public final class Bvh implements Accelerator {
 
     /** Bytes held by the node bounds, node links and primitive permutation (array headers left out). */
     public long memoryBytes() {
-        return 4L * box.length + 4L * node.length + 4L * perm.length;
+        return 4L * node.length + 4L * perm.length;
     }
 
     private int stackNeed() { return depth + 2; }
@@ -112,16 +109,16 @@ public final class Bvh implements Accelerator {
         try {
             int sp = base, n = 0;
             while (true) {
-                int count = node[2 * n + 1];
+                int count = node[8 * n + 7];
                 if (count > 0) {
-                    for (int k = node[2 * n], end = k + count; k < end; k++) {
+                    for (int k = node[8 * n + 6], end = k + count; k < end; k++) {
                         if (set.intersect(perm[k], ray, hit, ctx)) {
                             any = true;
                             ray.tMax = hit.t;
                         }
                     }
                 } else {
-                    int l = n + 1, r = node[2 * n];
+                    int l = n + 1, r = node[8 * n + 6];
                     double tMin = ray.tMin, tMax = ray.tMax;
                     double tl = entry(l, ox, oy, oz, ix, iy, iz, xn, yn, zn, tMin, tMax);
                     double tr = entry(r, ox, oy, oz, ix, iy, iz, xn, yn, zn, tMin, tMax);
@@ -170,13 +167,13 @@ public final class Bvh implements Accelerator {
             int sp = base, n = 0;
             while (true) {
                 if (boxHit(n, ox, oy, oz, ix, iy, iz, nx, ny, nz, ray.tMin, ray.tMax)) {
-                    int count = node[2 * n + 1];
+                    int count = node[8 * n + 7];
                     if (count > 0) {
-                        for (int k = node[2 * n], end = k + count; k < end; k++) {
+                        for (int k = node[8 * n + 6], end = k + count; k < end; k++) {
                             if (set.occluded(perm[k], ray, ctx)) return true;
                         }
                     } else {
-                        stack[sp++] = node[2 * n];
+                        stack[sp++] = node[8 * n + 6];
                         n = n + 1;
                         continue;
                     }
@@ -207,11 +204,11 @@ public final class Bvh implements Accelerator {
             int sp = base, n = 0;
             while (true) {
                 if (boxHit(n, ox, oy, oz, ix, iy, iz, nx, ny, nz, ray.tMin, ray.tMax)) {
-                    int count = node[2 * n + 1];
+                    int count = node[8 * n + 7];
                     if (count > 0) {
-                        for (int k = node[2 * n], end = k + count; k < end; k++) visitor.visit(perm[k], ray, ctx);
+                        for (int k = node[8 * n + 6], end = k + count; k < end; k++) visitor.visit(perm[k], ray, ctx);
                     } else {
-                        stack[sp++] = node[2 * n];
+                        stack[sp++] = node[8 * n + 6];
                         n = n + 1;
                         continue;
                     }
@@ -238,19 +235,19 @@ public final class Bvh implements Accelerator {
      */
     private double entry(int n, double ox, double oy, double oz, double ix, double iy, double iz,
                          int xn, int yn, int zn, double tMin, double tMax) {
-        final float[] b = box;
-        final int o = 6 * n;
+        final int[] b = node;
+        final int o = 8 * n;
         double near = Double.NEGATIVE_INFINITY, far = Double.POSITIVE_INFINITY;
-        double t0 = (b[o + xn] - ox) * ix;
-        double t1 = (b[o + 3 - xn] - ox) * ix;
+        double t0 = (Float.intBitsToFloat(b[o + xn]) - ox) * ix;
+        double t1 = (Float.intBitsToFloat(b[o + 3 - xn]) - ox) * ix;
         if (t0 > near) near = t0;
         if (t1 < far) far = t1;
-        t0 = (b[o + 1 + yn] - oy) * iy;
-        t1 = (b[o + 4 - yn] - oy) * iy;
+        t0 = (Float.intBitsToFloat(b[o + 1 + yn]) - oy) * iy;
+        t1 = (Float.intBitsToFloat(b[o + 4 - yn]) - oy) * iy;
         if (t0 > near) near = t0;
         if (t1 < far) far = t1;
-        t0 = (b[o + 2 + zn] - oz) * iz;
-        t1 = (b[o + 5 - zn] - oz) * iz;
+        t0 = (Float.intBitsToFloat(b[o + 2 + zn]) - oz) * iz;
+        t1 = (Float.intBitsToFloat(b[o + 5 - zn]) - oz) * iz;
         if (t0 > near) near = t0;
         if (t1 < far) far = t1;
         near *= near > 0 ? 1 - PAD : 1 + PAD;
@@ -288,7 +285,6 @@ public final class Bvh implements Accelerator {
          */
         final float[] pb;
         final int[] perm;
-        float[] box;
         int[] node;
         int count, maxDepth;
         Bounds exact = Bounds.EMPTY;
@@ -324,7 +320,6 @@ public final class Bvh implements Accelerator {
         void build() {
             int n = perm.length;
             if (n == 0) {
-                box = new float[0];
                 node = new int[0];
                 return;
             }
@@ -343,8 +338,7 @@ public final class Bvh implements Accelerator {
                 root = new Part(c);
             }
             count = root.nodes;
-            box = new float[6 * count];
-            node = new int[2 * count];
+            node = new int[8 * count];
             place(root, 0);
         }
 
@@ -352,20 +346,21 @@ public final class Bvh implements Accelerator {
         private void place(Part p, int at) {
             if (p.chunk != null) {
                 Chunk c = p.chunk;
-                System.arraycopy(c.box, 0, box, 6 * at, 6 * c.count);
                 for (int k = 0; k < c.count; k++) {
+                    int o = 8 * (at + k);
+                    for (int j = 0; j < 6; j++) node[o + j] = Float.floatToRawIntBits(c.box[6 * k + j]);
                     int link = c.node[2 * k], cnt = c.node[2 * k + 1];
                     // Inner nodes link their right child by chunk-local index; leaves point into perm.
-                    node[2 * (at + k)] = cnt > 0 ? link : link + at;
-                    node[2 * (at + k) + 1] = cnt;
+                    node[o + 6] = cnt > 0 ? link : link + at;
+                    node[o + 7] = cnt;
                 }
                 maxDepth = Math.max(maxDepth, c.maxDepth);
                 return;
             }
-            System.arraycopy(p.box, 0, box, 6 * at, 6);
+            for (int j = 0; j < 6; j++) node[8 * at + j] = Float.floatToRawIntBits(p.box[j]);
             int right = at + 1 + p.left.nodes;
-            node[2 * at] = right;
-            node[2 * at + 1] = -1 - p.axis;
+            node[8 * at + 6] = right;
+            node[8 * at + 7] = -1 - p.axis;
             maxDepth = Math.max(maxDepth, p.depth);
             place(p.left, at + 1);
             place(p.right, right);
