@@ -36,7 +36,7 @@ final class RenderCommand {
               --threads N        render threads (default: all cores)
               --seed S           global random seed (overrides the scene)
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
-              --stats            print load, build and render times and ray counts
+              --stats            print load, build and render times, rays by kind, Mrays/s, peak heap
               --quiet            no progress bar
               --debug            stack traces on errors
             Exit status: 0 success, 2 bad usage or bad input, 1 failure while rendering or writing.""";

@@ -233,7 +233,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
                 keys[3 * t + e] = ((long) Math.min(a, b) << 32) | Math.max(a, b);
             }
         }
-        Arrays.sort(keys);
+        Arrays.parallelSort(keys); // millions of edges on large meshes; the sorted result is the same
         for (int i = 0; i < keys.length; ) {
             int j = i + 1;
             while (j < keys.length && keys[j] == keys[i]) j++;
