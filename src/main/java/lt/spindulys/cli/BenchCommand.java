@@ -35,7 +35,8 @@ final class BenchCommand {
               --only NAME   run only the row NAME (see --list)
               --runs N      timed runs per row after the warm-up (default 5); the median is reported
               --list        list the rows and exit
-            Run from the repository root: inputs are read from scenes/bench/. See docs/performance.md.""";
+            Run from the repository root: inputs are read from scenes/bench/; the torus-* rows first write
+            their meshes into scenes/bench/meshes/ when missing. See docs/performance.md.""";
 
     /** One benchmark row: a name, what it measures, and how. */
     private record Row(String name, String section, String description, Action action) {}
