@@ -22,4 +22,7 @@ public interface Accelerator {
      * the ray. Used to collect all crossings of a line (mesh spans).
      */
     void visit(Ray ray, TraceContext ctx, Bvh.Visitor visitor);
+
+    /** Bytes held by the structure's own arrays (not the primitives it indexes). */
+    long memoryBytes();
 }

@@ -36,4 +36,8 @@ public final class BruteForce implements Accelerator {
     public void visit(Ray ray, TraceContext ctx, Bvh.Visitor visitor) {
         for (int i = 0, n = set.size(); i < n; i++) visitor.visit(i, ray, ctx);
     }
+
+    /** Holds no arrays of its own. */
+    @Override
+    public long memoryBytes() { return 0; }
 }

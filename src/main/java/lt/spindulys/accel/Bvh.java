@@ -1,5 +1,8 @@
 package lt.spindulys.accel;
 
+import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.RecursiveTask;
+
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
 import lt.spindulys.scene.Hit;
@@ -7,8 +10,8 @@ import lt.spindulys.scene.TraceContext;
 
 /**
  * Bounding volume hierarchy over a {@link PrimitiveSet}, built with the binned surface-area
- * heuristic and stored flat: six doubles of bounds and two ints per node in depth-first order
- * (a node's left child directly follows it), and a permutation of the primitive indices so each
+ * heuristic and stored flat: eight ints per node, six float bounds (rounded outward, as bits) and
+ * two links, in depth-first order (a node's left child directly follows it), and a permutation of the primitive indices so each
  * leaf owns a contiguous range. Immutable after construction; thread-safe.
  *
  * <p>The build is iterative (an explicit task stack), so millions of primitives cannot overflow
@@ -28,14 +31,18 @@ public final class Bvh implements Accelerator {
     private static final double PAD = 4 * 3 * 0x1p-53 / (1 - 3 * 0x1p-53);
 
     private final PrimitiveSet set;
-    /** minX, minY, minZ, maxX, maxY, maxZ per node. */
-    private final double[] box;
     /**
-     * Two ints per node: a leaf holds (first index into {@link #perm}, count > 0); an inner node
-     * holds (right child index, -1 - split axis). The left child of node i is node i + 1.
+     * Eight ints per node, so that one node is one 32-byte record (one memory fetch where a
+     * separate link array would need a second): minX, minY, minZ, maxX, maxY, maxZ as the bits
+     * of floats rounded outward from the exact double bounds (half the memory of doubles; a box
+     * that only grows keeps every primitive inside it, so the watertight primitive tests are
+     * unaffected), then two links: a leaf holds (first index into {@link #perm}, count > 0); an
+     * inner node holds (right child index, -1 - split axis). The left child of node i is node i + 1.
      */
     private final int[] node;
     private final int[] perm;
+    /** The exact (double) bounds of everything indexed, which the float root box only encloses. */
+    private final Bounds bounds;
     private final int nodeCount;
     private final int depth;
 
@@ -56,9 +63,9 @@ public final class Bvh implements Accelerator {
         this.set = set;
         Builder b = new Builder(set, maxLeafSize);
         b.build();
-        box = java.util.Arrays.copyOf(b.box, 6 * b.count);
-        node = java.util.Arrays.copyOf(b.node, 2 * b.count);
+        node = b.node;
         perm = b.perm;
+        bounds = b.exact;
         nodeCount = b.count;
         depth = b.maxDepth;
     }
@@ -71,52 +78,75 @@ public final class Bvh implements Accelerator {
     public int depth() { return depth; }
 
     /** Bounds of everything indexed ({@link Bounds#EMPTY} when nothing is). */
-    public Bounds bounds() {
-        if (nodeCount == 0) return Bounds.EMPTY;
-        return new Bounds(box[0], box[1], box[2], box[3], box[4], box[5]);
+    public Bounds bounds() { return bounds; }
+
+    /** Bytes held by the node bounds, node links and primitive permutation (array headers left out). */
+    @Override
+    public long memoryBytes() {
+        return 4L * node.length + 4L * perm.length;
     }
 
     private int stackNeed() { return depth + 2; }
 
+    /**
+     * Nearest hit. At an inner node both children's boxes are tested; the nearer one is entered
+     * and the other pushed with its entry distance (rounded down to a float, so the stack stays
+     * an int array of (node, distance bits) pairs), and a popped node whose entry lies beyond the
+     * nearest hit found since is skipped without touching its box.
+     */
     @Override
     public boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
         if (nodeCount == 0) return false;
         final double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         final double ix = 1 / ray.dx, iy = 1 / ray.dy, iz = 1 / ray.dz;
-        final boolean nx = ix < 0, ny = iy < 0, nz = iz < 0;
+        final int xn = ix < 0 ? 3 : 0, yn = iy < 0 ? 3 : 0, zn = iz < 0 ? 3 : 0;
+        if (Double.isNaN(entry(0, ox, oy, oz, ix, iy, iz, xn, yn, zn, ray.tMin, ray.tMax))) return false;
         final double saved = ray.tMax;
-        final int base = ctx.stackTop;
-        final int[] stack = ctx.stack(base + stackNeed());
-        ctx.stackTop = base + stackNeed();
+        final int base = ctx.stackTop, need = 2 * stackNeed();
+        final int[] stack = ctx.stack(base + need);
+        final int[] node = this.node;
+        ctx.stackTop = base + need;
         boolean any = false;
         try {
             int sp = base, n = 0;
             while (true) {
-                if (boxHit(n, ox, oy, oz, ix, iy, iz, nx, ny, nz, ray.tMin, ray.tMax)) {
-                    int count = node[2 * n + 1];
-                    if (count > 0) {
-                        for (int k = node[2 * n], end = k + count; k < end; k++) {
-                            if (set.intersect(perm[k], ray, hit, ctx)) {
-                                any = true;
-                                ray.tMax = hit.t;
-                            }
+                int count = node[8 * n + 7];
+                if (count > 0) {
+                    for (int k = node[8 * n + 6], end = k + count; k < end; k++) {
+                        if (set.intersect(perm[k], ray, hit, ctx)) {
+                            any = true;
+                            ray.tMax = hit.t;
                         }
-                    } else {
-                        // Descend into the child on the ray's near side of the split first.
-                        int axis = -1 - count;
-                        boolean neg = axis == 0 ? nx : axis == 1 ? ny : nz;
-                        if (neg) {
-                            stack[sp++] = n + 1;
-                            n = node[2 * n];
-                        } else {
-                            stack[sp++] = node[2 * n];
-                            n = n + 1;
-                        }
+                    }
+                } else {
+                    int l = n + 1, r = node[8 * n + 6];
+                    double tMin = ray.tMin, tMax = ray.tMax;
+                    double tl = entry(l, ox, oy, oz, ix, iy, iz, xn, yn, zn, tMin, tMax);
+                    double tr = entry(r, ox, oy, oz, ix, iy, iz, xn, yn, zn, tMin, tMax);
+                    boolean hl = !Double.isNaN(tl), hr = !Double.isNaN(tr);
+                    if (hl && hr) {
+                        boolean leftFirst = tl <= tr;
+                        stack[sp] = leftFirst ? r : l;
+                        stack[sp + 1] = Float.floatToRawIntBits(down(leftFirst ? tr : tl));
+                        sp += 2;
+                        n = leftFirst ? l : r;
+                        continue;
+                    }
+                    if (hl || hr) {
+                        n = hl ? l : r;
                         continue;
                     }
                 }
-                if (sp == base) break;
-                n = stack[--sp];
+                // Pop the next pending node that may still hold something nearer than the best hit.
+                n = -1;
+                while (sp > base) {
+                    sp -= 2;
+                    if (Float.intBitsToFloat(stack[sp + 1]) <= ray.tMax) {
+                        n = stack[sp];
+                        break;
+                    }
+                }
+                if (n < 0) break;
             }
         } finally {
             ray.tMax = saved;
@@ -138,13 +168,13 @@ public final class Bvh implements Accelerator {
             int sp = base, n = 0;
             while (true) {
                 if (boxHit(n, ox, oy, oz, ix, iy, iz, nx, ny, nz, ray.tMin, ray.tMax)) {
-                    int count = node[2 * n + 1];
+                    int count = node[8 * n + 7];
                     if (count > 0) {
-                        for (int k = node[2 * n], end = k + count; k < end; k++) {
+                        for (int k = node[8 * n + 6], end = k + count; k < end; k++) {
                             if (set.occluded(perm[k], ray, ctx)) return true;
                         }
                     } else {
-                        stack[sp++] = node[2 * n];
+                        stack[sp++] = node[8 * n + 6];
                         n = n + 1;
                         continue;
                     }
@@ -175,11 +205,11 @@ public final class Bvh implements Accelerator {
             int sp = base, n = 0;
             while (true) {
                 if (boxHit(n, ox, oy, oz, ix, iy, iz, nx, ny, nz, ray.tMin, ray.tMax)) {
-                    int count = node[2 * n + 1];
+                    int count = node[8 * n + 7];
                     if (count > 0) {
-                        for (int k = node[2 * n], end = k + count; k < end; k++) visitor.visit(perm[k], ray, ctx);
+                        for (int k = node[8 * n + 6], end = k + count; k < end; k++) visitor.visit(perm[k], ray, ctx);
                     } else {
-                        stack[sp++] = node[2 * n];
+                        stack[sp++] = node[8 * n + 6];
                         n = n + 1;
                         continue;
                     }
@@ -192,60 +222,82 @@ public final class Bvh implements Accelerator {
         }
     }
 
-    /**
-     * Slab test of node {@code n} against [tMin, tMax], widened by {@link #PAD}. A zero direction
-     * component gives an infinite inverse; when the origin lies exactly on that slab plane the
-     * product is NaN, which the comparisons below ignore (the ray runs inside the plane).
-     */
     private boolean boxHit(int n, double ox, double oy, double oz, double ix, double iy, double iz,
                            boolean nx, boolean ny, boolean nz, double tMin, double tMax) {
-        final double[] b = box;
-        final int o = 6 * n;
+        return !Double.isNaN(entry(n, ox, oy, oz, ix, iy, iz, nx ? 3 : 0, ny ? 3 : 0, nz ? 3 : 0, tMin, tMax));
+    }
+
+    /**
+     * Slab test of node {@code n} against [tMin, tMax], widened by {@link #PAD}: the distance
+     * at which the ray enters the box, or NaN if it misses. {@code xn} is 3 when the ray runs
+     * towards -x (its near x plane is the box's max) and 0 otherwise; likewise yn, zn. A zero
+     * direction component gives an infinite inverse; when the origin lies exactly on that slab
+     * plane the product is NaN, which the comparisons below ignore (the ray runs inside the plane).
+     */
+    private double entry(int n, double ox, double oy, double oz, double ix, double iy, double iz,
+                         int xn, int yn, int zn, double tMin, double tMax) {
+        final int[] b = node;
+        final int o = 8 * n;
         double near = Double.NEGATIVE_INFINITY, far = Double.POSITIVE_INFINITY;
-        double t0 = ((nx ? b[o + 3] : b[o]) - ox) * ix;
-        double t1 = ((nx ? b[o] : b[o + 3]) - ox) * ix;
+        double t0 = (Float.intBitsToFloat(b[o + xn]) - ox) * ix;
+        double t1 = (Float.intBitsToFloat(b[o + 3 - xn]) - ox) * ix;
         if (t0 > near) near = t0;
         if (t1 < far) far = t1;
-        t0 = ((ny ? b[o + 4] : b[o + 1]) - oy) * iy;
-        t1 = ((ny ? b[o + 1] : b[o + 4]) - oy) * iy;
+        t0 = (Float.intBitsToFloat(b[o + 1 + yn]) - oy) * iy;
+        t1 = (Float.intBitsToFloat(b[o + 4 - yn]) - oy) * iy;
         if (t0 > near) near = t0;
         if (t1 < far) far = t1;
-        t0 = ((nz ? b[o + 5] : b[o + 2]) - oz) * iz;
-        t1 = ((nz ? b[o + 2] : b[o + 5]) - oz) * iz;
+        t0 = (Float.intBitsToFloat(b[o + 2 + zn]) - oz) * iz;
+        t1 = (Float.intBitsToFloat(b[o + 5 - zn]) - oz) * iz;
         if (t0 > near) near = t0;
         if (t1 < far) far = t1;
         near *= near > 0 ? 1 - PAD : 1 + PAD;
         far *= far > 0 ? 1 + PAD : 1 - PAD;
-        return near <= far && near <= tMax && far >= tMin;
+        return near <= far && near <= tMax && far >= tMin ? near : Double.NaN;
     }
 
-    /** Build state; discarded once the flat arrays are made. */
+    /** Largest float not above v: node bounds must never shrink when narrowed from double. */
+    static float down(double v) {
+        float f = (float) v;
+        return f > v ? Math.nextDown(f) : f;
+    }
+
+    /** Smallest float not below v. */
+    static float up(double v) {
+        float f = (float) v;
+        return f < v ? Math.nextUp(f) : f;
+    }
+
+    /**
+     * Build state; discarded once the flat arrays are made. Large ranges are split on the
+     * calling thread and their two halves built as parallel fork/join tasks into separate
+     * parts, which are then laid out depth-first in one array. Every split depends only on the
+     * primitives in its range, so the tree is the same whatever the number of threads.
+     */
     private static final class Builder {
+        /** Ranges at least this large are split and their halves built in parallel. */
+        static final int PARALLEL_GRAIN = 8192;
         final int leafSize;
         /**
-         * Bounds of the primitive in each slot of {@link #perm}, six per slot, moved along with
-         * perm so that every pass over a node reads memory in order (2M primitives' bounds do not
-         * fit in any cache, and following perm into them would miss on nearly every access).
+         * Bounds of the primitive in each slot of {@link #perm} (floats rounded outward), six
+         * per slot, moved along with perm so that every pass over a range reads memory in order
+         * (2M primitives' bounds do not fit in any cache, and following perm into them would
+         * miss on nearly every access).
          */
-        final double[] pb;
+        final float[] pb;
         final int[] perm;
-        double[] box;
         int[] node;
         int count, maxDepth;
-        // Binning scratch, reused for every node: per axis and bin, a count and bounds.
-        final int[] binCount = new int[3 * BINS];
-        final double[] binBox = new double[3 * BINS * 6];
-        final double[] rightArea = new double[BINS];
-        final int[] rightCount = new int[BINS];
-        final double[] scale = new double[3];
+        Bounds exact = Bounds.EMPTY;
 
         Builder(PrimitiveSet set, int leafSize) {
             this.leafSize = leafSize;
             int n = set.size();
-            double[] bb = new double[6 * n];
+            float[] bb = new float[6 * n];
             int[] p = new int[n];
             int m = 0;
             double[] tmp = new double[6];
+            double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
             for (int i = 0; i < n; i++) {
                 set.bounds(i, tmp);
                 if (tmp[0] > tmp[3] || tmp[1] > tmp[4] || tmp[2] > tmp[5]) continue; // empty: never hit
@@ -254,35 +306,134 @@ public final class Bvh implements Accelerator {
                         throw new IllegalArgumentException("primitive " + i + " has non-finite bounds " + java.util.Arrays.toString(tmp));
                     }
                 }
-                System.arraycopy(tmp, 0, bb, 6 * m, 6);
+                x0 = Math.min(x0, tmp[0]); y0 = Math.min(y0, tmp[1]); z0 = Math.min(z0, tmp[2]);
+                x1 = Math.max(x1, tmp[3]); y1 = Math.max(y1, tmp[4]); z1 = Math.max(z1, tmp[5]);
+                int o = 6 * m;
+                bb[o] = down(tmp[0]); bb[o + 1] = down(tmp[1]); bb[o + 2] = down(tmp[2]);
+                bb[o + 3] = up(tmp[3]); bb[o + 4] = up(tmp[4]); bb[o + 5] = up(tmp[5]);
                 p[m++] = i;
             }
             perm = m == n ? p : java.util.Arrays.copyOf(p, m);
             pb = m == n ? bb : java.util.Arrays.copyOf(bb, 6 * m);
-            int cap = Math.max(1, 2 * (m / Math.max(1, leafSize)) + 1);
-            box = new double[6 * cap];
-            node = new int[2 * cap];
-        }
-
-        /** Centroid coordinate of the primitive in slot k. */
-        private double centroid(int k, int axis) {
-            return 0.5 * (pb[6 * k + axis] + pb[6 * k + 3 + axis]);
-        }
-
-        private void swap(int i, int j) {
-            int t = perm[i]; perm[i] = perm[j]; perm[j] = t;
-            for (int a = 6 * i, b = 6 * j, end = a + 6; a < end; a++, b++) {
-                double d = pb[a]; pb[a] = pb[b]; pb[b] = d;
-            }
+            if (m > 0) exact = new Bounds(x0, y0, z0, x1, y1, z1);
         }
 
         void build() {
-            if (perm.length == 0) return;
+            int n = perm.length;
+            if (n == 0) {
+                node = new int[0];
+                return;
+            }
+            Part root;
+            if (n >= PARALLEL_GRAIN) {
+                // A pool of our own: forks must not land in the common pool, whose size is not ours to choose.
+                ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
+                try {
+                    root = pool.invoke(new Task(this, 0, n, 0));
+                } finally {
+                    pool.shutdown();
+                }
+            } else {
+                Chunk c = new Chunk(pb, perm, leafSize);
+                c.build(0, n, 0);
+                root = new Part(c);
+            }
+            count = root.nodes;
+            node = new int[8 * count];
+            place(root, 0);
+        }
+
+        /** Writes part p with its first node at index at (depth-first, left child next). */
+        private void place(Part p, int at) {
+            if (p.chunk != null) {
+                Chunk c = p.chunk;
+                for (int k = 0; k < c.count; k++) {
+                    int o = 8 * (at + k);
+                    for (int j = 0; j < 6; j++) node[o + j] = Float.floatToRawIntBits(c.box[6 * k + j]);
+                    int link = c.node[2 * k], cnt = c.node[2 * k + 1];
+                    // Inner nodes link their right child by chunk-local index; leaves point into perm.
+                    node[o + 6] = cnt > 0 ? link : link + at;
+                    node[o + 7] = cnt;
+                }
+                maxDepth = Math.max(maxDepth, c.maxDepth);
+                return;
+            }
+            for (int j = 0; j < 6; j++) node[8 * at + j] = Float.floatToRawIntBits(p.box[j]);
+            int right = at + 1 + p.left.nodes;
+            node[8 * at + 6] = right;
+            node[8 * at + 7] = -1 - p.axis;
+            maxDepth = Math.max(maxDepth, p.depth);
+            place(p.left, at + 1);
+            place(p.right, right);
+        }
+    }
+
+    /** A built piece of the tree: a serially built chunk, or one inner node over two parts. */
+    private static final class Part {
+        final Chunk chunk;
+        final float[] box;
+        final int axis, depth, nodes;
+        final Part left, right;
+
+        Part(Chunk c) {
+            chunk = c; box = null; axis = 0; depth = 0; left = right = null; nodes = c.count;
+        }
+
+        Part(float[] box, int axis, int depth, Part left, Part right) {
+            chunk = null; this.box = box; this.axis = axis; this.depth = depth; this.left = left; this.right = right;
+            nodes = 1 + left.nodes + right.nodes;
+        }
+    }
+
+    /** Fork/join step: split a large range here and build both halves as subtasks. */
+    private static final class Task extends RecursiveTask<Part> {
+        private final Builder b;
+        private final int s, e, d;
+
+        Task(Builder b, int s, int e, int d) { this.b = b; this.s = s; this.e = e; this.d = d; }
+
+        @Override
+        protected Part compute() {
+            if (e - s < Builder.PARALLEL_GRAIN) {
+                Chunk c = new Chunk(b.pb, b.perm, b.leafSize);
+                c.build(s, e, d);
+                return new Part(c);
+            }
+            Splitter sp = new Splitter(b.pb, b.perm);
+            float[] nb = new float[6], cb = new float[6];
+            sp.bounds(s, e, nb, 0, cb);
+            long split = sp.split(s, e, nb, 0, cb, d);
+            int mid = (int) (split >> 2), axis = (int) (split & 3);
+            Task left = new Task(b, s, mid, d + 1), right = new Task(b, mid, e, d + 1);
+            right.fork();
+            Part l = left.compute();
+            Part r = right.join();
+            return new Part(nb, axis, d, l, r);
+        }
+    }
+
+    /** A subtree built serially with an explicit task stack, in chunk-local node indices. */
+    private static final class Chunk {
+        final Splitter sp;
+        final int leafSize;
+        float[] box;
+        int[] node;
+        int count, maxDepth;
+
+        Chunk(float[] pb, int[] perm, int leafSize) {
+            sp = new Splitter(pb, perm);
+            this.leafSize = leafSize;
+        }
+
+        void build(int s0, int e0, int d0) {
+            int cap = Math.max(1, 2 * ((e0 - s0) / Math.max(1, leafSize)) + 1);
+            box = new float[6 * cap];
+            node = new int[2 * cap];
             // Pending right subtrees: start, end, the parent whose right-child link to patch, depth.
             int[] tasks = new int[4 * 64];
             int nt = 0;
-            tasks[nt++] = 0; tasks[nt++] = perm.length; tasks[nt++] = -1; tasks[nt++] = 0;
-            double[] cb = new double[6];
+            tasks[nt++] = s0; tasks[nt++] = e0; tasks[nt++] = -1; tasks[nt++] = d0;
+            float[] cb = new float[6];
             while (nt > 0) {
                 int d = tasks[--nt], parent = tasks[--nt], e = tasks[--nt], s = tasks[--nt];
                 while (true) {
@@ -293,14 +444,14 @@ public final class Bvh implements Accelerator {
                     }
                     if (parent >= 0) node[2 * parent] = n;
                     parent = -1;
-                    nodeBounds(s, e, n, cb);
+                    sp.bounds(s, e, box, 6 * n, cb);
                     if (d > maxDepth) maxDepth = d;
                     if (e - s <= leafSize) {
                         node[2 * n] = s;
                         node[2 * n + 1] = e - s;
                         break;
                     }
-                    long split = split(s, e, n, cb, d);
+                    long split = sp.split(s, e, box, 6 * n, cb, d);
                     int mid = (int) (split >> 2), axis = (int) (split & 3);
                     node[2 * n + 1] = -1 - axis;
                     if (nt + 4 > tasks.length) tasks = java.util.Arrays.copyOf(tasks, 2 * tasks.length);
@@ -310,21 +461,50 @@ public final class Bvh implements Accelerator {
                 }
             }
         }
+    }
 
-        /** Writes node n's bounds and the bounds of its primitives' centroids into cb. */
-        private void nodeBounds(int s, int e, int n, double[] cb) {
-            double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
-            double cx0 = x0, cy0 = x0, cz0 = x0, cx1 = x1, cy1 = x1, cz1 = x1;
+    /**
+     * Split decisions on ranges of the shared slot arrays, with its own binning scratch. Tasks
+     * on disjoint ranges may run on different threads.
+     */
+    private static final class Splitter {
+        final float[] pb;
+        final int[] perm;
+        // Binning scratch, reused for every node: per axis and bin, a count and bounds.
+        final int[] binCount = new int[3 * BINS];
+        final float[] binBox = new float[3 * BINS * 6];
+        final double[] rightArea = new double[BINS];
+        final int[] rightCount = new int[BINS];
+
+        Splitter(float[] pb, int[] perm) { this.pb = pb; this.perm = perm; }
+
+        /** Centroid coordinate (times two: only order matters) of the primitive in slot k. */
+        private float centroid(int k, int axis) {
+            return pb[6 * k + axis] + pb[6 * k + 3 + axis];
+        }
+
+        private void swap(int i, int j) {
+            int t = perm[i]; perm[i] = perm[j]; perm[j] = t;
+            for (int a = 6 * i, b = 6 * j, end = a + 6; a < end; a++, b++) {
+                float d = pb[a]; pb[a] = pb[b]; pb[b] = d;
+            }
+        }
+
+        /** Writes the bounds of slots [s, e) to out[o..o+5] and of their doubled centroids to cb. */
+        void bounds(int s, int e, float[] out, int o, float[] cb) {
+            float x0 = Float.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Float.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+            float cx0 = x0, cy0 = x0, cz0 = x0, cx1 = x1, cy1 = x1, cz1 = x1;
+            final float[] p = pb;
             for (int k = s; k < e; k++) {
-                int o = 6 * k;
-                double a = pb[o], b = pb[o + 1], c = pb[o + 2], A = pb[o + 3], B = pb[o + 4], C = pb[o + 5];
+                int q = 6 * k;
+                float a = p[q], b = p[q + 1], c = p[q + 2], A = p[q + 3], B = p[q + 4], C = p[q + 5];
                 if (a < x0) x0 = a;
                 if (b < y0) y0 = b;
                 if (c < z0) z0 = c;
                 if (A > x1) x1 = A;
                 if (B > y1) y1 = B;
                 if (C > z1) z1 = C;
-                double mx = 0.5 * (a + A), my = 0.5 * (b + B), mz = 0.5 * (c + C);
+                float mx = a + A, my = b + B, mz = c + C;
                 if (mx < cx0) cx0 = mx;
                 if (my < cy0) cy0 = my;
                 if (mz < cz0) cz0 = mz;
@@ -332,8 +512,7 @@ public final class Bvh implements Accelerator {
                 if (my > cy1) cy1 = my;
                 if (mz > cz1) cz1 = mz;
             }
-            int o = 6 * n;
-            box[o] = x0; box[o + 1] = y0; box[o + 2] = z0; box[o + 3] = x1; box[o + 4] = y1; box[o + 5] = z1;
+            out[o] = x0; out[o + 1] = y0; out[o + 2] = z0; out[o + 3] = x1; out[o + 4] = y1; out[o + 5] = z1;
             cb[0] = cx0; cb[1] = cy0; cb[2] = cz0; cb[3] = cx1; cb[4] = cy1; cb[5] = cz1;
         }
 
@@ -341,21 +520,22 @@ public final class Bvh implements Accelerator {
             return dx * dy + dy * dz + dz * dx; // half the surface area; only ratios matter
         }
 
-        private static int bin(double c, double min, double scale) {
+        private static int bin(float c, float min, float scale, int bins) {
             int b = (int) ((c - min) * scale);
-            return b < BINS ? b : BINS - 1;
+            return b < bins ? b : bins - 1;
         }
 
         /**
-         * Chooses and performs the split of perm[s, e): returns (mid << 2) | axis with both
-         * halves non-empty. Binned SAH over the centroid bounds; the median of the widest centroid
-         * axis when SAH finds no split cheaper than keeping the node whole, or below the depth limit.
+         * Chooses and performs the split of slots [s, e) whose bounds are box[o..o+5]: returns
+         * (mid << 2) | axis with both halves non-empty. Binned SAH over the centroid bounds; the
+         * median of the widest centroid axis when SAH finds no split cheaper than keeping the
+         * node whole, or below the depth limit.
          */
-        private long split(int s, int e, int n, double[] cb, int d) {
+        long split(int s, int e, float[] box, int o, float[] cb, int d) {
             int wide = 0;
-            double wideExtent = -1;
+            float wideExtent = -1;
             for (int a = 0; a < 3; a++) {
-                double ext = cb[3 + a] - cb[a];
+                float ext = cb[3 + a] - cb[a];
                 if (ext > wideExtent) { wideExtent = ext; wide = a; }
             }
             if (!(wideExtent > 0)) {
@@ -363,7 +543,7 @@ public final class Bvh implements Accelerator {
                 return ((long) ((s + e) >>> 1) << 2) | wide;
             }
             if (d < SAH_DEPTH_LIMIT) {
-                long sah = sahSplit(s, e, n, cb);
+                long sah = sahSplit(s, e, box, o, cb);
                 if (sah >= 0) return sah;
             }
             int mid = (s + e) >>> 1;
@@ -372,73 +552,74 @@ public final class Bvh implements Accelerator {
         }
 
         /** Binned SAH; -1 when no split is better than the unsplit node. */
-        private long sahSplit(int s, int e, int n, double[] cb) {
-            java.util.Arrays.fill(binCount, 0);
-            for (int i = 0; i < 3 * BINS; i++) {
-                int o = 6 * i;
-                binBox[o] = binBox[o + 1] = binBox[o + 2] = Double.POSITIVE_INFINITY;
-                binBox[o + 3] = binBox[o + 4] = binBox[o + 5] = Double.NEGATIVE_INFINITY;
-            }
+        private long sahSplit(int s, int e, float[] box, int o6, float[] cb) {
+            final int[] cnt0 = binCount;
+            final float[] bb = binBox;
+            // Small ranges get as many bins as primitives: more would be mostly empty, and
+            // clearing and sweeping them would dominate the many small nodes near the leaves.
+            final int nb = Math.min(BINS, e - s);
             for (int a = 0; a < 3; a++) {
-                double ext = cb[3 + a] - cb[a];
-                scale[a] = ext > 0 ? BINS / ext : 0;
-            }
-            for (int k = s; k < e; k++) {
-                int po = 6 * k;
-                double x0 = pb[po], y0 = pb[po + 1], z0 = pb[po + 2], x1 = pb[po + 3], y1 = pb[po + 4], z1 = pb[po + 5];
-                for (int a = 0; a < 3; a++) {
-                    if (scale[a] == 0) continue;
-                    double c = a == 0 ? 0.5 * (x0 + x1) : a == 1 ? 0.5 * (y0 + y1) : 0.5 * (z0 + z1);
-                    int bi = a * BINS + bin(c, cb[a], scale[a]);
-                    binCount[bi]++;
-                    int o = 6 * bi;
-                    binBox[o] = Math.min(binBox[o], x0);
-                    binBox[o + 1] = Math.min(binBox[o + 1], y0);
-                    binBox[o + 2] = Math.min(binBox[o + 2], z0);
-                    binBox[o + 3] = Math.max(binBox[o + 3], x1);
-                    binBox[o + 4] = Math.max(binBox[o + 4], y1);
-                    binBox[o + 5] = Math.max(binBox[o + 5], z1);
+                for (int i = a * BINS, end = i + nb; i < end; i++) {
+                    int o = 6 * i;
+                    cnt0[i] = 0;
+                    bb[o] = bb[o + 1] = bb[o + 2] = Float.POSITIVE_INFINITY;
+                    bb[o + 3] = bb[o + 4] = bb[o + 5] = Float.NEGATIVE_INFINITY;
                 }
             }
-            int o6 = 6 * n;
-            double leafCost = (e - s) * area(box[o6 + 3] - box[o6], box[o6 + 4] - box[o6 + 1], box[o6 + 5] - box[o6 + 2]);
+            // An axis whose centroids all coincide gets scale 0: everything lands in its bin 0,
+            // and the sweep below finds no split with both sides non-empty on it.
+            float ex = cb[3] - cb[0], ey = cb[4] - cb[1], ez = cb[5] - cb[2];
+            float sx = ex > 0 ? nb / ex : 0, sy = ey > 0 ? nb / ey : 0, sz = ez > 0 ? nb / ez : 0;
+            float mx = cb[0], my = cb[1], mz = cb[2];
+            final float[] p = pb;
+            for (int k = s; k < e; k++) {
+                int q = 6 * k;
+                float x0 = p[q], y0 = p[q + 1], z0 = p[q + 2], x1 = p[q + 3], y1 = p[q + 4], z1 = p[q + 5];
+                int bx = bin(x0 + x1, mx, sx, nb), by = BINS + bin(y0 + y1, my, sy, nb), bz = 2 * BINS + bin(z0 + z1, mz, sz, nb);
+                cnt0[bx]++; cnt0[by]++; cnt0[bz]++;
+                grow(bb, 6 * bx, x0, y0, z0, x1, y1, z1);
+                grow(bb, 6 * by, x0, y0, z0, x1, y1, z1);
+                grow(bb, 6 * bz, x0, y0, z0, x1, y1, z1);
+            }
+            double leafCost = (double) (e - s) * area((double) box[o6 + 3] - box[o6], (double) box[o6 + 4] - box[o6 + 1], (double) box[o6 + 5] - box[o6 + 2]);
             double best = leafCost;
             int bestAxis = -1, bestBin = -1;
+            float[] scale = {sx, sy, sz};
             for (int a = 0; a < 3; a++) {
                 if (scale[a] == 0) continue;
-                // Sweep from the right: area and count of bins i+1..BINS-1 for a split after bin i.
-                double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+                // Sweep from the right: area and count of bins i+1..nb-1 for a split after bin i.
+                float x0 = Float.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Float.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
                 int cnt = 0;
-                for (int i = BINS - 1; i > 0; i--) {
+                for (int i = nb - 1; i > 0; i--) {
                     int bi = a * BINS + i, o = 6 * bi;
-                    if (binCount[bi] > 0) {
-                        cnt += binCount[bi];
-                        x0 = Math.min(x0, binBox[o]); y0 = Math.min(y0, binBox[o + 1]); z0 = Math.min(z0, binBox[o + 2]);
-                        x1 = Math.max(x1, binBox[o + 3]); y1 = Math.max(y1, binBox[o + 4]); z1 = Math.max(z1, binBox[o + 5]);
+                    if (cnt0[bi] > 0) {
+                        cnt += cnt0[bi];
+                        x0 = Math.min(x0, bb[o]); y0 = Math.min(y0, bb[o + 1]); z0 = Math.min(z0, bb[o + 2]);
+                        x1 = Math.max(x1, bb[o + 3]); y1 = Math.max(y1, bb[o + 4]); z1 = Math.max(z1, bb[o + 5]);
                     }
                     rightCount[i - 1] = cnt;
-                    rightArea[i - 1] = cnt > 0 ? area(x1 - x0, y1 - y0, z1 - z0) : 0;
+                    rightArea[i - 1] = cnt > 0 ? area((double) x1 - x0, (double) y1 - y0, (double) z1 - z0) : 0;
                 }
-                x0 = Double.POSITIVE_INFINITY; y0 = x0; z0 = x0; x1 = Double.NEGATIVE_INFINITY; y1 = x1; z1 = x1;
+                x0 = Float.POSITIVE_INFINITY; y0 = x0; z0 = x0; x1 = Float.NEGATIVE_INFINITY; y1 = x1; z1 = x1;
                 cnt = 0;
-                for (int i = 0; i < BINS - 1; i++) {
+                for (int i = 0; i < nb - 1; i++) {
                     int bi = a * BINS + i, o = 6 * bi;
-                    if (binCount[bi] > 0) {
-                        cnt += binCount[bi];
-                        x0 = Math.min(x0, binBox[o]); y0 = Math.min(y0, binBox[o + 1]); z0 = Math.min(z0, binBox[o + 2]);
-                        x1 = Math.max(x1, binBox[o + 3]); y1 = Math.max(y1, binBox[o + 4]); z1 = Math.max(z1, binBox[o + 5]);
+                    if (cnt0[bi] > 0) {
+                        cnt += cnt0[bi];
+                        x0 = Math.min(x0, bb[o]); y0 = Math.min(y0, bb[o + 1]); z0 = Math.min(z0, bb[o + 2]);
+                        x1 = Math.max(x1, bb[o + 3]); y1 = Math.max(y1, bb[o + 4]); z1 = Math.max(z1, bb[o + 5]);
                     }
                     if (cnt == 0 || rightCount[i] == 0) continue;
-                    double cost = cnt * area(x1 - x0, y1 - y0, z1 - z0) + rightCount[i] * rightArea[i];
+                    double cost = cnt * area((double) x1 - x0, (double) y1 - y0, (double) z1 - z0) + rightCount[i] * rightArea[i];
                     if (cost < best) { best = cost; bestAxis = a; bestBin = i; }
                 }
             }
             if (bestAxis < 0) return -1;
             // Partition in place: primitives whose centroid bin is <= bestBin go left.
-            double min = cb[bestAxis], sc = scale[bestAxis];
+            float min = cb[bestAxis], sc = scale[bestAxis];
             int i = s, j = e - 1;
             while (i <= j) {
-                if (bin(centroid(i, bestAxis), min, sc) <= bestBin) {
+                if (bin(centroid(i, bestAxis), min, sc, nb) <= bestBin) {
                     i++;
                 } else {
                     swap(i, j);
@@ -448,14 +629,24 @@ public final class Bvh implements Accelerator {
             return ((long) i << 2) | bestAxis;
         }
 
-        /** Reorders perm[s, e) so perm[k] has the k-th smallest centroid on the axis (quickselect). */
+        /** Branch-free (min/max are intrinsics): which bin box grows is unpredictable. */
+        private static void grow(float[] bb, int o, float x0, float y0, float z0, float x1, float y1, float z1) {
+            bb[o] = Math.min(bb[o], x0);
+            bb[o + 1] = Math.min(bb[o + 1], y0);
+            bb[o + 2] = Math.min(bb[o + 2], z0);
+            bb[o + 3] = Math.max(bb[o + 3], x1);
+            bb[o + 4] = Math.max(bb[o + 4], y1);
+            bb[o + 5] = Math.max(bb[o + 5], z1);
+        }
+
+        /** Reorders slots [s, e) so slot k has the k-th smallest centroid on the axis (quickselect). */
         private void select(int s, int e, int k, int axis) {
             int lo = s, hi = e - 1;
             while (hi - lo > 16) {
                 int m = (lo + hi) >>> 1;
                 // Median of three as the pivot keeps sorted inputs from degrading to quadratic time.
-                double a = centroid(lo, axis), b = centroid(m, axis), c = centroid(hi, axis);
-                double pivot = Math.max(Math.min(a, b), Math.min(Math.max(a, b), c));
+                float a = centroid(lo, axis), b = centroid(m, axis), c = centroid(hi, axis);
+                float pivot = Math.max(Math.min(a, b), Math.min(Math.max(a, b), c));
                 int i = lo, j = hi;
                 while (i <= j) {
                     while (centroid(i, axis) < pivot) i++;

@@ -99,6 +99,7 @@ public final class Octree implements Accelerator {
     }
 
     /** Bytes held by the flat arrays. */
+    @Override
     public long memoryBytes() { return 4L * node.length + 4L * refs.length; }
 
     private static final int INTERSECT = 0, OCCLUDED = 1, VISIT = 2;

@@ -9,6 +9,14 @@ import java.util.List;
 import java.util.Locale;
 
 import lt.spindulys.io.ObjReader;
+import lt.spindulys.io.SceneParser;
+import lt.spindulys.render.ProgressListener;
+import lt.spindulys.render.RenderStats;
+import lt.spindulys.render.Renderer;
+import lt.spindulys.scene.GObject;
+import lt.spindulys.scene.Scene;
+import lt.spindulys.scene.SceneBuilder;
+import lt.spindulys.scene.TriangleMesh;
 import lt.spindulys.subdiv.CatmullClark;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.RefinedMesh;
@@ -27,7 +35,8 @@ final class BenchCommand {
               --only NAME   run only the row NAME (see --list)
               --runs N      timed runs per row after the warm-up (default 5); the median is reported
               --list        list the rows and exit
-            Run from the repository root: inputs are read from scenes/bench/. See docs/performance.md.""";
+            Run from the repository root: inputs are read from scenes/bench/; the torus-* rows first write
+            their meshes into scenes/bench/meshes/ when missing. See docs/performance.md.""";
 
     /** One benchmark row: a name, what it measures, and how. */
     private record Row(String name, String section, String description, Action action) {}
@@ -38,7 +47,21 @@ final class BenchCommand {
     private static final List<Row> ROWS = List.of(
             new Row("refine-bishop", "Subdivision",
                     "catmark_bishop (968 quads, 224 creases) refined uniformly to level 6 (~4M quads) on one thread; beside far_perf -u",
-                    (b, out) -> b.refinement(out, "catmark_bishop.obj", 6)));
+                    (b, out) -> b.refinement(out, "catmark_bishop.obj", 6)),
+            torusRow("1k"), torusRow("16k"), torusRow("250k"), torusRow("1m"));
+
+    private static Row torusRow(String size) {
+        BenchMeshes.Size s = BenchMeshes.size(size);
+        return new Row("torus-" + size, "Peer scene",
+                String.format(Locale.ROOT, "scenes/bench/torus-%s.dat: torus of %,d triangles on a ground quad, 1280x720, 1 spp, %d threads; in-process and cold process",
+                        size, s.triangles(), THREADS),
+                (b, out) -> b.peerScene(out, s));
+    }
+
+    /** Render threads of the peer-scene rows: the peers' protocol uses two everywhere. */
+    static final int THREADS = 2;
+    /** In-process renders before the timed ones, so the JIT has compiled the hot paths. */
+    private static final int WARMUPS = 2;
 
     private String only;
     private int runs = 5;
@@ -91,7 +114,123 @@ final class BenchCommand {
             }
             r.action().run(this, out);
         }
+        if (peerTable != null) {
+            out.println();
+            peerTable.print(out);
+            out.println("  load s: parse the scene and read the OBJs (includes building each mesh's own BVH while meshes build theirs");
+            out.println("  on construction); build s: freeze the scene (top-level structure); render s: trace the frame; all medians");
+            out.printf(Locale.ROOT, "  after %d warm-up renders in this JVM. Mrays/s: camera + shadow rays / render s. peak heap: the heap pools'%n", WARMUPS);
+            out.println("  peak use during one load+build+render. bytes/tri: the meshes' arrays and BVHs / their triangles.");
+            out.println("  cold s: wall clock of a whole new process `java -jar render.jar SCENE -o x.tga --quiet --threads 2`");
+            out.println("  (median; one untimed run first so the files are in the page cache).");
+        }
         return 0;
+    }
+
+    // ---- the peer scene ----
+
+    private BenchTable peerTable;
+
+    private void peerScene(PrintStream out, BenchMeshes.Size size) throws IOException {
+        Path meshes = benchDir.resolve("meshes");
+        long g0 = System.nanoTime();
+        BenchMeshes.ensure(meshes, size);
+        double gen = (System.nanoTime() - g0) / 1e9;
+        if (gen > 0.05) out.printf(Locale.ROOT, "  generated %s in %.1f s%n", meshes.resolve(size.file()), gen);
+        Path scene = benchDir.resolve("torus-" + size.name() + ".dat");
+        if (!Files.isRegularFile(scene)) throw new IOException("bench scene not found: " + scene.toAbsolutePath());
+
+        for (int i = 0; i < WARMUPS; i++) renderOnce(scene);
+        double[] load = new double[runs], build = new double[runs], render = new double[runs], mrays = new double[runs];
+        double[] peak = new double[runs];
+        Measured last = null;
+        for (int i = 0; i < runs; i++) {
+            last = renderOnce(scene);
+            load[i] = last.load;
+            build[i] = last.build;
+            render[i] = last.stats.seconds();
+            mrays[i] = last.stats.mraysPerSecond();
+            peak[i] = last.peakHeap;
+        }
+        double cold = coldSeconds(scene, runs);
+        if (peerTable == null) {
+            peerTable = new BenchTable("row", "triangles", "load s", "build s", "render s", "camera rays", "shadow rays",
+                    "Mrays/s", "peak heap MiB", "bytes/tri", "cold s");
+        }
+        peerTable.add("torus-" + size.name(), String.format(Locale.ROOT, "%,d", last.triangles), fmt(median(load), 3),
+                fmt(median(build), 3), fmt(median(render), 3), String.format(Locale.ROOT, "%,d", last.stats.cameraRays()),
+                String.format(Locale.ROOT, "%,d", last.stats.shadowRays()), fmt(median(mrays), 2),
+                fmt(median(peak) / 1048576.0, 0), fmt(last.meshBytes / (double) last.triangles, 1),
+                Double.isNaN(cold) ? "failed" : fmt(cold, 3));
+        out.printf(Locale.ROOT, "  torus-%s: load %.3f s, build %.3f s, render %.3f s (%.2f Mrays/s), cold %.3f s%n", size.name(),
+                median(load), median(build), median(render), median(mrays), cold);
+    }
+
+    /** One timed load, build and render of a scene file, and what it used. */
+    private record Measured(double load, double build, RenderStats stats, long peakHeap, long triangles, long meshBytes) {}
+
+    private static Measured renderOnce(Path file) throws IOException {
+        System.gc();
+        RenderCommand.resetPeakHeap();
+        long t0 = System.nanoTime();
+        SceneBuilder builder = SceneParser.parse(file);
+        long t1 = System.nanoTime();
+        Scene scene = builder.build();
+        long t2 = System.nanoTime();
+        Renderer.Result result;
+        try {
+            result = Renderer.render(scene, THREADS, ProgressListener.NONE);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IOException("interrupted", e);
+        }
+        long peak = RenderCommand.peakHeapBytes();
+        long triangles = 0, bytes = 0;
+        for (GObject o : scene.objects()) {
+            if (o instanceof TriangleMesh m) {
+                triangles += m.triangleCount();
+                bytes += m.memoryBytes();
+            }
+        }
+        return new Measured((t1 - t0) / 1e9, (t2 - t1) / 1e9, result.stats(), peak, triangles, bytes);
+    }
+
+    /**
+     * Median wall time of {@code runs} whole new processes rendering {@code scene} with this
+     * program's own classes, after one untimed run; NaN if a run fails.
+     */
+    private static double coldSeconds(Path scene, int runs) throws IOException {
+        String javaExe = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        String cp;
+        try {
+            cp = Path.of(BenchCommand.class.getProtectionDomain().getCodeSource().getLocation().toURI()).toString();
+        } catch (java.net.URISyntaxException e) {
+            return Double.NaN;
+        }
+        Path image = Files.createTempFile("spindulys-bench", ".tga");
+        try {
+            List<String> cmd = List.of(javaExe, "-cp", cp, Main.class.getName(), scene.toString(), "-o", image.toString(),
+                    "--quiet", "--threads", Integer.toString(THREADS));
+            double[] t = new double[runs];
+            for (int i = -1; i < runs; i++) {
+                long t0 = System.nanoTime();
+                Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+                try {
+                    if (!p.waitFor(10, java.util.concurrent.TimeUnit.MINUTES) || p.exitValue() != 0) {
+                        p.destroyForcibly();
+                        return Double.NaN;
+                    }
+                } catch (InterruptedException e) {
+                    p.destroyForcibly();
+                    Thread.currentThread().interrupt();
+                    return Double.NaN;
+                }
+                if (i >= 0) t[i] = (System.nanoTime() - t0) / 1e9;
+            }
+            return median(t);
+        } finally {
+            Files.deleteIfExists(image);
+        }
     }
 
     // ---- subdivision ----

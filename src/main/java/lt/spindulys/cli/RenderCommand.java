@@ -2,8 +2,12 @@ package lt.spindulys.cli;
 
 import java.io.IOException;
 import java.io.PrintStream;
+import java.lang.management.ManagementFactory;
+import java.lang.management.MemoryPoolMXBean;
+import java.lang.management.MemoryType;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Locale;
 
 import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.image.ImageOptions;
@@ -34,7 +38,7 @@ final class RenderCommand {
               --seed S           global random seed (overrides the scene)
               --accel A          acceleration structure: bvh, octree or bruteforce (overrides the scene)
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
-              --stats            print load, build and render times and ray counts
+              --stats            print load, build and render times, rays by kind, Mrays/s, peak heap
               --quiet            no progress bar
               --debug            stack traces on errors
             Exit status: 0 success, 2 bad usage or bad input, 1 failure while rendering or writing.""";
@@ -121,14 +125,33 @@ final class RenderCommand {
     }
 
     private static void printStats(PrintStream out, double load, double build, RenderStats r, int threads) {
-        Runtime rt = Runtime.getRuntime();
-        out.printf("load:    %.3f s%n", load);
-        out.printf("build:   %.3f s%n", build);
-        out.printf("render:  %.3f s (%d threads)%n", r.seconds(), threads);
-        out.printf("rays:    %d camera, %d shadow, %d reflection, %d refraction%n",
+        out.printf(Locale.ROOT, "load:    %.3f s%n", load);
+        out.printf(Locale.ROOT, "build:   %.3f s%n", build);
+        out.printf(Locale.ROOT, "render:  %.3f s (%d threads)%n", r.seconds(), threads);
+        out.printf(Locale.ROOT, "rays:    %d camera, %d shadow, %d reflection, %d refraction%n",
                 r.cameraRays(), r.shadowRays(), r.reflectionRays(), r.refractionRays());
-        out.printf("speed:   %.1f Mrays/s%n", r.mraysPerSecond());
-        out.printf("heap:    %.1f MiB in use at exit%n", (rt.totalMemory() - rt.freeMemory()) / 1048576.0);
+        out.printf(Locale.ROOT, "speed:   %.1f Mrays/s%n", r.mraysPerSecond());
+        out.printf(Locale.ROOT, "heap:    %.1f MiB peak%n", peakHeapBytes() / 1048576.0);
+    }
+
+    /**
+     * The most heap the process has used so far: the sum over the heap pools of each pool's peak
+     * (the JVM tracks these between collections, so a short-lived spike still counts). The pools
+     * peak at different moments, so the sum can exceed the true peak a little; it never misses it.
+     */
+    static long peakHeapBytes() {
+        long sum = 0;
+        for (MemoryPoolMXBean pool : ManagementFactory.getMemoryPoolMXBeans()) {
+            if (pool.getType() == MemoryType.HEAP && pool.isValid()) sum += pool.getPeakUsage().getUsed();
+        }
+        return sum;
+    }
+
+    /** Starts a new peak: {@link #peakHeapBytes()} then reports the peak since this call. */
+    static void resetPeakHeap() {
+        for (MemoryPoolMXBean pool : ManagementFactory.getMemoryPoolMXBeans()) {
+            if (pool.getType() == MemoryType.HEAP && pool.isValid()) pool.resetPeakUsage();
+        }
     }
 
     private static String value(String[] args, int i, String option) throws UsageException {

@@ -27,7 +27,12 @@ import lt.spindulys.math.Transform;
  * its acceleration structure indexes.
  */
 public final class TriangleMesh extends GObject implements PrimitiveSet {
-    private final MeshData data;
+    /**
+     * Where the mesh came from, for messages. The polygon record itself is not kept: its
+     * per-corner index arrays would cost another 18 bytes per triangle of a quad mesh, and the
+     * triangle arrays below carry everything rendering needs.
+     */
+    private final String source;
     private final double[] pos;
     private final double[] normals;
     private final double[] uvs;
@@ -57,7 +62,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
      * @throws IllegalArgumentException if the arrays are inconsistent, an index is out of range or a position is not finite
      */
     public TriangleMesh(MeshData data) {
-        this.data = data;
+        this.source = data.source();
         validate(data);
         pos = data.positions();
         normals = data.normals();
@@ -116,7 +121,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     }
 
     private String where() {
-        return data.source() == null ? "" : data.source() + ": ";
+        return source == null ? "" : source + ": ";
     }
 
     private static void validate(MeshData d) {
@@ -174,10 +179,31 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     }
 
     public boolean isSmooth() { return smooth; }
-    public MeshData data() { return data; }
+    /**
+     * The mesh as triangles (degenerate ones dropped), sharing this mesh's arrays: positions,
+     * normals and texture coordinates as given, one face of three corners per triangle.
+     */
+    public MeshData data() {
+        int[] sizes = new int[triangleCount];
+        Arrays.fill(sizes, 3);
+        return new MeshData(pos, normals, uvs, sizes, tri, triNormal, triUv, source);
+    }
     public int triangleCount() { return triangleCount; }
     /** Triangles dropped because their area is zero. */
     public int degenerateCount() { return degenerateCount; }
+
+    /**
+     * Bytes held by the mesh's arrays (positions, normals, texture coordinates, triangle and
+     * per-corner indices, vertex normals) and its acceleration structure; array headers
+     * and the few fixed fields are left out.
+     */
+    public long memoryBytes() {
+        long b = bytes(pos) + bytes(normals) + bytes(uvs) + bytes(tri) + bytes(triNormal) + bytes(triUv) + bytes(vertexNormals);
+        return b + (accel != null ? accel.memoryBytes() : 0);
+    }
+
+    private static long bytes(double[] a) { return a == null ? 0 : 8L * a.length; }
+    private static long bytes(int[] a) { return a == null ? 0 : 4L * a.length; }
 
     /** Position index of corner {@code corner} (0..2) of triangle {@code t}. */
     public int triangleVertex(int t, int corner) { return tri[3 * t + corner]; }
@@ -211,7 +237,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
                 keys[3 * t + e] = ((long) Math.min(a, b) << 32) | Math.max(a, b);
             }
         }
-        Arrays.sort(keys);
+        Arrays.parallelSort(keys); // millions of edges on large meshes; the sorted result is the same
         for (int i = 0; i < keys.length; ) {
             int j = i + 1;
             while (j < keys.length && keys[j] == keys[i]) j++;

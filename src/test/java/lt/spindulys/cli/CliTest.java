@@ -145,9 +145,10 @@ class CliTest {
         Run list = run("bench", "--list");
         assertEquals(0, list.status(), list.err());
         assertTrue(list.out().startsWith("refine-bishop "), list.out());
+        assertTrue(list.out().contains(System.lineSeparator() + "torus-1m "), list.out());
         Run unknown = run("bench", "--only", "nope");
         assertEquals(2, unknown.status());
-        assertEquals("render: unknown bench row 'nope' (rows: refine-bishop)" + System.lineSeparator(), unknown.err());
+        assertEquals("render: unknown bench row 'nope' (rows: refine-bishop, torus-1k, torus-16k, torus-250k, torus-1m)" + System.lineSeparator(), unknown.err());
         Run badRuns = run("bench", "--runs", "0");
         assertEquals(2, badRuns.status());
         assertEquals(0, run("bench", "--help").status());
