@@ -40,7 +40,12 @@ public final class Bvh implements Accelerator {
      * inner node holds (right child index, -1 - split axis). The left child of node i is node i + 1.
      */
     private final int[] node;
+    /**
+     * Primitive index of each leaf slot, or null when the set renumbered its primitives into
+     * leaf order ({@link PrimitiveSet#reorder}), so that slot k holds primitive k.
+     */
     private final int[] perm;
+    private final int primitiveCount;
     /** The exact (double) bounds of everything indexed, which the float root box only encloses. */
     private final Bounds bounds;
     private final int nodeCount;
@@ -64,7 +69,8 @@ public final class Bvh implements Accelerator {
         Builder b = new Builder(set, maxLeafSize);
         b.build();
         node = b.node;
-        perm = b.perm;
+        perm = b.perm.length == set.size() && set.reorder(b.perm) ? null : b.perm;
+        primitiveCount = b.perm.length;
         bounds = b.exact;
         nodeCount = b.count;
         depth = b.maxDepth;
@@ -73,7 +79,7 @@ public final class Bvh implements Accelerator {
     public PrimitiveSet set() { return set; }
     public int nodeCount() { return nodeCount; }
     /** Number of primitives indexed (those with non-empty bounds). */
-    public int primitiveCount() { return perm.length; }
+    public int primitiveCount() { return primitiveCount; }
     /** Length of the longest root-to-leaf path (0 for a single leaf). */
     public int depth() { return depth; }
 
@@ -83,7 +89,7 @@ public final class Bvh implements Accelerator {
     /** Bytes held by the node bounds, node links and primitive permutation (array headers left out). */
     @Override
     public long memoryBytes() {
-        return 4L * node.length + 4L * perm.length;
+        return 4L * node.length + (perm == null ? 0 : 4L * perm.length);
     }
 
     private int stackNeed() { return depth + 2; }
@@ -98,7 +104,8 @@ public final class Bvh implements Accelerator {
     public boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
         if (nodeCount == 0) return false;
         final double ox = ray.ox, oy = ray.oy, oz = ray.oz;
-        final double ix = 1 / ray.dx, iy = 1 / ray.dy, iz = 1 / ray.dz;
+        ctx.direction(ray);
+        final double ix = ctx.invX, iy = ctx.invY, iz = ctx.invZ;
         final int xn = ix < 0 ? 3 : 0, yn = iy < 0 ? 3 : 0, zn = iz < 0 ? 3 : 0;
         if (Double.isNaN(entry(0, ox, oy, oz, ix, iy, iz, xn, yn, zn, ray.tMin, ray.tMax))) return false;
         final double saved = ray.tMax;
@@ -112,12 +119,8 @@ public final class Bvh implements Accelerator {
             while (true) {
                 int count = node[8 * n + 7];
                 if (count > 0) {
-                    for (int k = node[8 * n + 6], end = k + count; k < end; k++) {
-                        if (set.intersect(perm[k], ray, hit, ctx)) {
-                            any = true;
-                            ray.tMax = hit.t;
-                        }
-                    }
+                    int k = node[8 * n + 6];
+                    if (set.intersectRange(perm, k, k + count, ray, hit, ctx)) any = true;
                 } else {
                     int l = n + 1, r = node[8 * n + 6];
                     double tMin = ray.tMin, tMax = ray.tMax;
@@ -159,7 +162,8 @@ public final class Bvh implements Accelerator {
     public boolean occluded(Ray ray, TraceContext ctx) {
         if (nodeCount == 0) return false;
         final double ox = ray.ox, oy = ray.oy, oz = ray.oz;
-        final double ix = 1 / ray.dx, iy = 1 / ray.dy, iz = 1 / ray.dz;
+        ctx.direction(ray);
+        final double ix = ctx.invX, iy = ctx.invY, iz = ctx.invZ;
         final boolean nx = ix < 0, ny = iy < 0, nz = iz < 0;
         final int base = ctx.stackTop;
         final int[] stack = ctx.stack(base + stackNeed());
@@ -170,9 +174,8 @@ public final class Bvh implements Accelerator {
                 if (boxHit(n, ox, oy, oz, ix, iy, iz, nx, ny, nz, ray.tMin, ray.tMax)) {
                     int count = node[8 * n + 7];
                     if (count > 0) {
-                        for (int k = node[8 * n + 6], end = k + count; k < end; k++) {
-                            if (set.occluded(perm[k], ray, ctx)) return true;
-                        }
+                        int k = node[8 * n + 6];
+                        if (set.occludedRange(perm, k, k + count, ray, ctx)) return true;
                     } else {
                         stack[sp++] = node[8 * n + 6];
                         n = n + 1;
@@ -193,10 +196,12 @@ public final class Bvh implements Accelerator {
      * [ray.tMin, ray.tMax] (infinite limits allowed), in no particular order. The visitor may test
      * the primitive in any way but must not change the ray.
      */
+    @Override
     public void visit(Ray ray, TraceContext ctx, Visitor visitor) {
         if (nodeCount == 0) return;
         final double ox = ray.ox, oy = ray.oy, oz = ray.oz;
-        final double ix = 1 / ray.dx, iy = 1 / ray.dy, iz = 1 / ray.dz;
+        ctx.direction(ray);
+        final double ix = ctx.invX, iy = ctx.invY, iz = ctx.invZ;
         final boolean nx = ix < 0, ny = iy < 0, nz = iz < 0;
         final int base = ctx.stackTop;
         final int[] stack = ctx.stack(base + stackNeed());
@@ -207,7 +212,7 @@ public final class Bvh implements Accelerator {
                 if (boxHit(n, ox, oy, oz, ix, iy, iz, nx, ny, nz, ray.tMin, ray.tMax)) {
                     int count = node[8 * n + 7];
                     if (count > 0) {
-                        for (int k = node[8 * n + 6], end = k + count; k < end; k++) visitor.visit(perm[k], ray, ctx);
+                        for (int k = node[8 * n + 6], end = k + count; k < end; k++) visitor.visit(perm == null ? k : perm[k], ray, ctx);
                     } else {
                         stack[sp++] = node[8 * n + 6];
                         n = n + 1;

@@ -21,4 +21,34 @@ public interface PrimitiveSet {
     default boolean occluded(int i, Ray ray, TraceContext ctx) {
         return intersect(i, ray, ctx.scratchHit.reset(ray.tMax), ctx);
     }
+
+    /**
+     * Offers to renumber the primitives so that new primitive k is old primitive
+     * {@code order[k]} (a permutation of all of them), putting those a structure's leaves hold
+     * together next to each other in memory. Returns true if the set did; a structure then
+     * passes a null {@code prims} to the range tests below, meaning primitive k itself.
+     */
+    default boolean reorder(int[] order) { return false; }
+
+    /**
+     * Nearest-hit test of the primitives {@code prims[from..to)} (a structure's leaf), shrinking
+     * ray.tMax to each hit found; true if any was. A set overrides this to hoist its per-ray
+     * work out of the loop.
+     */
+    default boolean intersectRange(int[] prims, int from, int to, Ray ray, Hit hit, TraceContext ctx) {
+        boolean any = false;
+        for (int k = from; k < to; k++) {
+            if (intersect(prims[k], ray, hit, ctx)) {
+                any = true;
+                ray.tMax = hit.t;
+            }
+        }
+        return any;
+    }
+
+    /** Any-hit test of the primitives {@code prims[from..to)}; stops at the first one found. */
+    default boolean occludedRange(int[] prims, int from, int to, Ray ray, TraceContext ctx) {
+        for (int k = from; k < to; k++) if (occluded(prims[k], ray, ctx)) return true;
+        return false;
+    }
 }

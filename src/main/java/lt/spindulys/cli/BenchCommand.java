@@ -117,8 +117,8 @@ final class BenchCommand {
         if (peerTable != null) {
             out.println();
             peerTable.print(out);
-            out.println("  load s: parse the scene and read the OBJs (includes building each mesh's own BVH while meshes build theirs");
-            out.println("  on construction); build s: freeze the scene (top-level structure); render s: trace the frame; all medians");
+            out.println("  load s: parse the scene and read the OBJs; build s: freeze the scene (each mesh's BVH, the mesh put in its");
+            out.println("  leaf order, and the top-level BVH over the objects); render s: trace the frame; all medians");
             out.printf(Locale.ROOT, "  after %d warm-up renders in this JVM. Mrays/s: camera + shadow rays / render s. peak heap: the heap pools'%n", WARMUPS);
             out.println("  peak use during one load+build+render. bytes/tri: the meshes' arrays and BVHs / their triangles.");
             out.println("  cold s: wall clock of a whole new process `java -jar render.jar SCENE -o x.tga --quiet --threads 2`");

@@ -22,10 +22,13 @@ public final class TraceContext {
     public int stackTop;
 
     /**
-     * Per-ray constants of the watertight triangle test (TriangleMesh), valid while the ray
-     * direction equals (shearDx, shearDy, shearDz): the axis permutation and the shear.
+     * Per-direction constants, valid while the ray direction equals (dirX, dirY, dirZ) (see
+     * {@link #direction(Ray)}): the inverse direction of the box tests, and the axis permutation
+     * and shear of the watertight triangle test. A scene structure and the meshes it holds see
+     * the same direction (unless an object is transformed), so they are computed once per ray.
      */
-    public double shearDx = Double.NaN, shearDy = Double.NaN, shearDz = Double.NaN;
+    public double dirX = Double.NaN, dirY = Double.NaN, dirZ = Double.NaN;
+    public double invX, invY, invZ;
     public double shearSx, shearSy, shearSz;
     public int shearKx, shearKy, shearKz;
 
@@ -36,6 +39,27 @@ public final class TraceContext {
     private int[] stack = new int[64];
     private SpanBuffer[] spanPool = new SpanBuffer[8];
     private int spanDepth;
+
+    /** Makes the per-direction constants those of {@code ray}'s direction. */
+    public void direction(Ray ray) {
+        double dx = ray.dx, dy = ray.dy, dz = ray.dz;
+        if (dx == dirX && dy == dirY && dz == dirZ) return;
+        invX = 1 / dx; invY = 1 / dy; invZ = 1 / dz;
+        // kz is the dominant axis; kx, ky are swapped when the ray runs along -kz so that the
+        // winding (and with it the sign of the edge functions) is preserved.
+        double ax = Math.abs(dx), ay = Math.abs(dy), az = Math.abs(dz);
+        int kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+        int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
+        double dkz = kz == 0 ? dx : kz == 1 ? dy : dz;
+        if (dkz < 0) { int t = kx; kx = ky; ky = t; }
+        double dkx = kx == 0 ? dx : kx == 1 ? dy : dz;
+        double dky = ky == 0 ? dx : ky == 1 ? dy : dz;
+        shearKx = kx; shearKy = ky; shearKz = kz;
+        shearSx = dkx / dkz;
+        shearSy = dky / dkz;
+        shearSz = 1 / dkz;
+        dirX = dx; dirY = dy; dirZ = dz;
+    }
 
     /** A traversal stack of at least {@code size} entries (grown once, then reused). */
     public int[] stack(int size) {

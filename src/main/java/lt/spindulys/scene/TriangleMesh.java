@@ -33,7 +33,8 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
      * triangle arrays below carry everything rendering needs.
      */
     private final String source;
-    private final double[] pos;
+    /** Positions; shared with the source data until {@link #reorder} makes the mesh its own copy. */
+    private double[] pos;
     private final double[] normals;
     private final double[] uvs;
     /** Three position indices per triangle. */
@@ -405,7 +406,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
      * duplicates from the triangles sharing it compare exactly equal.
      */
     private void collectCrossing(int i, Ray ray, TraceContext ctx) {
-        if (ray.dx != ctx.shearDx || ray.dy != ctx.shearDy || ray.dz != ctx.shearDz) prepareShear(ray, ctx);
+        ctx.direction(ray);
         final int kx = ctx.shearKx, ky = ctx.shearKy, kz = ctx.shearKz;
         final double sx = ctx.shearSx, sy = ctx.shearSy, sz = ctx.shearSz;
         final double okx = kx == 0 ? ray.ox : kx == 1 ? ray.oy : ray.oz;
@@ -518,71 +519,111 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         }
     }
 
+    /**
+     * Puts the triangles in the structure's leaf order and numbers the vertices by first use in
+     * that order, so a ray's triangle tests read nearby memory instead of jumping across the
+     * whole mesh. Called once, at freeze, before any ray; triangle indices (hit.prim,
+     * {@link #triangleVertex}, {@link #data()}) refer to this order afterwards.
+     */
+    @Override
+    public boolean reorder(int[] order) {
+        int n = triangleCount;
+        if (order.length != n) return false;
+        permuteTriangles(tri, order);
+        if (triNormal != null) permuteTriangles(triNormal, order);
+        if (triUv != null) permuteTriangles(triUv, order);
+        int nv = pos.length / 3;
+        int[] newId = new int[nv];
+        Arrays.fill(newId, -1);
+        int next = 0;
+        for (int k = 0; k < tri.length; k++) {
+            int v = tri[k];
+            if (newId[v] < 0) newId[v] = next++;
+            tri[k] = newId[v];
+        }
+        for (int v = 0; v < nv; v++) if (newId[v] < 0) newId[v] = next++; // unused vertices keep a slot at the end
+        pos = permuteVertices(pos, newId);
+        if (vertexNormals != null) vertexNormals = permuteVertices(vertexNormals, newId);
+        return true;
+    }
+
+    private static void permuteTriangles(int[] a, int[] order) {
+        int[] old = a.clone();
+        for (int k = 0; k < order.length; k++) System.arraycopy(old, 3 * order[k], a, 3 * k, 3);
+    }
+
+    /** A renumbered copy: the positions may be shared with other meshes made from the same data. */
+    private static double[] permuteVertices(double[] a, int[] newId) {
+        double[] out = new double[a.length];
+        for (int v = 0; v < newId.length; v++) System.arraycopy(a, 3 * v, out, 3 * newId[v], 3);
+        return out;
+    }
+
     @Override
     public boolean intersect(int i, Ray ray, Hit hit, TraceContext ctx) {
-        return test(i, ray, hit, ctx);
+        return test(i, i + 1, null, ray, hit, ctx);
     }
 
     @Override
     public boolean occluded(int i, Ray ray, TraceContext ctx) {
-        return test(i, ray, null, ctx);
+        return test(i, i + 1, null, ray, null, ctx);
+    }
+
+    @Override
+    public boolean intersectRange(int[] prims, int from, int to, Ray ray, Hit hit, TraceContext ctx) {
+        return test(from, to, prims, ray, hit, ctx);
+    }
+
+    @Override
+    public boolean occludedRange(int[] prims, int from, int to, Ray ray, TraceContext ctx) {
+        return test(from, to, prims, ray, null, ctx);
     }
 
     /**
-     * The watertight test. Vertices are translated to the ray origin, permuted so the ray runs
-     * along the (new) z axis and sheared so it becomes the z axis itself; the 2D edge functions
-     * of the vertices then decide the hit. Each vertex is transformed the same way whichever
-     * triangle it is used by, and an edge's function in one triangle is exactly the negation of
-     * its function in the neighbour (products commute, IEEE subtraction is antisymmetric), so a
-     * ray can never pass between two triangles that share the edge.
+     * The watertight test of triangles prims[from..to) (or from..to themselves when prims is
+     * null), with the per-ray constants read once. Vertices are translated to the ray origin,
+     * permuted so the ray runs along the (new) z axis and sheared so it becomes the z axis
+     * itself; the 2D edge functions of the vertices then decide the hit. Each vertex is
+     * transformed the same way whichever triangle it is used by, and an edge's function in one
+     * triangle is exactly the negation of its function in the neighbour (products commute, IEEE
+     * subtraction is antisymmetric), so a ray can never pass between two triangles that share
+     * the edge. With {@code hit} null this is an any-hit query and returns at the first hit;
+     * otherwise every hit nearer than ray.tMax is recorded and shrinks ray.tMax.
      */
-    private boolean test(int i, Ray ray, Hit hit, TraceContext ctx) {
-        if (ray.dx != ctx.shearDx || ray.dy != ctx.shearDy || ray.dz != ctx.shearDz) prepareShear(ray, ctx);
+    private boolean test(int from, int to, int[] prims, Ray ray, Hit hit, TraceContext ctx) {
+        ctx.direction(ray);
         final int kx = ctx.shearKx, ky = ctx.shearKy, kz = ctx.shearKz;
         final double sx = ctx.shearSx, sy = ctx.shearSy, sz = ctx.shearSz;
         final double okx = kx == 0 ? ray.ox : kx == 1 ? ray.oy : ray.oz;
         final double oky = ky == 0 ? ray.ox : ky == 1 ? ray.oy : ray.oz;
         final double okz = kz == 0 ? ray.ox : kz == 1 ? ray.oy : ray.oz;
-        final int i3 = 3 * i;
-        final int a = 3 * tri[i3], b = 3 * tri[i3 + 1], c = 3 * tri[i3 + 2];
-        final double az = pos[a + kz] - okz, bz = pos[b + kz] - okz, cz = pos[c + kz] - okz;
-        final double ax = pos[a + kx] - okx - sx * az, ay = pos[a + ky] - oky - sy * az;
-        final double bx = pos[b + kx] - okx - sx * bz, by = pos[b + ky] - oky - sy * bz;
-        final double cx = pos[c + kx] - okx - sx * cz, cy = pos[c + ky] - oky - sy * cz;
-        final double u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
-        if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return false;
-        final double det = u + v + w;
-        if (det == 0) return false;
-        final double t = (u * (sz * az) + v * (sz * bz) + w * (sz * cz)) / det;
-        if (!(t > ray.tMin && t < ray.tMax)) return false;
-        if (hit != null) {
+        final double tMin = ray.tMin;
+        final int[] tri = this.tri;
+        final double[] pos = this.pos;
+        boolean any = false;
+        for (int k = from; k < to; k++) {
+            final int i = prims == null ? k : prims[k];
+            final int i3 = 3 * i;
+            final int a = 3 * tri[i3], b = 3 * tri[i3 + 1], c = 3 * tri[i3 + 2];
+            final double az = pos[a + kz] - okz, bz = pos[b + kz] - okz, cz = pos[c + kz] - okz;
+            final double ax = pos[a + kx] - okx - sx * az, ay = pos[a + ky] - oky - sy * az;
+            final double bx = pos[b + kx] - okx - sx * bz, by = pos[b + ky] - oky - sy * bz;
+            final double cx = pos[c + kx] - okx - sx * cz, cy = pos[c + ky] - oky - sy * cz;
+            final double u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
+            if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) continue;
+            final double det = u + v + w;
+            if (det == 0) continue;
+            final double t = (u * (sz * az) + v * (sz * bz) + w * (sz * cz)) / det;
+            if (!(t > tMin && t < ray.tMax)) continue;
+            if (hit == null) return true;
             double inv = 1 / det;
             hit.t = t;
             hit.prim = i;
             hit.u = v * inv;
             hit.v = w * inv;
+            ray.tMax = t;
+            any = true;
         }
-        return true;
-    }
-
-    /**
-     * Per-direction constants of the watertight test: kz is the dominant axis; kx, ky are swapped
-     * when the ray runs along -kz so that the winding (and with it the sign of the edge
-     * functions) is preserved.
-     */
-    private static void prepareShear(Ray ray, TraceContext ctx) {
-        double dx = ray.dx, dy = ray.dy, dz = ray.dz;
-        double ax = Math.abs(dx), ay = Math.abs(dy), az = Math.abs(dz);
-        int kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
-        int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
-        double dkz = kz == 0 ? dx : kz == 1 ? dy : dz;
-        if (dkz < 0) { int s = kx; kx = ky; ky = s; }
-        double dkx = kx == 0 ? dx : kx == 1 ? dy : dz;
-        double dky = ky == 0 ? dx : ky == 1 ? dy : dz;
-        ctx.shearKx = kx; ctx.shearKy = ky; ctx.shearKz = kz;
-        ctx.shearSx = dkx / dkz;
-        ctx.shearSy = dky / dkz;
-        ctx.shearSz = 1 / dkz;
-        ctx.shearDx = dx; ctx.shearDy = dy; ctx.shearDz = dz;
+        return any;
     }
 }

@@ -147,7 +147,7 @@ class SubdivisionSurfaceTest {
             // The hit's triangle corners: its normal must be the blend of their limit normals.
             Vec3 expected = Vec3.ZERO;
             double[] w = {1 - h.u - h.v, h.u, h.v};
-            int[] corners = cornersOf(smooth, h.prim);
+            int[] corners = cornersOf(smooth, r, h);
             for (int k = 0; k < 3; k++) expected = expected.plus(new Vec3(ln[3 * corners[k]], ln[3 * corners[k] + 1], ln[3 * corners[k] + 2]).times(w[k]));
             assertVec(expected.normalized(), sd.ns, 1e-9);
 
@@ -159,10 +159,23 @@ class SubdivisionSurfaceTest {
         assertTrue(maxDiff > 1e-3, "smooth normals differ from the facets");
     }
 
-    /** Position indices of triangle t of the surface: its triangles built again the same (deterministic) way. */
-    private static int[] cornersOf(SubdivisionSurface s, int t) {
+    /**
+     * Refined-vertex indices of the corners of the triangle hit: the surface's triangles built
+     * again the same way (the frozen mesh has its own order), the one whose point at the hit's
+     * barycentrics is the hit point.
+     */
+    private static int[] cornersOf(SubdivisionSurface s, Ray r, Hit h) {
         TriangleMesh m = new TriangleMesh(SubdivisionSurface.triangles(s.refined(), true));
-        return new int[] {m.triangleVertex(t, 0), m.triangleVertex(t, 1), m.triangleVertex(t, 2)};
+        double[] p = m.data().positions();
+        Vec3 target = new Vec3(r.pointX(h.t), r.pointY(h.t), r.pointZ(h.t));
+        double w0 = 1 - h.u - h.v;
+        for (int t = 0; t < m.triangleCount(); t++) {
+            int a = 3 * m.triangleVertex(t, 0), b = 3 * m.triangleVertex(t, 1), c = 3 * m.triangleVertex(t, 2);
+            Vec3 q = new Vec3(w0 * p[a] + h.u * p[b] + h.v * p[c], w0 * p[a + 1] + h.u * p[b + 1] + h.v * p[c + 1],
+                    w0 * p[a + 2] + h.u * p[b + 2] + h.v * p[c + 2]);
+            if (q.minus(target).length() < 1e-9) return new int[] {a / 3, b / 3, c / 3};
+        }
+        throw new AssertionError("no triangle of the surface holds the hit point " + target);
     }
 
     @Test

@@ -444,4 +444,51 @@ class TriangleMeshTest {
         TriangleMesh m = frozen(obj(QUAD));
         assertThrows(IllegalStateException.class, () -> m.smooth(true));
     }
+
+    /** The three corner positions of triangle t, as written in the mesh's current order. */
+    private static String corners(TriangleMesh m, int t) {
+        double[] p = m.data().positions();
+        StringBuilder sb = new StringBuilder();
+        for (int c = 0; c < 3; c++) {
+            int v = 3 * m.triangleVertex(t, c);
+            sb.append(p[v]).append(' ').append(p[v + 1]).append(' ').append(p[v + 2]).append(';');
+        }
+        return sb.toString();
+    }
+
+    @Test
+    void bvhLeafOrderKeepsEveryTriangleAndEveryHit() {
+        MeshData d = TestMeshes.icosphere(3, 1);
+        TriangleMesh reordered = new TriangleMesh(d), plain = new TriangleMesh(d);
+        reordered.freeze(Transform.IDENTITY, Material.DEFAULT, 0, lt.spindulys.accel.AcceleratorKind.BVH);
+        plain.freeze(Transform.IDENTITY, Material.DEFAULT, 0, lt.spindulys.accel.AcceleratorKind.BRUTE_FORCE);
+        java.util.List<String> a = new java.util.ArrayList<>(), b = new java.util.ArrayList<>();
+        for (int t = 0; t < plain.triangleCount(); t++) {
+            a.add(corners(reordered, t));
+            b.add(corners(plain, t));
+        }
+        assertFalse(a.equals(b), "the BVH put the triangles in its leaf order");
+        java.util.Collections.sort(a);
+        java.util.Collections.sort(b);
+        assertEquals(b, a, "same triangles, same winding");
+        assertEquals(d.positions().length, reordered.data().positions().length);
+        // The source positions are shared with `plain`: reordering must not have touched them.
+        assertEquals(corners(plain, 0), corners(new TriangleMesh(d), 0));
+
+        Random rnd = new Random(5);
+        TraceContext ctx = new TraceContext();
+        Hit hr = new Hit(), hp = new Hit();
+        for (int i = 0; i < 2_000; i++) {
+            Ray r = new Ray().set(rnd.nextGaussian() * 2, rnd.nextGaussian() * 2, rnd.nextGaussian() * 2,
+                    rnd.nextGaussian(), rnd.nextGaussian(), rnd.nextGaussian(), 0, Double.POSITIVE_INFINITY);
+            boolean x = reordered.intersect(r, hr.reset(r.tMax), ctx), y = plain.intersect(r, hp.reset(r.tMax), ctx);
+            assertEquals(y, x);
+            if (x) {
+                assertEquals(hp.t, hr.t);
+                assertEquals(corners(plain, hp.prim), corners(reordered, hr.prim));
+                assertEquals(hp.u, hr.u);
+                assertEquals(hp.v, hr.v);
+            }
+        }
+    }
 }
