@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Locale;
 
 import lt.spindulys.io.ObjReader;
+import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.io.SceneParser;
 import lt.spindulys.render.ProgressListener;
 import lt.spindulys.render.RenderStats;
@@ -30,10 +31,12 @@ import lt.spindulys.subdiv.RefinedMesh;
  */
 final class BenchCommand {
     static final String USAGE = """
-            usage: render bench [--only NAME] [--runs N] [--list]
+            usage: render bench [--only NAME] [--runs N] [--accel A] [--list]
 
               --only NAME   run only the row NAME (see --list)
               --runs N      timed runs per row after the warm-up (default 5); the median is reported
+              --accel A     acceleration structure of the peer-scene rows: bvh (the scenes' default),
+                            octree or bruteforce; to compare structures on the same scene
               --list        list the rows and exit
             Run from the repository root: inputs are read from scenes/bench/; the torus-* rows first write
             their meshes into scenes/bench/meshes/ when missing. See docs/performance.md.""";
@@ -65,6 +68,8 @@ final class BenchCommand {
 
     private String only;
     private int runs = 5;
+    /** Structure the peer-scene rows use instead of their scenes' own; null keeps the scenes'. */
+    private AcceleratorKind accel;
     private boolean list;
     private final Path benchDir = Path.of("scenes", "bench");
 
@@ -86,6 +91,14 @@ final class BenchCommand {
                         throw new UsageException("--runs expects a whole number, found '" + args[i] + "'");
                     }
                     if (runs < 1 || runs > 100) throw new UsageException("--runs must be between 1 and 100, found " + runs);
+                }
+                case "--accel" -> {
+                    if (++i >= args.length) throw new UsageException("option --accel needs a value");
+                    try {
+                        accel = AcceleratorKind.fromKeyword(args[i]);
+                    } catch (IllegalArgumentException e) {
+                        throw new UsageException(e.getMessage());
+                    }
                 }
                 case "--list" -> list = true;
                 default -> throw new UsageException("unknown bench option '" + args[i] + "' (see render bench --help)");
@@ -140,40 +153,42 @@ final class BenchCommand {
         Path scene = benchDir.resolve("torus-" + size.name() + ".dat");
         if (!Files.isRegularFile(scene)) throw new IOException("bench scene not found: " + scene.toAbsolutePath());
 
-        for (int i = 0; i < WARMUPS; i++) renderOnce(scene);
+        for (int i = 0; i < WARMUPS; i++) renderOnce(scene, accel);
         double[] load = new double[runs], build = new double[runs], render = new double[runs], mrays = new double[runs];
         double[] peak = new double[runs];
         Measured last = null;
         for (int i = 0; i < runs; i++) {
-            last = renderOnce(scene);
+            last = renderOnce(scene, accel);
             load[i] = last.load;
             build[i] = last.build;
             render[i] = last.stats.seconds();
             mrays[i] = last.stats.mraysPerSecond();
             peak[i] = last.peakHeap;
         }
-        double cold = coldSeconds(scene, runs);
+        double cold = coldSeconds(scene, runs, accel);
         if (peerTable == null) {
             peerTable = new BenchTable("row", "triangles", "load s", "build s", "render s", "camera rays", "shadow rays",
                     "Mrays/s", "peak heap MiB", "bytes/tri", "cold s");
         }
-        peerTable.add("torus-" + size.name(), String.format(Locale.ROOT, "%,d", last.triangles), fmt(median(load), 3),
+        String label = "torus-" + size.name() + (accel != null ? " " + accel.keyword() : "");
+        peerTable.add(label, String.format(Locale.ROOT, "%,d", last.triangles), fmt(median(load), 3),
                 fmt(median(build), 3), fmt(median(render), 3), String.format(Locale.ROOT, "%,d", last.stats.cameraRays()),
                 String.format(Locale.ROOT, "%,d", last.stats.shadowRays()), fmt(median(mrays), 2),
                 fmt(median(peak) / 1048576.0, 0), fmt(last.meshBytes / (double) last.triangles, 1),
                 Double.isNaN(cold) ? "failed" : fmt(cold, 3));
-        out.printf(Locale.ROOT, "  torus-%s: load %.3f s, build %.3f s, render %.3f s (%.2f Mrays/s), cold %.3f s%n", size.name(),
+        out.printf(Locale.ROOT, "  %s: load %.3f s, build %.3f s, render %.3f s (%.2f Mrays/s), cold %.3f s%n", label,
                 median(load), median(build), median(render), median(mrays), cold);
     }
 
     /** One timed load, build and render of a scene file, and what it used. */
     private record Measured(double load, double build, RenderStats stats, long peakHeap, long triangles, long meshBytes) {}
 
-    private static Measured renderOnce(Path file) throws IOException {
+    private static Measured renderOnce(Path file, AcceleratorKind accel) throws IOException {
         System.gc();
         RenderCommand.resetPeakHeap();
         long t0 = System.nanoTime();
         SceneBuilder builder = SceneParser.parse(file);
+        if (accel != null) builder.settings(builder.settings().withAccelerator(accel));
         long t1 = System.nanoTime();
         Scene scene = builder.build();
         long t2 = System.nanoTime();
@@ -199,7 +214,7 @@ final class BenchCommand {
      * Median wall time of {@code runs} whole new processes rendering {@code scene} with this
      * program's own classes, after one untimed run; NaN if a run fails.
      */
-    private static double coldSeconds(Path scene, int runs) throws IOException {
+    private static double coldSeconds(Path scene, int runs, AcceleratorKind accel) throws IOException {
         String javaExe = Path.of(System.getProperty("java.home"), "bin", "java").toString();
         String cp;
         try {
@@ -209,8 +224,9 @@ final class BenchCommand {
         }
         Path image = Files.createTempFile("spindulys-bench", ".tga");
         try {
-            List<String> cmd = List.of(javaExe, "-cp", cp, Main.class.getName(), scene.toString(), "-o", image.toString(),
-                    "--quiet", "--threads", Integer.toString(THREADS));
+            List<String> cmd = new java.util.ArrayList<>(List.of(javaExe, "-cp", cp, Main.class.getName(), scene.toString(), "-o", image.toString(),
+                    "--quiet", "--threads", Integer.toString(THREADS)));
+            if (accel != null) cmd.addAll(List.of("--accel", accel.keyword()));
             double[] t = new double[runs];
             for (int i = -1; i < runs; i++) {
                 long t0 = System.nanoTime();

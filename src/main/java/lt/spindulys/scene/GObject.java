@@ -90,11 +90,16 @@ public abstract class GObject {
         return ids + 1;
     }
 
-    /** World bounds; the default transforms the object-space bounds' corners. */
+    /**
+     * World bounds; the default transforms the object-space bounds' corners. The contract for
+     * structures over objects: these bounds must enclose the object at every time of the shutter
+     * interval a ray may carry, so an object that moves must return the union over its motion.
+     */
     protected Bounds computeWorldBounds() {
         return localBounds().transformed(objectToWorld);
     }
 
+    /** World bounds over the whole shutter interval (see {@link #computeWorldBounds()}); set at freeze. */
     public final Bounds bounds() { return worldBounds; }
 
     public final int id() { return id; }

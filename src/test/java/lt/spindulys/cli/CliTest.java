@@ -151,6 +151,9 @@ class CliTest {
         assertEquals("render: unknown bench row 'nope' (rows: refine-bishop, torus-1k, torus-16k, torus-250k, torus-1m)" + System.lineSeparator(), unknown.err());
         Run badRuns = run("bench", "--runs", "0");
         assertEquals(2, badRuns.status());
+        Run badAccel = run("bench", "--accel", "kdtree");
+        assertEquals(2, badAccel.status());
+        assertEquals("render: unknown accelerator 'kdtree' (expected one of bvh, octree, bruteforce)" + System.lineSeparator(), badAccel.err());
         assertEquals(0, run("bench", "--help").status());
     }
 }
