@@ -51,7 +51,11 @@ final class BenchCommand {
             new Row("refine-bishop", "Subdivision",
                     "catmark_bishop (968 quads, 224 creases) refined uniformly to level 6 (~4M quads) on one thread; beside far_perf -u",
                     (b, out) -> b.refinement(out, "catmark_bishop.obj", 6)),
-            torusRow("1k"), torusRow("16k"), torusRow("250k"), torusRow("1m"));
+            torusRow("1k"), torusRow("16k"), torusRow("250k"), torusRow("1m"),
+            new Row("csg-subdiv", "CSG",
+                    "scenes/bench/csg-subdiv.dat: difference of two level-4 subdivision surfaces, 1280x720, 1 spp, 2 threads; "
+                            + "beside csg-subdiv-plain.dat, the same two surfaces without CSG (target: at least half its speed)",
+                    (b, out) -> b.csgScene(out)));
 
     private static Row torusRow(String size) {
         BenchMeshes.Size s = BenchMeshes.size(size);
@@ -180,6 +184,41 @@ final class BenchCommand {
                 median(load), median(build), median(render), median(mrays), cold);
     }
 
+    // ---- CSG ----
+
+    /**
+     * The CSG scene and its plain twin, timed alternately (so drift on a shared machine hits both
+     * alike), with the throughput ratio the issue sets a floor for.
+     */
+    private void csgScene(PrintStream out) throws IOException {
+        Path csg = benchDir.resolve("csg-subdiv.dat"), plain = benchDir.resolve("csg-subdiv-plain.dat");
+        for (Path p : List.of(csg, plain)) {
+            if (!Files.isRegularFile(p)) throw new IOException("bench scene not found: " + p.toAbsolutePath());
+        }
+        for (int i = 0; i < WARMUPS; i++) {
+            renderOnce(csg, accel);
+            renderOnce(plain, accel);
+        }
+        double[] rc = new double[runs], rp = new double[runs], mc = new double[runs], mp = new double[runs];
+        Measured c = null, q = null;
+        for (int i = 0; i < runs; i++) {
+            c = renderOnce(csg, accel);
+            q = renderOnce(plain, accel);
+            rc[i] = c.stats.seconds();
+            mc[i] = c.stats.mraysPerSecond();
+            rp[i] = q.stats.seconds();
+            mp[i] = q.stats.mraysPerSecond();
+        }
+        BenchTable t = new BenchTable("scene", "render s", "camera rays", "shadow rays", "Mrays/s");
+        t.add("csg-subdiv", fmt(median(rc), 3), String.format(Locale.ROOT, "%,d", c.stats.cameraRays()),
+                String.format(Locale.ROOT, "%,d", c.stats.shadowRays()), fmt(median(mc), 2));
+        t.add("csg-subdiv-plain", fmt(median(rp), 3), String.format(Locale.ROOT, "%,d", q.stats.cameraRays()),
+                String.format(Locale.ROOT, "%,d", q.stats.shadowRays()), fmt(median(mp), 2));
+        t.print(out);
+        double ratio = median(mc) / median(mp);
+        out.printf(Locale.ROOT, "  csg-subdiv: %.2fx the throughput of the same surfaces without CSG (target: at least 0.5x)%n", ratio);
+    }
+
     /** One timed load, build and render of a scene file, and what it used. */
     private record Measured(double load, double build, RenderStats stats, long peakHeap, long triangles, long meshBytes) {}
 
@@ -202,7 +241,7 @@ final class BenchCommand {
         long peak = RenderCommand.peakHeapBytes();
         long triangles = 0, bytes = 0;
         for (GObject o : scene.objects()) {
-            if (o instanceof TriangleMesh m) {
+            if (o instanceof TriangleMesh m && !m.isInstance()) { // an instance shares its original's arrays
                 triangles += m.triangleCount();
                 bytes += m.memoryBytes();
             }

@@ -61,6 +61,8 @@ public final class SceneParser {
     private Token settingsAt, cameraAt;
     /** Where each named material was defined, for "already defined at" and suggestions. */
     private final Map<String, Token> materialsAt = new LinkedHashMap<>();
+    /** The first mesh read from each file; later statements naming the file get instances of it. */
+    private final Map<Path, TriangleMesh> meshes = new HashMap<>();
 
     private SceneParser(String text, String file, Path baseDir) {
         this.lex = new SceneLexer(text, file);
@@ -281,6 +283,14 @@ public final class SceneParser {
         }
         // Checked here rather than left to the reader so the message points into the scene file.
         if (!Files.isRegularFile(path)) throw error(f.valueAt, "mesh file '" + rel + "' not found (looked in " + path + ")");
+        TriangleMesh first = meshes.get(path);
+        if (first != null) {
+            // The same file again: another placement of the same geometry, read and indexed once.
+            TriangleMesh m = first.instance();
+            Object shading = p.get("shading");
+            m.smooth(shading != null ? "smooth".equals(shading) : first.hasNormals());
+            return m;
+        }
         MeshData data;
         try {
             data = ObjReader.read(path);
@@ -295,6 +305,7 @@ public final class SceneParser {
         }
         Object shading = p.get("shading");
         m.smooth(shading != null ? "smooth".equals(shading) : data.normals() != null);
+        meshes.put(path, m);
         return m;
     }
 

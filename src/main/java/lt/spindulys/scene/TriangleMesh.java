@@ -47,8 +47,18 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     private final boolean needsVertexNormals;
     private final boolean closed;
     private final Bounds bounds;
-    /** Built by {@link #freeze}; written once before the scene is shared. */
+    /** Set by {@link #freeze}, before the scene is shared: the structure of {@link #root()} for the scene's kind. */
     private Accelerator accel;
+    /**
+     * The mesh this one is an {@link #instance()} of, or null: instances share its arrays and its
+     * structures, so another placement of the same geometry costs no copy.
+     */
+    private final TriangleMesh prototype;
+    /**
+     * Structures over this mesh's triangles, one per kind asked for, shared by its instances;
+     * only a prototype keeps them. The first one built may renumber the triangles ({@link #reorder}).
+     */
+    private final java.util.EnumMap<AcceleratorKind, Accelerator> structures;
     /** Made once so that collecting crossings allocates nothing per ray. */
     private final Bvh.Visitor crossingCollector = this::collectCrossing;
 
@@ -63,6 +73,8 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
      * @throws IllegalArgumentException if the arrays are inconsistent, an index is out of range or a position is not finite
      */
     public TriangleMesh(MeshData data) {
+        this.prototype = null;
+        this.structures = new java.util.EnumMap<>(AcceleratorKind.class);
         this.source = data.source();
         validate(data);
         pos = data.positions();
@@ -121,6 +133,57 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         smooth(data.normalIndex() != null);
     }
 
+    /** An instance of {@code p}: the same arrays (no copy), its own transform, material and shading. */
+    private TriangleMesh(TriangleMesh p) {
+        prototype = p;
+        structures = null;
+        source = p.source;
+        pos = p.pos;
+        normals = p.normals;
+        uvs = p.uvs;
+        tri = p.tri;
+        triNormal = p.triNormal;
+        triUv = p.triUv;
+        triangleCount = p.triangleCount;
+        degenerateCount = p.degenerateCount;
+        needsVertexNormals = p.needsVertexNormals;
+        closed = p.closed;
+        bounds = p.bounds;
+        smooth = p.smooth;
+    }
+
+    /**
+     * Another placement of this mesh's geometry: a new object with its own transform, material,
+     * name and shading that shares this mesh's triangles, vertex data and acceleration structure
+     * (built once, in object space, by whichever of them is frozen first). Instances of an
+     * instance share the same original.
+     */
+    public TriangleMesh instance() {
+        return new TriangleMesh(root());
+    }
+
+    /** The mesh that owns the shared arrays and structures: the prototype, or this one. */
+    private TriangleMesh root() { return prototype != null ? prototype : this; }
+
+    /** True if this mesh shares another mesh's geometry ({@link #instance()}). */
+    public boolean isInstance() { return prototype != null; }
+
+    /** The structure over the triangles for {@code kind}, built on first request. */
+    private Accelerator structure(AcceleratorKind kind) {
+        Accelerator a = structures.get(kind);
+        if (a == null) {
+            a = kind.build(this);
+            structures.put(kind, a);
+        }
+        return a;
+    }
+
+    /** Area-weighted vertex normals of the (possibly renumbered) positions, computed once per geometry. */
+    private double[] sharedVertexNormals() {
+        if (vertexNormals == null) vertexNormals = computeVertexNormals();
+        return vertexNormals;
+    }
+
     private String where() {
         return source == null ? "" : source + ": ";
     }
@@ -175,11 +238,14 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     public TriangleMesh smooth(boolean on) {
         checkMutable();
         smooth = on;
-        if (on && needsVertexNormals && vertexNormals == null) vertexNormals = computeVertexNormals();
         return this;
     }
 
     public boolean isSmooth() { return smooth; }
+    /** True if the source gave normals (some triangles may still lack them). */
+    public boolean hasNormals() { return normals != null; }
+    /** The structure rays are traced through, once frozen (shared with instances); null before. */
+    Accelerator accelerator() { return accel; }
     /**
      * The mesh as triangles (degenerate ones dropped), sharing this mesh's arrays: positions,
      * normals and texture coordinates as given, one face of three corners per triangle.
@@ -196,9 +262,10 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     /**
      * Bytes held by the mesh's arrays (positions, normals, texture coordinates, triangle and
      * per-corner indices, vertex normals) and its acceleration structure; array headers
-     * and the few fixed fields are left out.
+     * and the few fixed fields are left out. An instance holds none of its own: 0.
      */
     public long memoryBytes() {
+        if (prototype != null) return 0;
         long b = bytes(pos) + bytes(normals) + bytes(uvs) + bytes(tri) + bytes(triNormal) + bytes(triUv) + bytes(vertexNormals);
         return b + (accel != null ? accel.memoryBytes() : 0);
     }
@@ -290,7 +357,11 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     @Override
     public int freeze(Transform parentToWorld, Material inherited, int ids, AcceleratorKind kind) {
         int next = super.freeze(parentToWorld, inherited, ids, kind);
-        accel = kind.build(this);
+        TriangleMesh r = root();
+        accel = r.structure(kind);
+        // The first structure may have renumbered the vertices into a new array: read it after.
+        pos = r.pos;
+        vertexNormals = smooth && needsVertexNormals ? r.sharedVertexNormals() : null;
         return next;
     }
 
@@ -528,7 +599,8 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     @Override
     public boolean reorder(int[] order) {
         int n = triangleCount;
-        if (order.length != n) return false;
+        // Only the geometry's owner, and only before any structure (which would index the old order) exists.
+        if (order.length != n || prototype != null || !structures.isEmpty()) return false;
         permuteTriangles(tri, order);
         if (triNormal != null) permuteTriangles(triNormal, order);
         if (triUv != null) permuteTriangles(triUv, order);
