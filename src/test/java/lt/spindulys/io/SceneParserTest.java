@@ -283,7 +283,7 @@ class SceneParserTest {
             assertEquals(blk.keys().size(), blk.keyNames().stream().distinct().count(), blk.keyword() + " has a key twice");
             for (SceneGrammar.Key k : blk.keys()) {
                 assertFalse(k.required() && k.defaultValue() != null, k.name() + " is required yet has a default");
-                assertEquals(k.kind() == SceneGrammar.Kind.CHOICE, !k.choices().isEmpty(), k.name());
+                assertEquals(k.kind() == SceneGrammar.Kind.CHOICE || k.kind() == SceneGrammar.Kind.CHOICES, !k.choices().isEmpty(), k.name());
             }
         }
     }
