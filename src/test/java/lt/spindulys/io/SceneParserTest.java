@@ -13,12 +13,15 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.EnumSet;
 import java.util.List;
+import java.util.Set;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 import lt.spindulys.camera.PinholeCamera;
+import lt.spindulys.image.Aov;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Transform;
 import lt.spindulys.math.Vec3;
@@ -183,6 +186,16 @@ class SceneParserTest {
         for (var kind : lt.spindulys.accel.AcceleratorKind.values()) {
             assertEquals(kind, parse("settings { accelerator " + kind.keyword() + " }").settings().accelerator());
         }
+    }
+
+    @Test
+    void aovListEndsAtTheNextKeyOrTheBrace() {
+        assertEquals(Set.of(), parse("settings { width 10 }").settings().aovs());
+        RenderSettings s = parse("settings { aov object depth  width 10 }").settings();
+        assertEquals(EnumSet.of(Aov.DEPTH, Aov.OBJECT), s.aovs());
+        assertEquals(10, s.width());
+        assertEquals(EnumSet.allOf(Aov.class), parse("settings { width 10 aov normal depth object}").settings().aovs());
+        assertEquals(RenderSettings.DEFAULT.withAovs(EnumSet.of(Aov.NORMAL)), parse("settings { aov normal }").settings());
     }
 
     @Test
