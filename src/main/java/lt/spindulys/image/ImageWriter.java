@@ -37,7 +37,9 @@ import lt.spindulys.io.AtomicFile;
  * ({@link FrameBuffer#toRgb8}).
  *
  * <p>All writes are atomic ({@link #writeAtomically}, through {@link AtomicFile}): readers of the target see either the old
- * file or the complete new one, never a partial image, and a failed write leaves the old file.
+ * file or the complete new one, never a partial image, and a failed write leaves the old file. An
+ * image and its render passes ({@link #write(FrameBuffer, Path, ImageOptions, AovFrame)}) are
+ * written as one group: all of them or none.
  */
 public final class ImageWriter {
     private ImageWriter() {}
