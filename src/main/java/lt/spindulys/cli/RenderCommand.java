@@ -8,8 +8,10 @@ import java.lang.management.MemoryType;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
+import java.util.Set;
 
 import lt.spindulys.accel.AcceleratorKind;
+import lt.spindulys.image.Aov;
 import lt.spindulys.image.ImageOptions;
 import lt.spindulys.image.ImageWriter;
 import lt.spindulys.io.SceneParser;
@@ -25,7 +27,7 @@ import lt.spindulys.scene.SceneBuilder;
 final class RenderCommand {
     static final String USAGE = """
             usage: render SCENE.dat [-o OUT] [--width W] [--height H] [--spp N] [--threads N]
-                                    [--seed S] [--accel A] [--quality Q] [--stats] [--quiet] [--debug]
+                                    [--seed S] [--accel A] [--aov LIST] [--quality Q] [--stats] [--quiet] [--debug]
                    render subdivide MESH.obj|MESH.dat --level N -o OUT.obj [...]   (see render subdivide --help)
                    render bench [--only NAME] [--runs N] [--list]                 (see render bench --help)
                    render --help | --version
@@ -37,6 +39,8 @@ final class RenderCommand {
               --threads N        render threads (default: all cores)
               --seed S           global random seed (overrides the scene)
               --accel A          acceleration structure: bvh, octree or bruteforce (overrides the scene)
+              --aov LIST         render passes beside the image, comma-separated: depth, normal, object
+                                 (OUT.depth.pfm, OUT.normal.pfm, OUT.object.png; overrides the scene)
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
               --stats            print load, build and render times, rays by kind, Mrays/s, peak heap
               --quiet            no progress bar
@@ -47,6 +51,7 @@ final class RenderCommand {
     private Integer width, height, spp, threads;
     private Long seed;
     private AcceleratorKind accel;
+    private Set<Aov> aovs;
     private double quality = ImageOptions.DEFAULT.jpegQuality();
     private boolean stats, quiet;
 
@@ -67,6 +72,14 @@ final class RenderCommand {
                         throw new UsageException(a + " expects one of " + String.join(", ", AcceleratorKind.keywords()) + ", found '" + v + "'");
                     }
                     accel = AcceleratorKind.fromKeyword(v);
+                }
+                case "--aov" -> {
+                    String v = value(args, ++i, a);
+                    try {
+                        aovs = Aov.parseList(v);
+                    } catch (IllegalArgumentException e) {
+                        throw new UsageException(a + ": " + e.getMessage());
+                    }
                 }
                 case "--quality" -> quality = doubleValue(args, ++i, a, 0, 1);
                 case "--stats" -> stats = true;
@@ -99,6 +112,7 @@ final class RenderCommand {
         } catch (IOException e) {
             throw new UsageException(e.getMessage());
         }
+        if (aovs != null) checkAovOutputs(aovs);
         long t0 = System.nanoTime();
         SceneBuilder builder = SceneParser.parse(scene);
         RenderSettings s = builder.settings();
@@ -106,6 +120,8 @@ final class RenderCommand {
         if (spp != null) s = s.withSamplesPerPixel(spp);
         if (seed != null) s = s.withSeed(seed);
         if (accel != null) s = s.withAccelerator(accel);
+        if (aovs != null) s = s.withAovs(aovs);
+        else if (!s.aovs().isEmpty()) checkAovOutputs(s.aovs()); // asked for by the scene: known only now
         builder.settings(s);
         long t1 = System.nanoTime();
         Scene built = builder.build();
@@ -119,9 +135,17 @@ final class RenderCommand {
         } finally {
             if (bar != null) bar.finish();
         }
-        ImageWriter.write(result.image(), output, new ImageOptions(s.srgb(), quality));
+        ImageWriter.write(result.image(), output, new ImageOptions(s.srgb(), quality), result.aovs());
         if (stats) printStats(out, (t1 - t0) / 1e9, (t2 - t1) / 1e9, result.stats(), n);
         return 0;
+    }
+
+    private void checkAovOutputs(Set<Aov> passes) throws UsageException {
+        try {
+            ImageWriter.checkOutputs(output, passes);
+        } catch (IOException e) {
+            throw new UsageException(e.getMessage());
+        }
     }
 
     private static void printStats(PrintStream out, double load, double build, RenderStats r, int threads) {

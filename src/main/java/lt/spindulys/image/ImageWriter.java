@@ -8,8 +8,11 @@ import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.Iterator;
+import java.util.List;
 import java.util.Objects;
+import java.util.Set;
 import javax.imageio.IIOImage;
 import javax.imageio.ImageIO;
 import javax.imageio.ImageWriteParam;
@@ -34,7 +37,9 @@ import lt.spindulys.io.AtomicFile;
  * ({@link FrameBuffer#toRgb8}).
  *
  * <p>All writes are atomic ({@link #writeAtomically}, through {@link AtomicFile}): readers of the target see either the old
- * file or the complete new one, never a partial image, and a failed write leaves the old file.
+ * file or the complete new one, never a partial image, and a failed write leaves the old file. An
+ * image and its render passes ({@link #write(FrameBuffer, Path, ImageOptions, AovFrame)}) are
+ * written as one group: all of them or none.
  */
 public final class ImageWriter {
     private ImageWriter() {}
@@ -68,6 +73,27 @@ public final class ImageWriter {
 
     /** Encodes {@code fb} in the format named by the extension of {@code out} and writes it atomically. */
     public static void write(FrameBuffer fb, Path out, ImageOptions opts) throws IOException {
+        write(fb, out, opts, null);
+    }
+
+    /**
+     * Writes the image as {@link #write(FrameBuffer, Path, ImageOptions)} and, if {@code aovs} is
+     * not null, each of its passes beside it ({@link Aov#fileBeside}), all as one atomic group
+     * ({@link AtomicFile#writeAll}): every file is encoded to a temporary file first and only then
+     * are they renamed into place, so a failure in any of them leaves none of the new files and
+     * every old one.
+     *
+     * <ul>
+     *   <li>depth: one-channel PFM ("Pf"), little-endian, bottom row first, 32-bit float
+     *       distances, +Infinity where no object was hit;</li>
+     *   <li>normal: three-channel PFM ("PF"), the x, y, z of the unit normal, 0 0 0 for the background;</li>
+     *   <li>object: 8-bit RGB PNG of id + 1 as a 24-bit integer, R the high byte, 0 0 0 for the
+     *       background; never sRGB-encoded, whatever {@code opts} says.</li>
+     * </ul>
+     *
+     * @throws IllegalStateException if an object id does not fit 24 bits (nothing is written)
+     */
+    public static void write(FrameBuffer fb, Path out, ImageOptions opts, AovFrame aovs) throws IOException {
         Objects.requireNonNull(fb, "fb");
         Objects.requireNonNull(opts, "opts");
         ImageFormat format = checkFormat(out);
@@ -75,13 +101,41 @@ public final class ImageWriter {
             throw new IllegalArgumentException("TGA images are at most 65535x65535 pixels, got "
                     + fb.width() + "x" + fb.height());
         }
+        List<Path> files = new ArrayList<>();
+        List<AtomicFile.Body> bodies = new ArrayList<>();
+        files.add(out);
         switch (format) {
-            case TGA: writeAtomically(out, os -> writeTga(fb, opts.srgb(), os)); break;
-            case PNG: writeAtomically(out, os -> writeImageIo(fb, opts, "png", os)); break;
-            case JPEG: writeAtomically(out, os -> writeImageIo(fb, opts, "jpeg", os)); break;
-            case PFM: writeAtomically(out, os -> writePfm(fb, os)); break;
+            case TGA: bodies.add(os -> writeTga(fb, opts.srgb(), os)); break;
+            case PNG: bodies.add(os -> writeImageIo(fb.width(), fb.height(), fb.toRgb8(opts.srgb()), opts, "png", os)); break;
+            case JPEG: bodies.add(os -> writeImageIo(fb.width(), fb.height(), fb.toRgb8(opts.srgb()), opts, "jpeg", os)); break;
+            case PFM: bodies.add(os -> writePfm(fb, os)); break;
             default: throw new AssertionError(format);
         }
+        if (aovs != null) {
+            for (Aov a : aovs.passes()) {
+                files.add(a.fileBeside(out));
+                switch (a) {
+                    case DEPTH: bodies.add(os -> writeGreyPfm(aovs.width(), aovs.height(), aovs.depthData(), os)); break;
+                    case NORMAL: bodies.add(os -> writePfm(aovs.normalImage(), os)); break;
+                    case OBJECT: {
+                        int[] codes = aovs.objectCodes(); // checked before anything is written
+                        bodies.add(os -> writeImageIo(aovs.width(), aovs.height(), codes, opts, "png", os));
+                        break;
+                    }
+                    default: throw new AssertionError(a);
+                }
+            }
+        }
+        AtomicFile.writeAll(files, bodies);
+    }
+
+    /**
+     * {@link #checkOutput} for {@code out} and for the file of each pass in {@code aovs} beside
+     * it. Writes nothing.
+     */
+    public static void checkOutputs(Path out, Set<Aov> aovs) throws IOException {
+        checkOutput(out);
+        for (Aov a : aovs) AtomicFile.checkTarget(a.fileBeside(out));
     }
 
     /**
@@ -128,12 +182,12 @@ public final class ImageWriter {
         out.write("TRUEVISION-XFILE.\0".getBytes(StandardCharsets.US_ASCII));
     }
 
-    private static void writeImageIo(FrameBuffer fb, ImageOptions opts, String formatName, OutputStream out)
+    /** Encodes packed 0xRRGGBB pixels (row-major, top row first) as they are. */
+    private static void writeImageIo(int w, int h, int[] rgb, ImageOptions opts, String formatName, OutputStream out)
             throws IOException {
-        int w = fb.width(), h = fb.height();
         BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
         int[] pixels = ((DataBufferInt) img.getRaster().getDataBuffer()).getData();
-        System.arraycopy(fb.toRgb8(opts.srgb()), 0, pixels, 0, pixels.length);
+        System.arraycopy(rgb, 0, pixels, 0, pixels.length);
 
         Iterator<javax.imageio.ImageWriter> writers = ImageIO.getImageWritersByFormatName(formatName);
         if (!writers.hasNext()) throw new IOException("this Java runtime has no " + formatName + " encoder");
@@ -161,6 +215,17 @@ public final class ImageWriter {
         for (int y = h - 1; y >= 0; y--) {   // PFM stores the bottom row first
             row.clear();
             for (int i = 3 * y * w, end = i + 3 * w; i < end; i++) row.putFloat((float) d[i]);
+            out.write(row.array());
+        }
+    }
+
+    /** One-channel PFM ("Pf") of {@code d} (w x h values, top row first), little-endian. */
+    private static void writeGreyPfm(int w, int h, double[] d, OutputStream out) throws IOException {
+        out.write(("Pf\n" + w + " " + h + "\n-1.0\n").getBytes(StandardCharsets.US_ASCII));
+        ByteBuffer row = ByteBuffer.allocate(4 * w).order(ByteOrder.LITTLE_ENDIAN);
+        for (int y = h - 1; y >= 0; y--) {   // PFM stores the bottom row first
+            row.clear();
+            for (int i = y * w, end = i + w; i < end; i++) row.putFloat((float) d[i]);
             out.write(row.array());
         }
     }

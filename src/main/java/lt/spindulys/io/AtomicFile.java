@@ -8,10 +8,12 @@ import java.nio.channels.Channels;
 import java.nio.channels.FileChannel;
 import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
+import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.ThreadLocalRandom;
 
@@ -43,16 +45,53 @@ public final class AtomicFile {
      *         is a directory, or writing or renaming fails
      */
     public static void write(Path out, Body body) throws IOException {
-        Objects.requireNonNull(body, "body");
-        Path dir = checkTarget(out);
-        Path target = out.toAbsolutePath();
-        String name = target.getFileName().toString();
+        writeAll(List.of(out), List.of(body));
+    }
 
+    /**
+     * Writes several files as one: every body first writes its own temporary file as in
+     * {@link #write}; only when all of them are complete are they renamed into place. If a body or
+     * a rename fails, the temporary files are deleted and the targets already replaced get their
+     * old content back (or are removed if they did not exist), so the failed call leaves none of
+     * the new files and every old one. Each single file still changes atomically for readers. (A
+     * process killed between two renames can leave some files new and some old, with hidden
+     * {@code .bak} copies of the old ones; that cannot be avoided without a transactional file system.)
+     *
+     * @param outs   distinct target files
+     * @param bodies what to write into each, in the same order
+     * @throws IOException as {@link #write}, for the first target that fails
+     */
+    public static void writeAll(List<Path> outs, List<Body> bodies) throws IOException {
+        if (outs.size() != bodies.size()) {
+            throw new IllegalArgumentException(outs.size() + " files but " + bodies.size() + " bodies");
+        }
+        int n = outs.size();
+        Path[] dirs = new Path[n], targets = new Path[n], tmps = new Path[n];
+        for (int i = 0; i < n; i++) {
+            Objects.requireNonNull(bodies.get(i), "body");
+            dirs[i] = checkTarget(outs.get(i));
+            targets[i] = outs.get(i).toAbsolutePath();
+            for (int j = 0; j < i; j++) {
+                if (targets[j].normalize().equals(targets[i].normalize())) throw new IllegalArgumentException("'" + outs.get(i) + "' is named twice");
+            }
+        }
+        try {
+            for (int i = 0; i < n; i++) tmps[i] = writeTemporary(outs.get(i), dirs[i], targets[i], bodies.get(i));
+            commit(targets, tmps);
+        } catch (Throwable t) {
+            for (Path tmp : tmps) deleteQuietly(tmp, t);
+            throw t;
+        }
+        for (int i = 0; i < n; i++) if (i == 0 || !dirs[i].equals(dirs[i - 1])) syncDirectory(dirs[i]);
+    }
+
+    /** Writes {@code body} into a new temporary file beside {@code target}, on disk and closed; deletes it on failure. */
+    private static Path writeTemporary(Path out, Path dir, Path target, Body body) throws IOException {
+        String name = target.getFileName().toString();
         Path tmp = null;
         FileChannel channel = null;
         for (int attempt = 0; channel == null; attempt++) {
-            Path candidate = dir.resolve("." + name + "." + Long.toHexString(ThreadLocalRandom.current().nextLong())
-                    + ".tmp");
+            Path candidate = hiddenSibling(dir, name, ".tmp");
             try {
                 // CREATE_NEW gives the usual default permissions (unlike createTempFile's 0600).
                 channel = FileChannel.open(candidate, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
@@ -64,7 +103,6 @@ public final class AtomicFile {
                         + "': " + e, e);
             }
         }
-
         try {
             try (FileChannel ch = channel) {
                 OutputStream buffered = new BufferedOutputStream(Channels.newOutputStream(ch), 1 << 16);
@@ -75,20 +113,86 @@ public final class AtomicFile {
                 ch.force(true);
             }
             keepPermissions(target, tmp);
-            try {
-                Files.move(tmp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING);
-            }
+            return tmp;
         } catch (Throwable t) {
-            try {
-                Files.deleteIfExists(tmp);
-            } catch (IOException e) {
-                t.addSuppressed(e);
-            }
+            deleteQuietly(tmp, t);
             throw t;
         }
-        syncDirectory(dir);
+    }
+
+    /**
+     * Renames every temporary file over its target. Before replacing a target that may need to be
+     * restored (every one but the last), its old content is kept under a hidden name, as a hard
+     * link where the file system has them (the target stays in place meanwhile), else as a copy.
+     */
+    private static void commit(Path[] targets, Path[] tmps) throws IOException {
+        int n = targets.length;
+        Path[] backups = new Path[n];
+        boolean[] moved = new boolean[n];
+        try {
+            for (int i = 0; i < n; i++) {
+                if (i < n - 1 && Files.isRegularFile(targets[i])) backups[i] = backup(targets[i]);
+                move(tmps[i], targets[i]);
+                moved[i] = true;
+            }
+        } catch (Throwable t) {
+            for (int i = n - 1; i >= 0; i--) {
+                if (!moved[i]) continue;
+                try {
+                    if (backups[i] != null) move(backups[i], targets[i]);
+                    else Files.deleteIfExists(targets[i]);
+                } catch (IOException | RuntimeException e) {
+                    t.addSuppressed(e);
+                }
+            }
+            for (Path b : backups) deleteQuietly(b, t);
+            throw t;
+        }
+        for (Path b : backups) {
+            try {
+                if (b != null) Files.deleteIfExists(b);
+            } catch (IOException e) {
+                // Every new file is in place; a leftover hidden copy of an old one is harmless.
+            }
+        }
+    }
+
+    private static Path backup(Path target) throws IOException {
+        String name = target.getFileName().toString();
+        for (int attempt = 0; ; attempt++) {
+            Path b = hiddenSibling(target.getParent(), name, ".bak");
+            try {
+                try {
+                    return Files.createLink(b, target);
+                } catch (UnsupportedOperationException | FileSystemException e) {
+                    if (e instanceof FileAlreadyExistsException) throw (FileAlreadyExistsException) e;
+                    return Files.copy(target, b, StandardCopyOption.COPY_ATTRIBUTES);
+                }
+            } catch (FileAlreadyExistsException e) {
+                if (attempt >= 20) throw e;
+            }
+        }
+    }
+
+    private static void move(Path from, Path to) throws IOException {
+        try {
+            Files.move(from, to, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+        } catch (AtomicMoveNotSupportedException e) {
+            Files.move(from, to, StandardCopyOption.REPLACE_EXISTING);
+        }
+    }
+
+    private static Path hiddenSibling(Path dir, String name, String ext) {
+        return dir.resolve("." + name + "." + Long.toHexString(ThreadLocalRandom.current().nextLong()) + ext);
+    }
+
+    private static void deleteQuietly(Path p, Throwable into) {
+        if (p == null) return;
+        try {
+            Files.deleteIfExists(p);
+        } catch (IOException e) {
+            into.addSuppressed(e);
+        }
     }
 
     /**

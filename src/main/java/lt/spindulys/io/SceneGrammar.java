@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
 
+import lt.spindulys.image.Aov;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
 
@@ -34,6 +35,8 @@ final class SceneGrammar {
         BOOLEAN,
         /** One of the key's choices, as a bare word. */
         CHOICE,
+        /** One or more of the key's choices, each at most once, as bare words up to the next key or '}'. */
+        CHOICES,
         /** A double-quoted string. */
         STRING,
         /** A material name defined earlier, or an inline { ... } material block. */
@@ -95,7 +98,8 @@ final class SceneGrammar {
             opt("ambient", Kind.COLOR),
             choice("encoding", null, "linear", "srgb"),
             opt("seed", Kind.LONG),
-            choice("accelerator", null, "bvh", "octree", "bruteforce")));
+            choice("accelerator", null, "bvh", "octree", "bruteforce"),
+            new Key("aov", Kind.CHOICES, false, false, null, Aov.keywords())));
 
     static final Block CAMERA = new Block("camera", Category.CAMERA, List.of(
             req("eye", Kind.VECTOR),

@@ -11,15 +11,18 @@ import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.EnumSet;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import java.util.Set;
 import java.util.regex.Pattern;
 
 import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.camera.PinholeCamera;
+import lt.spindulys.image.Aov;
 import lt.spindulys.io.SceneGrammar.Block;
 import lt.spindulys.io.SceneGrammar.Key;
 import lt.spindulys.io.SceneLexer.Kind;
@@ -155,6 +158,7 @@ public final class SceneParser {
                     case "encoding" -> s.withSrgb("srgb".equals(v));
                     case "seed" -> s.withSeed((Long) v);
                     case "accelerator" -> s.withAccelerator(AcceleratorKind.fromKeyword((String) v));
+                    case "aov" -> s.withAovs(aovs((List<?>) v));
                     default -> throw unhandled(pr);
                 };
             } catch (IllegalArgumentException e) {
@@ -162,6 +166,12 @@ public final class SceneParser {
             }
         }
         builder.settings(s);
+    }
+
+    private static Set<Aov> aovs(List<?> keywords) {
+        Set<Aov> out = EnumSet.noneOf(Aov.class);
+        for (Object k : keywords) out.add(Aov.fromKeyword((String) k));
+        return out;
     }
 
     private void camera(Token kw) {
@@ -481,7 +491,7 @@ public final class SceneParser {
                 throw error(t, "'" + k.name() + "' given twice in " + label + " (first at " + earlier.at.position() + ")");
             }
             Token valueAt = lex.peek();
-            Prop pr = new Prop(k, t, valueAt, value(k, t));
+            Prop pr = new Prop(k, t, valueAt, value(b, k, t));
             p.all.add(pr);
             p.first.putIfAbsent(k.name(), pr);
         }
@@ -499,7 +509,7 @@ public final class SceneParser {
         return error(t, "unknown property '" + t.text() + "' in " + label + hint);
     }
 
-    private Object value(Key k, Token keyToken) {
+    private Object value(Block b, Key k, Token keyToken) {
         String n = k.name();
         return switch (k.kind()) {
             case NUMBER -> number("expected a number for '" + n + "'");
@@ -513,6 +523,7 @@ public final class SceneParser {
             }
             case BOOLEAN -> "true".equals(choice(n, List.of("true", "false")));
             case CHOICE -> choice(n, k.choices());
+            case CHOICES -> choices(b, n, k.choices());
             case STRING -> string(n);
             case MATERIAL -> materialValue(keyToken);
             case TRANSLATE -> {
@@ -581,6 +592,29 @@ public final class SceneParser {
         if (t.kind() == Kind.WORD && choices.contains(t.text())) return t.text();
         String hint = t.kind() == Kind.WORD ? SceneGrammar.didYouMean(t.text(), choices) : "";
         throw error(t, "expected " + orList(choices) + " for '" + key + "', found " + t.describe() + hint);
+    }
+
+    /**
+     * One or more distinct choices. The list ends at '}' or at a word that is a key of the block,
+     * so any other word is reported as a wrong choice rather than as an unknown key.
+     */
+    private List<String> choices(Block b, String key, List<String> choices) {
+        List<String> out = new ArrayList<>();
+        out.add(choice(key, choices));
+        while (true) {
+            Token t = lex.peek();
+            if (t.kind() != Kind.WORD || b.key(t.text()) != null) return List.copyOf(out);
+            lex.next();
+            if (!choices.contains(t.text())) {
+                String hint = SceneGrammar.didYouMean(t.text(), choices);
+                if (hint.isEmpty() && SceneGrammar.statement(t.text()) != null) {
+                    hint = " (is a '}' missing to close '" + b.keyword() + "'?)";
+                }
+                throw error(t, "expected " + orList(choices) + " for '" + key + "', found " + t.describe() + hint);
+            }
+            if (out.contains(t.text())) throw error(t, "'" + t.text() + "' listed twice for '" + key + "'");
+            out.add(t.text());
+        }
     }
 
     private String string(String key) {

@@ -5,6 +5,7 @@ import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
 
 import lt.spindulys.camera.Camera;
+import lt.spindulys.image.AovFrame;
 import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.math.Ray;
 import lt.spindulys.sampling.PixelSampler;
@@ -16,7 +17,9 @@ import lt.spindulys.shading.WhittedIntegrator;
 /**
  * Renders a frozen scene on several threads. The image is cut into square tiles handed out from
  * an atomic counter; each thread has its own sampler and scratch, and every sample is seeded from
- * its pixel, so the result is the same for any thread count.
+ * its pixel, so the result is the same for any thread count. When the settings ask for render
+ * passes ({@link RenderSettings#aovs()}), each pixel gets one more camera ray for them; otherwise
+ * nothing is traced or stored for them.
  */
 public final class Renderer {
     /** Tile side in pixels: small enough to balance two cores, large enough to keep counters cheap. */
@@ -24,8 +27,12 @@ public final class Renderer {
 
     private Renderer() {}
 
-    /** The finished frame and what it cost. */
-    public record Result(FrameBuffer image, RenderStats stats) {}
+    /**
+     * The finished frame and what it cost.
+     *
+     * @param aovs the render passes the scene's settings ask for, or null when they ask for none
+     */
+    public record Result(FrameBuffer image, RenderStats stats, AovFrame aovs) {}
 
     /**
      * Renders {@code scene} with {@code threads} threads (at least 1), reporting progress.
@@ -36,6 +43,7 @@ public final class Renderer {
         RenderSettings st = scene.settings();
         int w = st.width(), h = st.height();
         FrameBuffer fb = new FrameBuffer(w, h);
+        AovFrame aovs = st.aovs().isEmpty() ? null : new AovFrame(w, h, st.aovs());
         int tilesX = (w + TILE - 1) / TILE, tilesY = (h + TILE - 1) / TILE, tiles = tilesX * tilesY;
         WhittedIntegrator integrator = new WhittedIntegrator(scene);
         AtomicInteger nextTile = new AtomicInteger();
@@ -51,13 +59,13 @@ public final class Renderer {
                 TracerScratch scratch = integrator.newScratch();
                 PixelSampler sampler = new PixelSampler(st.samplesPerPixel());
                 Ray ray = new Ray();
-                double[] colour = new double[3];
+                double[] colour = new double[4];
                 try {
                     for (int t; (t = nextTile.getAndIncrement()) < tiles && failure.get() == null; ) {
                         if (Thread.currentThread().isInterrupted()) return;
                         int x0 = (t % tilesX) * TILE, y0 = (t / tilesX) * TILE;
                         int x1 = Math.min(x0 + TILE, w), y1 = Math.min(y0 + TILE, h);
-                        renderTile(scene.camera(), integrator, st, sampler, scratch, ray, colour, fb, x0, y0, x1, y1);
+                        renderTile(scene.camera(), integrator, st, sampler, scratch, ray, colour, fb, aovs, x0, y0, x1, y1);
                         progress.progress(donePixels.addAndGet((long) (x1 - x0) * (y1 - y0)), (long) w * h);
                     }
                 } catch (Throwable e) {
@@ -81,11 +89,11 @@ public final class Renderer {
         double seconds = (System.nanoTime() - start) / 1e9;
         long[] sum = new long[4];
         for (long[] c : counters) if (c != null) for (int i = 0; i < 4; i++) sum[i] += c[i];
-        return new Result(fb, new RenderStats(sum[0], sum[1], sum[2], sum[3], seconds));
+        return new Result(fb, new RenderStats(sum[0], sum[1], sum[2], sum[3], seconds), aovs);
     }
 
     private static void renderTile(Camera camera, WhittedIntegrator integrator, RenderSettings st, PixelSampler sampler,
-                                   TracerScratch scratch, Ray ray, double[] colour, FrameBuffer fb,
+                                   TracerScratch scratch, Ray ray, double[] colour, FrameBuffer fb, AovFrame aovs,
                                    int x0, int y0, int x1, int y1) {
         int w = st.width(), h = st.height(), n = sampler.samplesPerPixel();
         double aspect = st.aspect();
@@ -100,6 +108,14 @@ public final class Renderer {
                     r += colour[0]; g += colour[1]; b += colour[2];
                 }
                 fb.set(x, y, r / n, g / n, b / n);
+                if (aovs != null) {
+                    // One more ray, through the exact pixel centre from the lens centre at time 0,
+                    // so the passes do not depend on the sample pattern.
+                    camera.generateRay((x + 0.5) / w, (y + 0.5) / h, aspect, 0.5, 0.5, 0, ray);
+                    int id = integrator.traceFirstHit(ray, scratch, colour);
+                    if (id < 0) aovs.setBackground(x, y);
+                    else aovs.setHit(x, y, colour[0], colour[1], colour[2], colour[3], id);
+                }
             }
         }
     }

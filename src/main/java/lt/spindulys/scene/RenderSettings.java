@@ -1,6 +1,11 @@
 package lt.spindulys.scene;
 
+import java.util.Collections;
+import java.util.EnumSet;
+import java.util.Set;
+
 import lt.spindulys.accel.AcceleratorKind;
+import lt.spindulys.image.Aov;
 import lt.spindulys.math.Color;
 
 /**
@@ -17,9 +22,11 @@ import lt.spindulys.math.Color;
  * @param srgb            encode the image as sRGB for 8-bit outputs (else linear values are written)
  * @param seed            global seed of every random number, mixed with pixel and sample
  * @param accelerator     the acceleration structure of the scene over its objects and of each mesh over its triangles
+ * @param aovs            render passes to write beside the image (unmodifiable, possibly empty; see {@link Aov})
  */
 public record RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, double minContribution,
-                             Color background, Color ambient, boolean srgb, long seed, AcceleratorKind accelerator) {
+                             Color background, Color ambient, boolean srgb, long seed, AcceleratorKind accelerator,
+                             Set<Aov> aovs) {
     /** Largest accepted image side, so that a typo cannot ask for terabytes. */
     public static final int MAX_SIDE = 32768;
 
@@ -31,6 +38,12 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         this(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, AcceleratorKind.DEFAULT);
     }
 
+    /** Settings without render passes. */
+    public RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, double minContribution,
+                          Color background, Color ambient, boolean srgb, long seed, AcceleratorKind accelerator) {
+        this(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, Set.of());
+    }
+
     public RenderSettings {
         if (width < 1 || width > MAX_SIDE) throw new IllegalArgumentException("width must be between 1 and " + MAX_SIDE + ", found " + width);
         if (height < 1 || height > MAX_SIDE) throw new IllegalArgumentException("height must be between 1 and " + MAX_SIDE + ", found " + height);
@@ -40,18 +53,24 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         if (!background.isFinite() || !background.isNonNegative()) throw new IllegalArgumentException("background must have non-negative finite components, found " + background);
         if (!ambient.isFinite() || !ambient.isNonNegative()) throw new IllegalArgumentException("ambient must have non-negative finite components, found " + ambient);
         java.util.Objects.requireNonNull(accelerator, "accelerator");
+        java.util.Objects.requireNonNull(aovs, "aovs");
+        // An EnumSet copy: declaration order whatever the caller's set, and no later changes.
+        aovs = aovs.isEmpty() ? Set.of() : Collections.unmodifiableSet(EnumSet.copyOf(aovs));
     }
 
-    public RenderSettings withSize(int w, int h) { return new RenderSettings(w, h, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, accelerator); }
-    public RenderSettings withSamplesPerPixel(int n) { return new RenderSettings(width, height, n, maxDepth, minContribution, background, ambient, srgb, seed, accelerator); }
-    public RenderSettings withMaxDepth(int d) { return new RenderSettings(width, height, samplesPerPixel, d, minContribution, background, ambient, srgb, seed, accelerator); }
-    public RenderSettings withMinContribution(double c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, c, background, ambient, srgb, seed, accelerator); }
-    public RenderSettings withBackground(Color c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, c, ambient, srgb, seed, accelerator); }
-    public RenderSettings withAmbient(Color c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, c, srgb, seed, accelerator); }
-    public RenderSettings withSrgb(boolean s) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, s, seed, accelerator); }
-    public RenderSettings withSeed(long s) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, s, accelerator); }
+    public RenderSettings withSize(int w, int h) { return new RenderSettings(w, h, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, aovs); }
+    public RenderSettings withSamplesPerPixel(int n) { return new RenderSettings(width, height, n, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, aovs); }
+    public RenderSettings withMaxDepth(int d) { return new RenderSettings(width, height, samplesPerPixel, d, minContribution, background, ambient, srgb, seed, accelerator, aovs); }
+    public RenderSettings withMinContribution(double c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, c, background, ambient, srgb, seed, accelerator, aovs); }
+    public RenderSettings withBackground(Color c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, c, ambient, srgb, seed, accelerator, aovs); }
+    public RenderSettings withAmbient(Color c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, c, srgb, seed, accelerator, aovs); }
+    public RenderSettings withSrgb(boolean s) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, s, seed, accelerator, aovs); }
+    public RenderSettings withSeed(long s) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, s, accelerator, aovs); }
 
-    public RenderSettings withAccelerator(AcceleratorKind a) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, a); }
+    public RenderSettings withAccelerator(AcceleratorKind a) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, a, aovs); }
+
+    /** The same settings with these render passes (an empty set: none). */
+    public RenderSettings withAovs(Set<Aov> a) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, a); }
 
     public double aspect() { return (double) width / height; }
 }

@@ -43,6 +43,36 @@ public final class WhittedIntegrator {
         trace(ray, 0, 1, s, out);
     }
 
+    /**
+     * What a render pass sees along {@code ray}: its first hit only, with no lights, shadows or
+     * secondary rays. Writes to out[0] the distance along the ray's direction made unit
+     * (+Infinity if nothing is hit) and to out[1..3] the unit world-space shading normal turned to
+     * face the ray, by the same rule as shading uses (0 0 0 if nothing is hit).
+     *
+     * @return the {@link lt.spindulys.scene.GObject#id()} of the object hit, or -1
+     */
+    public int traceFirstHit(Ray ray, TracerScratch s, double[] out) {
+        s.cameraRays++;
+        Hit hit = s.hits[0];
+        if (!scene.intersect(ray, hit, s.ctx)) {
+            out[0] = Double.POSITIVE_INFINITY;
+            out[1] = out[2] = out[3] = 0;
+            return -1;
+        }
+        ShadingData sd = s.shading[0];
+        hit.object.shade(ray, hit, sd);
+        double dlen = Math.sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
+        double dx = ray.dx / dlen, dy = ray.dy / dlen, dz = ray.dz / dlen;
+        // As in trace: flip both normals towards the ray by the geometric one, and fall back to
+        // the geometric normal where the interpolated one still faces away.
+        double sign = sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz < 0 ? 1 : -1;
+        double nx = sign * sd.ns[0], ny = sign * sd.ns[1], nz = sign * sd.ns[2];
+        if (nx * dx + ny * dy + nz * dz >= 0) { nx = sign * sd.ng[0]; ny = sign * sd.ng[1]; nz = sign * sd.ng[2]; }
+        out[0] = hit.t * dlen;
+        out[1] = nx; out[2] = ny; out[3] = nz;
+        return hit.object.id();
+    }
+
     private void trace(Ray ray, int depth, double weight, TracerScratch s, double[] out) {
         Hit hit = s.hits[depth];
         Material medium = s.innermost();

@@ -13,12 +13,15 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.EnumSet;
 import java.util.List;
+import java.util.Set;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 import lt.spindulys.camera.PinholeCamera;
+import lt.spindulys.image.Aov;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Transform;
 import lt.spindulys.math.Vec3;
@@ -186,6 +189,16 @@ class SceneParserTest {
     }
 
     @Test
+    void aovListEndsAtTheNextKeyOrTheBrace() {
+        assertEquals(Set.of(), parse("settings { width 10 }").settings().aovs());
+        RenderSettings s = parse("settings { aov object depth  width 10 }").settings();
+        assertEquals(EnumSet.of(Aov.DEPTH, Aov.OBJECT), s.aovs());
+        assertEquals(10, s.width());
+        assertEquals(EnumSet.allOf(Aov.class), parse("settings { width 10 aov normal depth object}").settings().aovs());
+        assertEquals(RenderSettings.DEFAULT.withAovs(EnumSet.of(Aov.NORMAL)), parse("settings { aov normal }").settings());
+    }
+
+    @Test
     void transformsComposeInTheOrderWritten() {
         GObject a = parse("sphere { translate 1 0 0  rotate z 90 }").objects().get(0);
         GObject b = parse("sphere { rotate z 90  translate 1 0 0 }").objects().get(0);
@@ -283,7 +296,7 @@ class SceneParserTest {
             assertEquals(blk.keys().size(), blk.keyNames().stream().distinct().count(), blk.keyword() + " has a key twice");
             for (SceneGrammar.Key k : blk.keys()) {
                 assertFalse(k.required() && k.defaultValue() != null, k.name() + " is required yet has a default");
-                assertEquals(k.kind() == SceneGrammar.Kind.CHOICE, !k.choices().isEmpty(), k.name());
+                assertEquals(k.kind() == SceneGrammar.Kind.CHOICE || k.kind() == SceneGrammar.Kind.CHOICES, !k.choices().isEmpty(), k.name());
             }
         }
     }

@@ -1,0 +1,84 @@
+package lt.spindulys.image;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.EnumSet;
+import java.util.List;
+import java.util.Set;
+
+/**
+ * A render pass (arbitrary output variable) written beside the main image. Each is what one extra
+ * camera ray through the exact centre of the pixel sees at its first hit (lens centre, time 0),
+ * so the values are exact and do not depend on samples per pixel or thread count.
+ */
+public enum Aov {
+    /** Distance along the unit camera ray to the first hit, +Infinity for the background: one-channel PFM ("Pf"). */
+    DEPTH("depth", ".depth.pfm"),
+    /** World-space unit shading normal, turned to face the camera ray, 0 0 0 for the background: PFM ("PF"). */
+    NORMAL("normal", ".normal.pfm"),
+    /** Object id + 1 as a 24-bit integer in 8-bit RGB (R = high byte), 0 for the background: PNG, never sRGB-encoded. */
+    OBJECT("object", ".object.png");
+
+    private final String keyword, suffix;
+
+    Aov(String keyword, String suffix) {
+        this.keyword = keyword;
+        this.suffix = suffix;
+    }
+
+    /** The name in the scene language and on the command line. */
+    public String keyword() { return keyword; }
+
+    /** What replaces the main output's extension: {@code .depth.pfm}, {@code .normal.pfm}, {@code .object.png}. */
+    public String suffix() { return suffix; }
+
+    /** The keywords, in declaration order. */
+    public static List<String> keywords() {
+        List<String> k = new ArrayList<>();
+        for (Aov a : values()) k.add(a.keyword);
+        return List.copyOf(k);
+    }
+
+    /**
+     * The pass named {@code keyword}.
+     *
+     * @throws IllegalArgumentException "unknown AOV 'x' (expected depth, normal or object)"
+     */
+    public static Aov fromKeyword(String keyword) {
+        for (Aov a : values()) if (a.keyword.equals(keyword)) return a;
+        throw new IllegalArgumentException("unknown AOV '" + keyword + "' (expected " + expected() + ")");
+    }
+
+    /**
+     * The passes of a comma-separated list such as {@code depth,normal}; at least one, none twice.
+     *
+     * @throws IllegalArgumentException naming the unknown, repeated or empty entry
+     */
+    public static Set<Aov> parseList(String list) {
+        Set<Aov> out = EnumSet.noneOf(Aov.class);
+        for (String part : list.split(",", -1)) {
+            String name = part.strip();
+            if (name.isEmpty()) throw new IllegalArgumentException("empty AOV name in '" + list + "' (expected " + expected() + ")");
+            if (!out.add(fromKeyword(name))) throw new IllegalArgumentException("AOV '" + name + "' listed twice");
+        }
+        return Collections.unmodifiableSet(out);
+    }
+
+    /** "depth, normal or object". */
+    static String expected() {
+        List<String> k = keywords();
+        return String.join(", ", k.subList(0, k.size() - 1)) + " or " + k.get(k.size() - 1);
+    }
+
+    /**
+     * The file of this pass beside {@code mainOutput}: its extension (the last dot and after) is
+     * replaced by {@link #suffix()}, so {@code out.png} gives {@code out.depth.pfm}.
+     */
+    public Path fileBeside(Path mainOutput) {
+        String name = mainOutput.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        String base = dot > 0 ? name.substring(0, dot) : name;
+        return mainOutput.resolveSibling(base + suffix);
+    }
+}

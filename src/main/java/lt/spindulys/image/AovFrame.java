@@ -1,0 +1,121 @@
+package lt.spindulys.image;
+
+import java.util.Arrays;
+import java.util.Collections;
+import java.util.EnumSet;
+import java.util.Objects;
+import java.util.Set;
+
+/**
+ * The render passes of one frame: per pixel the depth, the normal and the object id that
+ * {@link Aov} describes, stored only for the passes requested. Row-major, y = 0 the top row, like
+ * {@link FrameBuffer}. Render threads may write disjoint pixels concurrently; no locking.
+ */
+public final class AovFrame {
+    /** Largest object id + 1 that fits the 24 bits of the object pass. */
+    public static final int MAX_OBJECT_CODE = 0xFFFFFF;
+
+    private final int width, height;
+    private final Set<Aov> passes;
+    private final double[] depth, normal;
+    private final int[] object;
+
+    /** A frame with every pixel at the background values (infinite depth, zero normal, no object). */
+    public AovFrame(int width, int height, Set<Aov> passes) {
+        if (width < 1 || height < 1) {
+            throw new IllegalArgumentException("image size must be at least 1x1, got " + width + "x" + height);
+        }
+        // The normal pass holds three values per pixel, like a FrameBuffer, and has the same limit.
+        if (3L * width * height > Integer.MAX_VALUE - 8) {
+            throw new IllegalArgumentException("image size " + width + "x" + height + " is too large");
+        }
+        if (passes.isEmpty()) throw new IllegalArgumentException("no AOV requested");
+        this.width = width;
+        this.height = height;
+        this.passes = Collections.unmodifiableSet(EnumSet.copyOf(passes));
+        int n = width * height;
+        depth = passes.contains(Aov.DEPTH) ? new double[n] : null;
+        normal = passes.contains(Aov.NORMAL) ? new double[3 * n] : null;
+        object = passes.contains(Aov.OBJECT) ? new int[n] : null;
+        if (depth != null) Arrays.fill(depth, Double.POSITIVE_INFINITY);
+        if (object != null) Arrays.fill(object, -1);
+    }
+
+    public int width() { return width; }
+
+    public int height() { return height; }
+
+    /** The passes this frame holds (unmodifiable, in {@link Aov} order). */
+    public Set<Aov> passes() { return passes; }
+
+    /** Records a hit at pixel (x, y): distance, unit normal, object id (GObject.id()). */
+    public void setHit(int x, int y, double distance, double nx, double ny, double nz, int objectId) {
+        int p = index(x, y);
+        if (depth != null) depth[p] = distance;
+        if (normal != null) {
+            normal[3 * p] = nx;
+            normal[3 * p + 1] = ny;
+            normal[3 * p + 2] = nz;
+        }
+        if (object != null) object[p] = objectId;
+    }
+
+    /** Records that the pixel-centre ray of (x, y) hit nothing. */
+    public void setBackground(int x, int y) {
+        int p = index(x, y);
+        if (depth != null) depth[p] = Double.POSITIVE_INFINITY;
+        if (normal != null) normal[3 * p] = normal[3 * p + 1] = normal[3 * p + 2] = 0;
+        if (object != null) object[p] = -1;
+    }
+
+    /** Distance to the first hit, +Infinity for the background. */
+    public double depth(int x, int y) { return require(depth, Aov.DEPTH)[index(x, y)]; }
+
+    /** One component (0 = x, 1 = y, 2 = z) of the normal; 0 for the background. */
+    public double normal(int x, int y, int component) {
+        Objects.checkIndex(component, 3);
+        return require(normal, Aov.NORMAL)[3 * index(x, y) + component];
+    }
+
+    /** The id of the object hit, -1 for the background. */
+    public int objectId(int x, int y) { return require(object, Aov.OBJECT)[index(x, y)]; }
+
+    /** The single depth channel, row-major, top row first (the backing array, not a copy). */
+    double[] depthData() { return require(depth, Aov.DEPTH); }
+
+    /** The normal pass as an image (x, y, z in r, g, b). */
+    FrameBuffer normalImage() {
+        FrameBuffer fb = new FrameBuffer(width, height);
+        System.arraycopy(require(normal, Aov.NORMAL), 0, fb.data(), 0, normal.length);
+        return fb;
+    }
+
+    /**
+     * The object pass as packed 0xRRGGBB values: id + 1, 0 for the background.
+     *
+     * @throws IllegalStateException if an id + 1 does not fit 24 bits
+     */
+    public int[] objectCodes() {
+        int[] ids = require(object, Aov.OBJECT);
+        int[] out = new int[ids.length];
+        for (int p = 0; p < ids.length; p++) {
+            int code = ids[p] + 1;
+            if (code < 0 || code > MAX_OBJECT_CODE) {
+                throw new IllegalStateException("object id " + ids[p] + " does not fit the 24 bits of the object AOV");
+            }
+            out[p] = code;
+        }
+        return out;
+    }
+
+    private static <T> T require(T data, Aov pass) {
+        if (data == null) throw new IllegalStateException("the " + pass.keyword() + " AOV was not requested");
+        return data;
+    }
+
+    private int index(int x, int y) {
+        Objects.checkIndex(x, width);
+        Objects.checkIndex(y, height);
+        return y * width + x;
+    }
+}
