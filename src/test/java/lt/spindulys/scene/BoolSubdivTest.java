@@ -50,8 +50,14 @@ class BoolSubdivTest {
             double x = 2 * rnd.nextDouble() - 1, y = 2 * rnd.nextDouble() - 1, z = 2 * rnd.nextDouble() - 1;
             if (!inside(a, x, y, z, rnd, ctx)) continue;
             if (inside(b, x, y, z, rnd, ctx)) {
-                // Cut away: a ray from here must not see the surface it starts behind as an exit.
+                // Cut away, so outside the result: the first boundary, if any, is an entry.
                 removed++;
+                Ray r = new Ray().set(x, y, z, rnd.nextGaussian(), rnd.nextGaussian(), rnd.nextGaussian(), 0, Double.POSITIVE_INFINITY);
+                hit.reset(r.tMax);
+                if (d.intersect(r, hit, ctx)) {
+                    hit.object.shade(r, hit, sd);
+                    assertTrue(sd.ng[0] * r.dx + sd.ng[1] * r.dy + sd.ng[2] * r.dz < 0);
+                }
                 continue;
             }
             inResult++;
