@@ -135,9 +135,18 @@ public final class Bool extends GObject {
         Material inner = own != null ? own : inherited;
         int next = ids + 1;
         for (GObject o : operands) next = o.freeze(toWorld, inner, next, accel);
+        markSolid(this);
         // Last, because the world bounds are computed from the frozen operands'.
         super.freeze(parentToWorld, inherited, ids, accel);
         return next;
+    }
+
+    /** Makes {@code top} the {@link GObject#solid()} of every object inside this Bool. */
+    private void markSolid(GObject top) {
+        for (GObject o : operands) {
+            o.solid(top);
+            if (o instanceof Bool b) b.markSolid(top);
+        }
     }
 
     /** Union: all operands' bounds; intersection: their overlap; difference: the first operand's. */
