@@ -74,7 +74,8 @@ final class SceneGrammar {
      *
      * @param operand whether the statement may be nested in a CSG block as an operand: its objects
      *                can be closed solids. Meshes and subdivision surfaces can (Bool refuses the
-     *                open ones, naming their boundary edges); planes and triangles never are
+     *                open ones, naming their boundary edges), and so can a plane (a half-space);
+     *                a triangle never is
      */
     record Block(String keyword, Category category, boolean operand, List<Key> keys) {
         Key key(String name) {

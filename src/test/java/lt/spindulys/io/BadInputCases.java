@@ -187,6 +187,7 @@ public final class BadInputCases {
                         "cube.tex", "# one per corner\n20\n" + "0 0\n".repeat(20),
                         "2:1: the unwrap has 20 corners but the mesh ${dir}/cube.dat has 24 face corners (one 'u v' per corner, face after face)"),
                 // ---- CSG ----
+                c("misspelt CSG statement", "diference { sphere { } box { min 0 0 0 max 1 1 1 } }", "1:1: unknown statement 'diference' (did you mean 'difference'?)"),
                 c("difference with one operand", cam + "difference {\n  sphere { }\n  translate 1 0 0\n}", "2:1: difference needs at least 2 operands, found 1"),
                 c("union without operands", "union { material { kd 0.5 } }", "1:1: union needs at least 2 operands, found 0"),
                 c("nested intersection with one operand", "union {\n  sphere { }\n  intersection { box { min 0 0 0 max 1 1 1 } }\n}",
