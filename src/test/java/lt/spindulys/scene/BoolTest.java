@@ -249,6 +249,71 @@ class BoolTest {
         }
     }
 
+    /** A nested tree with every operation, a mesh and a transform, for the context and thread tests. */
+    private static Bool sample() {
+        Bool inner = bool(Bool.Op.INTERSECTION, new Sphere(Vec3.ZERO, 1.2), box(-1, -1, -1, 1, 1, 1), new TriangleMesh(TestMeshes.icosphere(2, 1.3)));
+        inner.transform(Transform.rotate(new Vec3(1, 2, 3), 25));
+        Bool d = bool(Bool.Op.DIFFERENCE, inner, new Cylinder(new Vec3(0, -2, 0), new Vec3(0, 2, 0), 0.4), new Sphere(new Vec3(1, 1, 1), 0.6));
+        return frozen(bool(Bool.Op.UNION, d, new Sphere(new Vec3(0, 0, 0.5), 0.3)));
+    }
+
+    @Test
+    void borrowsAndReturnsTheContextScratch() {
+        Bool u = sample();
+        TraceContext ctx = new TraceContext();
+        SpanBuffer first = ctx.acquireSpans();
+        ctx.releaseSpans();
+        ctx.stackTop = 3; // as if called from inside a traversal that owns three stack entries
+        java.util.Random rnd = new java.util.Random(1);
+        for (int i = 0; i < 500; i++) {
+            Ray r = new Ray().set(3 * rnd.nextGaussian(), 3 * rnd.nextGaussian(), 3 * rnd.nextGaussian(),
+                    rnd.nextGaussian(), rnd.nextGaussian(), rnd.nextGaussian(), 0, Double.POSITIVE_INFINITY);
+            u.intersect(r, new Hit().reset(r.tMax), ctx);
+            u.occluded(r, ctx);
+            u.spans(r, new SpanBuffer(), ctx);
+        }
+        assertEquals(3, ctx.stackTop);
+        assertSame(first, ctx.acquireSpans(), "every borrowed span buffer was given back");
+    }
+
+    @Test
+    void threadsSharingATreeSeeWhatOneThreadSees() throws Exception {
+        Bool u = sample();
+        int rays = 4000;
+        double[] expected = new double[rays];
+        TraceContext one = new TraceContext();
+        for (int i = 0; i < rays; i++) expected[i] = trace(u, i, one);
+        var pool = java.util.concurrent.Executors.newFixedThreadPool(4);
+        try {
+            List<java.util.concurrent.Future<Integer>> results = new java.util.ArrayList<>();
+            for (int k = 0; k < 4; k++) {
+                results.add(pool.submit(() -> {
+                    TraceContext ctx = new TraceContext();
+                    int agree = 0;
+                    for (int i = 0; i < rays; i++) if (Double.compare(expected[i], trace(u, i, ctx)) == 0) agree++;
+                    return agree;
+                }));
+            }
+            for (var f : results) assertEquals(rays, f.get());
+        } finally {
+            pool.shutdown();
+        }
+        int hits = 0;
+        for (double t : expected) if (t < Double.POSITIVE_INFINITY) hits++;
+        assertTrue(hits > rays / 10 && hits < rays, "hits " + hits);
+    }
+
+    /** The hit distance of seeded ray {@code i} (infinity for a miss). */
+    private static double trace(Bool b, int i, TraceContext ctx) {
+        java.util.Random rnd = new java.util.Random(i);
+        double ox = 3 * rnd.nextGaussian(), oy = 3 * rnd.nextGaussian(), oz = 3 * rnd.nextGaussian();
+        // Aimed at the middle with some spread.
+        Ray r = new Ray().set(ox, oy, oz, 0.5 * rnd.nextGaussian() - ox, 0.5 * rnd.nextGaussian() - oy, 0.5 * rnd.nextGaussian() - oz,
+                0, Double.POSITIVE_INFINITY);
+        Hit h = new Hit().reset(r.tMax);
+        return b.intersect(r, h, ctx) ? h.t : Double.POSITIVE_INFINITY;
+    }
+
     @Test
     void coincidentFacesGiveOneAnswerEverywhere() {
         // A box minus a box flush with its +x face, both placed by (different) transforms so the
