@@ -342,5 +342,66 @@ class BoolTest {
         assertEquals(3600, n);
     }
 
+    @Test
+    void coincidentFacesInUnionsAndIntersections() {
+        // Two boxes meeting along the plane x = 0.7 (reached by different transforms).
+        Box left = box(0, 0, 0, 1, 1, 1);
+        left.transform(Transform.scale(2, 2, 2)).transform(Transform.translate(-1.3, -0.7, -1.1));
+        Box right = box(-0.3, -0.2, -0.4, 0.7, 0.8, 0.6);
+        right.transform(Transform.translate(1, 0, 0)); // x in [0.7, 1.7]
+        Bool u = frozen(bool(Bool.Op.UNION, left, right));
+        Box a = box(0, 0, 0, 1, 1, 1);
+        a.transform(Transform.scale(2, 2, 2)).transform(Transform.translate(-1.3, -0.7, -1.1));
+        Box flush = box(-0.3, -0.2, -0.4, 0.7, 0.8, 0.6); // shares a's +x face x = 0.7
+        Bool i = frozen(bool(Bool.Op.INTERSECTION, a, flush));
+        TraceContext ctx = new TraceContext();
+        for (int y = 0; y < 40; y++) {
+            for (int z = 0; z < 40; z++) {
+                double py = -0.15 + 0.5 * y / 39.0, pz = -0.35 + 0.5 * z / 39.0;
+                // Union: a ray from inside the left box along +x never stops at the shared face.
+                Ray r = new Ray().set(0, py, pz, 1, 0.011, -0.009, 0, Double.POSITIVE_INFINITY);
+                Hit h = new Hit().reset(r.tMax);
+                assertTrue(u.intersect(r, h, ctx));
+                assertSame(right, h.object);
+                assertEquals(1, h.prim); // right's +x face
+                // Intersection: from +x the shared face is the visible one, named by the first operand.
+                Ray back = new Ray().set(3, py, pz, -1, 0.011, -0.009, 0, Double.POSITIVE_INFINITY);
+                Hit hb = new Hit().reset(back.tMax);
+                assertTrue(i.intersect(back, hb, ctx));
+                assertSame(a, hb.object);
+                assertEquals(1, hb.prim);
+                assertEquals(2.3, hb.t, 1e-12);
+            }
+        }
+    }
+
+    @Test
+    void inASceneIdsAndTransparencyCoverTheOperands() {
+        Material glass = Material.builder().kt(0.9).ior(1.5).build();
+        Sphere a = new Sphere(Vec3.ZERO, 1), b = new Sphere(Vec3.X, 1);
+        b.material(glass);
+        Bool u = bool(Bool.Op.UNION, a, b);
+        Sphere other = new Sphere(new Vec3(5, 0, 0), 1);
+        Scene scene = new SceneBuilder().add(u).add(other).build();
+        assertEquals(4, scene.objectIdCount());
+        assertEquals(List.of(0, 1, 2, 3), List.of(u.id(), a.id(), b.id(), other.id()));
+        assertTrue(scene.hasTransparentObjects());
+        assertSame(u, a.solid());
+        assertSame(u, b.solid());
+        assertSame(u, u.solid());
+        assertSame(other, other.solid());
+        Hit h = new Hit();
+        assertTrue(scene.intersect(ray(-5, 0, 0, 1, 0, 0), h, new TraceContext()));
+        assertSame(a, h.object);
+        assertEquals(4, h.t, EPS);
+        // The same Bool overridden by an opaque material: no transparency left in the scene.
+        Sphere c = new Sphere(Vec3.ZERO, 1), e = new Sphere(Vec3.X, 1);
+        e.material(glass);
+        Bool opaque = bool(Bool.Op.UNION, c, e);
+        opaque.material(Material.DEFAULT);
+        assertFalse(new SceneBuilder().add(opaque).build().hasTransparentObjects());
+        assertThrows(IllegalStateException.class, () -> u.material(glass));
+    }
+
     private static double[] shadeN(Ray r, Hit h) { return shade(r, h).ng; }
 }
