@@ -42,10 +42,14 @@ import lt.spindulys.math.Transform;
  * the earliest operand. The tolerance also swallows a ray that grazes an operand over a span
  * shorter than it.
  *
- * <p><b>Materials.</b> A surface keeps its operand's material unless the Bool (or an enclosing
- * Bool) was given one, which then overrides every surface inside it. The Bool's
- * {@link #material()} after freezing is also the medium of the combined solid for refraction
- * (see the integrator): its own material if set, otherwise the inherited one.
+ * <p><b>Materials and media.</b> A surface keeps its operand's material unless the Bool (or an
+ * enclosing Bool) was given one, which then overrides every surface inside it. For refraction
+ * and shadows the whole tree is one solid ({@link GObject#solid()} of every object in it is the
+ * outermost Bool): a ray that enters it through one leaf may leave through another, and it
+ * leaves the medium it entered. That medium is the material of the surface it entered by, so a
+ * Bool with its own material is one medium throughout; without one, a union of glass and water
+ * is filled with whichever it was entered through (give the Bool a material to make it
+ * unambiguous).
  *
  * <p><b>Freezing.</b> Operands are frozen with the Bool's object-to-world transform as their
  * parent, so an operand's placement is relative to the Bool's. The Bool takes the next id and

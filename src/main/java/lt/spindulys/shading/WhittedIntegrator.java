@@ -17,6 +17,11 @@ import lt.spindulys.scene.ShadingData;
  * a medium. Transparent occluders tint shadows by kt*filter per surface crossing (and by the
  * medium's attenuation) instead of blocking. Immutable; all per-ray state lives in the caller's
  * {@link TracerScratch}.
+ *
+ * <p>Media are entered and left per solid ({@link lt.spindulys.scene.GObject#solid()}): a CSG
+ * result is one solid, so a ray that enters it through one leaf and leaves through another (of
+ * another material) leaves the medium it entered, whose material gives the inside's index of
+ * refraction and attenuation; the exit surface's material still gives that surface's kt and filter.
  */
 public final class WhittedIntegrator {
     /** Surfaces a shadow ray may cross before the light counts as blocked. */

@@ -249,6 +249,71 @@ class BoolTest {
         }
     }
 
+    /** A nested tree with every operation, a mesh and a transform, for the context and thread tests. */
+    private static Bool sample() {
+        Bool inner = bool(Bool.Op.INTERSECTION, new Sphere(Vec3.ZERO, 1.2), box(-1, -1, -1, 1, 1, 1), new TriangleMesh(TestMeshes.icosphere(2, 1.3)));
+        inner.transform(Transform.rotate(new Vec3(1, 2, 3), 25));
+        Bool d = bool(Bool.Op.DIFFERENCE, inner, new Cylinder(new Vec3(0, -2, 0), new Vec3(0, 2, 0), 0.4), new Sphere(new Vec3(1, 1, 1), 0.6));
+        return frozen(bool(Bool.Op.UNION, d, new Sphere(new Vec3(0, 0, 0.5), 0.3)));
+    }
+
+    @Test
+    void borrowsAndReturnsTheContextScratch() {
+        Bool u = sample();
+        TraceContext ctx = new TraceContext();
+        SpanBuffer first = ctx.acquireSpans();
+        ctx.releaseSpans();
+        ctx.stackTop = 3; // as if called from inside a traversal that owns three stack entries
+        java.util.Random rnd = new java.util.Random(1);
+        for (int i = 0; i < 500; i++) {
+            Ray r = new Ray().set(3 * rnd.nextGaussian(), 3 * rnd.nextGaussian(), 3 * rnd.nextGaussian(),
+                    rnd.nextGaussian(), rnd.nextGaussian(), rnd.nextGaussian(), 0, Double.POSITIVE_INFINITY);
+            u.intersect(r, new Hit().reset(r.tMax), ctx);
+            u.occluded(r, ctx);
+            u.spans(r, new SpanBuffer(), ctx);
+        }
+        assertEquals(3, ctx.stackTop);
+        assertSame(first, ctx.acquireSpans(), "every borrowed span buffer was given back");
+    }
+
+    @Test
+    void threadsSharingATreeSeeWhatOneThreadSees() throws Exception {
+        Bool u = sample();
+        int rays = 4000;
+        double[] expected = new double[rays];
+        TraceContext one = new TraceContext();
+        for (int i = 0; i < rays; i++) expected[i] = trace(u, i, one);
+        var pool = java.util.concurrent.Executors.newFixedThreadPool(4);
+        try {
+            List<java.util.concurrent.Future<Integer>> results = new java.util.ArrayList<>();
+            for (int k = 0; k < 4; k++) {
+                results.add(pool.submit(() -> {
+                    TraceContext ctx = new TraceContext();
+                    int agree = 0;
+                    for (int i = 0; i < rays; i++) if (Double.compare(expected[i], trace(u, i, ctx)) == 0) agree++;
+                    return agree;
+                }));
+            }
+            for (var f : results) assertEquals(rays, f.get());
+        } finally {
+            pool.shutdown();
+        }
+        int hits = 0;
+        for (double t : expected) if (t < Double.POSITIVE_INFINITY) hits++;
+        assertTrue(hits > rays / 10 && hits < rays, "hits " + hits);
+    }
+
+    /** The hit distance of seeded ray {@code i} (infinity for a miss). */
+    private static double trace(Bool b, int i, TraceContext ctx) {
+        java.util.Random rnd = new java.util.Random(i);
+        double ox = 3 * rnd.nextGaussian(), oy = 3 * rnd.nextGaussian(), oz = 3 * rnd.nextGaussian();
+        // Aimed at the middle with some spread.
+        Ray r = new Ray().set(ox, oy, oz, 0.5 * rnd.nextGaussian() - ox, 0.5 * rnd.nextGaussian() - oy, 0.5 * rnd.nextGaussian() - oz,
+                0, Double.POSITIVE_INFINITY);
+        Hit h = new Hit().reset(r.tMax);
+        return b.intersect(r, h, ctx) ? h.t : Double.POSITIVE_INFINITY;
+    }
+
     @Test
     void coincidentFacesGiveOneAnswerEverywhere() {
         // A box minus a box flush with its +x face, both placed by (different) transforms so the
@@ -275,6 +340,67 @@ class BoolTest {
             }
         }
         assertEquals(3600, n);
+    }
+
+    @Test
+    void coincidentFacesInUnionsAndIntersections() {
+        // Two boxes meeting along the plane x = 0.7 (reached by different transforms).
+        Box left = box(0, 0, 0, 1, 1, 1);
+        left.transform(Transform.scale(2, 2, 2)).transform(Transform.translate(-1.3, -0.7, -1.1));
+        Box right = box(-0.3, -0.2, -0.4, 0.7, 0.8, 0.6);
+        right.transform(Transform.translate(1, 0, 0)); // x in [0.7, 1.7]
+        Bool u = frozen(bool(Bool.Op.UNION, left, right));
+        Box a = box(0, 0, 0, 1, 1, 1);
+        a.transform(Transform.scale(2, 2, 2)).transform(Transform.translate(-1.3, -0.7, -1.1));
+        Box flush = box(-0.3, -0.2, -0.4, 0.7, 0.8, 0.6); // shares a's +x face x = 0.7
+        Bool i = frozen(bool(Bool.Op.INTERSECTION, a, flush));
+        TraceContext ctx = new TraceContext();
+        for (int y = 0; y < 40; y++) {
+            for (int z = 0; z < 40; z++) {
+                double py = -0.15 + 0.5 * y / 39.0, pz = -0.35 + 0.5 * z / 39.0;
+                // Union: a ray from inside the left box along +x never stops at the shared face.
+                Ray r = new Ray().set(0, py, pz, 1, 0.011, -0.009, 0, Double.POSITIVE_INFINITY);
+                Hit h = new Hit().reset(r.tMax);
+                assertTrue(u.intersect(r, h, ctx));
+                assertSame(right, h.object);
+                assertEquals(1, h.prim); // right's +x face
+                // Intersection: from +x the shared face is the visible one, named by the first operand.
+                Ray back = new Ray().set(3, py, pz, -1, 0.011, -0.009, 0, Double.POSITIVE_INFINITY);
+                Hit hb = new Hit().reset(back.tMax);
+                assertTrue(i.intersect(back, hb, ctx));
+                assertSame(a, hb.object);
+                assertEquals(1, hb.prim);
+                assertEquals(2.3, hb.t, 1e-12);
+            }
+        }
+    }
+
+    @Test
+    void inASceneIdsAndTransparencyCoverTheOperands() {
+        Material glass = Material.builder().kt(0.9).ior(1.5).build();
+        Sphere a = new Sphere(Vec3.ZERO, 1), b = new Sphere(Vec3.X, 1);
+        b.material(glass);
+        Bool u = bool(Bool.Op.UNION, a, b);
+        Sphere other = new Sphere(new Vec3(5, 0, 0), 1);
+        Scene scene = new SceneBuilder().add(u).add(other).build();
+        assertEquals(4, scene.objectIdCount());
+        assertEquals(List.of(0, 1, 2, 3), List.of(u.id(), a.id(), b.id(), other.id()));
+        assertTrue(scene.hasTransparentObjects());
+        assertSame(u, a.solid());
+        assertSame(u, b.solid());
+        assertSame(u, u.solid());
+        assertSame(other, other.solid());
+        Hit h = new Hit();
+        assertTrue(scene.intersect(ray(-5, 0, 0, 1, 0, 0), h, new TraceContext()));
+        assertSame(a, h.object);
+        assertEquals(4, h.t, EPS);
+        // The same Bool overridden by an opaque material: no transparency left in the scene.
+        Sphere c = new Sphere(Vec3.ZERO, 1), e = new Sphere(Vec3.X, 1);
+        e.material(glass);
+        Bool opaque = bool(Bool.Op.UNION, c, e);
+        opaque.material(Material.DEFAULT);
+        assertFalse(new SceneBuilder().add(opaque).build().hasTransparentObjects());
+        assertThrows(IllegalStateException.class, () -> u.material(glass));
     }
 
     private static double[] shadeN(Ray r, Hit h) { return shade(r, h).ng; }
