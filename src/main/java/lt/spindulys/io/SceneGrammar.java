@@ -50,7 +50,19 @@ final class SceneGrammar {
     }
 
     /** What a block makes, which decides how the parser turns its keys into builder calls. */
-    enum Category { SETTINGS, CAMERA, LIGHT, MATERIAL, OBJECT }
+    enum Category {
+        SETTINGS, CAMERA, LIGHT, MATERIAL,
+        /** A shape made from its own keys. */
+        OBJECT,
+        /**
+         * A CSG node (scene.Bool): its block holds, besides the common object keys, nested object
+         * statements, its operands in order. The keyword is the operation's (Bool.Op.keyword()).
+         */
+        CSG;
+
+        /** True for the statements that make a scene object (they all take {@link SceneGrammar#OBJECT_COMMON}). */
+        boolean isObject() { return this == OBJECT || this == CSG; }
+    }
 
     /**
      * A key of a block.
@@ -60,8 +72,15 @@ final class SceneGrammar {
      */
     record Key(String name, Kind kind, boolean required, boolean repeatable, Object defaultValue, List<String> choices) {}
 
-    /** A statement keyword and the keys its block accepts, in documentation order. */
-    record Block(String keyword, Category category, List<Key> keys) {
+    /**
+     * A statement keyword and the keys its block accepts, in documentation order.
+     *
+     * @param operand whether the statement may be nested in a CSG block as an operand: its objects
+     *                can be closed solids. Meshes and subdivision surfaces can (Bool refuses the
+     *                open ones, naming their boundary edges), and so can a plane (a half-space);
+     *                a triangle never is
+     */
+    record Block(String keyword, Category category, boolean operand, List<Key> keys) {
         Key key(String name) {
             for (Key k : keys) if (k.name.equals(name)) return k;
             return null;
@@ -88,7 +107,7 @@ final class SceneGrammar {
             repeat("scale", Kind.SCALE),
             opt("name", Kind.STRING));
 
-    static final Block SETTINGS = new Block("settings", Category.SETTINGS, List.of(
+    static final Block SETTINGS = new Block("settings", Category.SETTINGS, false, List.of(
             opt("width", Kind.INTEGER),
             opt("height", Kind.INTEGER),
             opt("samples", Kind.INTEGER),
@@ -101,19 +120,19 @@ final class SceneGrammar {
             choice("accelerator", null, "bvh", "octree", "bruteforce"),
             new Key("aov", Kind.CHOICES, false, false, null, Aov.keywords())));
 
-    static final Block CAMERA = new Block("camera", Category.CAMERA, List.of(
+    static final Block CAMERA = new Block("camera", Category.CAMERA, false, List.of(
             req("eye", Kind.VECTOR),
             req("lookat", Kind.VECTOR),
             opt("up", Kind.VECTOR, Vec3.Y),
             opt("fov", Kind.NUMBER, 45.0)));
 
-    static final Block LIGHT = new Block("light", Category.LIGHT, List.of(
+    static final Block LIGHT = new Block("light", Category.LIGHT, false, List.of(
             req("position", Kind.VECTOR),
             opt("color", Kind.COLOR, Color.WHITE),
             opt("intensity", Kind.NUMBER, 1.0),
             choice("falloff", "none", "none", "inverse-square")));
 
-    static final Block MATERIAL = new Block("material", Category.MATERIAL, List.of(
+    static final Block MATERIAL = new Block("material", Category.MATERIAL, false, List.of(
             opt("color", Kind.COLOR),
             opt("ka", Kind.NUMBER),
             opt("kd", Kind.NUMBER),
@@ -126,33 +145,34 @@ final class SceneGrammar {
             opt("filter", Kind.COLOR),
             opt("fresnel", Kind.BOOLEAN)));
 
-    static final Block SPHERE = object("sphere",
+    static final Block SPHERE = solid("sphere",
             opt("center", Kind.VECTOR, Vec3.ZERO),
             opt("radius", Kind.NUMBER, 1.0));
 
-    static final Block PLANE = object("plane",
+    // As a solid a plane is the half-space behind it, so it can cut (intersection) or be cut away (difference).
+    static final Block PLANE = solid("plane",
             opt("normal", Kind.VECTOR, Vec3.Y),
             opt("offset", Kind.NUMBER, 0.0));
 
-    static final Block BOX = object("box",
+    static final Block BOX = solid("box",
             req("min", Kind.VECTOR),
             req("max", Kind.VECTOR));
 
-    static final Block CYLINDER = object("cylinder",
+    static final Block CYLINDER = solid("cylinder",
             req("base", Kind.VECTOR),
             req("top", Kind.VECTOR),
             opt("radius", Kind.NUMBER, 1.0));
 
-    static final Block TRIANGLE = object("triangle",
+    static final Block TRIANGLE = surface("triangle",
             req("vertices", Kind.VERTICES));
 
     // No default for shading: absent means "smooth if the OBJ has normals", decided after reading it.
-    static final Block MESH = object("mesh",
+    static final Block MESH = solid("mesh",
             req("file", Kind.STRING),
             choice("shading", null, "smooth", "flat"));
 
     // No defaults for the scheme options: absent means "as the file's tags say, else OpenSubdiv's default".
-    static final Block SUBDIV = object("subdiv",
+    static final Block SUBDIV = solid("subdiv",
             req("file", Kind.STRING),
             opt("level", Kind.INTEGER, 3),
             choice("boundary", null, "edge-only", "edge-and-corner", "none"),
@@ -162,13 +182,32 @@ final class SceneGrammar {
             choice("shading", "smooth", "smooth", "flat"),
             opt("uv", Kind.STRING));
 
-    /** Every top-level statement, in documentation order. */
-    static final List<Block> STATEMENTS = List.of(SETTINGS, CAMERA, LIGHT, MATERIAL, SPHERE, PLANE, BOX, CYLINDER, TRIANGLE, MESH, SUBDIV);
+    // CSG: only the common keys; the operands are the object statements nested in the block.
+    static final Block UNION = new Block("union", Category.CSG, true, OBJECT_COMMON);
+    static final Block INTERSECTION = new Block("intersection", Category.CSG, true, OBJECT_COMMON);
+    static final Block DIFFERENCE = new Block("difference", Category.CSG, true, OBJECT_COMMON);
 
-    private static Block object(String keyword, Key... own) {
+    /** Every top-level statement, in documentation order. */
+    static final List<Block> STATEMENTS = List.of(SETTINGS, CAMERA, LIGHT, MATERIAL, SPHERE, PLANE, BOX, CYLINDER, TRIANGLE, MESH, SUBDIV,
+            UNION, INTERSECTION, DIFFERENCE);
+
+    /** An object statement whose objects may be CSG operands. */
+    private static Block solid(String keyword, Key... own) { return object(keyword, true, own); }
+
+    /** An object statement whose objects have no inside, so they cannot be CSG operands. */
+    private static Block surface(String keyword, Key... own) { return object(keyword, false, own); }
+
+    private static Block object(String keyword, boolean operand, Key... own) {
         List<Key> keys = new ArrayList<>(List.of(own));
         keys.addAll(OBJECT_COMMON);
-        return new Block(keyword, Category.OBJECT, List.copyOf(keys));
+        return new Block(keyword, Category.OBJECT, operand, List.copyOf(keys));
+    }
+
+    /** The statements that may be nested in a CSG block as operands, in documentation order. */
+    static List<String> operandNames() {
+        List<String> names = new ArrayList<>();
+        for (Block b : STATEMENTS) if (b.operand) names.add(b.keyword);
+        return names;
     }
 
     /** The statement with this keyword, or null. */

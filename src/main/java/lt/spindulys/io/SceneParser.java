@@ -18,6 +18,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
+import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 import lt.spindulys.accel.AcceleratorKind;
@@ -30,6 +31,7 @@ import lt.spindulys.io.SceneLexer.Token;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Transform;
 import lt.spindulys.math.Vec3;
+import lt.spindulys.scene.Bool;
 import lt.spindulys.scene.Box;
 import lt.spindulys.scene.Cylinder;
 import lt.spindulys.scene.GObject;
@@ -123,7 +125,7 @@ public final class SceneParser {
             case CAMERA -> camera(kw);
             case LIGHT -> light(kw);
             case MATERIAL -> namedMaterial(kw);
-            case OBJECT -> object(kw, b);
+            case OBJECT, CSG -> builder.add(object(kw, b));
         }
     }
 
@@ -240,10 +242,13 @@ public final class SceneParser {
         return mb.build();
     }
 
-    private void object(Token kw, Block b) {
+    /** The object of an object or CSG statement, with its common keys applied; not yet added to the builder. */
+    private GObject object(Token kw, Block b) {
         Props p = block(b, kw, null);
         GObject o;
-        if (b == SceneGrammar.MESH) {
+        if (b.category() == SceneGrammar.Category.CSG) {
+            o = bool(p);
+        } else if (b == SceneGrammar.MESH) {
             o = mesh(p);
         } else if (b == SceneGrammar.SUBDIV) {
             o = subdiv(p);
@@ -279,7 +284,47 @@ public final class SceneParser {
                 default -> { } // the shape's own keys, used by its constructor above
             }
         }
-        builder.add(o);
+        return o;
+    }
+
+    /**
+     * A CSG node over the operands nested in its block. Its constructor checks that every operand
+     * is closed; its complaint names the operand by number ("difference operand 2 (mesh) is not
+     * closed: ..."), and is reported at that operand's statement.
+     */
+    private GObject bool(Props p) {
+        Bool.Op op = null;
+        for (Bool.Op o : Bool.Op.values()) if (o.keyword().equals(p.block.keyword())) op = o;
+        if (op == null) throw new IllegalStateException("grammar has CSG statement '" + p.block.keyword() + "' without a Bool.Op");
+        List<GObject> objects = new ArrayList<>();
+        for (Operand o : p.operands) objects.add(o.object);
+        try {
+            return new Bool(op, objects);
+        } catch (IllegalArgumentException e) {
+            Matcher m = OPERAND_NUMBER.matcher(e.getMessage() == null ? "" : e.getMessage());
+            int k = m.find() ? Integer.parseInt(m.group(1)) : 0;
+            throw wrap(k >= 1 && k <= p.operands.size() ? p.operands.get(k - 1).at : p.opener, e);
+        }
+    }
+
+    /** How Bool's messages number an operand (from 1). */
+    private static final Pattern OPERAND_NUMBER = Pattern.compile("\\boperand (\\d+)\\b");
+
+    /**
+     * An object statement nested in a CSG block: one of the block's operands. Shapes without an
+     * inside are refused at their keyword, before their block is read.
+     */
+    private GObject operand(Token kw, Block b, Block parent) {
+        if (!b.operand()) {
+            throw error(kw, article(b.keyword()) + " cannot be " + article(parent.keyword()) + " operand: it is not a closed solid"
+                    + " (operands are " + orList(SceneGrammar.operandNames()) + ")");
+        }
+        return object(kw, b);
+    }
+
+    /** "a plane", "an intersection". */
+    private static String article(String word) {
+        return ("aeio".indexOf(word.charAt(0)) >= 0 ? "an " : "a ") + word;
     }
 
     private GObject mesh(Props p) {
@@ -437,12 +482,17 @@ public final class SceneParser {
     /** One key as written: the key token, the first token of its value, and the value. */
     private record Prop(Key key, Token at, Token valueAt, Object value) {}
 
+    /** One operand of a CSG block: its statement keyword and the object it made. */
+    private record Operand(Token at, GObject object) {}
+
     /** The keys given in one block, in order, with the block's defaults behind them. */
     private static final class Props {
         final Block block;
         final Token opener;
         final List<Prop> all = new ArrayList<>();
         final Map<String, Prop> first = new HashMap<>();
+        /** The nested object statements of a CSG block, in order; empty for other blocks. */
+        final List<Operand> operands = new ArrayList<>();
 
         Props(Block block, Token opener) {
             this.block = block;
@@ -466,7 +516,8 @@ public final class SceneParser {
 
     /**
      * Reads "{ key value ... }" after {@code kw} (the statement keyword, or the 'material' key of
-     * an inline material) and checks that every required key is present.
+     * an inline material) and checks that every required key is present. A CSG block also holds
+     * object statements, its operands, among its keys; it needs at least two.
      *
      * @param name the material's name for a named material, else null
      */
@@ -477,14 +528,24 @@ public final class SceneParser {
             throw error(open, "expected '{' after '" + b.keyword() + (name == null ? "" : " " + name) + "', found " + open.describe());
         }
         Props p = new Props(b, kw);
+        boolean csg = b.category() == SceneGrammar.Category.CSG;
         while (true) {
             Token t = lex.next();
             if (t.kind() == Kind.CLOSE) break;
             if (t.kind() == Kind.EOF) {
                 throw error(t, "unexpected end of file: missing '}' to close '" + b.keyword() + "' opened at " + kw.position());
             }
-            if (t.kind() != Kind.WORD) throw error(t, "expected a property of " + label + " or '}', found " + t.describe());
+            if (t.kind() != Kind.WORD) {
+                throw error(t, "expected a property " + (csg ? "or an operand " : "") + "of " + label + " or '}', found " + t.describe());
+            }
             Key k = b.key(t.text());
+            if (k == null && csg) {
+                Block nested = SceneGrammar.statement(t.text());
+                if (nested != null && nested.category().isObject()) {
+                    p.operands.add(new Operand(t, operand(t, nested, b)));
+                    continue;
+                }
+            }
             if (k == null) throw unknownKey(t, b, label, kw);
             Prop earlier = p.first.get(k.name());
             if (earlier != null && !k.repeatable()) {
@@ -498,15 +559,19 @@ public final class SceneParser {
         List<String> missing = new ArrayList<>();
         for (Key k : b.keys()) if (k.required() && !p.first.containsKey(k.name())) missing.add("'" + k.name() + "'");
         if (!missing.isEmpty()) throw error(kw, label + " needs " + andList(missing));
+        if (csg && p.operands.size() < 2) throw error(kw, b.keyword() + " needs at least 2 operands, found " + p.operands.size());
         return p;
     }
 
     private SceneException unknownKey(Token t, Block b, String label, Token opener) {
-        String hint = SceneGrammar.didYouMean(t.text(), b.keyNames());
+        boolean csg = b.category() == SceneGrammar.Category.CSG;
+        List<String> candidates = b.keyNames();
+        if (csg) candidates.addAll(SceneGrammar.operandNames());
+        String hint = SceneGrammar.didYouMean(t.text(), candidates);
         if (hint.isEmpty() && SceneGrammar.statement(t.text()) != null) {
             hint = " (is a '}' missing to close '" + b.keyword() + "' opened at " + opener.position() + "?)";
         }
-        return error(t, "unknown property '" + t.text() + "' in " + label + hint);
+        return error(t, "unknown " + (csg ? "property or operand" : "property") + " '" + t.text() + "' in " + label + hint);
     }
 
     private Object value(Block b, Key k, Token keyToken) {

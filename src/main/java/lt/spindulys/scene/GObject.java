@@ -104,6 +104,19 @@ public abstract class GObject {
 
     public final int id() { return id; }
 
+    /**
+     * The solid this object bounds as seen from outside: the outermost {@link Bool} it is an
+     * operand of (at any depth), or the object itself. A ray crossing a surface enters or leaves
+     * this solid, which is what keeps the integrator's medium stack consistent when a CSG
+     * result's entry and exit surfaces belong to different leaves. Set at freeze.
+     */
+    public final GObject solid() { return solid != null ? solid : this; }
+
+    /** Set by an enclosing CSG node when it freezes (outer nodes after inner ones, so the outermost wins). */
+    void solid(GObject s) { solid = s; }
+
+    private GObject solid;
+
     public final boolean isFrozen() { return objectToWorld != null; }
 
     /** Visits the material of this object and of every object inside it (after freezing). */

@@ -248,6 +248,29 @@ public final class SubdivisionSurface extends GObject {
         return dx * dx + dy * dy + dz * dz;
     }
 
+    /**
+     * Boundary edges of the control mesh: edges of a face that no other face shares, counting the
+     * edges a face shares only with a hole face as boundary too (holes are left out of the
+     * surface). A non-manifold edge counts once per face using it. If the control mesh has none
+     * but the refined triangles are still open (faces that collapse to nothing), the triangles'
+     * count ({@link TriangleMesh#boundaryEdgeCount()}) is returned instead, so an open surface
+     * never reports 0.
+     */
+    public int boundaryEdgeCount() {
+        RefinedMesh base = level == 0 ? refined : CatmullClark.refine(refined.controlMesh(), 0);
+        int[] sizes = base.faceSizes(), twin = base.cornerTwins();
+        int[] faceOf = new int[twin.length];
+        for (int f = 0, c = 0; f < sizes.length; c += sizes[f], f++) {
+            for (int k = 0; k < sizes[f]; k++) faceOf[c + k] = f;
+        }
+        int count = 0;
+        for (int c = 0; c < twin.length; c++) {
+            if (base.isHole(faceOf[c])) continue;
+            if (twin[c] < 0 || base.isHole(faceOf[twin[c]])) count++;
+        }
+        return count == 0 && !mesh.isClosed() ? mesh.boundaryEdgeCount() : count;
+    }
+
     public int level() { return level; }
     public boolean isSmooth() { return smooth; }
     /** The refined mesh the triangles come from (holes included). */

@@ -297,6 +297,25 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
      * the watertight test sees such copies as the same point.
      */
     private boolean everyEdgeTwice() {
+        return edgeUse(true) == 0;
+    }
+
+    /**
+     * Edges used by exactly one triangle, vertices merged by position as for {@link #isClosed()}:
+     * the edges along the holes of an open mesh (0 for a closed one; an edge shared by three or
+     * more triangles also keeps a mesh from being closed but is not a boundary edge).
+     */
+    public int boundaryEdgeCount() {
+        return edgeUse(false);
+    }
+
+    /**
+     * The one edge census behind {@link #everyEdgeTwice()} and {@link #boundaryEdgeCount()}:
+     * undirected edges between welded vertices, sorted, counted by use. Returns the number of
+     * edges used once; with {@code stopAtFirstBad} it returns 1 as soon as any edge is used other
+     * than twice, 0 if none is.
+     */
+    private int edgeUse(boolean stopAtFirstBad) {
         int[] id = weld(pos);
         long[] keys = new long[3 * triangleCount];
         for (int t = 0; t < triangleCount; t++) {
@@ -306,13 +325,15 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
             }
         }
         Arrays.parallelSort(keys); // millions of edges on large meshes; the sorted result is the same
+        int once = 0;
         for (int i = 0; i < keys.length; ) {
             int j = i + 1;
             while (j < keys.length && keys[j] == keys[i]) j++;
-            if (j - i != 2) return false;
+            if (j - i != 2 && stopAtFirstBad) return 1;
+            if (j - i == 1) once++;
             i = j;
         }
-        return true;
+        return once;
     }
 
     /** For each vertex, the lowest index of a vertex at the same position (open-addressing hash). */

@@ -1,6 +1,7 @@
 package lt.spindulys.shading;
 
 import lt.spindulys.math.Ray;
+import lt.spindulys.scene.GObject;
 import lt.spindulys.scene.Hit;
 import lt.spindulys.scene.Material;
 import lt.spindulys.scene.ShadingData;
@@ -23,8 +24,11 @@ public final class TracerScratch {
     final ShadingData shadowShading = new ShadingData();
     final double[] transmission = new double[3];
 
-    // Media the ray is inside, innermost last.
+    // Media the ray is inside, innermost last: the material it entered by and the solid
+    // (GObject.solid()) it entered, so leaving through another surface of the same CSG solid
+    // leaves the same medium.
     Material[] media = new Material[8];
+    GObject[] solids = new GObject[8];
     int mediaCount;
 
     /** Rays traced, by kind (counted per thread and summed by the renderer). */
@@ -43,12 +47,19 @@ public final class TracerScratch {
         }
     }
 
-    void pushMedium(Material m) {
-        if (mediaCount == media.length) media = java.util.Arrays.copyOf(media, media.length * 2);
+    void pushMedium(Material m, GObject solid) {
+        if (mediaCount == media.length) {
+            media = java.util.Arrays.copyOf(media, media.length * 2);
+            solids = java.util.Arrays.copyOf(solids, solids.length * 2);
+        }
+        solids[mediaCount] = solid;
         media[mediaCount++] = m;
     }
 
     Material innermost() { return mediaCount == 0 ? null : media[mediaCount - 1]; }
+
+    /** The solid of the innermost medium, or null outside every medium. */
+    GObject innermostSolid() { return mediaCount == 0 ? null : solids[mediaCount - 1]; }
 
     /** The medium enclosing the innermost one (what a ray leaving the innermost enters). */
     Material outer() { return mediaCount < 2 ? null : media[mediaCount - 2]; }

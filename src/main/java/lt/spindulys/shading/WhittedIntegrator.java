@@ -2,6 +2,7 @@ package lt.spindulys.shading;
 
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Ray;
+import lt.spindulys.scene.GObject;
 import lt.spindulys.scene.Hit;
 import lt.spindulys.scene.Material;
 import lt.spindulys.scene.PointLight;
@@ -16,6 +17,11 @@ import lt.spindulys.scene.ShadingData;
  * a medium. Transparent occluders tint shadows by kt*filter per surface crossing (and by the
  * medium's attenuation) instead of blocking. Immutable; all per-ray state lives in the caller's
  * {@link TracerScratch}.
+ *
+ * <p>Media are entered and left per solid ({@link lt.spindulys.scene.GObject#solid()}): a CSG
+ * result is one solid, so a ray that enters it through one leaf and leaves through another (of
+ * another material) leaves the medium it entered, whose material gives the inside's index of
+ * refraction and attenuation; the exit surface's material still gives that surface's kt and filter.
  */
 public final class WhittedIntegrator {
     /** Surfaces a shadow ray may cross before the light counts as blocked. */
@@ -100,7 +106,7 @@ public final class WhittedIntegrator {
         localIllumination(m, px, py, pz, nfx, nfy, nfz, snx, sny, snz, dx, dy, dz, eps, s, out);
 
         if (depth < settings.maxDepth() && (m.kr() > 0 || m.kt() > 0)) {
-            secondary(m, entering, px, py, pz, nfx, nfy, nfz, snx, sny, snz, dx, dy, dz, eps, ray.time, depth, weight, s, out);
+            secondary(m, hit.object.solid(), entering, px, py, pz, nfx, nfy, nfz, snx, sny, snz, dx, dy, dz, eps, ray.time, depth, weight, s, out);
         }
         if (medium != null) attenuate(medium, hit.t * dlen, out);
     }
@@ -161,8 +167,11 @@ public final class WhittedIntegrator {
         Hit hit = s.shadowHit;
         ShadingData sd = s.shadowShading;
         // Walk through the surfaces between the point and the light; media entered along the way
-        // attenuate from their entry, a medium left without an entry did so from the origin.
+        // attenuate from their entry, a medium left without an entry did so from the origin. A
+        // medium is left through any surface of the solid it was entered by (a CSG result's exit
+        // may be another leaf, with another material); the entry's material attenuates.
         Material inside = null;
+        GObject insideSolid = null;
         double enteredAt = 0;
         for (int crossing = 0; crossing < MAX_SHADOW_CROSSINGS; crossing++) {
             if (!scene.intersect(ray, hit, s.ctx)) {
@@ -173,15 +182,24 @@ public final class WhittedIntegrator {
             if (m.kt() <= 0) return false;
             Color f = m.filter();
             t[0] *= m.kt() * f.r(); t[1] *= m.kt() * f.g(); t[2] *= m.kt() * f.b();
-            if (m.attenuates()) {
+            if (m.attenuates() || inside != null) {
                 hit.object.shade(ray, hit, sd);
                 boolean entering = sd.ng[0] * lx + sd.ng[1] * ly + sd.ng[2] * lz < 0;
+                GObject solid = hit.object.solid();
                 if (entering) {
-                    inside = m;
-                    enteredAt = hit.t;
-                } else {
-                    attenuate(m, (hit.t - (inside == m ? enteredAt : 0)) * dist, t);
+                    if (m.attenuates()) {
+                        inside = m;
+                        insideSolid = solid;
+                        enteredAt = hit.t;
+                    }
+                } else if (inside != null && (insideSolid == solid || inside == m)) {
+                    attenuate(inside, (hit.t - enteredAt) * dist, t);
                     inside = null;
+                    insideSolid = null;
+                } else if (m.attenuates()) {
+                    attenuate(m, hit.t * dist, t);
+                    inside = null;
+                    insideSolid = null;
                 }
             }
             if (t[0] <= 0 && t[1] <= 0 && t[2] <= 0) return false;
@@ -190,7 +208,7 @@ public final class WhittedIntegrator {
         return false;
     }
 
-    private void secondary(Material m, boolean entering, double px, double py, double pz,
+    private void secondary(Material m, GObject solid, boolean entering, double px, double py, double pz,
                            double nfx, double nfy, double nfz, double snx, double sny, double snz,
                            double dx, double dy, double dz, double eps, double time, int depth, double weight,
                            TracerScratch s, double[] out) {
@@ -199,17 +217,19 @@ public final class WhittedIntegrator {
         double[] dir = s.dir;
         boolean canRefract = false;
         double n1 = 1, n2 = 1;
-        Material outside = null;
+        // Leaving the medium the ray is in: the innermost one was entered through a surface of
+        // this solid (for a CSG result possibly another leaf with another material) or is the
+        // same material. Its material is then the inside's index, not the exit surface's.
+        boolean leavesInnermost = !entering && (s.innermostSolid() == solid || s.innermost() == m);
         if (kt > 0) {
             // Indices on both sides: entering goes from the current medium into m; leaving goes
-            // from m into whatever encloses it on the medium stack.
+            // from the medium left into whatever encloses it on the medium stack.
             if (entering) {
                 n1 = ior(s.innermost());
                 n2 = m.ior();
             } else {
-                outside = s.innermost() == m ? s.outer() : s.innermost();
-                n1 = m.ior();
-                n2 = ior(outside);
+                n1 = leavesInnermost ? s.innermost().ior() : m.ior();
+                n2 = ior(leavesInnermost ? s.outer() : s.innermost());
             }
             canRefract = Optics.refract(dx, dy, dz, snx, sny, snz, n1, n2, dir);
             if (canRefract && dir[0] * nfx + dir[1] * nfy + dir[2] * nfz >= 0) {
@@ -245,13 +265,15 @@ public final class WhittedIntegrator {
             next.set(px - nfx * eps, py - nfy * eps, pz - nfz * eps, dir[0], dir[1], dir[2], 0, Double.POSITIVE_INFINITY);
             s.refractionRays++;
             if (entering) {
-                s.pushMedium(m);
+                s.pushMedium(m, solid);
                 trace(next, depth + 1, weight * refrW * f.max(), s, c);
                 s.mediaCount--;
-            } else if (s.innermost() == m) {
+            } else if (leavesInnermost) {
+                Material left = s.innermost();
+                GObject leftSolid = s.innermostSolid();
                 s.mediaCount--;
                 trace(next, depth + 1, weight * refrW * f.max(), s, c);
-                s.pushMedium(m);
+                s.pushMedium(left, leftSolid);
             } else {
                 trace(next, depth + 1, weight * refrW * f.max(), s, c);
             }

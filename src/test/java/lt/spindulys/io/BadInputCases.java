@@ -85,7 +85,8 @@ public final class BadInputCases {
                 // ---- structure ----
                 c("unknown statement", "shpere { radius 1 }", "1:1: unknown statement 'shpere' (did you mean 'sphere'?)"),
                 c("property outside a block", "sphere { } radius 2", "1:12: unknown statement 'radius' ('radius' is a property of sphere or cylinder: was a block closed too early?)"),
-                c("number as statement", "42", "1:1: expected a statement (settings, camera, light, material, sphere, plane, box, cylinder, triangle, mesh, subdiv), found '42'"),
+                c("number as statement", "42", "1:1: expected a statement (settings, camera, light, material, sphere, plane, box, cylinder, triangle, mesh, subdiv, "
+                        + "union, intersection, difference), found '42'"),
                 c("stray closing brace", cam + "}", "2:1: unexpected '}': no block is open"),
                 c("missing '{'", "sphere radius 1 }", "1:8: expected '{' after 'sphere', found 'radius'"),
                 c("missing '{' at end of file", "box", "1:4: expected '{' after 'box', found end of file"),
@@ -189,6 +190,26 @@ public final class BadInputCases {
                         "1:30: unwrap file 'cube.tex' not found (looked in ${dir}/cube.tex)"),
                 withFiles("subdiv unwrap with the wrong number of corners", "subdiv { file \"cube.dat\"  uv \"cube.tex\" }", "cube.dat", CUBE_DAT,
                         "cube.tex", "# one per corner\n20\n" + "0 0\n".repeat(20),
-                        "2:1: the unwrap has 20 corners but the mesh ${dir}/cube.dat has 24 face corners (one 'u v' per corner, face after face)"));
+                        "2:1: the unwrap has 20 corners but the mesh ${dir}/cube.dat has 24 face corners (one 'u v' per corner, face after face)"),
+                // ---- CSG ----
+                c("misspelt CSG statement", "diference { sphere { } box { min 0 0 0 max 1 1 1 } }", "1:1: unknown statement 'diference' (did you mean 'difference'?)"),
+                c("difference with one operand", cam + "difference {\n  sphere { }\n  translate 1 0 0\n}", "2:1: difference needs at least 2 operands, found 1"),
+                c("union without operands", "union { material { kd 0.5 } }", "1:1: union needs at least 2 operands, found 0"),
+                c("nested intersection with one operand", "union {\n  sphere { }\n  intersection { box { min 0 0 0 max 1 1 1 } }\n}",
+                        "3:3: intersection needs at least 2 operands, found 1"),
+                c("triangle as an operand", "intersection {\n  sphere { }\n  triangle { vertices 0 0 0  1 0 0  0 1 0 }\n}",
+                        "3:3: a triangle cannot be an intersection operand: it is not a closed solid (operands are sphere, plane, box, cylinder, "
+                                + "mesh, subdiv, union, intersection or difference)"),
+                c("misspelt operand", "union { shpere { } box { min 0 0 0 max 1 1 1 } }", "1:9: unknown property or operand 'shpere' in union (did you mean 'sphere'?)"),
+                c("light inside a CSG block", "union { sphere { } sphere { }\nlight { position 0 5 0 }", "2:1: unknown property or operand 'light' in union (is a '}' missing to close 'union' opened at 1:1?)"),
+                c("number inside a CSG block", "difference { sphere { } 2 }", "1:25: expected a property or an operand of difference or '}', found '2'"),
+                c("unclosed CSG block", "union {\n  sphere { }\n  sphere { }\n", "4:1: unexpected end of file: missing '}' to close 'union' opened at 1:1"),
+                c("bad value inside an operand", "difference {\n  box { min 0 0 0 max 1 1 1 }\n  sphere { radius -2 }\n}", "3:12: sphere radius must be a positive number, found -2.0"),
+                c("CSG key given twice", "union { sphere { } sphere { } name \"a\" name \"b\" }", "1:40: 'name' given twice in union (first at 1:31)"),
+                withFile("open mesh as an operand", "difference {\n  box { min -1 -1 -1 max 1 1 1 }\n  mesh { file \"lid.obj\"  name \"lid\" }\n}",
+                        "lid.obj", QUAD_OBJ, false, "3:3: difference operand 2 (lid) is not closed: it has 4 boundary edges"),
+                withFile("open subdivision surface in a nested operand", "union {\n  sphere { }\n  intersection {\n    sphere { center 1 0 0 }\n"
+                        + "    subdiv { file \"sheet.obj\"  level 1 }\n  }\n}",
+                        "sheet.obj", QUAD_OBJ, false, "5:5: intersection operand 2 (subdiv) is not closed: it has 4 boundary edges"));
     }
 }

@@ -70,7 +70,7 @@ class SceneFormatDocTest {
         String doc = doc();
         for (SceneGrammar.Block b : SceneGrammar.STATEMENTS) {
             List<String> own = names(b.keys());
-            if (b.category() == SceneGrammar.Category.OBJECT) own.removeAll(names(SceneGrammar.OBJECT_COMMON));
+            if (b.category().isObject()) own.removeAll(names(SceneGrammar.OBJECT_COMMON));
             assertEquals(new LinkedHashSet<>(own), keyRows(section(doc, "`" + b.keyword() + "`")), "keys of " + b.keyword());
         }
         assertEquals(new LinkedHashSet<>(names(SceneGrammar.OBJECT_COMMON)), keyRows(section(doc, "Common object keys")));

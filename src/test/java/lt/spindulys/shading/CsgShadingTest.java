@@ -1,0 +1,116 @@
+package lt.spindulys.shading;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+
+import lt.spindulys.camera.PinholeCamera;
+import lt.spindulys.math.Color;
+import lt.spindulys.math.Vec3;
+import lt.spindulys.render.ProgressListener;
+import lt.spindulys.render.Renderer;
+import lt.spindulys.scene.Bool;
+import lt.spindulys.scene.Box;
+import lt.spindulys.scene.GObject;
+import lt.spindulys.scene.Material;
+import lt.spindulys.scene.Plane;
+import lt.spindulys.scene.PointLight;
+import lt.spindulys.scene.RenderSettings;
+import lt.spindulys.scene.SceneBuilder;
+import lt.spindulys.scene.Sphere;
+
+/**
+ * The integrator through CSG solids, on 1x1 images whose one camera ray is worked out by hand:
+ * a transparent union is crossed once in and once out (shadows and refraction), the medium
+ * entered through one leaf is left through another, and a difference shades and shadows its cut.
+ */
+class CsgShadingTest {
+    private static final Color IA = new Color(0.5, 0.5, 0.5);
+    private static final Color C = new Color(0.8, 0.6, 0.4);
+
+    private static double[] render(SceneBuilder b) throws InterruptedException {
+        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).image();
+        return new double[] {image.get(0, 0, 0), image.get(0, 0, 1), image.get(0, 0, 2)};
+    }
+
+    private static Bool union(GObject... o) { return new Bool(Bool.Op.UNION, List.of(o)); }
+
+    private static SceneBuilder floorScene(PointLight light) {
+        return new SceneBuilder()
+                .settings(RenderSettings.DEFAULT.withSize(1, 1).withAmbient(IA).withBackground(Color.BLACK))
+                .camera(new PinholeCamera(new Vec3(0, 5, 0), Vec3.ZERO, Vec3.Z, 10))
+                .light(light)
+                .add(new Plane(Vec3.Y, 0).material(Material.builder().color(C).ka(0.2).kd(0.7).build()));
+    }
+
+    @Test
+    void transparentUnionTintsAShadowOncePerCrossingOfTheWholeSolid() throws InterruptedException {
+        PointLight light = new PointLight(new Vec3(6, 8, 0), Color.WHITE);
+        double[] lit = render(floorScene(light));
+        // Two overlapping spheres on the shadow ray (unit direction (0.6, 0.8, 0) from the origin):
+        // the ray enters a at distance 3 and leaves b at distance 6, never crossing the inner parts.
+        Color fa = new Color(1, 0.5, 0.25), fb = new Color(0.5, 1, 0.75);
+        Material ma = Material.builder().kt(0.6).filter(fa).beta(0.3).ior(1.5).build();
+        Material mb = Material.builder().kt(0.5).filter(fb).beta(0.7).ior(1.3).build();
+        Sphere a = new Sphere(new Vec3(2.4, 3.2, 0), 1), b = new Sphere(new Vec3(3.0, 4.0, 0), 1);
+        a.material(ma);
+        b.material(mb);
+        double[] shadowed = render(floorScene(light).add(union(a, b)));
+        for (int c = 0; c < 3; c++) {
+            double ambient = 0.2 * IA.get(c) * C.get(c);
+            // Crossings: a's surface in, b's surface out; the medium is the one entered (a's) over 3.
+            double t = 0.6 * fa.get(c) * 0.5 * fb.get(c) * Math.exp(-0.3 * 3);
+            assertEquals((lit[c] - ambient) * t, shadowed[c] - ambient, 1e-9, "channel " + c);
+        }
+    }
+
+    @Test
+    void refractionThroughAUnionLeavesTheMediumItEntered() throws InterruptedException {
+        // The camera ray runs along the axis of two overlapping spheres, entering a and leaving b
+        // at normal incidence, then reaches the white background. Surfaces have no local terms.
+        Color fa = new Color(1, 0.5, 0.25), fb = new Color(0.5, 1, 0.75);
+        Material ma = Material.builder().ka(0).kd(0).kt(0.9).filter(fa).beta(0.2).ior(1.5).build();
+        Material mb = Material.builder().ka(0).kd(0).kt(0.8).filter(fb).beta(0.6).ior(1.3).build();
+        Sphere a = new Sphere(new Vec3(0, 0, 1), 1), b = new Sphere(new Vec3(0, 0, 2), 1);
+        a.material(ma);
+        b.material(mb);
+        SceneBuilder s = new SceneBuilder()
+                .settings(RenderSettings.DEFAULT.withSize(1, 1).withBackground(Color.WHITE))
+                .camera(new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, 10))
+                .add(union(a, b));
+        double[] rgb = render(s);
+        for (int c = 0; c < 3; c++) {
+            // In through a (kt, filter), 3 units of a's medium, out through b, then nothing absorbs.
+            double expected = 0.9 * fa.get(c) * Math.exp(-0.2 * 3) * 0.8 * fb.get(c);
+            assertEquals(expected, rgb[c], 1e-9, "channel " + c);
+        }
+    }
+
+    @Test
+    void differenceShadesItsCutAndShadowsItself() throws InterruptedException {
+        // A box with a spherical bowl cut into its top; the camera looks straight down at the
+        // bowl's bottom (y = 0.2), whose normal is the subtracted sphere's, flipped to face up.
+        Material m = Material.builder().color(C).ka(0.2).kd(0.7).build();
+        Bool bowl = new Bool(Bool.Op.DIFFERENCE, List.of(new Box(new Vec3(-1, -1, -1), new Vec3(1, 1, 1)), new Sphere(new Vec3(0, 1, 0), 0.8)));
+        bowl.material(m);
+        SceneBuilder above = new SceneBuilder()
+                .settings(RenderSettings.DEFAULT.withSize(1, 1).withAmbient(IA).withBackground(Color.BLACK))
+                .camera(new PinholeCamera(new Vec3(0, 5, 0), Vec3.ZERO, Vec3.Z, 10))
+                .light(new PointLight(new Vec3(0, 10, 0), Color.WHITE, 1, PointLight.Falloff.NONE))
+                .add(bowl);
+        double[] lit = render(above);
+        for (int c = 0; c < 3; c++) assertEquals(0.2 * IA.get(c) * C.get(c) + 0.7 * C.get(c), lit[c], 1e-9, "channel " + c);
+        // A low light: the shadow ray leaves the bowl through its wall into the box's solid part.
+        Bool bowl2 = new Bool(Bool.Op.DIFFERENCE, List.of(new Box(new Vec3(-1, -1, -1), new Vec3(1, 1, 1)), new Sphere(new Vec3(0, 1, 0), 0.8)));
+        bowl2.material(m);
+        SceneBuilder low = new SceneBuilder()
+                .settings(RenderSettings.DEFAULT.withSize(1, 1).withAmbient(IA).withBackground(Color.BLACK))
+                .camera(new PinholeCamera(new Vec3(0, 5, 0), Vec3.ZERO, Vec3.Z, 10))
+                .light(new PointLight(new Vec3(5, 1.5, 0), Color.WHITE, 1, PointLight.Falloff.NONE))
+                .add(bowl2);
+        double[] shadowed = render(low);
+        for (int c = 0; c < 3; c++) assertEquals(0.2 * IA.get(c) * C.get(c), shadowed[c], 1e-12, "channel " + c);
+    }
+}
