@@ -84,7 +84,7 @@ public final class Bool extends GObject {
      * the others.
      *
      * @throws IllegalArgumentException if there are fewer than two operands, or an operand is
-     *         null, frozen, used twice, or not closed: "union operand 2 (mesh) is not closed: it
+     *         null, frozen, used twice (here or in another Bool), or not closed: "union operand 2 (mesh) is not closed: it
      *         has 4 boundary edges" (operands counted from 1)
      */
     public Bool(Op op, List<GObject> operands) {
@@ -100,6 +100,7 @@ public final class Bool extends GObject {
             String which = op.keyword() + " operand " + (i + 1);
             if (o == null) throw new IllegalArgumentException(which + " is missing");
             if (o.isFrozen()) throw new IllegalArgumentException(which + " (" + o.name() + ") already belongs to a built scene");
+            if (o.solid() != o) throw new IllegalArgumentException(which + " (" + o.name() + ") is already an operand of another " + o.solid().kind());
             Integer before = seen.put(o, i);
             if (before != null) throw new IllegalArgumentException(which + " (" + o.name() + ") is the same object as operand " + (before + 1));
             if (!o.isClosed()) {
@@ -110,6 +111,8 @@ public final class Bool extends GObject {
             this.operands[i] = o;
         }
         this.operandList = Collections.unmodifiableList(new ArrayList<>(operands));
+        // Claimed only once all are accepted; freezing makes the outermost Bool their solid.
+        for (GObject o : this.operands) o.solid(this);
     }
 
     /** Boundary edges of an open operand, or -1 for a kind of object that has no edges to count. */
@@ -255,8 +258,7 @@ public final class Bool extends GObject {
      * possibly those of a clipped operand span (callers wanting true ones widen the range).
      */
     private void combine(Ray ray, SpanBuffer out, TraceContext ctx) {
-        double[] range = ctx.range;
-        if (!bounds().hitRange(ray, range)) return;
+        if (!bounds().hitRange(ray, null)) return;
         int n = operands.length;
         // All operands' spans go into one pooled buffer, one run per operand; the runs' cursors and
         // ends live in the traversal stack above ctx.stackTop, raised while the operands (which may
@@ -271,7 +273,7 @@ public final class Bool extends GObject {
                 int from = all.size();
                 // An operand the ray misses contributes no span; for an intersection (or the first
                 // operand of a difference) that empties the whole result.
-                if (o.bounds().hitRange(ray, range)) o.spans(ray, all, ctx);
+                if (o.bounds().hitRange(ray, null)) o.spans(ray, all, ctx);
                 if (all.size() == from && (op == Op.INTERSECTION || op == Op.DIFFERENCE && i == 0)) return;
                 run[base + 2 * i] = 2 * from;
                 run[base + 2 * i + 1] = 2 * all.size();

@@ -229,6 +229,13 @@ class BoolTest {
         assertThrows(IllegalArgumentException.class, () -> bool(Bool.Op.INTERSECTION, s, f));
         assertThrows(IllegalArgumentException.class, () -> new Bool(Bool.Op.UNION, java.util.Arrays.asList(s, null)));
         assertEquals(0, new TriangleMesh(TestMeshes.cube()).boundaryEdgeCount());
+        // An operand belongs to one Bool; a Bool refused leaves its operands free.
+        Sphere p = new Sphere(Vec3.ZERO, 1), q = new Sphere(Vec3.X, 1);
+        assertThrows(IllegalArgumentException.class, () -> bool(Bool.Op.UNION, p, open));
+        Bool first = bool(Bool.Op.UNION, p, q);
+        assertEquals("difference operand 1 (sphere) is already an operand of another union",
+                assertThrows(IllegalArgumentException.class, () -> bool(Bool.Op.DIFFERENCE, q, new Sphere(Vec3.Y, 1))).getMessage());
+        assertSame(first, bool(Bool.Op.INTERSECTION, first, new Sphere(Vec3.Y, 1)).operands().get(0));
     }
 
     @Test
