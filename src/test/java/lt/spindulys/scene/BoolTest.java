@@ -284,6 +284,35 @@ class BoolTest {
     }
 
     @Test
+    void steadyStateQueriesAllocateNothing() {
+        Bool u = sample();
+        TraceContext ctx = new TraceContext();
+        Ray r = new Ray();
+        Hit h = new Hit();
+        SpanBuffer out = new SpanBuffer();
+        java.util.Random rnd = new java.util.Random(5);
+        double[] dirs = new double[3 * 1024];
+        for (int i = 0; i < dirs.length; i++) dirs[i] = rnd.nextGaussian();
+        Runnable work = () -> {
+            for (int i = 0; i < 10_000; i++) {
+                int k = 3 * (i & 1023);
+                r.set(0.1, 0.2, -0.1, dirs[k], dirs[k + 1], dirs[k + 2], 0, Double.POSITIVE_INFINITY);
+                u.intersect(r, h.reset(r.tMax), ctx);
+                u.occluded(r, ctx);
+                out.clear();
+                u.spans(r, out, ctx);
+            }
+        };
+        work.run(); // warm up: pooled buffers and stacks grow once, the JIT compiles
+        work.run();
+        var bean = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+        long before = bean.getCurrentThreadAllocatedBytes();
+        work.run();
+        long allocated = bean.getCurrentThreadAllocatedBytes() - before;
+        assertTrue(allocated < 4096, "30,000 queries allocated " + allocated + " bytes");
+    }
+
+    @Test
     void threadsSharingATreeSeeWhatOneThreadSees() throws Exception {
         Bool u = sample();
         int rays = 4000;
