@@ -27,8 +27,9 @@ import lt.spindulys.math.Vec3;
  *
  * <p>Skip rule (narrow, counted, and bounded by the test): a ray is not compared when two
  * endpoints of leaf spans (any leaves, including the entry and exit of one leaf) lie within
- * {@link #TIE_SKIP} of each other along the ray, or when the reference's hit lies within
- * {@link #TIE_SKIP} of a box edge or cylinder rim (the face reported there is a tie). There the
+ * {@link #TIE_SKIP} of each other or of the ray's tMin or tMax, or when the reference's hit lies
+ * within {@link #TIE_SKIP} of a box edge or cylinder rim (the face reported there is a tie). The
+ * test fails if more than 1% of the rays are skipped (with this seed, 3 of 100,000 are). There the
  * order of events is decided by rounding (Bool deliberately merges events within 1e-9, see its
  * tie rule) and near-tangent roots lose half their digits.
  */
