@@ -29,8 +29,8 @@ import lt.spindulys.math.Transform;
  * traversal stack for the merge cursors): no allocation, no shared mutable state.
  *
  * <p><b>Coincident surfaces.</b> Operand endpoints closer together along the ray than a tie
- * tolerance ({@link #TIE} times the scale of the ray's origin and of the point, in distance) are
- * one event: all of them are applied before the result's inside state is compared with the state
+ * tolerance (a distance of {@link #TIE} times 1 + the largest origin coordinate + the distance
+ * travelled, so it scales with the rounding error of the positions involved) are one event: all of them are applied before the result's inside state is compared with the state
  * before the event, so zero-thickness slivers never appear and the outcome does not depend on
  * rounding in which operand's surface comes first. Hence: a union of solids touching along a face
  * has no inner face there; a difference removes a face that a subtracted operand shares with the
@@ -50,6 +50,11 @@ import lt.spindulys.math.Transform;
  * Bool with its own material is one medium throughout; without one, a union of glass and water
  * is filled with whichever it was entered through (give the Bool a material to make it
  * unambiguous).
+ *
+ * <p><b>Bounds.</b> A union's are its operands' together, an intersection's their overlap (an
+ * empty intersection is skipped by the scene), a difference's its first operand's. An operand
+ * whose bounds the ray misses is not asked for spans; for an intersection (or the first operand
+ * of a difference) that alone settles that there is no hit.
  *
  * <p><b>Freezing.</b> Operands are frozen with the Bool's object-to-world transform as their
  * parent, so an operand's placement is relative to the Bool's. The Bool takes the next id and
@@ -84,8 +89,8 @@ public final class Bool extends GObject {
      * the others.
      *
      * @throws IllegalArgumentException if there are fewer than two operands, or an operand is
-     *         null, frozen, used twice, or not closed: "union operand 2 (mesh) is not closed: it
-     *         has 4 boundary edges" (operands counted from 1)
+     *         null, frozen, used twice (here or in another Bool), or not closed: "union operand 2
+     *         (mesh) is not closed: it has 4 boundary edges" (operands counted from 1)
      */
     public Bool(Op op, List<GObject> operands) {
         if (op == null) throw new IllegalArgumentException("CSG operation is missing");
@@ -100,6 +105,7 @@ public final class Bool extends GObject {
             String which = op.keyword() + " operand " + (i + 1);
             if (o == null) throw new IllegalArgumentException(which + " is missing");
             if (o.isFrozen()) throw new IllegalArgumentException(which + " (" + o.name() + ") already belongs to a built scene");
+            if (o.solid() != o) throw new IllegalArgumentException(which + " (" + o.name() + ") is already an operand of another " + o.solid().kind());
             Integer before = seen.put(o, i);
             if (before != null) throw new IllegalArgumentException(which + " (" + o.name() + ") is the same object as operand " + (before + 1));
             if (!o.isClosed()) {
@@ -110,6 +116,8 @@ public final class Bool extends GObject {
             this.operands[i] = o;
         }
         this.operandList = Collections.unmodifiableList(new ArrayList<>(operands));
+        // Claimed only once all are accepted; freezing makes the outermost Bool their solid.
+        for (GObject o : this.operands) o.solid(this);
     }
 
     /** Boundary edges of an open operand, or -1 for a kind of object that has no edges to count. */
@@ -255,8 +263,7 @@ public final class Bool extends GObject {
      * possibly those of a clipped operand span (callers wanting true ones widen the range).
      */
     private void combine(Ray ray, SpanBuffer out, TraceContext ctx) {
-        double[] range = ctx.range;
-        if (!bounds().hitRange(ray, range)) return;
+        if (!bounds().hitRange(ray, null)) return;
         int n = operands.length;
         // All operands' spans go into one pooled buffer, one run per operand; the runs' cursors and
         // ends live in the traversal stack above ctx.stackTop, raised while the operands (which may
@@ -271,7 +278,7 @@ public final class Bool extends GObject {
                 int from = all.size();
                 // An operand the ray misses contributes no span; for an intersection (or the first
                 // operand of a difference) that empties the whole result.
-                if (o.bounds().hitRange(ray, range)) o.spans(ray, all, ctx);
+                if (o.bounds().hitRange(ray, null)) o.spans(ray, all, ctx);
                 if (all.size() == from && (op == Op.INTERSECTION || op == Op.DIFFERENCE && i == 0)) return;
                 run[base + 2 * i] = 2 * from;
                 run[base + 2 * i + 1] = 2 * all.size();

@@ -108,11 +108,12 @@ public abstract class GObject {
      * The solid this object bounds as seen from outside: the outermost {@link Bool} it is an
      * operand of (at any depth), or the object itself. A ray crossing a surface enters or leaves
      * this solid, which is what keeps the integrator's medium stack consistent when a CSG
-     * result's entry and exit surfaces belong to different leaves. Set at freeze.
+     * result's entry and exit surfaces belong to different leaves. Set at freeze; before, an
+     * operand's is the Bool it was given to (so that it cannot be given to a second one).
      */
     public final GObject solid() { return solid != null ? solid : this; }
 
-    /** Set by an enclosing CSG node when it freezes (outer nodes after inner ones, so the outermost wins). */
+    /** Set by the CSG node that takes this object as an operand, then at its freeze (outer nodes after inner ones, so the outermost wins). */
     void solid(GObject s) { solid = s; }
 
     private GObject solid;

@@ -229,6 +229,13 @@ class BoolTest {
         assertThrows(IllegalArgumentException.class, () -> bool(Bool.Op.INTERSECTION, s, f));
         assertThrows(IllegalArgumentException.class, () -> new Bool(Bool.Op.UNION, java.util.Arrays.asList(s, null)));
         assertEquals(0, new TriangleMesh(TestMeshes.cube()).boundaryEdgeCount());
+        // An operand belongs to one Bool; a Bool refused leaves its operands free.
+        Sphere p = new Sphere(Vec3.ZERO, 1), q = new Sphere(Vec3.X, 1);
+        assertThrows(IllegalArgumentException.class, () -> bool(Bool.Op.UNION, p, open));
+        Bool first = bool(Bool.Op.UNION, p, q);
+        assertEquals("difference operand 1 (sphere) is already an operand of another union",
+                assertThrows(IllegalArgumentException.class, () -> bool(Bool.Op.DIFFERENCE, q, new Sphere(Vec3.Y, 1))).getMessage());
+        assertSame(first, bool(Bool.Op.INTERSECTION, first, new Sphere(Vec3.Y, 1)).operands().get(0));
     }
 
     @Test
@@ -274,6 +281,35 @@ class BoolTest {
         }
         assertEquals(3, ctx.stackTop);
         assertSame(first, ctx.acquireSpans(), "every borrowed span buffer was given back");
+    }
+
+    @Test
+    void steadyStateQueriesAllocateNothing() {
+        Bool u = sample();
+        TraceContext ctx = new TraceContext();
+        Ray r = new Ray();
+        Hit h = new Hit();
+        SpanBuffer out = new SpanBuffer();
+        java.util.Random rnd = new java.util.Random(5);
+        double[] dirs = new double[3 * 1024];
+        for (int i = 0; i < dirs.length; i++) dirs[i] = rnd.nextGaussian();
+        Runnable work = () -> {
+            for (int i = 0; i < 10_000; i++) {
+                int k = 3 * (i & 1023);
+                r.set(0.1, 0.2, -0.1, dirs[k], dirs[k + 1], dirs[k + 2], 0, Double.POSITIVE_INFINITY);
+                u.intersect(r, h.reset(r.tMax), ctx);
+                u.occluded(r, ctx);
+                out.clear();
+                u.spans(r, out, ctx);
+            }
+        };
+        work.run(); // warm up: pooled buffers and stacks grow once, the JIT compiles
+        work.run();
+        var bean = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+        long before = bean.getCurrentThreadAllocatedBytes();
+        work.run();
+        long allocated = bean.getCurrentThreadAllocatedBytes() - before;
+        assertTrue(allocated < 4096, "30,000 queries allocated " + allocated + " bytes");
     }
 
     @Test

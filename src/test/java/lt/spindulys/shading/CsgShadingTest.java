@@ -1,6 +1,7 @@
 package lt.spindulys.shading;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 
@@ -86,6 +87,39 @@ class CsgShadingTest {
             double expected = 0.9 * fa.get(c) * Math.exp(-0.2 * 3) * 0.8 * fb.get(c);
             assertEquals(expected, rgb[c], 1e-9, "channel " + c);
         }
+    }
+
+    /** A 24x24 image of a union of two transparent spheres in front of a checkered wall. */
+    private static double[] unionImage(double iorA, double iorB) throws InterruptedException {
+        Material ma = Material.builder().ka(0).kd(0).kt(0.9).ior(iorA).build();
+        Material mb = Material.builder().ka(0).kd(0).kt(0.8).filter(new Color(0.5, 1, 0.75)).ior(iorB).build();
+        // b bulges out of a's back, hidden behind a as seen from the camera.
+        Sphere a = new Sphere(new Vec3(0, 0, 0), 1.2), b = new Sphere(new Vec3(0.1, 0.1, 1.0), 0.8);
+        a.material(ma);
+        b.material(mb);
+        Box wall = new Box(new Vec3(-0.5, -0.5, 4), new Vec3(0.5, 0.5, 4.2));
+        wall.material(Material.builder().color(C).ka(1).kd(0).build());
+        SceneBuilder s = new SceneBuilder()
+                .settings(RenderSettings.DEFAULT.withSize(24, 24).withAmbient(Color.WHITE).withBackground(new Color(0.1, 0.2, 0.3)))
+                .camera(new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, 30))
+                .add(union(a, b)).add(wall);
+        return Renderer.render(s.build(), 1, ProgressListener.NONE).image().data().clone();
+    }
+
+    @Test
+    void theMediumEnteredGivesTheIndexOnBothCrossings() throws InterruptedException {
+        // Every camera ray enters through a and leaves through b or a: the inside is a's medium,
+        // so b's own index never matters, while a's bends the rays through the solid.
+        double[] base = unionImage(1.5, 1.3);
+        assertEquals(0, maxDifference(base, unionImage(1.5, 1.9)), 0, "b's index must not matter");
+        double[] other = unionImage(1.2, 1.3);
+        assertTrue(maxDifference(base, other) > 0.05, "a's index bends the rays");
+    }
+
+    private static double maxDifference(double[] x, double[] y) {
+        double m = 0;
+        for (int i = 0; i < x.length; i++) m = Math.max(m, Math.abs(x[i] - y[i]));
+        return m;
     }
 
     @Test
