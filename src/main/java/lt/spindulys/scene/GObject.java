@@ -141,6 +141,8 @@ public abstract class GObject {
         Ray local = toLocal(ray, ctx);
         if (!intersectLocal(local, hit, ctx)) return false;
         hit.object = this;
+        // A farther candidate found earlier on this ray may have been a subtracted CSG surface.
+        hit.flipNormal = false;
         hit.material = material; // a leaf's own; an enclosing object with a material overrides it after
         return true;
     }

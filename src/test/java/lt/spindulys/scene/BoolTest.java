@@ -440,4 +440,27 @@ class BoolTest {
     }
 
     private static double[] shadeN(Ray r, Hit h) { return shade(r, h).ng; }
+
+    @Test
+    void aNearerPlainHitFoundAfterAFlippedCsgHitIsNotFlipped() {
+        // Tested in the order added (no structure): first the hollow's far wall (a subtracted,
+        // flipped surface), then a small sphere inside the hollow, nearer, which must shade as an
+        // ordinary sphere.
+        Bool hollow = bool(Bool.Op.DIFFERENCE, new Box(new Vec3(-2, -2, -2), new Vec3(2, 2, 2)), new Sphere(Vec3.ZERO, 1.5));
+        Sphere inside = new Sphere(new Vec3(0, 0, 0.5), 0.3);
+        Scene scene = new SceneBuilder().settings(RenderSettings.DEFAULT.withAccelerator(lt.spindulys.accel.AcceleratorKind.BRUTE_FORCE))
+                .add(hollow).add(inside).build();
+        Ray r = new Ray().set(0, 0, -1, 0, 0, 1, 0, Double.POSITIVE_INFINITY);
+        TraceContext ctx = new TraceContext();
+        Hit h = new Hit();
+        assertTrue(hollow.intersect(r, h.reset(r.tMax), ctx));
+        assertTrue(h.flipNormal, "from inside the hollow its far wall is a subtracted surface");
+        assertTrue(scene.intersect(r, h, ctx));
+        assertSame(inside, h.object);
+        assertEquals(1.2, h.t, 1e-12);
+        assertFalse(h.flipNormal);
+        ShadingData sd = new ShadingData();
+        h.object.shade(r, h, sd);
+        assertTrue(sd.ns[2] < 0, "the sphere's normal faces the ray");
+    }
 }
