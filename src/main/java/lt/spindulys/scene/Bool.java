@@ -192,8 +192,31 @@ public final class Bool extends GObject {
 
     // ---- rays ----
 
+    /**
+     * The operand that alone decides the ray within (tMin, tMax), or null: a difference's first
+     * operand when the ray misses every subtracted operand's bounds, a union's only operand whose
+     * bounds it enters. Then its own nearest hit (or any-hit) is the result and no spans are
+     * needed: the common case, for most rays pass by the cut.
+     */
+    private GObject sole(Ray ray) {
+        if (op == Op.INTERSECTION) return null;
+        GObject only = null;
+        for (int i = 0; i < operands.length; i++) {
+            if (!operands[i].bounds().hitRange(ray, null)) continue;
+            if (op == Op.DIFFERENCE && i > 0 || only != null) return null;
+            only = operands[i];
+        }
+        return only;
+    }
+
     @Override
     public boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
+        GObject only = sole(ray);
+        if (only != null) {
+            if (!only.intersect(ray, hit, ctx)) return false;
+            if (own != null) hit.material = own;
+            return true;
+        }
         SpanBuffer out = ctx.acquireSpans();
         try {
             combine(ray, out, ctx);
@@ -208,6 +231,8 @@ public final class Bool extends GObject {
 
     @Override
     public boolean occluded(Ray ray, TraceContext ctx) {
+        GObject only = sole(ray);
+        if (only != null) return only.occluded(ray, ctx);
         SpanBuffer out = ctx.acquireSpans();
         try {
             combine(ray, out, ctx);
