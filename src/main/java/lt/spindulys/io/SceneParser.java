@@ -68,6 +68,8 @@ public final class SceneParser {
     private final Map<String, Token> materialsAt = new LinkedHashMap<>();
     /** The first mesh read from each file; later statements naming the file get instances of it. */
     private final Map<Path, TriangleMesh> meshes = new HashMap<>();
+    /** Likewise for subdivision surfaces, by everything that decides the refined surface. */
+    private final Map<SubdivKey, SubdivisionSurface> surfaces = new HashMap<>();
 
     private SceneParser(String text, String file, Path baseDir) {
         this.lex = new SceneLexer(text, file);
@@ -380,6 +382,22 @@ public final class SceneParser {
         Prop f = p.prop("file");
         String rel = (String) f.value;
         Path path = existingFile(f, "subdivision mesh file");
+        Prop uvProp = p.prop("uv");
+        SubdivKey key = new SubdivKey(path, uvProp != null ? existingFile(uvProp, "unwrap file") : null, level,
+                "smooth".equals(p.get("shading")), (String) p.get("boundary"), (String) p.get("uvinterpolation"),
+                (String) p.get("creasing"), (String) p.get("triangles"));
+        SubdivisionSurface same = surfaces.get(key);
+        if (same != null) return same.instance(); // the same surface again: refined once, placed twice
+        SubdivisionSurface made = refineSurface(p, f, rel, path, levelAt, level);
+        surfaces.put(key, made);
+        return made;
+    }
+
+    /** What makes two subdiv statements the same surface: file, unwrap, level, shading and scheme words. */
+    private record SubdivKey(Path file, Path uv, int level, boolean smooth, String boundary, String uvinterpolation,
+                             String creasing, String triangles) {}
+
+    private SubdivisionSurface refineSurface(Props p, Prop f, String rel, Path path, Token levelAt, int level) {
         String ext = extension(rel);
         if (!ext.equals("obj") && !ext.equals("dat")) {
             throw error(f.valueAt, "subdivision mesh file '" + rel + "' must be a Wavefront .obj or a Workframe .dat file");

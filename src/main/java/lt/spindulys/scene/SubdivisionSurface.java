@@ -50,6 +50,27 @@ public final class SubdivisionSurface extends GObject {
         mesh.smooth(smooth);
     }
 
+    /** An instance of {@code p}: its refined mesh, triangles and structure shared, not copied. */
+    private SubdivisionSurface(SubdivisionSurface p) {
+        level = p.level;
+        smooth = p.smooth;
+        refined = p.refined;
+        mesh = p.mesh.instance();
+        mesh.smooth(smooth);
+    }
+
+    /**
+     * Another placement of this surface: a new object with its own transform, material and name
+     * that shares the refined mesh, its triangles and its acceleration structure (refined and
+     * built once).
+     */
+    public SubdivisionSurface instance() {
+        return new SubdivisionSurface(this);
+    }
+
+    /** True if this surface shares another's refinement ({@link #instance()}). */
+    public boolean isInstance() { return mesh.isInstance(); }
+
     @Override
     public int freeze(Transform parentToWorld, Material inherited, int ids, AcceleratorKind accel) {
         int next = super.freeze(parentToWorld, inherited, ids, accel);

@@ -120,4 +120,35 @@ class TriangleMeshInstanceTest {
         assertTrue(m1.isSmooth());
         assertSame(m0.accelerator(), m2.accelerator());
     }
+
+    @Test
+    void theSameSubdivisionSurfaceTwiceIsRefinedOnce(@TempDir Path dir) throws IOException {
+        Files.writeString(dir.resolve("cube.obj"), TestMeshes.CUBE_OBJ);
+        Path scene = dir.resolve("s.dat");
+        Files.writeString(scene, """
+                camera { eye 0 0 -10  lookat 0 0 0 }
+                subdiv { file "cube.obj"  level 3 }
+                subdiv { file "cube.obj"  level 3  translate 3 0 0 }
+                subdiv { file "cube.obj"  level 2  translate -3 0 0 }
+                subdiv { file "cube.obj"  level 3  shading flat  translate 0 3 0 }
+                """);
+        Scene s = SceneParser.parse(scene).build();
+        SubdivisionSurface a = (SubdivisionSurface) s.objects().get(0), b = (SubdivisionSurface) s.objects().get(1);
+        SubdivisionSurface otherLevel = (SubdivisionSurface) s.objects().get(2), flat = (SubdivisionSurface) s.objects().get(3);
+        assertFalse(a.isInstance());
+        assertTrue(b.isInstance());
+        assertSame(a.refined(), b.refined());
+        assertFalse(otherLevel.isInstance() || flat.isInstance(), "a different level or shading is another surface");
+        TraceContext ctx = new TraceContext();
+        Hit ha = new Hit(), hb = new Hit();
+        Random r = new Random(3);
+        for (int i = 0; i < 500; i++) {
+            double x = r.nextDouble() * 1.6 - 0.8, y = r.nextDouble() * 1.6 - 0.8;
+            Ray ra = new Ray().set(x, y, -10, 0, 0, 1, 0, Double.POSITIVE_INFINITY);
+            Ray rb = new Ray().set(x + 3, y, -10, 0, 0, 1, 0, Double.POSITIVE_INFINITY);
+            boolean hitA = a.intersect(ra, ha.reset(ra.tMax), ctx), hitB = b.intersect(rb, hb.reset(rb.tMax), ctx);
+            assertEquals(hitA, hitB);
+            if (hitA) assertEquals(ha.t, hb.t, 1e-12);
+        }
+    }
 }
