@@ -136,7 +136,7 @@ final class BenchCommand {
             peerTable.print(out);
             out.println("  load s: parse the scene and read the OBJs; build s: freeze the scene (each mesh's BVH, the mesh put in its");
             out.println("  leaf order, and the top-level BVH over the objects); render s: trace the frame; all medians");
-            out.printf(Locale.ROOT, "  after %d warm-up renders in this JVM. Mrays/s: camera + shadow rays / render s. peak heap: the heap pools'%n", WARMUPS);
+            out.printf(Locale.ROOT, "  after %d warm-up renders in this JVM. Mrays/s: rays of all kinds / render s. peak heap: the heap pools'%n", WARMUPS);
             out.println("  peak use during one load+build+render. bytes/tri: the meshes' arrays and BVHs / their triangles.");
             out.println("  cold s: wall clock of a whole new process `java -jar render.jar SCENE -o x.tga --quiet --threads 2`");
             out.println("  (median; one untimed run first so the files are in the page cache).");
@@ -172,12 +172,13 @@ final class BenchCommand {
         double cold = coldSeconds(scene, runs, accel);
         if (peerTable == null) {
             peerTable = new BenchTable("row", "triangles", "load s", "build s", "render s", "camera rays", "shadow rays",
-                    "Mrays/s", "peak heap MiB", "bytes/tri", "cold s");
+                    "refl. rays", "refr. rays", "Mrays/s", "peak heap MiB", "bytes/tri", "cold s");
         }
         String label = "torus-" + size.name() + (accel != null ? " " + accel.keyword() : "");
         peerTable.add(label, String.format(Locale.ROOT, "%,d", last.triangles), fmt(median(load), 3),
                 fmt(median(build), 3), fmt(median(render), 3), String.format(Locale.ROOT, "%,d", last.stats.cameraRays()),
-                String.format(Locale.ROOT, "%,d", last.stats.shadowRays()), fmt(median(mrays), 2),
+                String.format(Locale.ROOT, "%,d", last.stats.shadowRays()), String.format(Locale.ROOT, "%,d", last.stats.reflectionRays()),
+                String.format(Locale.ROOT, "%,d", last.stats.refractionRays()), fmt(median(mrays), 2),
                 fmt(median(peak) / 1048576.0, 0), fmt(last.meshBytes / (double) last.triangles, 1),
                 Double.isNaN(cold) ? "failed" : fmt(cold, 3));
         out.printf(Locale.ROOT, "  %s: load %.3f s, build %.3f s, render %.3f s (%.2f Mrays/s), cold %.3f s%n", label,
