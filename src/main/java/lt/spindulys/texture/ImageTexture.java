@@ -1,0 +1,139 @@
+package lt.spindulys.texture;
+
+/**
+ * A texture sampled from a {@link TextureImage}.
+ *
+ * <p>Coordinates: texel column {@code i} (of {@code w}) has its centre at {@code u = (i + 0.5)/w};
+ * {@code v = 0} is the BOTTOM edge of the image and {@code v = 1} its top (the OBJ {@code vt}
+ * convention), so texel row {@code j} counted from the bottom has its centre at
+ * {@code v = (j + 0.5)/h}.
+ *
+ * <p>Filters: {@link Filter#NEAREST} takes the texel containing (u, v); {@link Filter#BILINEAR}
+ * mixes the four texels whose centres surround (u, v) with weights linear in the distance;
+ * {@link Filter#TRILINEAR} picks the mip level
+ * {@code L = log2(footprint * max(w, h))} (clamped to the chain; footprint 0 gives level 0),
+ * samples levels {@code floor(L)} and {@code floor(L) + 1} bilinearly and blends them by the
+ * fraction of {@code L}. The wrap mode is applied to each texel index, so filters blend across
+ * the image border the way the mode says (across the seam for {@link Wrap#REPEAT}).
+ *
+ * <p>Immutable and thread-safe; {@link #evaluate} does not allocate.
+ */
+public final class ImageTexture implements Texture {
+    private final TextureImage image;
+    private final Filter filter;
+    private final Wrap wrap;
+    /** Mip levels (only level 0 unless trilinear), fetched once so sampling never synchronises. */
+    private final float[][] levels;
+    private final int[] lw, lh;
+    private final double maxSide;
+
+    /** A texture over {@code img} with the given filter and wrap mode. */
+    public ImageTexture(TextureImage img, Filter f, Wrap w) {
+        if (img == null || f == null || w == null) throw new NullPointerException("image, filter and wrap are required");
+        this.image = img;
+        this.filter = f;
+        this.wrap = w;
+        this.levels = f == Filter.TRILINEAR ? img.levels() : new float[][] {img.base()};
+        int n = levels.length;
+        lw = new int[n];
+        lh = new int[n];
+        for (int k = 0; k < n; k++) {
+            lw[k] = img.width(k);
+            lh[k] = img.height(k);
+        }
+        maxSide = Math.max(img.width(), img.height());
+    }
+
+    /** The image sampled. */
+    public TextureImage image() {
+        return image;
+    }
+
+    /** The reconstruction filter. */
+    public Filter filter() {
+        return filter;
+    }
+
+    /** The wrap mode. */
+    public Wrap wrap() {
+        return wrap;
+    }
+
+    /**
+     * The (fractional) mip level trilinear filtering uses for a footprint of {@code footprint} uv
+     * units: {@code log2(footprint * max(w, h))} clamped to {@code [0, levelCount - 1]}.
+     */
+    public double mipLevel(double footprint) {
+        if (!(footprint > 0)) return 0;
+        double l = Math.log(footprint * maxSide) / Math.log(2);
+        double top = levels.length - 1;
+        return l <= 0 ? 0 : l >= top ? top : l;
+    }
+
+    @Override
+    public void evaluate(TexturePoint p, double[] rgb) {
+        // A NaN or infinite coordinate (degenerate mapping) would poison every weight; sample the
+        // origin instead.
+        double u = Double.isFinite(p.u) ? p.u : 0, v = Double.isFinite(p.v) ? p.v : 0;
+        switch (filter) {
+            case NEAREST:
+                nearest(u, v, rgb);
+                break;
+            case BILINEAR:
+                bilinear(0, u, v, rgb, 1, false);
+                break;
+            case TRILINEAR: {
+                double l = mipLevel(p.footprint);
+                int l0 = (int) l;
+                double t = l - l0;
+                bilinear(l0, u, v, rgb, 1 - t, false);
+                if (t > 0) bilinear(l0 + 1, u, v, rgb, t, true);
+                break;
+            }
+            default:
+                throw new AssertionError(filter);
+        }
+    }
+
+    private void nearest(double u, double v, double[] rgb) {
+        int w = lw[0], h = lh[0];
+        int i = wrap.apply(floor(u * w), w);
+        int j = wrap.apply(floor(v * h), h);
+        float[] d = levels[0];
+        int q = ((h - 1 - j) * w + i) * 3;  // j counts from the bottom; storage is top-down
+        rgb[0] = d[q];
+        rgb[1] = d[q + 1];
+        rgb[2] = d[q + 2];
+    }
+
+    /** Writes (or, if {@code add}, adds) {@code scale} times the bilinear sample of level {@code k}. */
+    private void bilinear(int k, double u, double v, double[] rgb, double scale, boolean add) {
+        int w = lw[k], h = lh[k];
+        double x = u * w - 0.5, y = v * h - 0.5;
+        int x0 = floor(x), y0 = floor(y);
+        // Fractions from the unclamped floor, so they stay in [0, 1) however far out (u, v) is.
+        double fx = x - Math.floor(x), fy = y - Math.floor(y);
+        int i0 = wrap.apply(x0, w), i1 = wrap.apply(x0 + 1, w);
+        int r0 = h - 1 - wrap.apply(y0, h), r1 = h - 1 - wrap.apply(y0 + 1, h);
+        float[] d = levels[k];
+        int a = (r0 * w + i0) * 3, b = (r0 * w + i1) * 3, c = (r1 * w + i0) * 3, e = (r1 * w + i1) * 3;
+        double w00 = (1 - fx) * (1 - fy) * scale, w10 = fx * (1 - fy) * scale;
+        double w01 = (1 - fx) * fy * scale, w11 = fx * fy * scale;
+        for (int ch = 0; ch < 3; ch++) {
+            double s = w00 * d[a + ch] + w10 * d[b + ch] + w01 * d[c + ch] + w11 * d[e + ch];
+            rgb[ch] = add ? rgb[ch] + s : s;
+        }
+    }
+
+    /** Floor to int, saturating for huge or infinite coordinates (the wrap then folds them). */
+    private static int floor(double x) {
+        // Bounded well inside int range so that index + 1 cannot overflow.
+        double f = Math.floor(x);
+        return f < -(1 << 30) ? -(1 << 30) : f > (1 << 30) ? 1 << 30 : (int) f;
+    }
+
+    @Override
+    public String toString() {
+        return "ImageTexture[" + image + ", " + filter + ", " + wrap + "]";
+    }
+}

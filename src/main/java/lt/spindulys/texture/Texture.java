@@ -1,0 +1,16 @@
+package lt.spindulys.texture;
+
+/**
+ * A colour (linear RGB) over surface coordinates or space. Implementations are immutable after
+ * construction and thread-safe, and do not allocate in {@link #evaluate}.
+ */
+public interface Texture {
+    /** Writes the linear RGB colour at {@code p} into {@code rgb[0..2]}. */
+    void evaluate(TexturePoint p, double[] rgb);
+
+    /** The mean of the three channels at {@code p} (e.g. a bump height); {@code scratch3} is overwritten. */
+    default double scalar(TexturePoint p, double[] scratch3) {
+        evaluate(p, scratch3);
+        return (scratch3[0] + scratch3[1] + scratch3[2]) / 3;
+    }
+}
