@@ -106,6 +106,53 @@ class TextureShadingTest {
         assertEquals(5 * angle, seen[0], 1e-9);
     }
 
+    /**
+     * A fine black-and-white checker image on a floor seen towards the horizon: with trilinear
+     * filtering the footprint picks coarser mip levels with distance, so the far rows settle to
+     * the mean grey; bilinear filtering keeps sampling single texels there and shimmers.
+     */
+    @Test
+    void distantTrilinearTextureDoesNotShimmer() throws InterruptedException {
+        int n = 64;
+        double[] texels = new double[n * n * 3];
+        for (int y = 0; y < n; y++) for (int x = 0; x < n; x++) java.util.Arrays.fill(texels, 3 * (y * n + x), 3 * (y * n + x) + 3, (x + y) % 2);
+        lt.spindulys.texture.TextureImage img = lt.spindulys.texture.TextureImage.fromLinear(n, n, texels);
+        double far = farRowSpread(img, lt.spindulys.texture.Filter.TRILINEAR);
+        double aliased = farRowSpread(img, lt.spindulys.texture.Filter.BILINEAR);
+        assertTrue(far < 0.025, "trilinear far rows vary by " + far);
+        assertTrue(aliased > 0.08 && aliased > 4 * far, "bilinear far rows vary by only " + aliased + " (trilinear " + far + ")");
+    }
+
+    /** Standard deviation of the pixels in the image rows just below the horizon (emission only, so pixel = texture). */
+    private static double farRowSpread(lt.spindulys.texture.TextureImage img, lt.spindulys.texture.Filter filter) throws InterruptedException {
+        Texture t = new lt.spindulys.texture.ImageTexture(img, filter, lt.spindulys.texture.Wrap.REPEAT);
+        Material m = Material.builder().ka(0).kd(0).texture(Channel.EMISSION, t, new Planar(Vec3.ZERO, Vec3.Y, Vec3.X, 1, 1)).build();
+        SceneBuilder b = new SceneBuilder()
+                .settings(RenderSettings.DEFAULT.withSize(64, 64).withBackground(Color.BLACK))
+                .camera(new PinholeCamera(new Vec3(0, 1, 0), new Vec3(0, 0.7, 10), Vec3.Y, 40));
+        b.add(new Plane(Vec3.Y, 0).material(m));
+        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).image();
+        double sum = 0, sum2 = 0;
+        int count = 0;
+        for (int y = 0; y < image.height(); y++) {
+            double rowMean = 0;
+            for (int x = 0; x < image.width(); x++) rowMean += image.get(x, y, 0);
+            if (rowMean == 0) continue; // sky
+            // The first few floor rows under the horizon: the farthest floor.
+            for (int yy = y + 1; yy < y + 5; yy++) {
+                for (int x = 0; x < image.width(); x++) {
+                    double v = image.get(x, yy, 0);
+                    sum += v;
+                    sum2 += v * v;
+                    count++;
+                }
+            }
+            break;
+        }
+        double mean = sum / count;
+        return Math.sqrt(Math.max(0, sum2 / count - mean * mean));
+    }
+
     @Test
     void bumpTiltsTheNormalAgainstTheSlope() {
         // Height = x on the floor: the displaced surface is y = s x, whose normal is (-s, 1, 0).
