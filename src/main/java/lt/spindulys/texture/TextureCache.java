@@ -21,13 +21,14 @@ import javax.imageio.stream.ImageInputStream;
  * (and one mip chain).
  *
  * <p>Formats: {@code .tga} files are read by {@link TgaReader}; everything else by
- * javax.imageio, which recognises PNG, JPEG, BMP and GIF by their contents. Alpha is ignored.
+ * javax.imageio, which recognises PNG, JPEG, BMP and GIF by their contents. Alpha is ignored;
+ * 16-bit colour images are reduced to 8 bits per channel (16-bit greyscale keeps its precision).
  *
  * <p>Colour: 8-bit colour images are taken as sRGB-encoded and decoded to linear with the exact
  * sRGB transfer function ({@code c / 12.92} for {@code c <= 0.04045}, else
- * {@code ((c + 0.055) / 1.055)^2.4}). Greyscale images (greyscale PNG/JPEG, TGA types 3 and 11)
- * are taken as LINEAR data ({@code value / max}), since they usually hold heights or masks for
- * bump, transparency or specular channels rather than colours.
+ * {@code ((c + 0.055) / 1.055)^2.4}); palette images count as colour. Greyscale images
+ * (greyscale PNG/JPEG, TGA types 3 and 11) are taken as LINEAR data ({@code value / max}), since
+ * they usually hold heights or masks for bump, transparency or specular channels, not colours.
  *
  * <p>Limit: images of more than {@link #MAX_PIXELS} pixels are refused (before their pixels are
  * decoded): a texel costs 12 bytes plus a third for the mip chain, so the limit keeps one texture

@@ -97,14 +97,25 @@ public final class TgaReader {
             throw new IOException("truncated TGA file (pixel data ends early)");
         }
 
+        // Reorder in place to top-down, left-to-right (a second array would cost 4 bytes a pixel).
         boolean topDown = (descriptor & 0x20) != 0, rightToLeft = (descriptor & 0x10) != 0;
-        if (topDown && !rightToLeft) return new Image(w, ht, grey, pixels);
-        int[] out = new int[n];
-        for (int r = 0; r < ht; r++) {
-            int y = topDown ? r : ht - 1 - r;
-            for (int c = 0; c < w; c++) out[y * w + (rightToLeft ? w - 1 - c : c)] = pixels[r * w + c];
+        if (!topDown) {
+            for (int a = 0, b = ht - 1; a < b; a++, b--) {
+                for (int c = 0; c < w; c++) swap(pixels, a * w + c, b * w + c);
+            }
         }
-        return new Image(w, ht, grey, out);
+        if (rightToLeft) {
+            for (int r = 0; r < ht; r++) {
+                for (int a = r * w, b = a + w - 1; a < b; a++, b--) swap(pixels, a, b);
+            }
+        }
+        return new Image(w, ht, grey, pixels);
+    }
+
+    private static void swap(int[] a, int i, int j) {
+        int t = a[i];
+        a[i] = a[j];
+        a[j] = t;
     }
 
     /** TGA stores true colour as B, G, R(, A); greyscale as one byte. */
