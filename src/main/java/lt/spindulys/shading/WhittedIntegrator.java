@@ -23,6 +23,10 @@ import lt.spindulys.texture.Channel;
  * result is one solid, so a ray that enters it through one leaf and leaves through another (of
  * another material) leaves the medium it entered, whose material gives the inside's index of
  * refraction and attenuation; the exit surface's material still gives that surface's kt and filter.
+ *
+ * <p>Textures ({@link TextureShading}): a material's bound channels are evaluated at each shaded
+ * hit before lighting (colour, ks, kr, kt, emission, bumped shading normal), with a footprint from
+ * the path length and the camera's pixel angle; shadow rays evaluate transparency textures.
  */
 public final class WhittedIntegrator {
     /** Surfaces a shadow ray may cross before the light counts as blocked. */

@@ -75,6 +75,25 @@ class SceneParserTextureTest {
         assertNotSame(a, c);
     }
 
+    /** A mesh's OBJ vt coordinates reach the texture through the uv mapping: an emissive quad shows the texel at its (u, v). */
+    @Test
+    void objTextureCoordinatesReachTheTexture(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        // Every corner has the same vt, so the whole quad shows the texture at (0.8, 0.3).
+        java.nio.file.Files.writeString(dir.resolve("quad.obj"), "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0.8 0.3\nf 1/1 2/1 3/1 4/1\n");
+        java.nio.file.Files.copy(Path.of("textures/grid.png"), dir.resolve("grid.png"));
+        SceneBuilder b = SceneParser.parse("""
+                settings { width 1  height 1  ambient 0 }
+                camera { eye 0 0 -3  lookat 0 0 0  fov 10 }
+                texture grid { image "grid.png"  filter nearest }
+                mesh { file "quad.obj"  material { ka 0  kd 0  map { texture grid  channel emission } } }
+                """, "t.dat", dir);
+        var image = lt.spindulys.render.Renderer.render(b.build(), 1, lt.spindulys.render.ProgressListener.NONE).image();
+        Texture grid = b.objects().get(0).material().texture(Channel.EMISSION);
+        double[] expected = colourAt(grid, 0.8, 0.3);
+        for (int c = 0; c < 3; c++) assertEquals(expected[c], image.get(0, 0, c), 1e-9);
+        assertNotEquals(colourAt(grid, 0.2, 0.3)[0], expected[0], 1e-3); // the u matters
+    }
+
     @Test
     void inlineMaterialsBindTexturesToo() {
         SceneBuilder b = parse("""
