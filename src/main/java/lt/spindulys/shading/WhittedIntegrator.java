@@ -100,6 +100,8 @@ public final class WhittedIntegrator {
         hit.object.shade(ray, hit, sd);
         double dlen = Math.sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
         double dx = ray.dx / dlen, dy = ray.dy / dlen, dz = ray.dz / dlen;
+        // The normal pass shows the bumped normal that shading uses.
+        if (sd.material.texture(Channel.BUMP) != null) TextureShading.evaluate(sd.material, sd, footprint(sd, hit.t * dlen, dx, dy, dz), s);
         // As in trace: flip both normals towards the ray by the geometric one, and fall back to
         // the geometric normal where the interpolated one still faces away.
         double sign = sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz < 0 ? 1 : -1;
@@ -108,6 +110,12 @@ public final class WhittedIntegrator {
         out[0] = hit.t * dlen;
         out[1] = nx; out[2] = ny; out[3] = nz;
         return hit.object.id();
+    }
+
+    /** World-space width of the pixel's footprint at a hit a path of this length reaches along unit direction d. */
+    private double footprint(ShadingData sd, double travelled, double dx, double dy, double dz) {
+        double cos = Math.abs(sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz);
+        return travelled * pixelAngle / Math.max(cos, MIN_FOOTPRINT_COSINE);
     }
 
     private void trace(Ray ray, int depth, double weight, TracerScratch s, double[] out) {
@@ -127,12 +135,7 @@ public final class WhittedIntegrator {
         double travelled = s.travelled[depth] + hit.t * dlen;
 
         // Textured surface terms (colour, ks, kr, kt, emission) and the bumped shading normal.
-        double footprint = 0;
-        if (m.isTextured()) {
-            double cos = Math.abs(sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz);
-            footprint = travelled * pixelAngle / Math.max(cos, MIN_FOOTPRINT_COSINE);
-        }
-        TextureShading.evaluate(m, sd, footprint, s);
+        TextureShading.evaluate(m, sd, m.isTextured() ? footprint(sd, travelled, dx, dy, dz) : 0, s);
         double[] terms = s.terms;
         double cr = terms[0], cg = terms[1], cb = terms[2], ks = terms[3], kr = terms[4], kt = terms[5];
         double er = terms[6], eg = terms[7], eb = terms[8];

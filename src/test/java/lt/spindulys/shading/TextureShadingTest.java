@@ -185,6 +185,21 @@ class TextureShadingTest {
     }
 
     @Test
+    void theNormalPassShowsTheBumpedNormal() {
+        double s = 0.5;
+        Texture ramp = (p, rgb) -> { rgb[0] = rgb[1] = rgb[2] = p.u; };
+        Material m = Material.builder().bumpStrength(s).texture(Channel.BUMP, ramp, new Planar(Vec3.ZERO, Vec3.Y, Vec3.X, 1, 1)).build();
+        WhittedIntegrator w = new WhittedIntegrator(floorScene(m).build());
+        double[] out = new double[4];
+        w.traceFirstHit(new lt.spindulys.math.Ray().set(0.2, 5, 0.3, 0, -1, 0, 0, Double.POSITIVE_INFINITY), w.newScratch(), out);
+        double len = Math.hypot(s, 1);
+        assertEquals(5, out[0], 1e-9);
+        assertEquals(-s / len, out[1], 1e-9);
+        assertEquals(1 / len, out[2], 1e-9);
+        assertEquals(0, out[3], 1e-9);
+    }
+
+    @Test
     void aChannelTakesOneTexture() {
         Material.Builder b = Material.builder().texture(Channel.DIFFUSE, constant(1, 1, 1), new Uv(1, 1));
         assertThrows(IllegalArgumentException.class, () -> b.texture(Channel.DIFFUSE, constant(1, 1, 1), new Uv(1, 1)));
