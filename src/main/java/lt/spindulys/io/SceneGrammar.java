@@ -46,12 +46,22 @@ final class SceneGrammar {
         /** rotate x|y|z degrees, or rotate ax ay az degrees. */
         ROTATE,
         /** scale s, or scale sx sy sz. */
-        SCALE
+        SCALE,
+        /** One number, or two (for u and v). */
+        PAIR,
+        /** The name of a texture defined earlier. */
+        TEXTURE,
+        /** A nested { ... } block of {@link SceneGrammar#MAP} keys: a texture bound to a material channel. */
+        MAP
     }
 
     /** What a block makes, which decides how the parser turns its keys into builder calls. */
     enum Category {
         SETTINGS, CAMERA, LIGHT, MATERIAL,
+        /** A named texture: an image or a procedural pattern. */
+        TEXTURE,
+        /** A texture binding nested in a material (not a statement). */
+        MAP,
         /** A shape made from its own keys. */
         OBJECT,
         /**
@@ -143,7 +153,36 @@ final class SceneGrammar {
             opt("ior", Kind.NUMBER),
             opt("beta", Kind.COLOR),
             opt("filter", Kind.COLOR),
-            opt("fresnel", Kind.BOOLEAN)));
+            opt("fresnel", Kind.BOOLEAN),
+            repeat("map", Kind.MAP)));
+
+    /** Texture kinds of a texture block's 'pattern' key. */
+    static final List<String> PATTERNS = List.of("checker", "noise", "marble", "wood");
+
+    // Either 'image' or 'pattern' (checked by the parser); filter and wrap apply to images, the
+    // rest to patterns. Turbulence and octaves default per pattern (in the parser).
+    static final Block TEXTURE = new Block("texture", Category.TEXTURE, false, List.of(
+            opt("image", Kind.STRING),
+            choice("pattern", null, PATTERNS.toArray(String[]::new)),
+            choice("filter", "bilinear", "bilinear", "nearest", "trilinear"),
+            choice("wrap", "repeat", "repeat", "clamp", "mirror"),
+            opt("scale", Kind.NUMBER, 1.0),
+            opt("color1", Kind.COLOR, Color.WHITE),
+            opt("color2", Kind.COLOR, Color.BLACK),
+            opt("solid", Kind.BOOLEAN, false),
+            opt("turbulence", Kind.NUMBER),
+            opt("octaves", Kind.INTEGER)));
+
+    /** The keys of a material's nested 'map' block. */
+    static final Block MAP = new Block("map", Category.MAP, false, List.of(
+            req("texture", Kind.TEXTURE),
+            new Key("channel", Kind.CHOICE, false, false, "diffuse", lt.spindulys.texture.Channel.keywords()),
+            choice("mapping", "uv", "uv", "planar", "spherical", "cylindrical"),
+            opt("center", Kind.VECTOR, Vec3.ZERO),
+            opt("axis", Kind.VECTOR, Vec3.Y),
+            opt("reference", Kind.VECTOR, Vec3.X),
+            opt("scale", Kind.PAIR, new double[] {1, 1}),
+            opt("strength", Kind.NUMBER)));
 
     static final Block SPHERE = solid("sphere",
             opt("center", Kind.VECTOR, Vec3.ZERO),
@@ -188,7 +227,7 @@ final class SceneGrammar {
     static final Block DIFFERENCE = new Block("difference", Category.CSG, true, OBJECT_COMMON);
 
     /** Every top-level statement, in documentation order. */
-    static final List<Block> STATEMENTS = List.of(SETTINGS, CAMERA, LIGHT, MATERIAL, SPHERE, PLANE, BOX, CYLINDER, TRIANGLE, MESH, SUBDIV,
+    static final List<Block> STATEMENTS = List.of(SETTINGS, CAMERA, LIGHT, TEXTURE, MATERIAL, SPHERE, PLANE, BOX, CYLINDER, TRIANGLE, MESH, SUBDIV,
             UNION, INTERSECTION, DIFFERENCE);
 
     /** An object statement whose objects may be CSG operands. */

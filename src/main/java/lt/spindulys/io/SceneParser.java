@@ -48,6 +48,22 @@ import lt.spindulys.scene.TriangleMesh;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.SubdivInput;
 import lt.spindulys.subdiv.SubdivOptions;
+import lt.spindulys.texture.Channel;
+import lt.spindulys.texture.Checker;
+import lt.spindulys.texture.Cylindrical;
+import lt.spindulys.texture.Filter;
+import lt.spindulys.texture.ImageTexture;
+import lt.spindulys.texture.Mapping;
+import lt.spindulys.texture.Marble;
+import lt.spindulys.texture.Noise;
+import lt.spindulys.texture.Planar;
+import lt.spindulys.texture.Spherical;
+import lt.spindulys.texture.Texture;
+import lt.spindulys.texture.TextureCache;
+import lt.spindulys.texture.TextureImage;
+import lt.spindulys.texture.Uv;
+import lt.spindulys.texture.Wood;
+import lt.spindulys.texture.Wrap;
 
 /**
  * Reads a .dat scene file (the language is described in docs/scene-format.md) into a
@@ -66,6 +82,11 @@ public final class SceneParser {
     private Token settingsAt, cameraAt;
     /** Where each named material was defined, for "already defined at" and suggestions. */
     private final Map<String, Token> materialsAt = new LinkedHashMap<>();
+    /** Named textures and where each was defined. */
+    private final Map<String, Texture> textures = new HashMap<>();
+    private final Map<String, Token> texturesAt = new LinkedHashMap<>();
+    /** Every image of this parse, loaded once however many textures name it. */
+    private final TextureCache textureCache = new TextureCache();
     /** The first mesh read from each file; later statements naming the file get instances of it. */
     private final Map<Path, TriangleMesh> meshes = new HashMap<>();
     /** Likewise for subdivision surfaces, by everything that decides the refined surface. */
@@ -127,7 +148,9 @@ public final class SceneParser {
             case CAMERA -> camera(kw);
             case LIGHT -> light(kw);
             case MATERIAL -> namedMaterial(kw);
+            case TEXTURE -> texture(kw);
             case OBJECT, CSG -> builder.add(object(kw, b));
+            case MAP -> throw new IllegalStateException("map is not a statement");
         }
     }
 
@@ -216,6 +239,122 @@ public final class SceneParser {
         materialsAt.put(n.text(), kw);
     }
 
+    /** texture NAME { ... }: an image or a procedural pattern, kept by name for materials' map blocks. */
+    private void texture(Token kw) {
+        Token n = lex.next();
+        if (n.kind() != Kind.WORD) {
+            throw error(n, "expected a texture name after 'texture', found " + n.describe()
+                    + (n.kind() == Kind.STRING ? " (texture names are bare words, without quotes)" : ""));
+        }
+        Token first = texturesAt.get(n.text());
+        if (first != null) throw error(n, "texture '" + n.text() + "' is already defined at " + first.position());
+        String label = "texture '" + n.text() + "'";
+        Props p = block(SceneGrammar.TEXTURE, kw, n.text());
+        Prop image = p.prop("image"), pattern = p.prop("pattern");
+        if (image != null && pattern != null) throw error(pattern.at, label + " has both 'image' and 'pattern': give one");
+        if (image == null && pattern == null) throw error(kw, label + " needs 'image' or 'pattern'");
+        // Keys that only the other kind uses are errors rather than silently ignored.
+        for (Prop pr : p.all) {
+            String k = pr.key.name();
+            boolean imageKey = k.equals("filter") || k.equals("wrap");
+            if (image != null && !imageKey && !k.equals("image")) throw error(pr.at, "'" + k + "' applies to pattern textures, not to an image");
+            if (pattern != null && imageKey) throw error(pr.at, "'" + k + "' applies to image textures, not to a pattern");
+        }
+        Texture t = image != null ? imageTexture(p, image) : pattern(p, pattern);
+        textures.put(n.text(), t);
+        texturesAt.put(n.text(), kw);
+    }
+
+    private Texture imageTexture(Props p, Prop image) {
+        Path path = existingFile(image, "texture image");
+        TextureImage img;
+        try {
+            img = textureCache.load(path);
+        } catch (IOException e) {
+            // The cache says "FILE: reason"; the scene location and the name as written replace FILE.
+            String reason = String.valueOf(e.getMessage());
+            if (reason.startsWith(path + ": ")) reason = reason.substring(path.toString().length() + 2);
+            throw error(image.valueAt, "cannot read texture image '" + image.value + "': " + reason);
+        }
+        Filter filter = switch ((String) p.get("filter")) {
+            case "nearest" -> Filter.NEAREST;
+            case "bilinear" -> Filter.BILINEAR;
+            case "trilinear" -> Filter.TRILINEAR;
+            default -> throw new IllegalStateException("filter choice without a mapping: " + p.get("filter"));
+        };
+        Wrap wrap = switch ((String) p.get("wrap")) {
+            case "repeat" -> Wrap.REPEAT;
+            case "clamp" -> Wrap.CLAMP;
+            case "mirror" -> Wrap.MIRROR;
+            default -> throw new IllegalStateException("wrap choice without a mapping: " + p.get("wrap"));
+        };
+        return new ImageTexture(img, filter, wrap);
+    }
+
+    /** Turbulence of marble and wood when the block gives none: veins and rings visibly disturbed. */
+    private static final double MARBLE_TURBULENCE = 4, WOOD_TURBULENCE = 1;
+    /** Noise octaves when the block gives none. */
+    private static final int OCTAVES = 4;
+
+    /** A procedural texture from a texture block's pattern keys. */
+    private Texture pattern(Props p, Prop pattern) {
+        String kind = (String) pattern.value;
+        boolean turbulent = kind.equals("marble") || kind.equals("wood");
+        Prop turbulence = p.prop("turbulence"), octaves = p.prop("octaves");
+        if (turbulence != null && !turbulent) throw error(turbulence.at, "'turbulence' applies to marble and wood, not to " + kind);
+        if (octaves != null && kind.equals("checker")) throw error(octaves.at, "'octaves' applies to noise, marble and wood, not to checker");
+        Color a = (Color) p.get("color1"), b = (Color) p.get("color2");
+        double scale = p.num("scale");
+        boolean solid = (Boolean) p.get("solid");
+        int oct = octaves != null ? (Integer) octaves.value : OCTAVES;
+        try {
+            return switch (kind) {
+                case "checker" -> new Checker(a, b, scale, solid);
+                case "noise" -> new Noise(a, b, scale, oct, solid);
+                case "marble" -> new Marble(a, b, scale, turbulence != null ? (Double) turbulence.value : MARBLE_TURBULENCE, oct, solid);
+                case "wood" -> new Wood(a, b, scale, turbulence != null ? (Double) turbulence.value : WOOD_TURBULENCE, oct, solid);
+                default -> throw new IllegalStateException("pattern choice without a texture: " + kind);
+            };
+        } catch (IllegalArgumentException e) {
+            throw blame(p, e);
+        }
+    }
+
+    /** A texture bound to a channel by a material's map block. */
+    private record Binding(Channel channel, Texture texture, Mapping mapping, Double strength) {}
+
+    /** The keys of a map block that place a projection; the uv mapping takes none of them. */
+    private static final List<String> PROJECTION_KEYS = List.of("center", "axis", "reference");
+
+    /** map { texture NAME channel ... mapping ... }, after a material's 'map' key. */
+    private Binding binding(Token keyToken) {
+        Props p = block(SceneGrammar.MAP, keyToken, null);
+        Channel channel = Channel.fromKeyword((String) p.get("channel"));
+        String mapping = (String) p.get("mapping");
+        Prop strength = p.prop("strength");
+        if (strength != null && channel != Channel.BUMP) throw error(strength.at, "'strength' applies only to channel bump, not " + channel.keyword());
+        if (mapping.equals("uv")) {
+            for (String k : PROJECTION_KEYS) {
+                Prop pr = p.prop(k);
+                if (pr != null) throw error(pr.at, "'" + k + "' does not apply to mapping uv (only to planar, spherical and cylindrical)");
+            }
+        }
+        double[] scale = (double[]) p.get("scale");
+        Mapping m;
+        try {
+            m = switch (mapping) {
+                case "uv" -> new Uv(scale[0], scale[1]);
+                case "planar" -> new Planar(p.vec("center"), p.vec("axis"), p.vec("reference"), scale[0], scale[1]);
+                case "spherical" -> new Spherical(p.vec("center"), p.vec("axis"), p.vec("reference"), scale[0], scale[1]);
+                case "cylindrical" -> new Cylindrical(p.vec("center"), p.vec("axis"), p.vec("reference"), scale[0], scale[1]);
+                default -> throw new IllegalStateException("mapping choice without a mapping: " + mapping);
+            };
+        } catch (IllegalArgumentException e) {
+            throw blame(p, e);
+        }
+        return new Binding(channel, (Texture) p.get("texture"), m, strength == null ? null : (Double) strength.value);
+    }
+
     /** A material from its block's keys, applied through the validating builder in the order written. */
     private Material material(Props p, String name) {
         Material.Builder mb = Material.builder();
@@ -234,6 +373,11 @@ public final class SceneParser {
                     case "beta" -> mb.beta((Color) v);
                     case "filter" -> mb.filter((Color) v);
                     case "fresnel" -> mb.fresnel((Boolean) v);
+                    case "map" -> {
+                        Binding bd = (Binding) v;
+                        mb.texture(bd.channel, bd.texture, bd.mapping);
+                        if (bd.strength != null) mb.bumpStrength(bd.strength);
+                    }
                     default -> throw unhandled(pr);
                 }
             } catch (IllegalArgumentException e) {
@@ -609,6 +753,12 @@ public final class SceneParser {
             case CHOICES -> choices(b, n, k.choices());
             case STRING -> string(n);
             case MATERIAL -> materialValue(keyToken);
+            case MAP -> binding(keyToken);
+            case TEXTURE -> textureValue(n);
+            case PAIR -> {
+                double u = number("expected 1 or 2 numbers for '" + n + "'");
+                yield new double[] {u, numberAhead() ? number("expected 1 or 2 numbers for '" + n + "'") : u};
+            }
             case TRANSLATE -> {
                 Vec3 v = vector("expected 3 numbers for 'translate'");
                 yield transform(keyToken, () -> Transform.translate(v));
@@ -716,6 +866,17 @@ public final class SceneParser {
         String hint = SceneGrammar.didYouMean(t.text(), materialsAt.keySet());
         if (hint.isEmpty()) hint = " (a material must be defined before the objects that use it)";
         throw error(t, "unknown material '" + t.text() + "'" + hint);
+    }
+
+    /** A texture name defined earlier. */
+    private Texture textureValue(String key) {
+        Token t = lex.next();
+        if (t.kind() != Kind.WORD) throw error(t, "expected a texture name for '" + key + "', found " + t.describe());
+        Texture tex = textures.get(t.text());
+        if (tex != null) return tex;
+        String hint = SceneGrammar.didYouMean(t.text(), texturesAt.keySet());
+        if (hint.isEmpty()) hint = " (a texture must be defined before the materials that use it)";
+        throw error(t, "unknown texture '" + t.text() + "'" + hint);
     }
 
     private Transform rotate(Token keyToken) {

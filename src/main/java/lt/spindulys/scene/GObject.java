@@ -178,7 +178,10 @@ public abstract class GObject {
         double[] q = sd.dpdu; // scratch; shadeLocal overwrites it
         objectToWorld.toLocalPoint(sd.p, q);
         double lx = q[0], ly = q[1], lz = q[2];
+        sd.pObject[0] = lx; sd.pObject[1] = ly; sd.pObject[2] = lz;
         shadeLocal(lx, ly, lz, hit, sd);
+        System.arraycopy(sd.dpdu, 0, sd.dpduObject, 0, 3);
+        System.arraycopy(sd.dpdv, 0, sd.dpdvObject, 0, 3);
         if (!objectToWorld.isIdentity()) {
             objectToWorld.vectorInPlace(sd.dpdu, 0);
             objectToWorld.vectorInPlace(sd.dpdv, 0);

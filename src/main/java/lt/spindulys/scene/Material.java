@@ -1,6 +1,9 @@
 package lt.spindulys.scene;
 
 import lt.spindulys.math.Color;
+import lt.spindulys.texture.Channel;
+import lt.spindulys.texture.Mapping;
+import lt.spindulys.texture.Texture;
 
 /**
  * Surface and medium properties of the thesis's Whitted model, immutable.
@@ -10,6 +13,8 @@ import lt.spindulys.math.Color;
  * <li>medium: light travelling a distance d inside is attenuated by e^(-beta*d) per channel;</li>
  * <li>fresnel: Schlick's approximation moves the reflected share of kt into reflection.</li>
  * </ul>
+ * Any channel may be driven by a texture through a mapping ({@link Builder#texture}): the
+ * integrator evaluates the bound channels at each hit (see {@link Channel} for what each does).
  * Build with {@link #builder()}; every setter validates its value.
  */
 public final class Material {
@@ -20,10 +25,18 @@ public final class Material {
     private final Color color, filter, beta;
     private final double ka, kd, ks, shininess, kr, kt, ior;
     private final boolean fresnel;
+    private final Texture[] textures;
+    private final Mapping[] mappings;
+    private final double bumpStrength;
+    private final boolean textured;
 
     private Material(Builder b) {
         name = b.name; color = b.color; filter = b.filter; beta = b.beta;
         ka = b.ka; kd = b.kd; ks = b.ks; shininess = b.shininess; kr = b.kr; kt = b.kt; ior = b.ior; fresnel = b.fresnel;
+        textures = b.textures.clone(); mappings = b.mappings.clone(); bumpStrength = b.bumpStrength;
+        boolean any = false;
+        for (Texture t : textures) any |= t != null;
+        textured = any;
     }
 
     public static Builder builder() { return new Builder(); }
@@ -33,6 +46,7 @@ public final class Material {
         Builder b = new Builder();
         b.name = name; b.color = color; b.filter = filter; b.beta = beta;
         b.ka = ka; b.kd = kd; b.ks = ks; b.shininess = shininess; b.kr = kr; b.kt = kt; b.ior = ior; b.fresnel = fresnel;
+        b.textures = textures.clone(); b.mappings = mappings.clone(); b.bumpStrength = bumpStrength;
         return b;
     }
 
@@ -52,6 +66,14 @@ public final class Material {
     public double ior() { return ior; }
     public boolean fresnel() { return fresnel; }
     public boolean isTransparent() { return kt > 0; }
+    /** The texture bound to a channel, or null. */
+    public Texture texture(Channel c) { return textures[c.ordinal()]; }
+    /** The mapping of the texture bound to a channel, or null. */
+    public Mapping mapping(Channel c) { return mappings[c.ordinal()]; }
+    /** True if any channel has a texture. */
+    public boolean isTextured() { return textured; }
+    /** Object-space height of a bump texture's value 1 (the bump channel's texture is scaled by it). */
+    public double bumpStrength() { return bumpStrength; }
     public boolean attenuates() { return !beta.isBlack(); }
 
     @Override public String toString() { return "Material[" + (name == null ? "unnamed" : name) + "]"; }
@@ -62,6 +84,9 @@ public final class Material {
         private Color color = Color.grey(0.8), filter = Color.WHITE, beta = Color.BLACK;
         private double ka = 0.1, kd = 0.9, ks = 0, shininess = 20, kr = 0, kt = 0, ior = 1;
         private boolean fresnel;
+        private Texture[] textures = new Texture[Channel.values().length];
+        private Mapping[] mappings = new Mapping[Channel.values().length];
+        private double bumpStrength = 1;
 
         public Builder name(String v) { name = v; return this; }
         public Builder color(Color v) { color = colour("color", v); return this; }
@@ -75,6 +100,25 @@ public final class Material {
         public Builder kr(double v) { kr = nonNegative("kr", v); return this; }
         public Builder kt(double v) { kt = nonNegative("kt", v); return this; }
         public Builder fresnel(boolean v) { fresnel = v; return this; }
+
+        /**
+         * Binds a texture, evaluated through a mapping, to a channel; each channel takes at most
+         * one texture.
+         */
+        public Builder texture(Channel channel, Texture texture, Mapping mapping) {
+            if (channel == null || texture == null || mapping == null) throw new IllegalArgumentException("texture channel, texture and mapping must all be given");
+            if (textures[channel.ordinal()] != null) throw new IllegalArgumentException("channel " + channel.keyword() + " already has a texture");
+            textures[channel.ordinal()] = texture;
+            mappings[channel.ordinal()] = mapping;
+            return this;
+        }
+
+        /** Scales the bump channel's height (object-space units per texture value 1); default 1. */
+        public Builder bumpStrength(double v) {
+            if (!Double.isFinite(v)) throw new IllegalArgumentException("bump strength must be a finite number, found " + v);
+            bumpStrength = v;
+            return this;
+        }
 
         public Builder ior(double v) {
             if (!(v > 0) || !Double.isFinite(v)) throw new IllegalArgumentException("ior must be a positive number, found " + v);

@@ -15,6 +15,11 @@ public final class ShadingData {
     /** Partial derivatives of the point with respect to u and v (not normalised). */
     public final double[] dpdu = new double[3];
     public final double[] dpdv = new double[3];
+    /** The hit point in the object's own space (what texture mappings project). */
+    public final double[] pObject = new double[3];
+    /** dpdu and dpdv in the object's own space, before the object-to-world transform. */
+    public final double[] dpduObject = new double[3];
+    public final double[] dpdvObject = new double[3];
     /** Surface texture coordinates. */
     public double u, v;
     public Material material;

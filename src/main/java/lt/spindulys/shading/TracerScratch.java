@@ -6,6 +6,7 @@ import lt.spindulys.scene.Hit;
 import lt.spindulys.scene.Material;
 import lt.spindulys.scene.ShadingData;
 import lt.spindulys.scene.TraceContext;
+import lt.spindulys.texture.TexturePoint;
 
 /**
  * Per-thread scratch of the integrator: one ray, hit, shading record and colour per recursion
@@ -23,6 +24,16 @@ public final class TracerScratch {
     final Hit shadowHit = new Hit();
     final ShadingData shadowShading = new ShadingData();
     final double[] transmission = new double[3];
+    /** Distance travelled from the camera to the origin of the ray at each depth (for texture footprints). */
+    final double[] travelled;
+    // Texture evaluation (TextureShading): the point handed to textures, colour and scalar
+    // scratch, a shifted object point for bump differences, and the textured surface terms.
+    final TexturePoint texPoint = new TexturePoint();
+    final double[] texRgb = new double[3];
+    final double[] texScratch = new double[3];
+    final double[] texObject = new double[3];
+    /** Surface terms after textures: colour r g b, ks, kr, kt, emission r g b. */
+    final double[] terms = new double[9];
 
     // Media the ray is inside, innermost last: the material it entered by and the solid
     // (GObject.solid()) it entered, so leaving through another surface of the same CSG solid
@@ -40,6 +51,7 @@ public final class TracerScratch {
         hits = new Hit[levels];
         shading = new ShadingData[levels];
         colour = new double[levels][3];
+        travelled = new double[levels];
         for (int i = 0; i < levels; i++) {
             rays[i] = new Ray();
             hits[i] = new Hit();

@@ -9,6 +9,7 @@ import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.ShadingData;
+import lt.spindulys.texture.Channel;
 
 /**
  * Recursive Whitted ray tracing, the thesis's model: at the nearest hit, ambient plus diffuse and
@@ -22,6 +23,10 @@ import lt.spindulys.scene.ShadingData;
  * result is one solid, so a ray that enters it through one leaf and leaves through another (of
  * another material) leaves the medium it entered, whose material gives the inside's index of
  * refraction and attenuation; the exit surface's material still gives that surface's kt and filter.
+ *
+ * <p>Textures ({@link TextureShading}): a material's bound channels are evaluated at each shaded
+ * hit before lighting (colour, ks, kr, kt, emission, bumped shading normal), with a footprint from
+ * the path length and the camera's pixel angle; shadow rays evaluate transparency textures.
  */
 public final class WhittedIntegrator {
     /** Surfaces a shadow ray may cross before the light counts as blocked. */
@@ -31,13 +36,38 @@ public final class WhittedIntegrator {
     private final RenderSettings settings;
     private final PointLight[] lights;
     private final boolean transparentShadows;
+    /** Angle between the primary rays of neighbouring pixels at the image centre, radians (texture footprints). */
+    private final double pixelAngle;
 
     public WhittedIntegrator(Scene scene) {
         this.scene = scene;
         this.settings = scene.settings();
         this.lights = scene.lightArray();
         this.transparentShadows = scene.hasTransparentObjects();
+        this.pixelAngle = pixelAngle(scene);
     }
+
+    /**
+     * The camera's angle per pixel, measured between the rays through the two pixels at the
+     * image centre (any camera model); the footprint of a texture lookup is this angle times the
+     * path length. Away from the centre a pinhole's pixels subtend slightly less: the
+     * approximation errs on the blurrier side there.
+     */
+    static double pixelAngle(Scene scene) {
+        if (scene.camera() == null) return 0;
+        int w = scene.settings().width(), h = scene.settings().height();
+        double aspect = (double) w / h;
+        Ray a = new Ray(), b = new Ray();
+        scene.camera().generateRay(0.5, 0.5, aspect, 0.5, 0.5, 0, a);
+        scene.camera().generateRay(0.5 + 1.0 / w, 0.5, aspect, 0.5, 0.5, 0, b);
+        double la = Math.sqrt(a.dx * a.dx + a.dy * a.dy + a.dz * a.dz), lb = Math.sqrt(b.dx * b.dx + b.dy * b.dy + b.dz * b.dz);
+        double cos = (a.dx * b.dx + a.dy * b.dy + a.dz * b.dz) / (la * lb);
+        double angle = Math.acos(Math.max(-1, Math.min(1, cos)));
+        return Double.isFinite(angle) ? angle : 0;
+    }
+
+    /** Smallest incidence cosine used to widen a texture footprint on surfaces seen at a grazing angle. */
+    private static final double MIN_FOOTPRINT_COSINE = 1 / lt.spindulys.texture.Mapping.MAX_ANISOTROPY;
 
     /** A scratch sized for this scene's recursion depth, for one thread. */
     public TracerScratch newScratch() { return new TracerScratch(settings.maxDepth()); }
@@ -46,6 +76,7 @@ public final class WhittedIntegrator {
     public void traceCamera(Ray ray, TracerScratch s, double[] out) {
         s.cameraRays++;
         s.mediaCount = 0;
+        s.travelled[0] = 0;
         trace(ray, 0, 1, s, out);
     }
 
@@ -69,6 +100,8 @@ public final class WhittedIntegrator {
         hit.object.shade(ray, hit, sd);
         double dlen = Math.sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
         double dx = ray.dx / dlen, dy = ray.dy / dlen, dz = ray.dz / dlen;
+        // The normal pass shows the bumped normal that shading uses.
+        if (sd.material.texture(Channel.BUMP) != null) TextureShading.evaluate(sd.material, sd, footprint(sd, hit.t * dlen, dx, dy, dz), s);
         // As in trace: flip both normals towards the ray by the geometric one, and fall back to
         // the geometric normal where the interpolated one still faces away.
         double sign = sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz < 0 ? 1 : -1;
@@ -77,6 +110,12 @@ public final class WhittedIntegrator {
         out[0] = hit.t * dlen;
         out[1] = nx; out[2] = ny; out[3] = nz;
         return hit.object.id();
+    }
+
+    /** World-space width of the pixel's footprint at a hit a path of this length reaches along unit direction d. */
+    private double footprint(ShadingData sd, double travelled, double dx, double dy, double dz) {
+        double cos = Math.abs(sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz);
+        return travelled * pixelAngle / Math.max(cos, MIN_FOOTPRINT_COSINE);
     }
 
     private void trace(Ray ray, int depth, double weight, TracerScratch s, double[] out) {
@@ -93,6 +132,13 @@ public final class WhittedIntegrator {
         hit.object.shade(ray, hit, sd);
         Material m = sd.material;
         double dx = ray.dx / dlen, dy = ray.dy / dlen, dz = ray.dz / dlen;
+        double travelled = s.travelled[depth] + hit.t * dlen;
+
+        // Textured surface terms (colour, ks, kr, kt, emission) and the bumped shading normal.
+        TextureShading.evaluate(m, sd, m.isTextured() ? footprint(sd, travelled, dx, dy, dz) : 0, s);
+        double[] terms = s.terms;
+        double cr = terms[0], cg = terms[1], cb = terms[2], ks = terms[3], kr = terms[4], kt = terms[5];
+        double er = terms[6], eg = terms[7], eb = terms[8];
 
         // Normals facing the incoming ray: nf geometric, sn shading (kept on nf's side).
         boolean entering = sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz < 0;
@@ -103,22 +149,24 @@ public final class WhittedIntegrator {
         double px = sd.p[0], py = sd.p[1], pz = sd.p[2];
         double eps = 1e-9 * Math.max(1, Math.max(Math.abs(px), Math.max(Math.abs(py), Math.abs(pz)))) + 1e-9 * hit.t * dlen;
 
-        localIllumination(m, px, py, pz, nfx, nfy, nfz, snx, sny, snz, dx, dy, dz, eps, s, out);
+        localIllumination(m, cr, cg, cb, ks, px, py, pz, nfx, nfy, nfz, snx, sny, snz, dx, dy, dz, eps, s, out);
+        out[0] += er; out[1] += eg; out[2] += eb;
 
-        if (depth < settings.maxDepth() && (m.kr() > 0 || m.kt() > 0)) {
-            secondary(m, hit.object.solid(), entering, px, py, pz, nfx, nfy, nfz, snx, sny, snz, dx, dy, dz, eps, ray.time, depth, weight, s, out);
+        if (depth < settings.maxDepth() && (kr > 0 || kt > 0)) {
+            s.travelled[depth + 1] = travelled;
+            secondary(m, kr, kt, hit.object.solid(), entering, px, py, pz, nfx, nfy, nfz, snx, sny, snz, dx, dy, dz, eps, ray.time, depth, weight, s, out);
         }
         if (medium != null) attenuate(medium, hit.t * dlen, out);
     }
 
-    private void localIllumination(Material m, double px, double py, double pz,
+    /** Ambient, diffuse and specular light at a point with (textured) colour (cr, cg, cb) and specular ks. */
+    private void localIllumination(Material m, double cr, double cg, double cb, double ks, double px, double py, double pz,
                                    double nfx, double nfy, double nfz, double snx, double sny, double snz,
                                    double dx, double dy, double dz, double eps, TracerScratch s, double[] out) {
-        Color c = m.color();
         Color ia = settings.ambient();
         double ka = m.ka();
-        double r = ka * ia.r() * c.r(), g = ka * ia.g() * c.g(), b = ka * ia.b() * c.b();
-        double kd = m.kd(), ks = m.ks();
+        double r = ka * ia.r() * cr, g = ka * ia.g() * cg, b = ka * ia.b() * cb;
+        double kd = m.kd();
         if (kd > 0 || ks > 0) {
             double ox = px + nfx * eps, oy = py + nfy * eps, oz = pz + nfz * eps;
             for (PointLight light : lights) {
@@ -138,7 +186,7 @@ public final class WhittedIntegrator {
                 Color lc = light.color();
                 double ir = lc.r() * scale * t[0], ig = lc.g() * scale * t[1], ib = lc.b() * scale * t[2];
                 double diff = kd * ndotl;
-                r += diff * c.r() * ir; g += diff * c.g() * ig; b += diff * c.b() * ib;
+                r += diff * cr * ir; g += diff * cg * ig; b += diff * cb * ib;
                 if (ks > 0) {
                     double hx = ux - dx, hy = uy - dy, hz = uz - dz;
                     double hl = Math.sqrt(hx * hx + hy * hy + hz * hz);
@@ -180,10 +228,17 @@ public final class WhittedIntegrator {
             }
             Material m = hit.material;
             if (m.kt() <= 0) return false;
-            Color f = m.filter();
-            t[0] *= m.kt() * f.r(); t[1] *= m.kt() * f.g(); t[2] *= m.kt() * f.b();
-            if (m.attenuates() || inside != null) {
+            // A transparency texture needs the hit's shading data; shade once and reuse it below.
+            boolean shaded = m.texture(Channel.TRANSPARENCY) != null;
+            double kt = m.kt();
+            if (shaded) {
                 hit.object.shade(ray, hit, sd);
+                kt = TextureShading.shadowKt(m, sd, s);
+            }
+            Color f = m.filter();
+            t[0] *= kt * f.r(); t[1] *= kt * f.g(); t[2] *= kt * f.b();
+            if (m.attenuates() || inside != null) {
+                if (!shaded) hit.object.shade(ray, hit, sd);
                 boolean entering = sd.ng[0] * lx + sd.ng[1] * ly + sd.ng[2] * lz < 0;
                 GObject solid = hit.object.solid();
                 if (entering) {
@@ -208,11 +263,10 @@ public final class WhittedIntegrator {
         return false;
     }
 
-    private void secondary(Material m, GObject solid, boolean entering, double px, double py, double pz,
+    private void secondary(Material m, double kr, double kt, GObject solid, boolean entering, double px, double py, double pz,
                            double nfx, double nfy, double nfz, double snx, double sny, double snz,
                            double dx, double dy, double dz, double eps, double time, int depth, double weight,
                            TracerScratch s, double[] out) {
-        double kr = m.kr(), kt = m.kt();
         double reflW = kr, refrW = kt;
         double[] dir = s.dir;
         boolean canRefract = false;

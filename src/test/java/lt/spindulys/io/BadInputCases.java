@@ -68,6 +68,9 @@ public final class BadInputCases {
             + "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 1 2 6 5\n4 0 4 7 3\n";
     private static final String QUAD_OBJ = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
 
+    /** What the texture cache says about a file that is not an image it can decode. */
+    static final String UNREADABLE_IMAGE = "not a PNG, JPEG, BMP, GIF or TGA image (no decoder recognises its contents)";
+
     /** Every case; none of them must produce an image. */
     public static List<Case> scenes() {
         String cam = "camera { eye 0 0 -5  lookat 0 0 0 }\n";
@@ -85,7 +88,7 @@ public final class BadInputCases {
                 // ---- structure ----
                 c("unknown statement", "shpere { radius 1 }", "1:1: unknown statement 'shpere' (did you mean 'sphere'?)"),
                 c("property outside a block", "sphere { } radius 2", "1:12: unknown statement 'radius' ('radius' is a property of sphere or cylinder: was a block closed too early?)"),
-                c("number as statement", "42", "1:1: expected a statement (settings, camera, light, material, sphere, plane, box, cylinder, triangle, mesh, subdiv, "
+                c("number as statement", "42", "1:1: expected a statement (settings, camera, light, texture, material, sphere, plane, box, cylinder, triangle, mesh, subdiv, "
                         + "union, intersection, difference), found '42'"),
                 c("stray closing brace", cam + "}", "2:1: unexpected '}': no block is open"),
                 c("missing '{'", "sphere radius 1 }", "1:8: expected '{' after 'sphere', found 'radius'"),
@@ -210,6 +213,33 @@ public final class BadInputCases {
                         "lid.obj", QUAD_OBJ, false, "3:3: difference operand 2 (lid) is not closed: it has 4 boundary edges"),
                 withFile("open subdivision surface in a nested operand", "union {\n  sphere { }\n  intersection {\n    sphere { center 1 0 0 }\n"
                         + "    subdiv { file \"sheet.obj\"  level 1 }\n  }\n}",
-                        "sheet.obj", QUAD_OBJ, false, "5:5: intersection operand 2 (subdiv) is not closed: it has 4 boundary edges"));
+                        "sheet.obj", QUAD_OBJ, false, "5:5: intersection operand 2 (subdiv) is not closed: it has 4 boundary edges"),
+                // ---- textures ----
+                c("missing texture image", "texture t {\n  image \"maps/wood.png\"\n}", "2:9: texture image 'maps/wood.png' not found (looked in ${dir}/maps/wood.png)"),
+                withFile("unreadable texture image", "texture t { image \"bad.png\" }", "bad.png", "this is not a PNG\n", false,
+                        "1:19: cannot read texture image 'bad.png': " + UNREADABLE_IMAGE),
+                c("texture without image or pattern", "texture t { scale 2 }", "1:1: texture 't' needs 'image' or 'pattern'"),
+                c("texture with image and pattern", "texture t { image \"a.png\"  pattern wood }", "1:28: texture 't' has both 'image' and 'pattern': give one"),
+                c("filter on a pattern", "texture t { pattern checker  filter nearest }", "1:30: 'filter' applies to image textures, not to a pattern"),
+                c("unknown pattern", "texture t { pattern marbel }", "1:21: expected checker, noise, marble or wood for 'pattern', found 'marbel' (did you mean 'marble'?)"),
+                c("texture name in quotes", "texture \"t\" { pattern wood }", "1:9: expected a texture name after 'texture', found string \"t\" (texture names are bare words, without quotes)"),
+                c("texture defined twice", "texture t { pattern wood }\ntexture t { pattern noise }", "2:9: texture 't' is already defined at 1:1"),
+                c("unknown texture in a map", "texture wood { pattern wood }\nmaterial m { map { texture wod } }", "2:28: unknown texture 'wod' (did you mean 'wood'?)"),
+                c("texture used before it is defined", "material m { map { texture t } }\ntexture t { pattern wood }",
+                        "1:28: unknown texture 't' (a texture must be defined before the materials that use it)"),
+                c("map without a texture", "material m { map { channel bump } }", "1:14: map needs 'texture'"),
+                c("unknown channel", "texture t { pattern wood }\nmaterial m { map { texture t  channel colour } }",
+                        "2:39: expected diffuse, specular, reflection, transparency, emission or bump for 'channel', found 'colour'"),
+                c("misspelt map key", "texture t { pattern wood }\nmaterial m { map { texture t  mapping planar  axsi 0 0 1 } }", "2:47: unknown property 'axsi' in map (did you mean 'axis'?)"),
+                c("channel bound twice", "texture t { pattern wood }\nmaterial m { map { texture t }  map { texture t  channel diffuse } }", "2:33: channel diffuse already has a texture"),
+                c("strength on a colour channel", "texture t { pattern wood }\nmaterial m { map { texture t  strength 2 } }", "2:31: 'strength' applies only to channel bump, not diffuse"),
+                c("projection key on a uv mapping", "texture t { pattern wood }\nmaterial m { map { texture t  center 0 1 0 } }",
+                        "2:31: 'center' does not apply to mapping uv (only to planar, spherical and cylindrical)"),
+                c("reference along the axis", "texture t { pattern wood }\nmaterial m { map { texture t  mapping spherical  axis 0 2 0  reference 0 -1 0 } }",
+                        "2:50: reference direction (0.0, -1.0, 0.0) is parallel to the axis (0.0, 2.0, 0.0)"),
+                c("turbulence on a checker", "texture t { pattern checker  turbulence 2 }", "1:30: 'turbulence' applies to marble and wood, not to checker"),
+                c("octaves out of range", "texture t { pattern noise  octaves 40 }", "1:28: octaves must be 1..16, got 40"),
+                c("negative pattern scale", "texture t { pattern wood  scale -1 }", "1:27: scale must be positive and finite, got -1.0"),
+                c("zero mapping scale", "texture t { pattern wood }\nmaterial m { map { texture t  mapping planar  scale 1 0 } }", "2:47: scale must be positive, found 1.0 0.0"));
     }
 }

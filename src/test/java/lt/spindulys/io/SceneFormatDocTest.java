@@ -79,6 +79,12 @@ class SceneFormatDocTest {
         while (h.find()) assertTrue(SceneGrammar.statement(h.group(1)) != null, "documented statement " + h.group(1) + " is unknown");
     }
 
+    /** The texture binding block nested in materials is not a statement; its keys have a section of their own. */
+    @Test
+    void textureBindingKeysAreDocumented() throws IOException {
+        assertEquals(new LinkedHashSet<>(names(SceneGrammar.MAP.keys())), keyRows(section(doc(), "Texture bindings (`map`)")));
+    }
+
     @Test
     void everyExampleParses() throws IOException {
         Matcher m = DAT_BLOCK.matcher(doc());

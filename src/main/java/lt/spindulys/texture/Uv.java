@@ -1,0 +1,35 @@
+package lt.spindulys.texture;
+
+import lt.spindulys.scene.ShadingData;
+
+/**
+ * The surface's own coordinates: u = sd.u / su, v = sd.v / sv. These are the OBJ {@code vt}
+ * coordinates on meshes, the face-varying UVs refined with a subdivision surface (a .tex unwrap
+ * included), and each primitive's parametrisation otherwise (a sphere's longitude/colatitude, a
+ * plane's tangent coordinates). The footprint is converted with the object-space lengths of
+ * dp/du and dp/dv.
+ */
+public final class Uv implements Mapping {
+    private final double su, sv;
+
+    /** @param su, sv surface units per repeat along u and v (1: the coordinates as they are) */
+    public Uv(double su, double sv) {
+        if (!(su > 0) || !(sv > 0) || !Double.isFinite(su) || !Double.isFinite(sv)) {
+            throw new IllegalArgumentException("scale must be positive, found " + su + " " + sv);
+        }
+        this.su = su;
+        this.sv = sv;
+    }
+
+    @Override
+    public void map(ShadingData sd, double[] p, TexturePoint out) {
+        out.u = sd.u / su;
+        out.v = sd.v / sv;
+        MappingFrame.solid(p, out);
+        double w = out.footprint;
+        double[] du = sd.dpduObject, dv = sd.dpdvObject;
+        double lu = Math.sqrt(du[0] * du[0] + du[1] * du[1] + du[2] * du[2]);
+        double lv = Math.sqrt(dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2]);
+        out.footprint = Mapping.combine(w, w / (lu * su), w / (lv * sv));
+    }
+}
