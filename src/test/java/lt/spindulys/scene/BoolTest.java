@@ -412,6 +412,67 @@ class BoolTest {
     }
 
     @Test
+    void aFlushCutThroughUnrelatedRotatedTransformsOpensTheFaceForEveryRay() {
+        // The documented rule (class comment, scene-format.md "Coincident surfaces"): a difference
+        // removes a face that a subtracted operand shares with the first, so a box minus a box
+        // flush with one of its faces is open there. The operands here reach the shared plane
+        // through unrelated, non-axis-aligned transforms, so the two operands' ray parameters on
+        // it differ by rounding (not bit-identical, unlike the tests above); without the tie
+        // tolerance about half of the rays into the pocket would stop on a film of a's face.
+        Vec3 axis = new Vec3(1, 2, 3);
+        // a: a unit cube about the origin, scaled to 2.3 x 1.7 x 2.9, turned 37 degrees, moved.
+        // In its scaled (unrotated) frame its +x face is the plane x = 1.15, |y| <= 0.85, |z| <= 1.45.
+        Box a = box(-0.5, -0.5, -0.5, 0.5, 0.5, 0.5);
+        a.transform(Transform.scale(2.3, 1.7, 2.9)).transform(Transform.rotate(axis, 37)).transform(Transform.translate(0.1, -0.2, 0.3));
+        // b: a corner-anchored unit cube scaled and moved to x in [0.8, 1.15], |y| <= 0.4,
+        // |z| <= 0.6 of that frame (a pocket 0.35 deep whose +x face is a's), then turned in two
+        // steps (20 + 17 degrees) and moved in two steps: the same placement, composed otherwise.
+        Box b = box(0, 0, 0, 1, 1, 1);
+        b.transform(Transform.scale(0.35, 0.8, 1.2)).transform(Transform.translate(0.8, -0.4, -0.6))
+                .transform(Transform.rotate(axis, 20)).transform(Transform.rotate(axis, 17))
+                .transform(Transform.translate(0.05, -0.1, 0.1)).transform(Transform.translate(0.05, -0.1, 0.2));
+        Bool d = frozen(bool(Bool.Op.DIFFERENCE, a, b));
+        // The face frame's placement, used only to aim the rays (a third composition).
+        Transform place = Transform.rotate(axis, 37).then(Transform.translate(0.1, -0.2, 0.3));
+        java.util.Random rnd = new java.util.Random(20261201L);
+        TraceContext ctx = new TraceContext();
+        int pocket = 0, face = 0;
+        for (int i = 0; i < 20000; i++) {
+            // A target on the face plane, and a ray arriving at it from the +x side (t = L there).
+            double y = -0.6 + 1.2 * rnd.nextDouble(), z = -0.9 + 1.8 * rnd.nextDouble();
+            double ux = 0.2 + rnd.nextDouble(), uy = rnd.nextGaussian() * 0.7, uz = rnd.nextGaussian() * 0.7;
+            double len = 1 + 3 * rnd.nextDouble();
+            boolean inPocket = Math.abs(y) < 0.4 && Math.abs(z) < 0.6;
+            // Too close to the pocket's rim to say which side the ray crosses on: skipped.
+            if (Math.abs(Math.abs(y) - 0.4) < 1e-6 || Math.abs(Math.abs(z) - 0.6) < 1e-6) continue;
+            Vec3 target = place.point(new Vec3(1.15, y, z));
+            Vec3 u = place.vector(new Vec3(ux, uy, uz));
+            Vec3 o = target.plus(u.times(len));
+            Ray r = new Ray().set(o.x(), o.y(), o.z(), -u.x(), -u.y(), -u.z(), 0, Double.POSITIVE_INFINITY);
+            Hit h = new Hit().reset(r.tMax);
+            String at = "ray " + i + " at face point y=" + y + " z=" + z;
+            assertTrue(d.intersect(r, h, ctx), at);
+            if (inPocket) {
+                // Into the open pocket: the first surface is one of b's (bottom or wall, seen from
+                // inside b, so flipped), never a's face film and never b's own +x face.
+                assertSame(b, h.object, at);
+                assertTrue(h.prim != 1, at);
+                assertTrue(h.flipNormal, at);
+                assertTrue(h.t > len, at);
+                pocket++;
+            } else {
+                // Beside the pocket the face is still there, named by a.
+                assertSame(a, h.object, at);
+                assertEquals(1, h.prim, at); // a's +x face
+                assertFalse(h.flipNormal, at);
+                assertEquals(len, h.t, 1e-9 * len, at);
+                face++;
+            }
+        }
+        assertTrue(pocket > 7000 && face > 7000, pocket + " pocket rays, " + face + " face rays");
+    }
+
+    @Test
     void inASceneIdsAndTransparencyCoverTheOperands() {
         Material glass = Material.builder().kt(0.9).ior(1.5).build();
         Sphere a = new Sphere(Vec3.ZERO, 1), b = new Sphere(Vec3.X, 1);
