@@ -89,6 +89,60 @@ class CsgShadingTest {
         }
     }
 
+    @Test
+    void aNestedUnionIsOneMediumFromItsEntryToItsExit() throws InterruptedException {
+        // union(union(a, b), c): three overlapping spheres on the camera ray's axis (normal
+        // incidence, so no bending), a over z in [0, 2], b over [1, 3], c over [2.5, 4.5]. The ray
+        // enters the whole solid through a at z = 0 and leaves it through c at z = 4.5; c belongs
+        // to the outer union, a to the inner one, and both must count as surfaces of the one
+        // outermost solid for the exit through c to leave the medium entered through a.
+        Color fa = new Color(1, 0.5, 0.25), fc = new Color(0.5, 1, 0.75);
+        Material ma = Material.builder().ka(0).kd(0).kt(0.9).filter(fa).beta(0.2).ior(1.5).build();
+        Material mb = Material.builder().ka(0).kd(0).kt(0.7).beta(0.9).ior(1.1).build();
+        Material mc = Material.builder().ka(0).kd(0).kt(0.8).filter(fc).beta(0.6).ior(1.3).build();
+        Sphere a = new Sphere(new Vec3(0, 0, 1), 1), b = new Sphere(new Vec3(0, 0, 2), 1), c = new Sphere(new Vec3(0, 0, 3.5), 1);
+        a.material(ma);
+        b.material(mb);
+        c.material(mc);
+        SceneBuilder s = new SceneBuilder()
+                .settings(RenderSettings.DEFAULT.withSize(1, 1).withBackground(Color.WHITE))
+                .camera(new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, 10))
+                .add(union(union(a, b), c));
+        double[] rgb = render(s);
+        for (int ch = 0; ch < 3; ch++) {
+            // In through a (kt 0.9, filter fa), 4.5 units of a's medium (beta 0.2), out through c
+            // (kt 0.8, filter fc), then the white background with nothing absorbing. Were c's exit
+            // not taken as leaving a's medium, the ray would stay in it up to the background and
+            // be absorbed entirely (e^(-0.2 * infinity)).
+            double expected = 0.9 * fa.get(ch) * Math.exp(-0.2 * 4.5) * 0.8 * fc.get(ch);
+            assertEquals(expected, rgb[ch], 1e-9, "channel " + ch);
+        }
+    }
+
+    @Test
+    void aNestedTransparentUnionTintsAShadowOncePerCrossingOfTheWholeSolid() throws InterruptedException {
+        PointLight light = new PointLight(new Vec3(6, 8, 0), Color.WHITE);
+        double[] lit = render(floorScene(light));
+        // Three spheres on the shadow ray (unit direction (0.6, 0.8, 0) from the floor point at
+        // the origin), centred at distances 4, 5 and 6.5 with radius 1: union(union(a, b), c) is
+        // entered through a at distance 3 and left through c at distance 7.5 (the light is at 10).
+        Color fa = new Color(1, 0.5, 0.25), fc = new Color(0.5, 1, 0.75);
+        Material ma = Material.builder().kt(0.6).filter(fa).beta(0.3).ior(1.5).build();
+        Material mb = Material.builder().kt(0.5).beta(0.9).ior(1.2).build();
+        Material mc = Material.builder().kt(0.7).filter(fc).beta(0.5).ior(1.3).build();
+        Sphere a = new Sphere(new Vec3(2.4, 3.2, 0), 1), b = new Sphere(new Vec3(3.0, 4.0, 0), 1), c = new Sphere(new Vec3(3.9, 5.2, 0), 1);
+        a.material(ma);
+        b.material(mb);
+        c.material(mc);
+        double[] shadowed = render(floorScene(light).add(union(union(a, b), c)));
+        for (int ch = 0; ch < 3; ch++) {
+            double ambient = 0.2 * IA.get(ch) * C.get(ch);
+            // Crossings: a's surface in, c's surface out; a's medium (entered) over 7.5 - 3 = 4.5.
+            double t = 0.6 * fa.get(ch) * 0.7 * fc.get(ch) * Math.exp(-0.3 * 4.5);
+            assertEquals((lit[ch] - ambient) * t, shadowed[ch] - ambient, 1e-9, "channel " + ch);
+        }
+    }
+
     /** A 24x24 image of a union of two transparent spheres in front of a checkered wall. */
     private static double[] unionImage(double iorA, double iorB) throws InterruptedException {
         Material ma = Material.builder().ka(0).kd(0).kt(0.9).ior(iorA).build();
