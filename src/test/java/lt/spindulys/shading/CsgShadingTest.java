@@ -143,6 +143,51 @@ class CsgShadingTest {
         }
     }
 
+    /**
+     * A 24x24 image of a block of water made by a nested union of three spheres, in front of a
+     * small wall, optionally with a transparent marble (kt 1, white filter, no local terms, the
+     * water's absorption) of index {@code marbleIor} inside the water off the view axis.
+     */
+    private static double[] waterImage(double marbleIor) throws InterruptedException {
+        // Rays caught inside the water by total internal reflection may meet the marble from any
+        // side, and each marble crossing costs two levels of recursion but no weight: so that the
+        // depth limit never cuts a path short in one image and not the other, every water surface
+        // takes at least 0.4 of a ray's weight (kt 0.6, white at most) and the depth limit is the
+        // largest allowed. A path falls below the contribution limit (0.001) after 14 water
+        // surfaces, at most 14 + 2 * 15 levels deep, well within 64.
+        Material water = Material.builder().ka(0).kd(0).kt(0.6).filter(new Color(0.7, 0.9, 1)).beta(0.1).ior(1.33).build();
+        Sphere w1 = new Sphere(new Vec3(-0.3, 0, 0), 1.2), w2 = new Sphere(new Vec3(0.4, 0.2, 0.2), 1.1), w3 = new Sphere(new Vec3(0, -0.2, 0.5), 1.0);
+        Bool block = union(union(w1, w2), w3);
+        block.material(water);
+        Box wall = new Box(new Vec3(-0.5, -0.5, 4), new Vec3(0.5, 0.5, 4.2));
+        wall.material(Material.builder().color(C).ka(1).kd(0).build());
+        SceneBuilder s = new SceneBuilder()
+                .settings(RenderSettings.DEFAULT.withSize(24, 24).withMaxDepth(64).withAmbient(Color.WHITE).withBackground(new Color(0.1, 0.2, 0.3)))
+                .camera(new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, 30))
+                .add(block).add(wall);
+        if (marbleIor > 0) {
+            // Wholly inside w1 (distance 0.65 + radius 0.45 < 1.2 from its centre).
+            Sphere marble = new Sphere(new Vec3(0.2, 0.25, -0.3), 0.45);
+            marble.material(Material.builder().ka(0).kd(0).kt(1).beta(0.1).ior(marbleIor).build());
+            s.add(marble);
+        }
+        return Renderer.render(s.build(), 1, ProgressListener.NONE).image().data().clone();
+    }
+
+    @Test
+    void nestedTransparentObjectsKeepTheRightIndexOfRefractionOnEachSide() throws InterruptedException {
+        // A marble inside the water bends a ray by the indices on its two sides, water's and its
+        // own. Of the water's index it bends nothing, and since it passes everything (kt 1, white
+        // filter) and absorbs like the water, the image is the water's alone, up to rounding
+        // (the rays through it are re-aimed and restarted at its surfaces). Taking air (index 1)
+        // for either side of the marble's surfaces would bend the rays through it.
+        double[] water = waterImage(0);
+        double[] same = waterImage(1.33);
+        assertEquals(0, maxDifference(water, same), 1e-9, "a marble of the water's index must not show");
+        double[] denser = waterImage(1.8);
+        assertTrue(maxDifference(water, denser) > 0.05, "a denser marble bends the rays through it");
+    }
+
     /** A 24x24 image of a union of two transparent spheres in front of a checkered wall. */
     private static double[] unionImage(double iorA, double iorB) throws InterruptedException {
         Material ma = Material.builder().ka(0).kd(0).kt(0.9).ior(iorA).build();
