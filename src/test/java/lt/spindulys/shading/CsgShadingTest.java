@@ -9,18 +9,23 @@ import org.junit.jupiter.api.Test;
 
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.math.Color;
+import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
 import lt.spindulys.render.ProgressListener;
 import lt.spindulys.render.Renderer;
 import lt.spindulys.scene.Bool;
 import lt.spindulys.scene.Box;
 import lt.spindulys.scene.GObject;
+import lt.spindulys.scene.Hit;
 import lt.spindulys.scene.Material;
 import lt.spindulys.scene.Plane;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
+import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.SceneBuilder;
+import lt.spindulys.scene.ShadingData;
 import lt.spindulys.scene.Sphere;
+import lt.spindulys.scene.TraceContext;
 
 /**
  * The integrator through CSG solids, on 1x1 images whose one camera ray is worked out by hand:
@@ -219,6 +224,62 @@ class CsgShadingTest {
         double m = 0;
         for (int i = 0; i < x.length; i++) m = Math.max(m, Math.abs(x[i] - y[i]));
         return m;
+    }
+
+    /** A hollow glass ball: a sphere minus a concentric one of half its radius, the glass given to the difference. */
+    private static Bool hollowBall(Vec3 centre, double radius, Material glass) {
+        Bool d = new Bool(Bool.Op.DIFFERENCE, List.of(new Sphere(centre, radius), new Sphere(centre, radius / 2)));
+        d.material(glass);
+        return d;
+    }
+
+    @Test
+    void theCutOfATransparentDifferenceFacesOutOfTheResult() throws InterruptedException {
+        // Shading turns every normal towards the viewer, so an opaque cut looks the same whichever
+        // way its normal points; what the outward normal decides is whether a ray crossing the
+        // cut enters or leaves the medium. The subtracted sphere's own outward normal points into
+        // the glass; flipped (as documented) it points out of the result, into the cavity.
+        Color f = new Color(1, 0.5, 0.25);
+        Material glass = Material.builder().ka(0).kd(0).kt(0.9).filter(f).beta(0.4).ior(1.5).build();
+        Scene scene = new SceneBuilder()
+                .settings(RenderSettings.DEFAULT.withSize(1, 1).withBackground(Color.WHITE))
+                .camera(new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, 10))
+                .add(hollowBall(Vec3.ZERO, 1, glass)).build();
+        // Through the scene: from the middle of the cavity the first surface is the cut, and its
+        // outward normal points back towards the ray's origin (out of the glass into the cavity).
+        Ray fromCavity = new Ray().set(0, 0, 0, 0.3, -0.4, 0.5, 0, Double.POSITIVE_INFINITY);
+        Hit h = new Hit();
+        assertTrue(scene.intersect(fromCavity, h, new TraceContext()));
+        ShadingData sd = new ShadingData();
+        h.object.shade(fromCavity, h, sd);
+        double len = Math.sqrt(0.5);
+        for (int c = 0; c < 3; c++) assertEquals(-new double[] {0.3, -0.4, 0.5}[c] / len, sd.ng[c], 1e-12, "normal " + c);
+        // Rendered: the camera ray runs through the centre at normal incidence: into the glass at
+        // z = -1, out into the cavity at -0.5, into the glass again at 0.5, out at 1. Four
+        // crossings (kt 0.9, filter f each) and 1 unit of glass (beta 0.4); the cavity is air.
+        // Taken the other way round, the cut would be an entry at -0.5 and an exit at 0.5, and
+        // the cavity would absorb as glass: twice the absorption.
+        double[] rgb = render(new SceneBuilder()
+                .settings(RenderSettings.DEFAULT.withSize(1, 1).withBackground(Color.WHITE))
+                .camera(new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, 10))
+                .add(hollowBall(Vec3.ZERO, 1, glass)));
+        // (1e-8: each of the four restarts is offset from its surface by about 1e-9.)
+        for (int c = 0; c < 3; c++) {
+            double expected = Math.pow(0.9 * f.get(c), 4) * Math.exp(-0.4 * 1);
+            assertEquals(expected, rgb[c], 1e-8, "camera, channel " + c);
+        }
+        // A shadow ray through a hollow ball centred on it at distance 5 (unit direction
+        // (0.6, 0.8, 0) from the floor point at the origin): glass over [4, 4.5] and [5.5, 6], the
+        // same four crossings and 1 unit of glass.
+        Material shadowGlass = Material.builder().kt(0.9).filter(f).beta(0.4).ior(1.5).build();
+        PointLight light = new PointLight(new Vec3(6, 8, 0), Color.WHITE);
+        double[] lit = render(floorScene(light));
+        double[] shadowed = render(floorScene(light).add(hollowBall(new Vec3(3, 4, 0), 1, shadowGlass)));
+        for (int c = 0; c < 3; c++) {
+            double ambient = 0.2 * IA.get(c) * C.get(c);
+            double t = Math.pow(0.9 * f.get(c), 4) * Math.exp(-0.4 * 1);
+            assertEquals((lit[c] - ambient) * t, shadowed[c] - ambient, 1e-8, "shadow, channel " + c);
+        }
     }
 
     @Test
