@@ -68,6 +68,9 @@ public final class BadInputCases {
             + "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 1 2 6 5\n4 0 4 7 3\n";
     private static final String QUAD_OBJ = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
 
+    /** An uncompressed 24-bit TGA header (type 2, top-left origin) for 16384 x 4097 pixels, without pixels. */
+    private static final String HUGE_TGA_HEADER = "\0\0\u0002\0\0\0\0\0\0\0\0\0\u0000\u0040\u0001\u0010\u0018\u0020";
+
     /** What the texture cache says about a file that is not an image it can decode. */
     static final String UNREADABLE_IMAGE = "not a PNG, JPEG, BMP, GIF or TGA image (no decoder recognises its contents)";
 
@@ -218,6 +221,10 @@ public final class BadInputCases {
                 c("missing texture image", "texture t {\n  image \"maps/wood.png\"\n}", "2:9: texture image 'maps/wood.png' not found (looked in ${dir}/maps/wood.png)"),
                 withFile("unreadable texture image", "texture t { image \"bad.png\" }", "bad.png", "this is not a PNG\n", false,
                         "1:19: cannot read texture image 'bad.png': " + UNREADABLE_IMAGE),
+                // A TGA header alone, claiming 16384 x 4097 (one row over the limit); every header byte is
+                // below 0x80, so the file survives being written as UTF-8 text.
+                withFile("oversized texture image", "texture t {\n  image \"huge.tga\"\n}", "huge.tga", HUGE_TGA_HEADER, false,
+                        "2:9: cannot read texture image 'huge.tga': image is 16384x4097 pixels, more than the limit of 67108864 pixels (e.g. 8192x8192)"),
                 c("texture without image or pattern", "texture t { scale 2 }", "1:1: texture 't' needs 'image' or 'pattern'"),
                 c("texture with image and pattern", "texture t { image \"a.png\"  pattern wood }", "1:28: texture 't' has both 'image' and 'pattern': give one"),
                 c("filter on a pattern", "texture t { pattern checker  filter nearest }", "1:30: 'filter' applies to image textures, not to a pattern"),

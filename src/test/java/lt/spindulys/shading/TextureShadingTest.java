@@ -69,6 +69,27 @@ class TextureShadingTest {
         assertRgb(plain, textured);
     }
 
+    /**
+     * A mirror floor under a coloured sky (the background): its reflection, straight up, sees the
+     * sky, so kr shows directly in the pixel. kr 0.8 textured by a texture of mean 0.5 is kr 0.4.
+     */
+    @Test
+    void reflectionScalesKrByTheMean() throws InterruptedException {
+        Color sky = new Color(0.3, 0.6, 0.9);
+        double[] plain = render(mirrorScene(floor().kr(0.4).build(), sky));
+        double[] full = render(mirrorScene(floor().kr(0.8).build(), sky));
+        double[] textured = render(mirrorScene(floor().kr(0.8)
+                .texture(Channel.REFLECTION, constant(0.2, 0.5, 0.8), new Uv(1, 1)).build(), sky));
+        assertRgb(plain, textured);
+        // The untextured kr 0.8 mirror shows 0.4 more of the sky: the texture did change kr.
+        assertRgb(new double[] {textured[0] + 0.4 * 0.3, textured[1] + 0.4 * 0.6, textured[2] + 0.4 * 0.9}, full);
+    }
+
+    private static SceneBuilder mirrorScene(Material floor, Color sky) {
+        SceneBuilder b = floorScene(floor);
+        return b.settings(b.settings().withBackground(sky));
+    }
+
     @Test
     void emissionAddsItsColour() throws InterruptedException {
         double[] plain = render(floorScene(floor().build()));
