@@ -33,7 +33,7 @@ public final class ThinLensCamera implements Camera {
         this.view = Objects.requireNonNull(view, "view");
         this.lens = Objects.requireNonNull(lens, "lens");
         if (!(aperture >= 0 && aperture < Double.POSITIVE_INFINITY)) {
-            throw new IllegalArgumentException("camera aperture must be a number at least 0, found " + aperture);
+            throw new IllegalArgumentException("camera aperture must be a non-negative number, found " + aperture);
         }
         if (!(focusDistance > 0 && focusDistance < Double.POSITIVE_INFINITY)) {
             throw new IllegalArgumentException("camera focus distance must be a positive number, found " + focusDistance);
