@@ -2,11 +2,15 @@ package lt.spindulys.render;
 
 import static org.junit.jupiter.api.Assertions.*;
 
+import java.util.EnumSet;
+
 import org.junit.jupiter.api.Test;
 
 import lt.spindulys.camera.Camera;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.camera.ThinLensCamera;
+import lt.spindulys.image.Aov;
+import lt.spindulys.image.AovFrame;
 import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
@@ -147,5 +151,25 @@ class DepthOfFieldRenderTest {
             ThinLensCamera lens = new ThinLensCamera(VIEW, APERTURE, FOCUS, pattern);
             assertArrayEquals(render(lens, 6, 9, 1).data(), render(lens, 6, 9, 3).data(), 0.0, pattern.keyword());
         }
+    }
+
+    /** The render passes come from the lens centre: with the lens open they are the pinhole's, value for value. */
+    @Test
+    void renderPassesAreTracedFromTheLensCentre() throws InterruptedException {
+        AovFrame pinhole = passes(VIEW), lens = passes(new ThinLensCamera(VIEW, APERTURE, FOCUS, LensPattern.CONCENTRIC));
+        for (int y = 0; y < H; y++) {
+            for (int x = 0; x < W; x++) {
+                assertEquals(pinhole.depth(x, y), lens.depth(x, y), 0.0);
+                assertEquals(pinhole.objectId(x, y), lens.objectId(x, y));
+            }
+        }
+    }
+
+    private static AovFrame passes(Camera camera) throws InterruptedException {
+        SceneBuilder b = new SceneBuilder()
+                .settings(RenderSettings.DEFAULT.withSize(W, H).withSamplesPerPixel(4).withAovs(EnumSet.of(Aov.DEPTH, Aov.OBJECT)))
+                .camera(camera);
+        b.add(new Triangle(new Vec3(0, -1000, 5), new Vec3(0, 1000, 5), new Vec3(1000, 0, 5)));
+        return Renderer.render(b.build(), 2, ProgressListener.NONE).aovs();
     }
 }
