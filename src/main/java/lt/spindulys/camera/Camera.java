@@ -1,6 +1,7 @@
 package lt.spindulys.camera;
 
 import lt.spindulys.math.Ray;
+import lt.spindulys.sampling.LensPattern;
 
 /** Turns a point on the film (and a lens sample and a time) into a primary ray. Immutable. */
 public interface Camera {
@@ -10,9 +11,13 @@ public interface Camera {
      * @param fx     0 at the left edge of the image, 1 at the right
      * @param fy     0 at the top edge, 1 at the bottom
      * @param aspect image width / height
-     * @param lensU  lens sample in [0, 1)
-     * @param lensV  lens sample in [0, 1)
+     * @param lensU  lens sample: a point (lensU, lensV) on the unit disk, (0, 0) the lens centre;
+     *               a camera with a lens scales it by its aperture, a pinhole ignores it
+     * @param lensV  lens sample, second coordinate
      * @param time   time in the shutter interval
      */
     void generateRay(double fx, double fy, double aspect, double lensU, double lensV, double time, Ray out);
+
+    /** How the renderer should place this camera's lens samples on the unit disk. */
+    default LensPattern lensPattern() { return LensPattern.CONCENTRIC; }
 }

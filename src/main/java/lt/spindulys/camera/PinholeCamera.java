@@ -3,12 +3,17 @@ package lt.spindulys.camera;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
 
-/** A pinhole camera: eye, look-at point, up vector and vertical field of view in degrees. */
+/**
+ * A pinhole camera: eye, look-at point, up vector and vertical field of view in degrees. Every ray
+ * starts at the eye, so everything is sharp; the lens sample is ignored. {@link ThinLensCamera}
+ * adds a lens to this view.
+ */
 public final class PinholeCamera implements Camera {
     private final Vec3 eye, lookAt, up;
     private final double fovDegrees;
     // Orthonormal frame: right, true up, forward; tanHalf scales the film plane at distance 1.
-    private final double rx, ry, rz, ux, uy, uz, fx, fy, fz, tanHalf;
+    // Package-private: a ThinLensCamera places its lens in this frame.
+    final double rx, ry, rz, ux, uy, uz, fx, fy, fz, tanHalf;
 
     public PinholeCamera(Vec3 eye, Vec3 lookAt, Vec3 up, double fovDegrees) {
         if (!eye.isFinite() || !lookAt.isFinite() || !up.isFinite()) throw new IllegalArgumentException("camera vectors must be finite");

@@ -11,6 +11,9 @@ import java.util.Locale;
 import java.util.Set;
 
 import lt.spindulys.accel.AcceleratorKind;
+import lt.spindulys.camera.Camera;
+import lt.spindulys.camera.PinholeCamera;
+import lt.spindulys.camera.ThinLensCamera;
 import lt.spindulys.image.Aov;
 import lt.spindulys.image.ImageOptions;
 import lt.spindulys.image.ImageWriter;
@@ -26,8 +29,9 @@ import lt.spindulys.scene.SceneBuilder;
 /** {@code render SCENE.dat [options]}: parse, override settings, render, write the image atomically. */
 final class RenderCommand {
     static final String USAGE = """
-            usage: render SCENE.dat [-o OUT] [--width W] [--height H] [--spp N] [--threads N]
-                                    [--seed S] [--accel A] [--aov LIST] [--quality Q] [--stats] [--quiet] [--debug]
+            usage: render SCENE.dat [-o OUT] [--width W] [--height H] [--spp N] [--aperture R] [--focus D]
+                                    [--threads N] [--seed S] [--accel A] [--aov LIST] [--quality Q]
+                                    [--stats] [--quiet] [--debug]
                    render subdivide MESH.obj|MESH.dat --level N -o OUT.obj [...]   (see render subdivide --help)
                    render bench [--only NAME] [--runs N] [--list]                 (see render bench --help)
                    render --help | --version
@@ -36,6 +40,8 @@ final class RenderCommand {
               --width W          image width in pixels (overrides the scene)
               --height H         image height in pixels (overrides the scene)
               --spp N            samples per pixel, stratified (overrides the scene)
+              --aperture R       lens radius of the camera, 0 for a pinhole (overrides the scene)
+              --focus D          distance to the focal plane along the view (overrides the scene)
               --threads N        render threads (default: all cores)
               --seed S           global random seed (overrides the scene)
               --accel A          acceleration structure: bvh, octree or bruteforce (overrides the scene)
@@ -50,6 +56,7 @@ final class RenderCommand {
     private Path scene, output;
     private Integer width, height, spp, threads;
     private Long seed;
+    private Double aperture, focus;
     private AcceleratorKind accel;
     private Set<Aov> aovs;
     private double quality = ImageOptions.DEFAULT.jpegQuality();
@@ -64,6 +71,8 @@ final class RenderCommand {
                 case "--width" -> width = intValue(args, ++i, a, 1, RenderSettings.MAX_SIDE);
                 case "--height" -> height = intValue(args, ++i, a, 1, RenderSettings.MAX_SIDE);
                 case "--spp" -> spp = intValue(args, ++i, a, 1, 65536);
+                case "--aperture" -> aperture = lensValue(args, ++i, a, false);
+                case "--focus" -> focus = lensValue(args, ++i, a, true);
                 case "--threads" -> threads = intValue(args, ++i, a, 1, 1024);
                 case "--seed" -> seed = longValue(args, ++i, a);
                 case "--accel" -> {
@@ -123,6 +132,7 @@ final class RenderCommand {
         if (aovs != null) s = s.withAovs(aovs);
         else if (!s.aovs().isEmpty()) checkAovOutputs(s.aovs()); // asked for by the scene: known only now
         builder.settings(s);
+        if (aperture != null || focus != null) builder.camera(withLens(builder.camera(), aperture, focus));
         long t1 = System.nanoTime();
         Scene built = builder.build();
         long t2 = System.nanoTime();
@@ -138,6 +148,21 @@ final class RenderCommand {
         ImageWriter.write(result.image(), output, new ImageOptions(s.srgb(), quality), result.aovs());
         if (stats) printStats(out, (t1 - t0) / 1e9, (t2 - t1) / 1e9, result.stats(), n);
         return 0;
+    }
+
+    /**
+     * The scene's camera (or the default one) with the lens given on the command line: a pinhole
+     * becomes a thin lens focused on its look-at point unless --focus says otherwise.
+     */
+    static ThinLensCamera withLens(Camera camera, Double aperture, Double focus) {
+        Camera c = camera != null ? camera : SceneBuilder.DEFAULT_CAMERA;
+        ThinLensCamera lens;
+        if (c instanceof ThinLensCamera t) lens = t;
+        else if (c instanceof PinholeCamera p) lens = new ThinLensCamera(p, 0);
+        else throw new IllegalStateException("a scene file makes no camera of " + c.getClass());
+        if (aperture != null) lens = lens.withAperture(aperture);
+        if (focus != null) lens = lens.withFocusDistance(focus);
+        return lens;
     }
 
     private void checkAovOutputs(Set<Aov> passes) throws UsageException {
@@ -212,6 +237,21 @@ final class RenderCommand {
         } catch (NumberFormatException e) {
             throw new UsageException(option + " expects a number, found '" + v + "'");
         }
+    }
+
+    /** A finite lens dimension: at least 0, or with {@code positive} greater than 0. */
+    private static double lensValue(String[] args, int i, String option, boolean positive) throws UsageException {
+        String v = value(args, i, option);
+        double d;
+        try {
+            d = Double.parseDouble(v);
+        } catch (NumberFormatException e) {
+            throw new UsageException(option + " expects a number, found '" + v + "'");
+        }
+        if (!Double.isFinite(d) || (positive ? !(d > 0) : !(d >= 0))) {
+            throw new UsageException(option + " must be a finite number " + (positive ? "greater than 0" : "at least 0") + ", found " + v);
+        }
+        return d;
     }
 
     /** The scene file is missing: bad input, reported like the parser's errors. */

@@ -7,6 +7,7 @@ import java.util.List;
 import lt.spindulys.image.Aov;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
+import lt.spindulys.sampling.LensPattern;
 
 /**
  * The statements of the scene language and the keys each block accepts, with their value kinds,
@@ -130,11 +131,17 @@ final class SceneGrammar {
             choice("accelerator", null, "bvh", "octree", "bruteforce"),
             new Key("aov", Kind.CHOICES, false, false, null, Aov.keywords())));
 
+    // A thin lens when any of the lens keys is given, else a pinhole. 'focus' and 'focuspoint'
+    // exclude each other (checked by the parser); without either the look-at point is in focus.
     static final Block CAMERA = new Block("camera", Category.CAMERA, false, List.of(
             req("eye", Kind.VECTOR),
             req("lookat", Kind.VECTOR),
             opt("up", Kind.VECTOR, Vec3.Y),
-            opt("fov", Kind.NUMBER, 45.0)));
+            opt("fov", Kind.NUMBER, 45.0),
+            opt("aperture", Kind.NUMBER, 0.0),
+            opt("focus", Kind.NUMBER),
+            opt("focuspoint", Kind.VECTOR),
+            new Key("lens", Kind.CHOICE, false, false, LensPattern.CONCENTRIC.keyword(), LensPattern.keywords())));
 
     static final Block LIGHT = new Block("light", Category.LIGHT, false, List.of(
             req("position", Kind.VECTOR),

@@ -23,6 +23,7 @@ import java.util.regex.Pattern;
 
 import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.camera.PinholeCamera;
+import lt.spindulys.camera.ThinLensCamera;
 import lt.spindulys.image.Aov;
 import lt.spindulys.io.SceneGrammar.Block;
 import lt.spindulys.io.SceneGrammar.Key;
@@ -31,6 +32,7 @@ import lt.spindulys.io.SceneLexer.Token;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Transform;
 import lt.spindulys.math.Vec3;
+import lt.spindulys.sampling.LensPattern;
 import lt.spindulys.scene.Bool;
 import lt.spindulys.scene.Box;
 import lt.spindulys.scene.Cylinder;
@@ -205,8 +207,33 @@ public final class SceneParser {
         if (cameraAt != null) throw error(kw, "camera is already defined at " + cameraAt.position());
         cameraAt = kw;
         Props p = block(SceneGrammar.CAMERA, kw, null);
+        PinholeCamera view;
         try {
-            builder.camera(new PinholeCamera(p.vec("eye"), p.vec("lookat"), p.vec("up"), p.num("fov")));
+            view = new PinholeCamera(p.vec("eye"), p.vec("lookat"), p.vec("up"), p.num("fov"));
+        } catch (IllegalArgumentException e) {
+            throw blame(p, e);
+        }
+        Prop aperture = p.prop("aperture"), focus = p.prop("focus"), point = p.prop("focuspoint"), lens = p.prop("lens");
+        if (aperture == null && focus == null && point == null && lens == null) {
+            builder.camera(view);
+            return;
+        }
+        if (focus != null && point != null) {
+            Prop later = p.all.indexOf(focus) > p.all.indexOf(point) ? focus : point;
+            throw error(later.at, "camera has both 'focus' and 'focuspoint': give one");
+        }
+        double distance;
+        if (point != null) {
+            try {
+                distance = ThinLensCamera.focusDistanceTo(view, (Vec3) point.value);
+            } catch (IllegalArgumentException e) {
+                throw wrap(point.at, e);
+            }
+        } else {
+            distance = focus != null ? (Double) focus.value : ThinLensCamera.lookAtDistance(view);
+        }
+        try {
+            builder.camera(new ThinLensCamera(view, p.num("aperture"), distance, LensPattern.fromKeyword((String) p.get("lens"))));
         } catch (IllegalArgumentException e) {
             throw blame(p, e);
         }

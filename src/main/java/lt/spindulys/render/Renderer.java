@@ -57,7 +57,7 @@ public final class Renderer {
             int index = k;
             workers[k] = new Thread(() -> {
                 TracerScratch scratch = integrator.newScratch();
-                PixelSampler sampler = new PixelSampler(st.samplesPerPixel());
+                PixelSampler sampler = new PixelSampler(st.samplesPerPixel(), scene.camera().lensPattern());
                 Ray ray = new Ray();
                 double[] colour = new double[4];
                 try {
@@ -111,7 +111,7 @@ public final class Renderer {
                 if (aovs != null) {
                     // One more ray, through the exact pixel centre from the lens centre at time 0,
                     // so the passes do not depend on the sample pattern.
-                    camera.generateRay((x + 0.5) / w, (y + 0.5) / h, aspect, 0.5, 0.5, 0, ray);
+                    camera.generateRay((x + 0.5) / w, (y + 0.5) / h, aspect, 0, 0, 0, ray);
                     int id = integrator.traceFirstHit(ray, scratch, colour);
                     if (id < 0) aovs.setBackground(x, y);
                     else aovs.setHit(x, y, colour[0], colour[1], colour[2], colour[3], id);

@@ -1,19 +1,30 @@
 package lt.spindulys.sampling;
 
+import java.util.Objects;
+
 /**
  * Stratified samples for one pixel: film position on a grid as square as the sample count
  * allows (n = cols x rows), jittered within each cell; lens and time samples are stratified too
  * and paired with the film strata through seeded shuffles, so all dimensions are drawn together
- * in one pass. Everything is seeded from (global seed, pixel), so the image does not depend on
- * the thread count. One instance per thread; {@link #startPixel} resets it.
+ * in one pass. Lens samples are points on the unit disk placed by a {@link LensPattern}: the
+ * lens strata are the same grid mapped onto the disk, or the thesis's ring. Everything is seeded
+ * from (global seed, pixel), so the image does not depend on the thread count. One instance per
+ * thread; {@link #startPixel} resets it.
  */
 public final class PixelSampler {
     private final int n, cols, rows;
+    private final LensPattern lens;
     private final double[] filmX, filmY, lensU, lensV, time;
     private final int[] perm;
     private final Rng rng = new Rng();
 
+    /** A sampler with the default {@link LensPattern#CONCENTRIC} lens samples. */
     public PixelSampler(int samplesPerPixel) {
+        this(samplesPerPixel, LensPattern.CONCENTRIC);
+    }
+
+    public PixelSampler(int samplesPerPixel, LensPattern lens) {
+        this.lens = Objects.requireNonNull(lens, "lens");
         if (samplesPerPixel < 1) throw new IllegalArgumentException("samples per pixel must be positive, found " + samplesPerPixel);
         n = samplesPerPixel;
         int c = (int) Math.floor(Math.sqrt(n));
@@ -28,12 +39,16 @@ public final class PixelSampler {
 
     public int samplesPerPixel() { return n; }
 
+    public LensPattern lensPattern() { return lens; }
+
     /** Draws all samples of pixel (px, py). With one sample the film sample is the pixel centre. */
     public void startPixel(long seed, int px, int py) {
         rng.seed(seed, px, py, 0);
         if (n == 1) {
             filmX[0] = px + 0.5; filmY[0] = py + 0.5;
-            lensU[0] = rng.nextDouble(); lensV[0] = rng.nextDouble(); time[0] = rng.nextDouble();
+            double u = rng.nextDouble(), v = rng.nextDouble();
+            lensSample(0, 0, u, v);
+            time[0] = rng.nextDouble();
             return;
         }
         for (int i = 0; i < n; i++) {
@@ -41,16 +56,45 @@ public final class PixelSampler {
             filmX[i] = px + (cx + rng.nextDouble()) / cols;
             filmY[i] = py + (cy + rng.nextDouble()) / rows;
         }
-        // Lens: the same grid shape, assigned to film strata in a shuffled order.
+        // Lens: the same grid shape, assigned to film strata in a shuffled order. The ring pattern
+        // uses the stratum index only, but the jitter is drawn anyway so that the time samples
+        // below are the same whichever lens pattern is chosen.
         shuffle();
         for (int i = 0; i < n; i++) {
             int s = perm[i];
-            lensU[i] = (s % cols + rng.nextDouble()) / cols;
-            lensV[i] = (s / cols + rng.nextDouble()) / rows;
+            double u = (s % cols + rng.nextDouble()) / cols;
+            double v = (s / cols + rng.nextDouble()) / rows;
+            lensSample(i, s, u, v);
         }
         // Time: n one-dimensional strata, shuffled independently.
         shuffle();
         for (int i = 0; i < n; i++) time[i] = (perm[i] + rng.nextDouble()) / n;
+    }
+
+    /** Lens sample i on the unit disk from lens stratum s and its jittered square sample (u, v). */
+    private void lensSample(int i, int s, double u, double v) {
+        if (lens == LensPattern.RING) {
+            if (n == 1) {
+                lensU[i] = 0; lensV[i] = 0;
+                return;
+            }
+            double angle = 2 * Math.PI * s / n, r = (s & 1) == 0 ? 1 : 0.5;
+            lensU[i] = r * Math.cos(angle); lensV[i] = r * Math.sin(angle);
+            return;
+        }
+        // Shirley and Chiu's concentric map: squares about the centre go to circles, so the
+        // strata stay equal in area and little distorted.
+        double a = 2 * u - 1, b = 2 * v - 1, r, phi;
+        if (a == 0 && b == 0) {
+            lensU[i] = 0; lensV[i] = 0;
+            return;
+        }
+        if (Math.abs(a) > Math.abs(b)) {
+            r = a; phi = Math.PI / 4 * (b / a);
+        } else {
+            r = b; phi = Math.PI / 2 - Math.PI / 4 * (a / b);
+        }
+        lensU[i] = r * Math.cos(phi); lensV[i] = r * Math.sin(phi);
     }
 
     private void shuffle() {
@@ -64,6 +108,7 @@ public final class PixelSampler {
     /** Film x in pixels (the pixel's left edge is px). */
     public double filmX(int i) { return filmX[i]; }
     public double filmY(int i) { return filmY[i]; }
+    /** Lens sample on the unit disk: (0, 0) is the lens centre. */
     public double lensU(int i) { return lensU[i]; }
     public double lensV(int i) { return lensV[i]; }
     public double time(int i) { return time[i]; }

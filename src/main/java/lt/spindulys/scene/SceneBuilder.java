@@ -43,7 +43,10 @@ public final class SceneBuilder {
 
     public SceneBuilder camera(Camera c) { camera = Objects.requireNonNull(c); return this; }
 
-    /** The camera given so far, or null (then {@link #build()} uses a default one). */
+    /** The camera of a scene that gives none: at (0, 0, -5) looking at the origin, 45 degrees. */
+    public static final PinholeCamera DEFAULT_CAMERA = new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, 45);
+
+    /** The camera given so far, or null (then {@link #build()} uses {@link #DEFAULT_CAMERA}). */
     public Camera camera() { return camera; }
 
     public SceneBuilder light(PointLight l) { lights.add(Objects.requireNonNull(l)); return this; }
@@ -84,7 +87,7 @@ public final class SceneBuilder {
     public Scene build() {
         if (built) throw new IllegalStateException("this builder has already built its scene");
         built = true;
-        Camera c = camera != null ? camera : new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, 45);
+        Camera c = camera != null ? camera : DEFAULT_CAMERA;
         return new Scene(settings, c, lights, objects);
     }
 

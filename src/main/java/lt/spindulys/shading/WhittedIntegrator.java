@@ -58,8 +58,8 @@ public final class WhittedIntegrator {
         int w = scene.settings().width(), h = scene.settings().height();
         double aspect = (double) w / h;
         Ray a = new Ray(), b = new Ray();
-        scene.camera().generateRay(0.5, 0.5, aspect, 0.5, 0.5, 0, a);
-        scene.camera().generateRay(0.5 + 1.0 / w, 0.5, aspect, 0.5, 0.5, 0, b);
+        scene.camera().generateRay(0.5, 0.5, aspect, 0, 0, 0, a); // from the lens centre
+        scene.camera().generateRay(0.5 + 1.0 / w, 0.5, aspect, 0, 0, 0, b);
         double la = Math.sqrt(a.dx * a.dx + a.dy * a.dy + a.dz * a.dz), lb = Math.sqrt(b.dx * b.dx + b.dy * b.dy + b.dz * b.dz);
         double cos = (a.dx * b.dx + a.dy * b.dy + a.dz * b.dz) / (la * lb);
         double angle = Math.acos(Math.max(-1, Math.min(1, cos)));

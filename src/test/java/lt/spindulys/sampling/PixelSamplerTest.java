@@ -2,6 +2,7 @@ package lt.spindulys.sampling;
 
 import static org.junit.jupiter.api.Assertions.*;
 
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
@@ -22,7 +23,7 @@ class PixelSamplerTest {
             assertFalse(seen[cell], "two samples in one stratum");
             seen[cell] = true;
             assertTrue(s.time(i) >= 0 && s.time(i) < 1);
-            assertTrue(s.lensU(i) >= 0 && s.lensU(i) < 1 && s.lensV(i) >= 0 && s.lensV(i) < 1);
+            assertTrue(s.lensU(i) * s.lensU(i) + s.lensV(i) * s.lensV(i) <= 1, "lens sample on the unit disk");
         }
         boolean[] timeStrata = new boolean[n];
         for (int i = 0; i < n; i++) timeStrata[(int) (s.time(i) * n)] = true;
@@ -44,5 +45,66 @@ class PixelSamplerTest {
         }
         b.startPixel(8, 3, 4);
         assertNotEquals(a.time(0), b.time(0), "the global seed changes the samples");
+    }
+
+    /**
+     * The concentric map sends the square ring of grid cells at distance r from the centre onto
+     * the circle of radius r, so of an 8 x 8 grid's strata exactly the inner 4 x 4 land inside
+     * radius 1/2 and the inner 6 x 6 inside radius 3/4: the lens is covered by equal areas.
+     */
+    @Test
+    void concentricLensSamplesAreStratifiedOnTheDisk() {
+        PixelSampler s = new PixelSampler(64);
+        s.startPixel(3, 5, 6);
+        int inHalf = 0, inThreeQuarters = 0;
+        for (int i = 0; i < 64; i++) {
+            double r = Math.hypot(s.lensU(i), s.lensV(i));
+            assertTrue(r <= 1);
+            if (r < 0.5) inHalf++;
+            if (r < 0.75) inThreeQuarters++;
+        }
+        assertEquals(16, inHalf);
+        assertEquals(36, inThreeQuarters);
+    }
+
+    /** The thesis's pattern: sample k at angle 2 pi k / n, radius 1 for even k and 1/2 for odd k, each once. */
+    @ParameterizedTest
+    @ValueSource(ints = {2, 6, 8, 9})
+    void ringLensSamplesAreTheThesisPattern(int n) {
+        PixelSampler s = new PixelSampler(n, LensPattern.RING);
+        s.startPixel(11, 2, 3);
+        boolean[] seen = new boolean[n];
+        for (int i = 0; i < n; i++) {
+            int found = -1;
+            for (int k = 0; k < n; k++) {
+                double r = k % 2 == 0 ? 1 : 0.5, a = 2 * Math.PI * k / n;
+                if (Math.abs(s.lensU(i) - r * Math.cos(a)) < 1e-12 && Math.abs(s.lensV(i) - r * Math.sin(a)) < 1e-12) found = k;
+            }
+            assertTrue(found >= 0, "sample " + i + " is not a ring point: " + s.lensU(i) + ", " + s.lensV(i));
+            assertFalse(seen[found], "ring point " + found + " twice");
+            seen[found] = true;
+        }
+    }
+
+    @Test
+    void oneRingSampleIsTheLensCentre() {
+        PixelSampler s = new PixelSampler(1, LensPattern.RING);
+        s.startPixel(1, 0, 0);
+        assertEquals(0, s.lensU(0));
+        assertEquals(0, s.lensV(0));
+    }
+
+    /** The lens pattern changes only the lens samples: film and time samples stay the same. */
+    @ParameterizedTest
+    @ValueSource(ints = {1, 4, 12})
+    void lensPatternLeavesFilmAndTimeAlone(int n) {
+        PixelSampler a = new PixelSampler(n, LensPattern.CONCENTRIC), b = new PixelSampler(n, LensPattern.RING);
+        a.startPixel(5, 7, 8);
+        b.startPixel(5, 7, 8);
+        for (int i = 0; i < n; i++) {
+            assertEquals(a.filmX(i), b.filmX(i));
+            assertEquals(a.filmY(i), b.filmY(i));
+            assertEquals(a.time(i), b.time(i));
+        }
     }
 }
