@@ -36,9 +36,6 @@ public final class Motion {
         check(pivot, "motion pivot");
         if (!Double.isNaN(start) && !Double.isFinite(start)) throw new IllegalArgumentException("motion start must be finite, found " + start);
         if (!Double.isNaN(finish) && !Double.isFinite(finish)) throw new IllegalArgumentException("motion finish must be finite, found " + finish);
-        if (!Double.isNaN(start) && !Double.isNaN(finish) && !(finish > start)) {
-            throw new IllegalArgumentException("motion finish must be after its start, found start " + start + " and finish " + finish);
-        }
         sx = scale.x(); sy = scale.y(); sz = scale.z();
         Vec3 a = degrees != 0 ? axis.normalized() : Vec3.Y;
         ax = a.x(); ay = a.y(); az = a.z();
@@ -59,6 +56,7 @@ public final class Motion {
      *         axis of a non-zero rotation is zero, or finish is not after start
      */
     public static Motion of(Vec3 scale, Vec3 axis, double degrees, Vec3 translation, Vec3 pivot, double start, double finish) {
+        checkOrder(start, finish);
         return new Motion(scale, axis, degrees, translation, pivot, start, finish, null);
     }
 
@@ -78,6 +76,7 @@ public final class Motion {
         check(direction, "motion direction");
         if (!(direction.length() > 0)) throw new IllegalArgumentException("motion direction has zero length");
         if (!Double.isFinite(speed)) throw new IllegalArgumentException("motion speed must be finite, found " + speed);
+        checkOrder(start, finish);
         Vec3 v = direction.normalized().times(speed);
         boolean resolved = !Double.isNaN(start) && !Double.isNaN(finish);
         Vec3 move = resolved ? v.times(finish - start) : Vec3.ZERO;
@@ -88,12 +87,15 @@ public final class Motion {
      * This motion with an open start or finish replaced by the shutter's {@code open} or
      * {@code close}; itself when both are given.
      *
+     * A shutter of no length (open == close) may make them equal: the object is then where it
+     * starts at that instant, and the motion never shows.
+     *
      * @throws IllegalArgumentException if the resulting finish is not after the start
      */
     public Motion resolve(double open, double close) {
         if (isResolved()) return this;
         double s = Double.isNaN(start) ? open : start, f = Double.isNaN(finish) ? close : finish;
-        if (!(f > s)) {
+        if (!(f > s || f == s && open == close)) {
             throw new IllegalArgumentException("motion finish must be after its start, found start " + s + " and finish " + f
                     + (Double.isNaN(start) ? " (start is the shutter open time)" : "") + (Double.isNaN(finish) ? " (finish is the shutter close time)" : ""));
         }
@@ -177,6 +179,13 @@ public final class Motion {
         if (b.isEmpty()) return b;
         if (!b.isFinite()) return Bounds.INFINITE;
         double[] m = new double[12];
+        if (finish == start) {
+            // A jump (zero-length shutter): only the two ends are ever taken.
+            matrices(start, m, null);
+            Bounds a = b.transformed(Transform.ofMatrix(m));
+            matrices(Math.nextUp(finish), m, null);
+            return a.union(b.transformed(Transform.ofMatrix(m)));
+        }
         double w = Math.abs(radians) / (finish - start), dt = (finish - start) / SWEEP_STEPS;
         double minX = Double.POSITIVE_INFINITY, minY = minX, minZ = minX, maxX = -minX, maxY = maxX, maxZ = maxX;
         double pad = 0, size = 0;
@@ -204,6 +213,12 @@ public final class Motion {
         // And a little for the rounding of the transform evaluated per ray.
         pad += 1e-12 * size;
         return new Bounds(minX - pad, minY - pad, minZ - pad, maxX + pad, maxY + pad, maxZ + pad);
+    }
+
+    private static void checkOrder(double start, double finish) {
+        if (!Double.isNaN(start) && !Double.isNaN(finish) && !(finish > start)) {
+            throw new IllegalArgumentException("motion finish must be after its start, found start " + start + " and finish " + finish);
+        }
     }
 
     private static double sq(double v) { return v * v; }
