@@ -172,7 +172,7 @@ class CliTest {
         assertTrue(list.out().contains(System.lineSeparator() + "torus-1m "), list.out());
         Run unknown = run("bench", "--only", "nope");
         assertEquals(2, unknown.status());
-        assertEquals("render: unknown bench row 'nope' (rows: refine-bishop, torus-1k, torus-16k, torus-250k, torus-1m, csg-subdiv)" + System.lineSeparator(), unknown.err());
+        assertEquals("render: unknown bench row 'nope' (rows: refine-bishop, torus-1k, torus-16k, torus-250k, torus-1m, csg-subdiv, motion-blur)" + System.lineSeparator(), unknown.err());
         Run badRuns = run("bench", "--runs", "0");
         assertEquals(2, badRuns.status());
         Run badAccel = run("bench", "--accel", "kdtree");
