@@ -161,14 +161,19 @@ public final class Motion {
         inv[11] = pz - (inv[8] * ox + inv[9] * oy + inv[10] * oz);
     }
 
-    /** Time samples per motion for {@link #sweep}: enough that the padding is a small fraction of the path. */
+    /**
+     * Time samples of {@link #sweep}: at least this many, and one per {@link #SWEEP_DEGREES} of
+     * rotation, so that the padding stays a small fraction of the path (about 0.1% of the distance
+     * from the pivot for a fast turn).
+     */
     static final int SWEEP_STEPS = 32;
+    static final double SWEEP_DEGREES = 5;
 
     /**
      * Bounds of {@code b} carried along this motion over all times: contains the box moved to
-     * every time t, not only at the samples. The eight corners are moved to SWEEP_STEPS + 1
-     * times in [start, finish] (outside it the motion is clamped) and unioned; between two
-     * samples dt apart a corner's path p(t) leaves the chord by at most dt^2 / 8 max |p''|, and
+     * every time t, not only at the samples. The eight corners are moved to N + 1 times in
+     * [start, finish] (N from {@link #SWEEP_STEPS} and {@link #SWEEP_DEGREES}; outside that
+     * interval the motion is clamped) and unioned; between two samples dt apart a corner's path p(t) leaves the chord by at most dt^2 / 8 max |p''|, and
      * with q(t) = s(t) * (corner - pivot), which is linear in t, w the rotation rate and
      * p = R q + ..., |p''| &lt;= w^2 |q| + 2 w |q'|, so the union is padded by that much. A box
      * contains the moved box at t because the transform at t is affine: the image of the box is
@@ -186,7 +191,8 @@ public final class Motion {
             matrices(Math.nextUp(finish), m, null);
             return a.union(b.transformed(Transform.ofMatrix(m)));
         }
-        double w = Math.abs(radians) / (finish - start), dt = (finish - start) / SWEEP_STEPS;
+        int steps = (int) Math.min(1 << 16, Math.max(SWEEP_STEPS, Math.ceil(Math.abs(Math.toDegrees(radians)) / SWEEP_DEGREES)));
+        double w = Math.abs(radians) / (finish - start), dt = (finish - start) / steps;
         double minX = Double.POSITIVE_INFINITY, minY = minX, minZ = minX, maxX = -minX, maxY = maxX, maxZ = maxX;
         double pad = 0, size = 0;
         for (int i = 0; i < 8; i++) {
@@ -198,8 +204,8 @@ public final class Motion {
             pad = Math.max(pad, dt * dt / 8 * (w * w * Math.max(q0, q1) + 2 * w * dq));
             size = Math.max(size, Math.max(q0, q1) + Math.abs(px) + Math.abs(py) + Math.abs(pz) + Math.abs(tx) + Math.abs(ty) + Math.abs(tz));
         }
-        for (int k = 0; k <= SWEEP_STEPS; k++) {
-            matrices(k == SWEEP_STEPS ? finish : start + k * dt, m, null);
+        for (int k = 0; k <= steps; k++) {
+            matrices(k == steps ? finish : start + k * dt, m, null);
             for (int i = 0; i < 8; i++) {
                 double x = (i & 1) == 0 ? b.minX() : b.maxX(), y = (i & 2) == 0 ? b.minY() : b.maxY(), z = (i & 4) == 0 ? b.minZ() : b.maxZ();
                 double X = m[0] * x + m[1] * y + m[2] * z + m[3];
