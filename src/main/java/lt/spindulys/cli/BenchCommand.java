@@ -15,6 +15,7 @@ import lt.spindulys.render.ProgressListener;
 import lt.spindulys.render.RenderStats;
 import lt.spindulys.render.Renderer;
 import lt.spindulys.scene.GObject;
+import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.SceneBuilder;
 import lt.spindulys.scene.TriangleMesh;
@@ -55,7 +56,11 @@ final class BenchCommand {
             new Row("csg-subdiv", "CSG",
                     "scenes/bench/csg-subdiv.dat: difference of two level-4 subdivision surfaces, 1280x720, 1 spp, 2 threads; "
                             + "beside csg-subdiv-plain.dat, the same two surfaces without CSG (target: at least half its speed)",
-                    (b, out) -> b.csgScene(out)));
+                    (b, out) -> b.csgScene(out)),
+            new Row("motion-blur", "Motion blur",
+                    "scenes/bench/motion-blur.dat: the figure-48 objects, 640x360, 16 spp, 2 threads, in one pass (each sample its own time) "
+                            + "beside the thesis's method, 4 and 16 whole-frame time steps: equal samples; times and error against a reference",
+                    (b, out) -> b.motionBlur(out)));
 
     private static Row torusRow(String size) {
         BenchMeshes.Size s = BenchMeshes.size(size);
@@ -220,18 +225,90 @@ final class BenchCommand {
         out.printf(Locale.ROOT, "  csg-subdiv: %.2fx the throughput of the same surfaces without CSG (target: at least 0.5x)%n", ratio);
     }
 
+    // ---- motion blur ----
+
+    /** Time steps of the motion-blur row: 1 is the single pass; the others the thesis's method, dividing the scene's 16 samples. */
+    static final int[] TIME_STEPS = {1, 4, 16};
+
+    /**
+     * The motion-blur scene rendered in one pass and in whole-frame time steps at equal samples
+     * per pixel, timed alternately, with the ratio of their render times and each image's
+     * distance from a high-sample one-pass reference.
+     */
+    private void motionBlur(PrintStream out) throws IOException {
+        Path scene = benchDir.resolve("motion-blur.dat");
+        if (!Files.isRegularFile(scene)) throw new IOException("bench scene not found: " + scene.toAbsolutePath());
+        int n = TIME_STEPS.length;
+        for (int i = 0; i < WARMUPS; i++) for (int steps : TIME_STEPS) renderOnce(scene, accel, s -> s.withTimeSteps(steps));
+        double[][] seconds = new double[n][runs], cpu = new double[n][runs];
+        Measured[] last = new Measured[n];
+        for (int i = 0; i < runs; i++) {
+            for (int k = 0; k < n; k++) {
+                int steps = TIME_STEPS[k];
+                last[k] = renderOnce(scene, accel, s -> s.withTimeSteps(steps));
+                seconds[k][i] = last[k].stats.seconds();
+                cpu[k][i] = last[k].cpuSeconds;
+            }
+        }
+        // What the samples buy: the distance of each image from a one-pass reference at REFERENCE_SPP.
+        Measured ref = renderOnce(scene, accel, s -> s.withTimeSteps(1).withSamplesPerPixel(REFERENCE_SPP));
+        BenchTable t = new BenchTable("method", "render s", "vs one pass", "CPU s", "vs one pass", "camera rays", "shadow rays", "refl. rays", "Mrays/s", "RMS error");
+        for (int k = 0; k < n; k++) {
+            RenderStats st = last[k].stats;
+            t.add(TIME_STEPS[k] == 1 ? "one pass" : TIME_STEPS[k] + " time steps", fmt(median(seconds[k]), 3),
+                    fmt(median(seconds[k]) / median(seconds[0]), 2) + "x", fmt(median(cpu[k]), 3), fmt(median(cpu[k]) / median(cpu[0]), 2) + "x",
+                    String.format(Locale.ROOT, "%,d", st.cameraRays()),
+                    String.format(Locale.ROOT, "%,d", st.shadowRays()), String.format(Locale.ROOT, "%,d", st.reflectionRays()),
+                    fmt(st.totalRays() / median(seconds[k]) / 1e6, 2), fmt(rms(last[k].image, ref.image), 4));
+        }
+        t.print(out);
+        out.printf(Locale.ROOT, "  motion-blur: equal samples per pixel (the scene's 16; a time step renders 16 / steps of them), medians of%n");
+        out.printf(Locale.ROOT, "  alternated runs. CPU s: process CPU time during the render (steadier than wall time on a shared machine).%n");
+        out.printf(Locale.ROOT, "  RMS error: linear RGB against a one-pass render at %d spp. The single pass is faster where a ratio exceeds 1.00x.%n",
+                REFERENCE_SPP);
+    }
+
+    /** Samples per pixel of the motion-blur row's reference image. */
+    static final int REFERENCE_SPP = 256;
+
+    /**
+     * CPU time of the whole process so far (render threads, and the JIT and collector), or 0
+     * where the JVM does not report it. Unlike wall time it barely changes when other processes
+     * share the cores.
+     */
+    private static long processCpuNanos() {
+        return java.lang.management.ManagementFactory.getOperatingSystemMXBean() instanceof com.sun.management.OperatingSystemMXBean os
+                ? os.getProcessCpuTime() : 0;
+    }
+
+    /** Root mean square difference of two images' linear values. */
+    private static double rms(lt.spindulys.image.FrameBuffer x, lt.spindulys.image.FrameBuffer y) {
+        double[] a = x.data(), b = y.data();
+        double sum = 0;
+        for (int i = 0; i < a.length; i++) sum += (a[i] - b[i]) * (a[i] - b[i]);
+        return Math.sqrt(sum / a.length);
+    }
+
     /** One timed load, build and render of a scene file, and what it used. */
-    private record Measured(double load, double build, RenderStats stats, long peakHeap, long triangles, long meshBytes) {}
+    private record Measured(double load, double build, RenderStats stats, long peakHeap, long triangles, long meshBytes,
+                            lt.spindulys.image.FrameBuffer image, double cpuSeconds) {}
 
     private static Measured renderOnce(Path file, AcceleratorKind accel) throws IOException {
+        return renderOnce(file, accel, s -> s);
+    }
+
+    /** {@link #renderOnce(Path, AcceleratorKind)} with the scene's settings changed by {@code settings}. */
+    private static Measured renderOnce(Path file, AcceleratorKind accel, java.util.function.UnaryOperator<RenderSettings> settings) throws IOException {
         System.gc();
         RenderCommand.resetPeakHeap();
         long t0 = System.nanoTime();
         SceneBuilder builder = SceneParser.parse(file);
         if (accel != null) builder.settings(builder.settings().withAccelerator(accel));
+        builder.settings(settings.apply(builder.settings()));
         long t1 = System.nanoTime();
         Scene scene = builder.build();
         long t2 = System.nanoTime();
+        long cpu0 = processCpuNanos();
         Renderer.Result result;
         try {
             result = Renderer.render(scene, THREADS, ProgressListener.NONE);
@@ -239,6 +316,7 @@ final class BenchCommand {
             Thread.currentThread().interrupt();
             throw new IOException("interrupted", e);
         }
+        long cpu1 = processCpuNanos();
         long peak = RenderCommand.peakHeapBytes();
         long triangles = 0, bytes = 0;
         for (GObject o : scene.objects()) {
@@ -247,7 +325,7 @@ final class BenchCommand {
                 bytes += m.memoryBytes();
             }
         }
-        return new Measured((t1 - t0) / 1e9, (t2 - t1) / 1e9, result.stats(), peak, triangles, bytes);
+        return new Measured((t1 - t0) / 1e9, (t2 - t1) / 1e9, result.stats(), peak, triangles, bytes, result.image(), (cpu1 - cpu0) / 1e9);
     }
 
     /**

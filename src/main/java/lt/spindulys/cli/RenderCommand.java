@@ -30,8 +30,8 @@ import lt.spindulys.scene.SceneBuilder;
 final class RenderCommand {
     static final String USAGE = """
             usage: render SCENE.dat [-o OUT] [--width W] [--height H] [--spp N] [--aperture R] [--focus D]
-                                    [--threads N] [--seed S] [--accel A] [--aov LIST] [--quality Q]
-                                    [--stats] [--quiet] [--debug]
+                                    [--threads N] [--seed S] [--accel A] [--aov LIST] [--shutter OPEN,CLOSE] [--timesteps N]
+                                    [--quality Q] [--stats] [--quiet] [--debug]
                    render subdivide MESH.obj|MESH.dat --level N -o OUT.obj [...]   (see render subdivide --help)
                    render bench [--only NAME] [--runs N] [--list]                 (see render bench --help)
                    render --help | --version
@@ -47,6 +47,9 @@ final class RenderCommand {
               --accel A          acceleration structure: bvh, octree or bruteforce (overrides the scene)
               --aov LIST         render passes beside the image, comma-separated: depth, normal, object
                                  (OUT.depth.pfm, OUT.normal.pfm, OUT.object.png; overrides the scene)
+              --shutter OPEN,CLOSE  shutter interval of the motion blur, e.g. 0,1 (overrides the scene)
+              --timesteps N      1: one pass, every sample at its own time (default); N > 1: the thesis's
+                                 method, N whole-frame passes at fixed times averaged (spp must be a multiple of N)
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
               --stats            print load, build and render times, rays by kind, Mrays/s, peak heap
               --quiet            no progress bar
@@ -59,6 +62,8 @@ final class RenderCommand {
     private Double aperture, focus;
     private AcceleratorKind accel;
     private Set<Aov> aovs;
+    private double[] shutter;
+    private Integer timeSteps;
     private double quality = ImageOptions.DEFAULT.jpegQuality();
     private boolean stats, quiet;
 
@@ -90,6 +95,8 @@ final class RenderCommand {
                         throw new UsageException(a + ": " + e.getMessage());
                     }
                 }
+                case "--shutter" -> shutter = shutterValue(args, ++i, a);
+                case "--timesteps" -> timeSteps = intValue(args, ++i, a, 1, 65536);
                 case "--quality" -> quality = doubleValue(args, ++i, a, 0, 1);
                 case "--stats" -> stats = true;
                 case "--quiet", "-q" -> quiet = true;
@@ -131,10 +138,27 @@ final class RenderCommand {
         if (accel != null) s = s.withAccelerator(accel);
         if (aovs != null) s = s.withAovs(aovs);
         else if (!s.aovs().isEmpty()) checkAovOutputs(s.aovs()); // asked for by the scene: known only now
+        if (shutter != null) s = s.withShutter(shutter[0], shutter[1]);
+        if (timeSteps != null) s = s.withTimeSteps(timeSteps);
+        if (spp != null || timeSteps != null) {
+            try {
+                s.checkTimeSteps();
+            } catch (IllegalArgumentException e) {
+                throw new UsageException((spp != null ? "--spp " + spp : "samples " + s.samplesPerPixel()) + " is not a multiple of "
+                        + (timeSteps != null ? "--timesteps " : "the scene's timesteps ") + s.timeSteps() + " (each time step renders spp / timesteps per pixel)");
+            }
+        }
         builder.settings(s);
         if (aperture != null || focus != null) builder.camera(withLens(builder.camera(), aperture, focus));
         long t1 = System.nanoTime();
-        Scene built = builder.build();
+        Scene built;
+        try {
+            built = builder.build();
+        } catch (IllegalArgumentException e) {
+            // A motion's own times may not fit a shutter given here (an open start or finish is the shutter's).
+            if (shutter != null) throw new UsageException("--shutter " + shutter[0] + "," + shutter[1] + ": " + e.getMessage());
+            throw e;
+        }
         long t2 = System.nanoTime();
 
         int n = threads != null ? threads : Runtime.getRuntime().availableProcessors();
@@ -217,6 +241,24 @@ final class RenderCommand {
         } catch (NumberFormatException e) {
             throw new UsageException(option + " expects a whole number, found '" + v + "'");
         }
+    }
+
+    /** OPEN,CLOSE: two finite numbers, close not before open. */
+    private static double[] shutterValue(String[] args, int i, String option) throws UsageException {
+        String v = value(args, i, option);
+        String[] parts = v.split(",", -1);
+        if (parts.length != 2) throw new UsageException(option + " expects OPEN,CLOSE (two numbers separated by a comma), found '" + v + "'");
+        double[] out = new double[2];
+        for (int k = 0; k < 2; k++) {
+            try {
+                out[k] = Double.parseDouble(parts[k].trim());
+            } catch (NumberFormatException e) {
+                throw new UsageException(option + " expects OPEN,CLOSE (two numbers separated by a comma), found '" + v + "'");
+            }
+            if (!Double.isFinite(out[k])) throw new UsageException(option + " times must be finite, found '" + v + "'");
+        }
+        if (out[1] < out[0]) throw new UsageException(option + " must close after it opens, found '" + v + "'");
+        return out;
     }
 
     private static long longValue(String[] args, int i, String option) throws UsageException {

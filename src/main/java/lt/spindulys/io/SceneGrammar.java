@@ -53,7 +53,11 @@ final class SceneGrammar {
         /** The name of a texture defined earlier. */
         TEXTURE,
         /** A nested { ... } block of {@link SceneGrammar#MAP} keys: a texture bound to a material channel. */
-        MAP
+        MAP,
+        /** Two numbers. */
+        INTERVAL,
+        /** A nested { ... } block of {@link SceneGrammar#MOTION} keys: how an object moves during the shutter. */
+        MOTION
     }
 
     /** What a block makes, which decides how the parser turns its keys into builder calls. */
@@ -63,6 +67,8 @@ final class SceneGrammar {
         TEXTURE,
         /** A texture binding nested in a material (not a statement). */
         MAP,
+        /** An object's motion nested in an object statement (not a statement). */
+        MOTION,
         /** A shape made from its own keys. */
         OBJECT,
         /**
@@ -116,6 +122,7 @@ final class SceneGrammar {
             repeat("translate", Kind.TRANSLATE),
             repeat("rotate", Kind.ROTATE),
             repeat("scale", Kind.SCALE),
+            opt("motion", Kind.MOTION),
             opt("name", Kind.STRING));
 
     static final Block SETTINGS = new Block("settings", Category.SETTINGS, false, List.of(
@@ -129,7 +136,9 @@ final class SceneGrammar {
             choice("encoding", null, "linear", "srgb"),
             opt("seed", Kind.LONG),
             choice("accelerator", null, "bvh", "octree", "bruteforce"),
-            new Key("aov", Kind.CHOICES, false, false, null, Aov.keywords())));
+            new Key("aov", Kind.CHOICES, false, false, null, Aov.keywords()),
+            opt("shutter", Kind.INTERVAL),
+            opt("timesteps", Kind.INTEGER)));
 
     // A thin lens when any of the lens keys is given, else a pinhole. 'focus' and 'focuspoint'
     // exclude each other (checked by the parser); without either the look-at point is in focus.
@@ -190,6 +199,22 @@ final class SceneGrammar {
             opt("reference", Kind.VECTOR, Vec3.X),
             opt("scale", Kind.PAIR, new double[] {1, 1}),
             opt("strength", Kind.NUMBER)));
+
+    /**
+     * The keys of an object's nested 'motion' block. translate, rotate and scale are the end
+     * transform (written as the object keys are, but given once each); direction and speed are the
+     * thesis's linear motion instead of translate. Start and finish default to the shutter's
+     * (filled in by the parser once the settings are known).
+     */
+    static final Block MOTION = new Block("motion", Category.MOTION, false, List.of(
+            opt("translate", Kind.VECTOR),
+            opt("direction", Kind.VECTOR),
+            opt("speed", Kind.NUMBER),
+            opt("rotate", Kind.ROTATE),
+            opt("scale", Kind.SCALE),
+            opt("pivot", Kind.VECTOR, Vec3.ZERO),
+            opt("start", Kind.NUMBER),
+            opt("finish", Kind.NUMBER)));
 
     static final Block SPHERE = solid("sphere",
             opt("center", Kind.VECTOR, Vec3.ZERO),

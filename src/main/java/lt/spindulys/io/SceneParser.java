@@ -30,6 +30,7 @@ import lt.spindulys.io.SceneGrammar.Key;
 import lt.spindulys.io.SceneLexer.Kind;
 import lt.spindulys.io.SceneLexer.Token;
 import lt.spindulys.math.Color;
+import lt.spindulys.math.Motion;
 import lt.spindulys.math.Transform;
 import lt.spindulys.math.Vec3;
 import lt.spindulys.sampling.LensPattern;
@@ -124,6 +125,7 @@ public final class SceneParser {
         Path dir = (baseDir != null ? baseDir : Path.of("")).toAbsolutePath();
         SceneParser p = new SceneParser(Objects.requireNonNull(text, "text"), fileName, dir);
         p.statements();
+        p.checkMotions();
         return p.builder;
     }
 
@@ -152,7 +154,7 @@ public final class SceneParser {
             case MATERIAL -> namedMaterial(kw);
             case TEXTURE -> texture(kw);
             case OBJECT, CSG -> builder.add(object(kw, b));
-            case MAP -> throw new IllegalStateException("map is not a statement");
+            case MAP, MOTION -> throw new IllegalStateException(b.keyword() + " is not a statement");
         }
     }
 
@@ -188,10 +190,20 @@ public final class SceneParser {
                     case "seed" -> s.withSeed((Long) v);
                     case "accelerator" -> s.withAccelerator(AcceleratorKind.fromKeyword((String) v));
                     case "aov" -> s.withAovs(aovs((List<?>) v));
+                    case "shutter" -> s.withShutter(((double[]) v)[0], ((double[]) v)[1]);
+                    case "timesteps" -> s.withTimeSteps((Integer) v);
                     default -> throw unhandled(pr);
                 };
             } catch (IllegalArgumentException e) {
                 throw wrap(pr.at, e);
+            }
+        }
+        Prop steps = p.prop("timesteps");
+        if (steps != null) {
+            try {
+                s.checkTimeSteps();
+            } catch (IllegalArgumentException e) {
+                throw wrap(steps.at, e);
             }
         }
         builder.settings(s);
@@ -447,6 +459,7 @@ public final class SceneParser {
             switch (pr.key.name()) {
                 case "material" -> o.material((Material) pr.value);
                 case "name" -> o.name((String) pr.value);
+                case "motion" -> o.motion((Motion) pr.value);
                 case "translate", "rotate", "scale" -> {
                     try {
                         o.transform((Transform) pr.value);
@@ -781,6 +794,11 @@ public final class SceneParser {
             case STRING -> string(n);
             case MATERIAL -> materialValue(keyToken);
             case MAP -> binding(keyToken);
+            case MOTION -> motionValue(keyToken);
+            case INTERVAL -> {
+                String m = "expected 2 numbers for '" + n + "'";
+                yield new double[] {number(m), number(m)};
+            }
             case TEXTURE -> textureValue(n);
             case PAIR -> {
                 double u = number("expected 1 or 2 numbers for '" + n + "'");
@@ -790,12 +808,13 @@ public final class SceneParser {
                 Vec3 v = vector("expected 3 numbers for 'translate'");
                 yield transform(keyToken, () -> Transform.translate(v));
             }
-            case ROTATE -> rotate(keyToken);
+            case ROTATE -> b == SceneGrammar.MOTION ? new AxisAngle(rotationAxis(), rotationAngle()) : rotate(keyToken);
             case SCALE -> {
                 double x = number("expected 1 or 3 numbers for 'scale'");
                 boolean three = numberAhead();
                 double y = three ? number("expected 1 or 3 numbers for 'scale'") : x;
                 double z = three ? number("expected 1 or 3 numbers for 'scale'") : x;
+                if (b == SceneGrammar.MOTION) yield new Vec3(x, y, z);
                 yield transform(keyToken, () -> Transform.scale(x, y, z));
             }
         };
@@ -907,19 +926,83 @@ public final class SceneParser {
     }
 
     private Transform rotate(Token keyToken) {
+        Vec3 axis = rotationAxis();
+        double degrees = rotationAngle();
+        return transform(keyToken, () -> Transform.rotate(axis, degrees));
+    }
+
+    /** The axis of a 'rotate' value: x, y, z or three numbers. */
+    private Vec3 rotationAxis() {
         Token t = lex.peek();
-        Vec3 axis;
         if (t.isWord("x") || t.isWord("y") || t.isWord("z")) {
             lex.next();
-            axis = t.isWord("x") ? Vec3.X : t.isWord("y") ? Vec3.Y : Vec3.Z;
-        } else if (numberAhead()) {
-            axis = vector("expected an axis (x, y, z or 3 numbers) and an angle for 'rotate'");
-        } else {
-            lex.next();
-            throw error(t, "expected x, y, z or an axis (3 numbers) for 'rotate', found " + t.describe());
+            return t.isWord("x") ? Vec3.X : t.isWord("y") ? Vec3.Y : Vec3.Z;
         }
-        double degrees = number("expected an angle in degrees for 'rotate'");
-        return transform(keyToken, () -> Transform.rotate(axis, degrees));
+        if (numberAhead()) return vector("expected an axis (x, y, z or 3 numbers) and an angle for 'rotate'");
+        lex.next();
+        throw error(t, "expected x, y, z or an axis (3 numbers) for 'rotate', found " + t.describe());
+    }
+
+    private double rotationAngle() { return number("expected an angle in degrees for 'rotate'"); }
+
+    /** A motion block's 'rotate' value. */
+    private record AxisAngle(Vec3 axis, double degrees) {}
+
+    /**
+     * motion { ... } after an object's 'motion' key: the end transform (translate, or direction
+     * and speed; rotate; scale; about pivot) between start and finish. Open times are the
+     * shutter's; they are checked against it once the whole file (and so the settings) is read.
+     */
+    private Motion motionValue(Token keyToken) {
+        Props p = block(SceneGrammar.MOTION, keyToken, null);
+        Prop translate = p.prop("translate"), direction = p.prop("direction"), speed = p.prop("speed");
+        if (translate != null && direction != null) {
+            Prop later = translate.at.line() > direction.at.line() || translate.at.line() == direction.at.line() && translate.at.column() > direction.at.column() ? translate : direction;
+            throw error(later.at, "motion has both 'translate' and 'direction': give the end translation, or direction and speed");
+        }
+        if (direction != null && speed == null) throw error(direction.at, "'direction' needs 'speed' (units per unit of shutter time)");
+        if (speed != null && direction == null) throw error(speed.at, "'speed' needs 'direction'");
+        if (translate == null && direction == null && p.prop("rotate") == null && p.prop("scale") == null) {
+            throw error(keyToken, "motion needs translate, direction and speed, rotate or scale: without them the object does not move");
+        }
+        Prop start = p.prop("start"), finish = p.prop("finish");
+        double s = start != null ? (Double) start.value : Double.NaN, f = finish != null ? (Double) finish.value : Double.NaN;
+        Motion m;
+        try {
+            if (direction != null) {
+                if (p.prop("rotate") != null || p.prop("scale") != null) {
+                    Prop extra = p.prop("rotate") != null ? p.prop("rotate") : p.prop("scale");
+                    throw error(extra.at, "'" + extra.key.name() + "' does not combine with direction and speed (the thesis's linear motion); use translate");
+                }
+                m = Motion.linear(p.vec("direction"), p.num("speed"), s, f);
+            } else {
+                AxisAngle r = p.prop("rotate") != null ? (AxisAngle) p.get("rotate") : new AxisAngle(Vec3.Y, 0);
+                Vec3 sc = p.prop("scale") != null ? (Vec3) p.get("scale") : new Vec3(1, 1, 1);
+                Vec3 t = translate != null ? (Vec3) translate.value : Vec3.ZERO;
+                m = Motion.of(sc, r.axis, r.degrees, t, p.vec("pivot"), s, f);
+            }
+        } catch (IllegalArgumentException e) {
+            throw blame(p, e);
+        }
+        motions.add(new PendingMotion(m, p));
+        return m;
+    }
+
+    /** A motion read, with its block, until its open times can be checked against the shutter. */
+    private record PendingMotion(Motion motion, Props block) {}
+
+    private final List<PendingMotion> motions = new ArrayList<>();
+
+    /** Every motion's times, open ones filled in from the shutter, must give a finish after the start. */
+    private void checkMotions() {
+        RenderSettings st = builder.settings();
+        for (PendingMotion pm : motions) {
+            try {
+                pm.motion.resolve(st.shutterOpen(), st.shutterClose());
+            } catch (IllegalArgumentException e) {
+                throw blame(pm.block, e);
+            }
+        }
     }
 
     private Transform transform(Token keyToken, java.util.function.Supplier<Transform> make) {

@@ -83,7 +83,27 @@ public final class Transform {
     }
 
     /** Writes {@code world} mapped into this transform's object space (the inverse) into {@code local}. */
-    public void toLocal(Ray world, Ray local) {
+    public void toLocal(Ray world, Ray local) { toLocal(inv, world, local); }
+
+    /** Writes the point {@code world[0..2]} mapped into object space (the inverse) to {@code local[0..2]}. */
+    public void toLocalPoint(double[] world, double[] local) { toLocalPoint(inv, world, local); }
+
+    /** Maps the vector {@code v[off..off+2]} in place from object to world space. */
+    public void vectorInPlace(double[] v, int off) { vectorInPlace(m, v, off); }
+
+    /** Maps the normal {@code n[off..off+2]} in place from object to world space and normalises it. */
+    public void normalInPlace(double[] n, int off) { normalInPlace(inv, identity, n, off); }
+
+    /** The row-major 3x4 matrix itself, not a copy: for {@link Placement} only, which never writes it. */
+    double[] matrix() { return m; }
+
+    /** The inverse's row-major 3x4 matrix itself, not a copy (see {@link #matrix()}). */
+    double[] inverseMatrix() { return inv; }
+
+    // The per-ray arithmetic, shared with Affine (a moving object's transform at one time) so that
+    // both compute exactly alike.
+
+    static void toLocal(double[] inv, Ray world, Ray local) {
         double x = world.ox, y = world.oy, z = world.oz;
         local.ox = inv[0] * x + inv[1] * y + inv[2] * z + inv[3];
         local.oy = inv[4] * x + inv[5] * y + inv[6] * z + inv[7];
@@ -97,24 +117,21 @@ public final class Transform {
         local.time = world.time;
     }
 
-    /** Writes the point {@code world[0..2]} mapped into object space (the inverse) to {@code local[0..2]}. */
-    public void toLocalPoint(double[] world, double[] local) {
+    static void toLocalPoint(double[] inv, double[] world, double[] local) {
         double x = world[0], y = world[1], z = world[2];
         local[0] = inv[0] * x + inv[1] * y + inv[2] * z + inv[3];
         local[1] = inv[4] * x + inv[5] * y + inv[6] * z + inv[7];
         local[2] = inv[8] * x + inv[9] * y + inv[10] * z + inv[11];
     }
 
-    /** Maps the vector {@code v[off..off+2]} in place from object to world space. */
-    public void vectorInPlace(double[] v, int off) {
+    static void vectorInPlace(double[] m, double[] v, int off) {
         double x = v[off], y = v[off + 1], z = v[off + 2];
         v[off] = m[0] * x + m[1] * y + m[2] * z;
         v[off + 1] = m[4] * x + m[5] * y + m[6] * z;
         v[off + 2] = m[8] * x + m[9] * y + m[10] * z;
     }
 
-    /** Maps the normal {@code n[off..off+2]} in place from object to world space and normalises it. */
-    public void normalInPlace(double[] n, int off) {
+    static void normalInPlace(double[] inv, boolean identity, double[] n, int off) {
         double x = n[off], y = n[off + 1], z = n[off + 2];
         double nx = x, ny = y, nz = z;
         if (!identity) {
@@ -125,6 +142,17 @@ public final class Transform {
         double len = Math.sqrt(nx * nx + ny * ny + nz * nz);
         if (len > 0) { nx /= len; ny /= len; nz /= len; }
         n[off] = nx; n[off + 1] = ny; n[off + 2] = nz;
+    }
+
+    /** Writes a then b (b applied after a, as matrices b * a) to {@code out}, which may be neither. */
+    static void compose(double[] a, double[] b, double[] out) {
+        for (int i = 0; i < 3; i++) {
+            for (int j = 0; j < 4; j++) {
+                double s = b[i * 4] * a[j] + b[i * 4 + 1] * a[4 + j] + b[i * 4 + 2] * a[8 + j];
+                if (j == 3) s += b[i * 4 + 3];
+                out[i * 4 + j] = s;
+            }
+        }
     }
 
     private static double[] multiply(double[] a, double[] b) {

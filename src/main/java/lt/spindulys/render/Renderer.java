@@ -20,6 +20,13 @@ import lt.spindulys.shading.WhittedIntegrator;
  * its pixel, so the result is the same for any thread count. When the settings ask for render
  * passes ({@link RenderSettings#aovs()}), each pixel gets one more camera ray for them; otherwise
  * nothing is traced or stored for them.
+ *
+ * <p><b>Time.</b> With one time step (the default) every sample of a pixel draws its film, lens
+ * and time coordinates together ({@link PixelSampler}), in a single pass; the time in [0, 1) is
+ * mapped into the shutter interval. With {@code timesteps N > 1} the frame is rendered as the
+ * thesis did: N whole-frame passes, pass k with every ray at open + (k + 0.5) / N (close - open)
+ * and samples / N samples per pixel (seeded per pass and pixel), averaged in pass order, so that
+ * too is identical for any thread count.
  */
 public final class Renderer {
     /** Tile side in pixels: small enough to balance two cores, large enough to keep counters cheap. */
@@ -46,18 +53,54 @@ public final class Renderer {
         AovFrame aovs = st.aovs().isEmpty() ? null : new AovFrame(w, h, st.aovs());
         int tilesX = (w + TILE - 1) / TILE, tilesY = (h + TILE - 1) / TILE, tiles = tilesX * tilesY;
         WhittedIntegrator integrator = new WhittedIntegrator(scene);
+        int steps = st.checkTimeSteps().timeSteps();
+        long[] sum = new long[4];
+        long start = System.nanoTime();
+        for (int k = 0; k < steps; k++) {
+            // One time step: a fixed time and its share of the samples, or (steps == 1) all samples at their own times.
+            Pass pass = steps == 1 ? new Pass(st.samplesPerPixel(), st.seed(), Double.NaN, false, 1)
+                    : new Pass(st.samplesPerPixel() / steps, passSeed(st.seed(), k), st.shutterTime((k + 0.5) / steps), k > 0, k == steps - 1 ? steps : 1);
+            long done = (long) k * w * h, total = (long) steps * w * h;
+            ProgressListener p = (pixels, all) -> progress.progress(done + pixels, total);
+            long[] c = renderPass(scene, threads, p, integrator, fb, k == 0 ? aovs : null, pass, tilesX, tiles);
+            for (int i = 0; i < 4; i++) sum[i] += c[i];
+        }
+        double seconds = (System.nanoTime() - start) / 1e9;
+        return new Result(fb, new RenderStats(sum[0], sum[1], sum[2], sum[3], seconds), aovs);
+    }
+
+    /**
+     * One pass over the frame.
+     *
+     * @param samples    samples per pixel in this pass
+     * @param seed       seed of its samples
+     * @param time       the time of every ray, or NaN: each sample's own time in the shutter
+     * @param accumulate add to the frame buffer (a later time step) instead of setting it
+     * @param divide     after adding, divide the pixel by this (the last time step: the average); 1 for none
+     */
+    private record Pass(int samples, long seed, double time, boolean accumulate, int divide) {}
+
+    /** The seed of time step k: the scene's for step 0, a well-mixed other one for the rest, so the steps' samples differ. */
+    static long passSeed(long seed, int k) {
+        return k == 0 ? seed : new lt.spindulys.sampling.Rng().seed(seed, k, 0x6d6f74, 0x696f6e).nextLong();
+    }
+
+    /** Renders one pass on {@code threads} threads; returns its ray counts (camera, shadow, reflection, refraction). */
+    private static long[] renderPass(Scene scene, int threads, ProgressListener progress, WhittedIntegrator integrator, FrameBuffer fb,
+                                     AovFrame aovs, Pass pass, int tilesX, int tiles) throws InterruptedException {
+        RenderSettings st = scene.settings();
+        int w = st.width(), h = st.height();
         AtomicInteger nextTile = new AtomicInteger();
         AtomicLong donePixels = new AtomicLong();
         AtomicReference<Throwable> failure = new AtomicReference<>();
         long[][] counters = new long[threads][];
-        long start = System.nanoTime();
 
         Thread[] workers = new Thread[Math.min(threads, tiles)];
         for (int k = 0; k < workers.length; k++) {
             int index = k;
             workers[k] = new Thread(() -> {
                 TracerScratch scratch = integrator.newScratch();
-                PixelSampler sampler = new PixelSampler(st.samplesPerPixel(), scene.camera().lensPattern());
+                PixelSampler sampler = new PixelSampler(pass.samples, scene.camera().lensPattern());
                 Ray ray = new Ray();
                 double[] colour = new double[4];
                 try {
@@ -65,7 +108,7 @@ public final class Renderer {
                         if (Thread.currentThread().isInterrupted()) return;
                         int x0 = (t % tilesX) * TILE, y0 = (t / tilesX) * TILE;
                         int x1 = Math.min(x0 + TILE, w), y1 = Math.min(y0 + TILE, h);
-                        renderTile(scene.camera(), integrator, st, sampler, scratch, ray, colour, fb, aovs, x0, y0, x1, y1);
+                        renderTile(scene.camera(), integrator, st, pass, sampler, scratch, ray, colour, fb, aovs, x0, y0, x1, y1);
                         progress.progress(donePixels.addAndGet((long) (x1 - x0) * (y1 - y0)), (long) w * h);
                     }
                 } catch (Throwable e) {
@@ -86,32 +129,40 @@ public final class Renderer {
         if (f instanceof RuntimeException re) throw re;
         if (f instanceof Error err) throw err;
         if (f != null) throw new IllegalStateException(f);
-        double seconds = (System.nanoTime() - start) / 1e9;
         long[] sum = new long[4];
         for (long[] c : counters) if (c != null) for (int i = 0; i < 4; i++) sum[i] += c[i];
-        return new Result(fb, new RenderStats(sum[0], sum[1], sum[2], sum[3], seconds), aovs);
+        return sum;
     }
 
-    private static void renderTile(Camera camera, WhittedIntegrator integrator, RenderSettings st, PixelSampler sampler,
+    private static void renderTile(Camera camera, WhittedIntegrator integrator, RenderSettings st, Pass pass, PixelSampler sampler,
                                    TracerScratch scratch, Ray ray, double[] colour, FrameBuffer fb, AovFrame aovs,
                                    int x0, int y0, int x1, int y1) {
         int w = st.width(), h = st.height(), n = sampler.samplesPerPixel();
         double aspect = st.aspect();
+        boolean ownTimes = Double.isNaN(pass.time);
+        double[] data = fb.data();
         for (int y = y0; y < y1; y++) {
             for (int x = x0; x < x1; x++) {
-                sampler.startPixel(st.seed(), x, y);
+                sampler.startPixel(pass.seed, x, y);
                 double r = 0, g = 0, b = 0;
                 for (int i = 0; i < n; i++) {
+                    double time = ownTimes ? st.shutterTime(sampler.time(i)) : pass.time;
                     camera.generateRay(sampler.filmX(i) / w, sampler.filmY(i) / h, aspect,
-                            sampler.lensU(i), sampler.lensV(i), sampler.time(i), ray);
+                            sampler.lensU(i), sampler.lensV(i), time, ray);
                     integrator.traceCamera(ray, scratch, colour);
                     r += colour[0]; g += colour[1]; b += colour[2];
                 }
-                fb.set(x, y, r / n, g / n, b / n);
+                r /= n; g /= n; b /= n;
+                if (pass.accumulate) {
+                    int o = 3 * (y * w + x);
+                    r += data[o]; g += data[o + 1]; b += data[o + 2];
+                }
+                if (pass.divide != 1) { r /= pass.divide; g /= pass.divide; b /= pass.divide; }
+                fb.set(x, y, r, g, b);
                 if (aovs != null) {
-                    // One more ray, through the exact pixel centre from the lens centre at time 0,
-                    // so the passes do not depend on the sample pattern.
-                    camera.generateRay((x + 0.5) / w, (y + 0.5) / h, aspect, 0, 0, 0, ray);
+                    // One more ray, through the exact pixel centre from the lens centre when the
+                    // shutter opens, so the passes do not depend on the sample pattern.
+                    camera.generateRay((x + 0.5) / w, (y + 0.5) / h, aspect, 0, 0, st.shutterOpen(), ray);
                     int id = integrator.traceFirstHit(ray, scratch, colour);
                     if (id < 0) aovs.setBackground(x, y);
                     else aovs.setHit(x, y, colour[0], colour[1], colour[2], colour[3], id);

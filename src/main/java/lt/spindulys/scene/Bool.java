@@ -10,7 +10,8 @@ import java.util.function.Consumer;
 import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
-import lt.spindulys.math.Transform;
+import lt.spindulys.math.Motion;
+import lt.spindulys.math.Placement;
 
 /**
  * Constructive solid geometry node (the thesis's name): the union, intersection or difference
@@ -56,8 +57,9 @@ import lt.spindulys.math.Transform;
  * whose bounds the ray misses is not asked for spans; for an intersection (or the first operand
  * of a difference) that alone settles that there is no hit.
  *
- * <p><b>Freezing.</b> Operands are frozen with the Bool's object-to-world transform as their
- * parent, so an operand's placement is relative to the Bool's. The Bool takes the next id and
+ * <p><b>Freezing.</b> Operands are frozen with the Bool's object-to-world placement as their
+ * parent, so an operand's placement (and motion) is relative to the Bool's, and a moving Bool
+ * moves its operands; their world bounds, and so the Bool's, cover the whole shutter. The Bool takes the next id and
  * its operands the following ones, depth first in operand order.
  */
 public final class Bool extends GObject {
@@ -140,10 +142,10 @@ public final class Bool extends GObject {
     // ---- freezing and bounds ----
 
     @Override
-    public int freeze(Transform parentToWorld, Material inherited, int ids, AcceleratorKind accel) {
+    public int freeze(Placement parentToWorld, Material inherited, int ids, AcceleratorKind accel) {
         if (isFrozen()) throw new IllegalStateException(name() + " is added to the scene twice");
         own = material();
-        Transform toWorld = transform().then(parentToWorld);
+        Placement toWorld = placementIn(parentToWorld);
         Material inner = own != null ? own : inherited;
         int next = ids + 1;
         for (GObject o : operands) next = o.freeze(toWorld, inner, next, accel);
@@ -181,7 +183,15 @@ public final class Bool extends GObject {
         return b;
     }
 
-    private static Bounds placed(GObject o) { return o.localBounds().transformed(o.transform()); }
+    /**
+     * An operand's local bounds placed by its transform and carried along its motion (before
+     * freezing, a motion's open times are taken as the default shutter).
+     */
+    private static Bounds placed(GObject o) {
+        Bounds b = o.localBounds().transformed(o.transform());
+        Motion m = o.motion();
+        return m == null ? b : m.resolve(Placement.OPEN, Placement.CLOSE).sweep(b);
+    }
 
     /** This Bool's material; the operands' only where it has none of its own (they are never shaded otherwise). */
     @Override

@@ -1,7 +1,10 @@
 package lt.spindulys.scene;
 
 import lt.spindulys.accel.AcceleratorKind;
+import lt.spindulys.math.Affine;
 import lt.spindulys.math.Bounds;
+import lt.spindulys.math.Motion;
+import lt.spindulys.math.Placement;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
 
@@ -18,14 +21,24 @@ import lt.spindulys.math.Transform;
  *
  * <p>Leaf shapes implement the {@code *Local} methods in object space; this class maps the world
  * ray into object space (direction not renormalised, so t is shared) and maps results back.
+ *
+ * <p><b>Motion.</b> An object may also be given a {@link Motion}, applied after its own transform
+ * and before the enclosing object's placement, so its object-to-world mapping at time t is: own
+ * transform, own motion at t, then the parent's mapping at t (a {@link Placement}). A ray is
+ * answered at its {@link Ray#time}, and shading uses the same time. Objects with no motion
+ * anywhere in their chain keep one composed transform and pay nothing per ray for the feature.
  */
 public abstract class GObject {
     private Transform transform = Transform.IDENTITY;
+    private Motion motion;
     private Material material;
     private String name;
 
-    /** Composed object-to-world transform; set by {@link #freeze}. */
+    /** Composed object-to-world transform of an object that does not move (else null); set by {@link #freeze}. */
     protected Transform objectToWorld;
+    /** Object-to-world mapping of an object that moves (itself or an enclosing one), else null; set by {@link #freeze}. */
+    private Placement moving;
+    private boolean frozen;
     private Bounds worldBounds;
     private int id = -1;
 
@@ -39,6 +52,19 @@ public abstract class GObject {
     }
 
     public Transform transform() { return transform; }
+
+    /**
+     * Gives this object a motion during the shutter, applied after its transform (null: none).
+     * An open start or finish of the motion becomes the scene's shutter time when it is built.
+     */
+    public GObject motion(Motion m) {
+        checkMutable();
+        motion = m;
+        return this;
+    }
+
+    /** This object's own motion, or null (after freezing, with its times filled in from the shutter). */
+    public Motion motion() { return motion; }
 
     /** Sets this object's material; null inherits the enclosing object's or the scene default. */
     public GObject material(Material m) {
@@ -62,14 +88,19 @@ public abstract class GObject {
     public abstract String kind();
 
     protected final void checkMutable() {
-        if (objectToWorld != null) throw new IllegalStateException(name() + " is part of a frozen scene and cannot change");
+        if (frozen) throw new IllegalStateException(name() + " is part of a frozen scene and cannot change");
     }
 
     // ---- freezing ----
 
-    /** {@link #freeze(Transform, Material, int, AcceleratorKind)} with the default acceleration structure. */
+    /** {@link #freeze(Placement, Material, int, AcceleratorKind)} with the default acceleration structure. */
     public final int freeze(Transform parentToWorld, Material inherited, int ids) {
-        return freeze(parentToWorld, inherited, ids, AcceleratorKind.DEFAULT);
+        return freeze(Placement.of(parentToWorld), inherited, ids, AcceleratorKind.DEFAULT);
+    }
+
+    /** {@link #freeze(Placement, Material, int, AcceleratorKind)} under a static parent with the default shutter. */
+    public final int freeze(Transform parentToWorld, Material inherited, int ids, AcceleratorKind accel) {
+        return freeze(Placement.of(parentToWorld), inherited, ids, accel);
     }
 
     /**
@@ -81,9 +112,13 @@ public abstract class GObject {
      * @param ids   next free object id; returns the next free id after this object and its children
      * @param accel the structure for objects that index their own primitives, passed on to children
      */
-    public int freeze(Transform parentToWorld, Material inherited, int ids, AcceleratorKind accel) {
-        if (objectToWorld != null) throw new IllegalStateException(name() + " is added to the scene twice");
-        objectToWorld = transform.then(parentToWorld);
+    public int freeze(Placement parentToWorld, Material inherited, int ids, AcceleratorKind accel) {
+        if (frozen) throw new IllegalStateException(name() + " is added to the scene twice");
+        Placement p = placementIn(parentToWorld);
+        if (motion != null) motion = motion.resolve(parentToWorld.open(), parentToWorld.close());
+        frozen = true;
+        if (p.isStatic()) objectToWorld = p.staticTransform();
+        else moving = p;
         if (material == null) material = inherited;
         id = ids;
         worldBounds = computeWorldBounds();
@@ -96,7 +131,26 @@ public abstract class GObject {
      * interval a ray may carry, so an object that moves must return the union over its motion.
      */
     protected Bounds computeWorldBounds() {
-        return localBounds().transformed(objectToWorld);
+        return moving == null ? localBounds().transformed(objectToWorld) : moving.bounds(localBounds());
+    }
+
+    /**
+     * This object's object-to-world mapping inside a parent placed by {@code parentToWorld}: its
+     * transform, its motion (open times from the parent's shutter), then the parent's.
+     */
+    protected final Placement placementIn(Placement parentToWorld) {
+        Placement own = Placement.of(transform, parentToWorld.open(), parentToWorld.close());
+        if (motion != null) own = own.then(motion);
+        return own.then(parentToWorld);
+    }
+
+    /** True if this object moves during the shutter (by its own motion or an enclosing object's); known once frozen. */
+    public final boolean isMoving() { return moving != null; }
+
+    /** The object-to-world transform at {@code time} (allocates; for tests and tools). Only after freezing. */
+    public final Transform objectToWorld(double time) {
+        if (!frozen) throw new IllegalStateException(name() + " is not frozen yet");
+        return moving == null ? objectToWorld : moving.at(time);
     }
 
     /** World bounds over the whole shutter interval (see {@link #computeWorldBounds()}); set at freeze. */
@@ -118,7 +172,7 @@ public abstract class GObject {
 
     private GObject solid;
 
-    public final boolean isFrozen() { return objectToWorld != null; }
+    public final boolean isFrozen() { return frozen; }
 
     /** Visits the material of this object and of every object inside it (after freezing). */
     public void forEachMaterial(java.util.function.Consumer<Material> visitor) {
@@ -176,19 +230,40 @@ public abstract class GObject {
         sd.material = hit.material != null ? hit.material : material;
         // Object-space point, for the shape's own parametrisation.
         double[] q = sd.dpdu; // scratch; shadeLocal overwrites it
-        objectToWorld.toLocalPoint(sd.p, q);
+        if (moving != null) {
+            shadeMoving(ray, hit, sd);
+        } else {
+            objectToWorld.toLocalPoint(sd.p, q);
+            double lx = q[0], ly = q[1], lz = q[2];
+            sd.pObject[0] = lx; sd.pObject[1] = ly; sd.pObject[2] = lz;
+            shadeLocal(lx, ly, lz, hit, sd);
+            System.arraycopy(sd.dpdu, 0, sd.dpduObject, 0, 3);
+            System.arraycopy(sd.dpdv, 0, sd.dpdvObject, 0, 3);
+            if (!objectToWorld.isIdentity()) {
+                objectToWorld.vectorInPlace(sd.dpdu, 0);
+                objectToWorld.vectorInPlace(sd.dpdv, 0);
+            }
+            objectToWorld.normalInPlace(sd.ng, 0);
+            objectToWorld.normalInPlace(sd.ns, 0);
+        }
+        if (hit.flipNormal) sd.flipNormals();
+    }
+
+    /** {@link #shade} through the transform at the ray's time, evaluated into the shading scratch. */
+    private void shadeMoving(Ray ray, Hit hit, ShadingData sd) {
+        Affine a = sd.placementAtTime;
+        moving.evaluate(ray.time, a);
+        double[] q = sd.dpdu;
+        a.toLocalPoint(sd.p, q);
         double lx = q[0], ly = q[1], lz = q[2];
         sd.pObject[0] = lx; sd.pObject[1] = ly; sd.pObject[2] = lz;
         shadeLocal(lx, ly, lz, hit, sd);
         System.arraycopy(sd.dpdu, 0, sd.dpduObject, 0, 3);
         System.arraycopy(sd.dpdv, 0, sd.dpdvObject, 0, 3);
-        if (!objectToWorld.isIdentity()) {
-            objectToWorld.vectorInPlace(sd.dpdu, 0);
-            objectToWorld.vectorInPlace(sd.dpdv, 0);
-        }
-        objectToWorld.normalInPlace(sd.ng, 0);
-        objectToWorld.normalInPlace(sd.ns, 0);
-        if (hit.flipNormal) sd.flipNormals();
+        a.vectorInPlace(sd.dpdu, 0);
+        a.vectorInPlace(sd.dpdv, 0);
+        a.normalInPlace(sd.ng, 0);
+        a.normalInPlace(sd.ns, 0);
     }
 
     // ---- what leaf shapes implement, in object space ----
@@ -207,8 +282,16 @@ public abstract class GObject {
      */
     protected abstract void shadeLocal(double x, double y, double z, Hit hit, ShadingData sd);
 
-    /** The ray in object space: the world ray itself when the transform is the identity. */
+    /**
+     * The ray in object space: the world ray itself when the transform is the identity; for a
+     * moving object, mapped by the transform at the ray's time.
+     */
     protected final Ray toLocal(Ray ray, TraceContext ctx) {
+        if (moving != null) {
+            moving.evaluate(ray.time, ctx.placementAtTime);
+            ctx.placementAtTime.toLocal(ray, ctx.localRay);
+            return ctx.localRay;
+        }
         if (objectToWorld.isIdentity()) return ray;
         objectToWorld.toLocal(ray, ctx.localRay);
         return ctx.localRay;

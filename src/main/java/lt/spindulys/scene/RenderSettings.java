@@ -23,10 +23,16 @@ import lt.spindulys.math.Color;
  * @param seed            global seed of every random number, mixed with pixel and sample
  * @param accelerator     the acceleration structure of the scene over its objects and of each mesh over its triangles
  * @param aovs            render passes to write beside the image (unmodifiable, possibly empty; see {@link Aov})
+ * @param shutterOpen     time the shutter opens: ray times lie in [shutterOpen, shutterClose]
+ * @param shutterClose    time the shutter closes (equal to shutterOpen: no motion blur)
+ * @param timeSteps       1: every sample of a pixel has its own time in one pass; N &gt; 1: the
+ *                        thesis's method, N passes each at one time with samplesPerPixel / N
+ *                        samples, averaged (samplesPerPixel must then be a multiple of N, checked
+ *                        when the scene is built, see {@link #checkTimeSteps()})
  */
 public record RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, double minContribution,
                              Color background, Color ambient, boolean srgb, long seed, AcceleratorKind accelerator,
-                             Set<Aov> aovs) {
+                             Set<Aov> aovs, double shutterOpen, double shutterClose, int timeSteps) {
     /** Largest accepted image side, so that a typo cannot ask for terabytes. */
     public static final int MAX_SIDE = 32768;
 
@@ -36,6 +42,13 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
     public RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, double minContribution,
                           Color background, Color ambient, boolean srgb, long seed) {
         this(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, AcceleratorKind.DEFAULT);
+    }
+
+    /** Settings with the default shutter [0, 1] in one pass. */
+    public RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, double minContribution,
+                          Color background, Color ambient, boolean srgb, long seed, AcceleratorKind accelerator, Set<Aov> aovs) {
+        this(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, aovs,
+                lt.spindulys.math.Placement.OPEN, lt.spindulys.math.Placement.CLOSE, 1);
     }
 
     /** Settings without render passes. */
@@ -54,23 +67,51 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         if (!ambient.isFinite() || !ambient.isNonNegative()) throw new IllegalArgumentException("ambient must have non-negative finite components, found " + ambient);
         java.util.Objects.requireNonNull(accelerator, "accelerator");
         java.util.Objects.requireNonNull(aovs, "aovs");
+        lt.spindulys.math.Placement.checkShutter(shutterOpen, shutterClose);
+        if (timeSteps < 1 || timeSteps > 65536) throw new IllegalArgumentException("timesteps must be between 1 and 65536, found " + timeSteps);
         // An EnumSet copy: declaration order whatever the caller's set, and no later changes.
         aovs = aovs.isEmpty() ? Set.of() : Collections.unmodifiableSet(EnumSet.copyOf(aovs));
     }
 
-    public RenderSettings withSize(int w, int h) { return new RenderSettings(w, h, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, aovs); }
-    public RenderSettings withSamplesPerPixel(int n) { return new RenderSettings(width, height, n, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, aovs); }
-    public RenderSettings withMaxDepth(int d) { return new RenderSettings(width, height, samplesPerPixel, d, minContribution, background, ambient, srgb, seed, accelerator, aovs); }
-    public RenderSettings withMinContribution(double c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, c, background, ambient, srgb, seed, accelerator, aovs); }
-    public RenderSettings withBackground(Color c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, c, ambient, srgb, seed, accelerator, aovs); }
-    public RenderSettings withAmbient(Color c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, c, srgb, seed, accelerator, aovs); }
-    public RenderSettings withSrgb(boolean s) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, s, seed, accelerator, aovs); }
-    public RenderSettings withSeed(long s) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, s, accelerator, aovs); }
+    public RenderSettings withSize(int w, int h) { return new RenderSettings(w, h, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, aovs, shutterOpen, shutterClose, timeSteps); }
+    public RenderSettings withSamplesPerPixel(int n) { return new RenderSettings(width, height, n, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, aovs, shutterOpen, shutterClose, timeSteps); }
+    public RenderSettings withMaxDepth(int d) { return new RenderSettings(width, height, samplesPerPixel, d, minContribution, background, ambient, srgb, seed, accelerator, aovs, shutterOpen, shutterClose, timeSteps); }
+    public RenderSettings withMinContribution(double c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, c, background, ambient, srgb, seed, accelerator, aovs, shutterOpen, shutterClose, timeSteps); }
+    public RenderSettings withBackground(Color c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, c, ambient, srgb, seed, accelerator, aovs, shutterOpen, shutterClose, timeSteps); }
+    public RenderSettings withAmbient(Color c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, c, srgb, seed, accelerator, aovs, shutterOpen, shutterClose, timeSteps); }
+    public RenderSettings withSrgb(boolean s) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, s, seed, accelerator, aovs, shutterOpen, shutterClose, timeSteps); }
+    public RenderSettings withSeed(long s) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, s, accelerator, aovs, shutterOpen, shutterClose, timeSteps); }
 
-    public RenderSettings withAccelerator(AcceleratorKind a) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, a, aovs); }
+    public RenderSettings withAccelerator(AcceleratorKind a) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, a, aovs, shutterOpen, shutterClose, timeSteps); }
 
     /** The same settings with these render passes (an empty set: none). */
-    public RenderSettings withAovs(Set<Aov> a) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, a); }
+    public RenderSettings withAovs(Set<Aov> a) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, a, shutterOpen, shutterClose, timeSteps); }
+
+    /** The same settings with the shutter open over [open, close]. */
+    public RenderSettings withShutter(double open, double close) {
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, aovs, open, close, timeSteps);
+    }
+
+    /** The same settings rendered in {@code n} time steps (1: one pass, every sample at its own time). */
+    public RenderSettings withTimeSteps(int n) {
+        return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, aovs, shutterOpen, shutterClose, n);
+    }
+
+    /**
+     * Refuses samples per pixel that the time steps do not divide (each step takes an equal share).
+     *
+     * @throws IllegalArgumentException "samples 6 is not a multiple of timesteps 4"
+     */
+    public RenderSettings checkTimeSteps() {
+        if (samplesPerPixel % timeSteps != 0) {
+            throw new IllegalArgumentException("samples " + samplesPerPixel + " is not a multiple of timesteps " + timeSteps
+                    + " (each time step renders samples / timesteps per pixel)");
+        }
+        return this;
+    }
+
+    /** The time of a sample in [0, 1) mapped into the shutter interval. */
+    public double shutterTime(double u) { return shutterOpen + u * (shutterClose - shutterOpen); }
 
     public double aspect() { return (double) width / height; }
 }

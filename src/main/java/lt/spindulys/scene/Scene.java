@@ -8,6 +8,7 @@ import lt.spindulys.accel.BruteForce;
 import lt.spindulys.accel.Bvh;
 import lt.spindulys.accel.PrimitiveSet;
 import lt.spindulys.camera.Camera;
+import lt.spindulys.math.Placement;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
 
@@ -29,13 +30,15 @@ public final class Scene {
     private final boolean transparent;
 
     Scene(RenderSettings settings, Camera camera, List<PointLight> lights, List<GObject> objects) {
-        this.settings = settings;
+        this.settings = settings.checkTimeSteps();
         this.camera = camera;
         this.lights = List.copyOf(lights);
         this.lightArray = lights.toArray(new PointLight[0]);
         this.objects = List.copyOf(objects);
         int ids = 0;
-        for (GObject o : objects) ids = o.freeze(Transform.IDENTITY, Material.DEFAULT, ids, settings.accelerator());
+        // The shutter fills in motions' open start and finish times; bounds cover all of it.
+        Placement world = Placement.of(Transform.IDENTITY, settings.shutterOpen(), settings.shutterClose());
+        for (GObject o : objects) ids = o.freeze(world, Material.DEFAULT, ids, settings.accelerator());
         objectIds = ids;
         boolean[] anyTransparent = {false};
         for (GObject o : objects) o.forEachMaterial(m -> anyTransparent[0] |= m.isTransparent());

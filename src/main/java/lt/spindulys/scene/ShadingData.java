@@ -25,6 +25,8 @@ public final class ShadingData {
     public Material material;
     public GObject object;
     public int prim;
+    /** Scratch for a moving object's transform at the shaded ray's time. */
+    final lt.spindulys.math.Affine placementAtTime = new lt.spindulys.math.Affine();
 
     /** Sets both normals to (x, y, z) normalised. */
     public void setNormal(double x, double y, double z) {

@@ -3,6 +3,7 @@ package lt.spindulys.scene;
 import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
+import lt.spindulys.math.Placement;
 import lt.spindulys.math.Transform;
 import lt.spindulys.subdiv.CatmullClark;
 import lt.spindulys.subdiv.ControlMesh;
@@ -72,7 +73,7 @@ public final class SubdivisionSurface extends GObject {
     public boolean isInstance() { return mesh.isInstance(); }
 
     @Override
-    public int freeze(Transform parentToWorld, Material inherited, int ids, AcceleratorKind accel) {
+    public int freeze(Placement parentToWorld, Material inherited, int ids, AcceleratorKind accel) {
         int next = super.freeze(parentToWorld, inherited, ids, accel);
         // The inner mesh is never part of a scene; frozen in place, its own queries (occluded)
         // take the object-space rays this surface hands it unchanged.

@@ -9,6 +9,8 @@ import lt.spindulys.math.Ray;
 public final class TraceContext {
     /** Scratch ray for mapping a world ray into an object's space. */
     public final Ray localRay = new Ray();
+    /** Scratch for a moving object's transform at the ray's time (see GObject#toLocal). */
+    public final lt.spindulys.math.Affine placementAtTime = new lt.spindulys.math.Affine();
     /** Scratch hit for any-hit and helper queries. */
     public final Hit scratchHit = new Hit();
     /** Range output of bounds tests. */

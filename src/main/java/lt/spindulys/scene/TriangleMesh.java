@@ -8,7 +8,7 @@ import lt.spindulys.accel.Bvh;
 import lt.spindulys.accel.PrimitiveSet;
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
-import lt.spindulys.math.Transform;
+import lt.spindulys.math.Placement;
 
 /**
  * A triangle mesh held in flat arrays (no object per triangle) with its own acceleration
@@ -376,7 +376,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     @Override public boolean isClosed() { return closed; }
 
     @Override
-    public int freeze(Transform parentToWorld, Material inherited, int ids, AcceleratorKind kind) {
+    public int freeze(Placement parentToWorld, Material inherited, int ids, AcceleratorKind kind) {
         int next = super.freeze(parentToWorld, inherited, ids, kind);
         TriangleMesh r = root();
         accel = r.structure(kind);

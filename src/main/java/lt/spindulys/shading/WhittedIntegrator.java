@@ -149,7 +149,7 @@ public final class WhittedIntegrator {
         double px = sd.p[0], py = sd.p[1], pz = sd.p[2];
         double eps = 1e-9 * Math.max(1, Math.max(Math.abs(px), Math.max(Math.abs(py), Math.abs(pz)))) + 1e-9 * hit.t * dlen;
 
-        localIllumination(m, cr, cg, cb, ks, px, py, pz, nfx, nfy, nfz, snx, sny, snz, dx, dy, dz, eps, s, out);
+        localIllumination(m, cr, cg, cb, ks, px, py, pz, nfx, nfy, nfz, snx, sny, snz, dx, dy, dz, eps, ray.time, s, out);
         out[0] += er; out[1] += eg; out[2] += eb;
 
         if (depth < settings.maxDepth() && (kr > 0 || kt > 0)) {
@@ -162,7 +162,7 @@ public final class WhittedIntegrator {
     /** Ambient, diffuse and specular light at a point with (textured) colour (cr, cg, cb) and specular ks. */
     private void localIllumination(Material m, double cr, double cg, double cb, double ks, double px, double py, double pz,
                                    double nfx, double nfy, double nfz, double snx, double sny, double snz,
-                                   double dx, double dy, double dz, double eps, TracerScratch s, double[] out) {
+                                   double dx, double dy, double dz, double eps, double time, TracerScratch s, double[] out) {
         Color ia = settings.ambient();
         double ka = m.ka();
         double r = ka * ia.r() * cr, g = ka * ia.g() * cg, b = ka * ia.b() * cb;
@@ -179,7 +179,7 @@ public final class WhittedIntegrator {
                 double ndotl = ux * snx + uy * sny + uz * snz;
                 if (ndotl <= 0) continue;
                 double sx = light.position().x() - ox, sy = light.position().y() - oy, sz = light.position().z() - oz;
-                if (!shadowTransmission(ox, oy, oz, sx, sy, sz, dist, s)) continue;
+                if (!shadowTransmission(ox, oy, oz, sx, sy, sz, dist, time, s)) continue;
                 double[] t = s.transmission;
                 double scale = light.intensity();
                 if (light.falloff() == PointLight.Falloff.INVERSE_SQUARE) scale /= dist2;
@@ -206,9 +206,10 @@ public final class WhittedIntegrator {
      * written to s.transmission; false if nothing arrives.
      */
     private boolean shadowTransmission(double ox, double oy, double oz, double lx, double ly, double lz,
-                                       double dist, TracerScratch s) {
+                                       double dist, double time, TracerScratch s) {
         s.shadowRays++;
         Ray ray = s.shadowRay.set(ox, oy, oz, lx, ly, lz, 0, 1);
+        ray.time = time; // a moving object casts its shadow where it is at the shaded ray's time
         double[] t = s.transmission;
         t[0] = t[1] = t[2] = 1;
         if (!transparentShadows) return !scene.occluded(ray, s.ctx);

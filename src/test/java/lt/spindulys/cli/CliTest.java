@@ -98,6 +98,25 @@ class CliTest {
         assertEquals(2, none.status());
     }
 
+    /** --shutter and --timesteps reach the renderer: a closed shutter freezes the motion, time steps change the image but not with the thread count. */
+    @Test
+    void shutterAndTimeStepsOverrideTheScene() throws IOException {
+        Path still = dir.resolve("still.dat"), moving = dir.resolve("moving.dat");
+        Files.writeString(still, SMALL);
+        Files.writeString(moving, SMALL.replace("radius 0.5 material", "radius 0.5 motion { translate 1 0 0 } material"));
+        Path a = dir.resolve("a.pfm"), b = dir.resolve("b.pfm"), c = dir.resolve("c.pfm"), d = dir.resolve("d.pfm"), e = dir.resolve("e.pfm");
+        assertEquals(0, run(still.toString(), "-o", a.toString(), "--spp", "4", "--quiet").status());
+        Run r = run(moving.toString(), "-o", b.toString(), "--spp", "4", "--shutter", "0,0", "--quiet");
+        assertEquals(0, r.status(), r.err());
+        assertArrayEquals(Files.readAllBytes(a), Files.readAllBytes(b), "a shutter closed at 0 sees the sphere where it starts");
+        assertEquals(0, run(moving.toString(), "-o", c.toString(), "--spp", "4", "--quiet").status());
+        assertEquals(0, run(moving.toString(), "-o", d.toString(), "--spp", "4", "--timesteps", "2", "--threads", "1", "--quiet").status());
+        assertEquals(0, run(moving.toString(), "-o", e.toString(), "--spp", "4", "--timesteps", "2", "--threads", "3", "--quiet").status());
+        assertFalse(java.util.Arrays.equals(Files.readAllBytes(a), Files.readAllBytes(c)), "the sphere moved");
+        assertFalse(java.util.Arrays.equals(Files.readAllBytes(c), Files.readAllBytes(d)), "time steps render differently");
+        assertArrayEquals(Files.readAllBytes(d), Files.readAllBytes(e), "time steps do not depend on the thread count");
+    }
+
     @Test
     void badUsageIsOneLineAndExitsTwo() throws IOException {
         Path scene = scene(SMALL);
@@ -109,6 +128,11 @@ class CliTest {
                 {"render: option -o needs a value", scene.toString(), "-o"},
                 {"render: unsupported output format '.bmp' (expected .tga, .png, .jpg, .jpeg or .pfm)", scene.toString(), "-o", dir.resolve("x.bmp").toString()},
                 {"render: no scene file given (see render --help)", "--quiet"},
+                {"render: --shutter expects OPEN,CLOSE (two numbers separated by a comma), found '1'", scene.toString(), "--shutter", "1"},
+                {"render: --shutter must close after it opens, found '1,0'", scene.toString(), "--shutter", "1,0"},
+                {"render: --timesteps must be between 1 and 65536, found 0", scene.toString(), "--timesteps", "0"},
+                {"render: --spp 3 is not a multiple of --timesteps 2 (each time step renders spp / timesteps per pixel)", scene.toString(),
+                        "--spp", "3", "--timesteps", "2", "-o", dir.resolve("x.png").toString()},
         };
         for (String[] c : cases) {
             String[] args = java.util.Arrays.copyOfRange(c, 1, c.length);
@@ -148,7 +172,7 @@ class CliTest {
         assertTrue(list.out().contains(System.lineSeparator() + "torus-1m "), list.out());
         Run unknown = run("bench", "--only", "nope");
         assertEquals(2, unknown.status());
-        assertEquals("render: unknown bench row 'nope' (rows: refine-bishop, torus-1k, torus-16k, torus-250k, torus-1m, csg-subdiv)" + System.lineSeparator(), unknown.err());
+        assertEquals("render: unknown bench row 'nope' (rows: refine-bishop, torus-1k, torus-16k, torus-250k, torus-1m, csg-subdiv, motion-blur)" + System.lineSeparator(), unknown.err());
         Run badRuns = run("bench", "--runs", "0");
         assertEquals(2, badRuns.status());
         Run badAccel = run("bench", "--accel", "kdtree");

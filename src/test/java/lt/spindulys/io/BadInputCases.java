@@ -256,6 +256,29 @@ public final class BadInputCases {
                 c("turbulence on a checker", "texture t { pattern checker  turbulence 2 }", "1:30: 'turbulence' applies to marble and wood, not to checker"),
                 c("octaves out of range", "texture t { pattern noise  octaves 40 }", "1:28: octaves must be 1..16, got 40"),
                 c("negative pattern scale", "texture t { pattern wood  scale -1 }", "1:27: scale must be positive and finite, got -1.0"),
-                c("zero mapping scale", "texture t { pattern wood }\nmaterial m { map { texture t  mapping planar  scale 1 0 } }", "2:47: scale must be positive, found 1.0 0.0"));
+                c("zero mapping scale", "texture t { pattern wood }\nmaterial m { map { texture t  mapping planar  scale 1 0 } }", "2:47: scale must be positive, found 1.0 0.0"),
+                // Motion blur.
+                c("shutter with one number", "settings { shutter 1 }", "1:22: expected 2 numbers for 'shutter', found '}'"),
+                c("shutter closing before it opens", "settings { shutter 1 0 }", "1:12: shutter must close after it opens, found open 1.0 and close 0.0"),
+                c("timesteps zero", "settings { timesteps 0 }", "1:12: timesteps must be between 1 and 65536, found 0"),
+                c("timesteps not dividing samples", "settings { samples 6  timesteps 4 }",
+                        "1:23: samples 6 is not a multiple of timesteps 4 (each time step renders samples / timesteps per pixel)"),
+                c("motion block without a brace", "sphere { motion translate 1 0 0 }", "1:17: expected '{' after 'motion', found 'translate'"),
+                c("misspelt motion key", "sphere { motion { translte 1 0 0 } }", "1:19: unknown property 'translte' in motion (did you mean 'translate'?)"),
+                c("motion translate and direction", "sphere { motion { translate 1 0 0  direction 1 0 0  speed 2 } }",
+                        "1:36: motion has both 'translate' and 'direction': give the end translation, or direction and speed"),
+                c("motion direction without speed", "sphere { motion { direction 1 0 0 } }", "1:19: 'direction' needs 'speed' (units per unit of shutter time)"),
+                c("motion speed without direction", "sphere { motion { speed 1 } }", "1:19: 'speed' needs 'direction'"),
+                c("motion that does not move", "sphere { motion { start 0.5 } }",
+                        "1:10: motion needs translate, direction and speed, rotate or scale: without them the object does not move"),
+                c("motion zero direction", "sphere { motion { direction 0 0 0  speed 1 } }", "1:19: motion direction has zero length"),
+                c("motion negative scale", "box { min 0 0 0  max 1 1 1  motion { scale -1 } }", "1:38: motion scale must be positive, found -1.0 -1.0 -1.0"),
+                c("motion rotate without an axis", "sphere { motion { rotate 90 } }", "1:29: expected an axis (x, y, z or 3 numbers) and an angle for 'rotate', found '}'"),
+                c("motion finish before start", "sphere { motion { translate 1 0 0  start 0.6  finish 0.2 } }",
+                        "1:36: motion finish must be after its start, found start 0.6 and finish 0.2"),
+                c("motion start after the shutter closes", "sphere { motion { translate 1 0 0  start 2 } }\nsettings { shutter 0 1 }",
+                        "1:36: motion finish must be after its start, found start 2.0 and finish 1.0 (finish is the shutter close time)"),
+                c("motion given twice", "sphere { motion { translate 1 0 0 }  motion { translate 0 1 0 } }", "1:38: 'motion' given twice in sphere (first at 1:10)"),
+                c("motion translate given twice", "sphere { motion { translate 1 0 0  translate 0 1 0 } }", "1:36: 'translate' given twice in motion (first at 1:19)"));
     }
 }

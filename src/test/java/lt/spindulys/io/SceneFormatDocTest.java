@@ -85,6 +85,12 @@ class SceneFormatDocTest {
         assertEquals(new LinkedHashSet<>(names(SceneGrammar.MAP.keys())), keyRows(section(doc(), "Texture bindings (`map`)")));
     }
 
+    /** The motion block nested in objects is not a statement either. */
+    @Test
+    void motionKeysAreDocumented() throws IOException {
+        assertEquals(new LinkedHashSet<>(names(SceneGrammar.MOTION.keys())), keyRows(section(doc(), "Motion (`motion`)")));
+    }
+
     @Test
     void everyExampleParses() throws IOException {
         Matcher m = DAT_BLOCK.matcher(doc());
