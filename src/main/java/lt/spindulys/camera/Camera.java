@@ -20,4 +20,11 @@ public interface Camera {
 
     /** How the renderer should place this camera's lens samples on the unit disk. */
     default LensPattern lensPattern() { return LensPattern.CONCENTRIC; }
+
+    /**
+     * False if this camera's rays do not depend on the lens sample (a pinhole, or a lens of
+     * aperture 0): the renderer then hands it the lens centre and spares mapping samples onto
+     * the disk.
+     */
+    default boolean usesLens() { return false; }
 }

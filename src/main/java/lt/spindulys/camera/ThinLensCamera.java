@@ -73,6 +73,7 @@ public final class ThinLensCamera implements Camera {
     public double aperture() { return aperture; }
     public double focusDistance() { return focusDistance; }
     @Override public LensPattern lensPattern() { return lens; }
+    @Override public boolean usesLens() { return aperture > 0; }
 
     public ThinLensCamera withAperture(double a) { return new ThinLensCamera(view, a, focusDistance, lens); }
     public ThinLensCamera withFocusDistance(double f) { return new ThinLensCamera(view, aperture, f, lens); }

@@ -100,7 +100,7 @@ public final class Renderer {
             int index = k;
             workers[k] = new Thread(() -> {
                 TracerScratch scratch = integrator.newScratch();
-                PixelSampler sampler = new PixelSampler(pass.samples, scene.camera().lensPattern());
+                PixelSampler sampler = new PixelSampler(pass.samples, scene.camera().usesLens() ? scene.camera().lensPattern() : null);
                 Ray ray = new Ray();
                 double[] colour = new double[4];
                 try {

@@ -23,8 +23,13 @@ public final class PixelSampler {
         this(samplesPerPixel, LensPattern.CONCENTRIC);
     }
 
+    /**
+     * @param lens where lens samples go on the disk, or null for a camera without a lens: every
+     *             lens sample is then the centre (0, 0), and the film and time samples are the
+     *             same as with a pattern (the lens random numbers are drawn all the same)
+     */
     public PixelSampler(int samplesPerPixel, LensPattern lens) {
-        this.lens = Objects.requireNonNull(lens, "lens");
+        this.lens = lens;
         if (samplesPerPixel < 1) throw new IllegalArgumentException("samples per pixel must be positive, found " + samplesPerPixel);
         n = samplesPerPixel;
         int c = (int) Math.floor(Math.sqrt(n));
@@ -39,6 +44,7 @@ public final class PixelSampler {
 
     public int samplesPerPixel() { return n; }
 
+    /** The lens pattern, or null when the lens samples are all the centre. */
     public LensPattern lensPattern() { return lens; }
 
     /** Draws all samples of pixel (px, py). With one sample the film sample is the pixel centre. */
@@ -73,6 +79,11 @@ public final class PixelSampler {
 
     /** Lens sample i on the unit disk from lens stratum s and its jittered square sample (u, v). */
     private void lensSample(int i, int s, double u, double v) {
+        if (lens == null) {
+            // No lens: a pinhole ignores the samples, so the mapping's sine and cosine are spared.
+            lensU[i] = 0; lensV[i] = 0;
+            return;
+        }
         if (lens == LensPattern.RING) {
             if (n == 1) {
                 lensU[i] = 0; lensV[i] = 0;

@@ -107,4 +107,23 @@ class PixelSamplerTest {
             assertEquals(a.time(i), b.time(i));
         }
     }
+
+    /** Without a lens (a pinhole) every lens sample is the centre; film and time samples are those of a lens. */
+    @ParameterizedTest
+    @ValueSource(ints = {1, 4, 12})
+    void noLensGivesTheCentreAndTheSameFilmAndTime(int n) {
+        PixelSampler lens = new PixelSampler(n, LensPattern.CONCENTRIC), none = new PixelSampler(n, null);
+        lens.startPixel(5, 7, 8);
+        none.startPixel(5, 7, 8);
+        boolean off = false;
+        for (int i = 0; i < n; i++) {
+            assertEquals(0, none.lensU(i));
+            assertEquals(0, none.lensV(i));
+            off |= lens.lensU(i) != 0 || lens.lensV(i) != 0;
+            assertEquals(lens.filmX(i), none.filmX(i));
+            assertEquals(lens.filmY(i), none.filmY(i));
+            assertEquals(lens.time(i), none.time(i));
+        }
+        assertTrue(off, "a lens pattern moves samples off the centre");
+    }
 }
