@@ -5,7 +5,7 @@ package lt.spindulys.math;
  * object-to-world transform at one time ({@link Placement#evaluate}). Its per-ray methods are the
  * same arithmetic as {@link Transform}'s. Never shared between threads.
  */
-public final class Affine {
+public final class Affine implements ObjectMapping {
     final double[] m = new double[12], inv = new double[12];
     // Intermediate products while a placement is evaluated.
     final double[] factor = new double[12], factorInv = new double[12], tmp = new double[12];
@@ -14,13 +14,16 @@ public final class Affine {
     public void toLocal(Ray world, Ray local) { Transform.toLocal(inv, world, local); }
 
     /** Writes the point {@code world[0..2]} mapped into object space to {@code local[0..2]}. */
-    public void toLocalPoint(double[] world, double[] local) { Transform.toLocalPoint(inv, world, local); }
+    @Override public void toLocalPoint(double[] world, double[] local) { Transform.toLocalPoint(inv, world, local); }
 
     /** Maps the vector {@code v[off..off+2]} in place from object to world space. */
-    public void vectorInPlace(double[] v, int off) { Transform.vectorInPlace(m, v, off); }
+    @Override public void vectorInPlace(double[] v, int off) { Transform.vectorInPlace(m, v, off); }
 
     /** Maps the normal {@code n[off..off+2]} in place from object to world space and normalises it. */
-    public void normalInPlace(double[] n, int off) { Transform.normalInPlace(inv, false, n, off); }
+    @Override public void normalInPlace(double[] n, int off) { Transform.normalInPlace(inv, false, n, off); }
+
+    /** False: an evaluated motion is treated as a general transform. */
+    @Override public boolean isIdentity() { return false; }
 
     /** A copy as an immutable transform (allocates; for tests and tools). */
     public Transform toTransform() { return Transform.ofMatrix(m.clone()); }

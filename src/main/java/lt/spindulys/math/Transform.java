@@ -5,7 +5,7 @@ package lt.spindulys.math;
  * {@code a.then(b)} applies a first, then b, so a scene file's transform lines compose in the
  * order they are written. The in-place methods serve the per-ray paths without allocation.
  */
-public final class Transform {
+public final class Transform implements ObjectMapping {
     public static final Transform IDENTITY = new Transform(new double[] {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0});
 
     /** Row-major 3x4: m[0..3] is the first row (x' = m0 x + m1 y + m2 z + m3). */
@@ -61,7 +61,7 @@ public final class Transform {
     }
 
     public Transform inverse() { return new Transform(inv.clone()); }
-    public boolean isIdentity() { return identity; }
+    @Override public boolean isIdentity() { return identity; }
 
     public Vec3 point(Vec3 p) {
         return new Vec3(m[0] * p.x() + m[1] * p.y() + m[2] * p.z() + m[3],
@@ -86,13 +86,13 @@ public final class Transform {
     public void toLocal(Ray world, Ray local) { toLocal(inv, world, local); }
 
     /** Writes the point {@code world[0..2]} mapped into object space (the inverse) to {@code local[0..2]}. */
-    public void toLocalPoint(double[] world, double[] local) { toLocalPoint(inv, world, local); }
+    @Override public void toLocalPoint(double[] world, double[] local) { toLocalPoint(inv, world, local); }
 
     /** Maps the vector {@code v[off..off+2]} in place from object to world space. */
-    public void vectorInPlace(double[] v, int off) { vectorInPlace(m, v, off); }
+    @Override public void vectorInPlace(double[] v, int off) { vectorInPlace(m, v, off); }
 
     /** Maps the normal {@code n[off..off+2]} in place from object to world space and normalises it. */
-    public void normalInPlace(double[] n, int off) { normalInPlace(inv, identity, n, off); }
+    @Override public void normalInPlace(double[] n, int off) { normalInPlace(inv, identity, n, off); }
 
     /** The row-major 3x4 matrix itself, not a copy: for {@link Placement} only, which never writes it. */
     double[] matrix() { return m; }

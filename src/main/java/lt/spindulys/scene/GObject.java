@@ -1,9 +1,9 @@
 package lt.spindulys.scene;
 
 import lt.spindulys.accel.AcceleratorKind;
-import lt.spindulys.math.Affine;
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Motion;
+import lt.spindulys.math.ObjectMapping;
 import lt.spindulys.math.Placement;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
@@ -230,40 +230,25 @@ public abstract class GObject {
         sd.material = hit.material != null ? hit.material : material;
         // Object-space point, for the shape's own parametrisation.
         double[] q = sd.dpdu; // scratch; shadeLocal overwrites it
+        // A moving object is shaded through its transform at the ray's time, evaluated into the shading scratch.
+        ObjectMapping map = objectToWorld;
         if (moving != null) {
-            shadeMoving(ray, hit, sd);
-        } else {
-            objectToWorld.toLocalPoint(sd.p, q);
-            double lx = q[0], ly = q[1], lz = q[2];
-            sd.pObject[0] = lx; sd.pObject[1] = ly; sd.pObject[2] = lz;
-            shadeLocal(lx, ly, lz, hit, sd);
-            System.arraycopy(sd.dpdu, 0, sd.dpduObject, 0, 3);
-            System.arraycopy(sd.dpdv, 0, sd.dpdvObject, 0, 3);
-            if (!objectToWorld.isIdentity()) {
-                objectToWorld.vectorInPlace(sd.dpdu, 0);
-                objectToWorld.vectorInPlace(sd.dpdv, 0);
-            }
-            objectToWorld.normalInPlace(sd.ng, 0);
-            objectToWorld.normalInPlace(sd.ns, 0);
+            moving.evaluate(ray.time, sd.placementAtTime);
+            map = sd.placementAtTime;
         }
-        if (hit.flipNormal) sd.flipNormals();
-    }
-
-    /** {@link #shade} through the transform at the ray's time, evaluated into the shading scratch. */
-    private void shadeMoving(Ray ray, Hit hit, ShadingData sd) {
-        Affine a = sd.placementAtTime;
-        moving.evaluate(ray.time, a);
-        double[] q = sd.dpdu;
-        a.toLocalPoint(sd.p, q);
+        map.toLocalPoint(sd.p, q);
         double lx = q[0], ly = q[1], lz = q[2];
         sd.pObject[0] = lx; sd.pObject[1] = ly; sd.pObject[2] = lz;
         shadeLocal(lx, ly, lz, hit, sd);
         System.arraycopy(sd.dpdu, 0, sd.dpduObject, 0, 3);
         System.arraycopy(sd.dpdv, 0, sd.dpdvObject, 0, 3);
-        a.vectorInPlace(sd.dpdu, 0);
-        a.vectorInPlace(sd.dpdv, 0);
-        a.normalInPlace(sd.ng, 0);
-        a.normalInPlace(sd.ns, 0);
+        if (!map.isIdentity()) {
+            map.vectorInPlace(sd.dpdu, 0);
+            map.vectorInPlace(sd.dpdv, 0);
+        }
+        map.normalInPlace(sd.ng, 0);
+        map.normalInPlace(sd.ns, 0);
+        if (hit.flipNormal) sd.flipNormals();
     }
 
     // ---- what leaf shapes implement, in object space ----
