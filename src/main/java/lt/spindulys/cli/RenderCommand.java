@@ -33,7 +33,7 @@ final class RenderCommand {
                                     [--threads N] [--seed S] [--accel A] [--aov LIST] [--shutter OPEN,CLOSE] [--timesteps N]
                                     [--quality Q] [--stats] [--quiet] [--debug]
                    render subdivide MESH.obj|MESH.dat --level N -o OUT.obj [...]   (see render subdivide --help)
-                   render bench [--only NAME] [--runs N] [--list]                 (see render bench --help)
+                   render bench [--only NAME] [--runs N] [--accel A] [--list]      (see render bench --help)
                    render --help | --version
 
               -o, --output OUT   image to write: .png .jpg .jpeg .tga .pfm (default: SCENE.png here)
