@@ -957,7 +957,7 @@ public final class SceneParser {
         Props p = block(SceneGrammar.MOTION, keyToken, null);
         Prop translate = p.prop("translate"), direction = p.prop("direction"), speed = p.prop("speed");
         if (translate != null && direction != null) {
-            Prop later = translate.at.line() > direction.at.line() || translate.at.line() == direction.at.line() && translate.at.column() > direction.at.column() ? translate : direction;
+            Prop later = p.all.indexOf(translate) > p.all.indexOf(direction) ? translate : direction;
             throw error(later.at, "motion has both 'translate' and 'direction': give the end translation, or direction and speed");
         }
         if (direction != null && speed == null) throw error(direction.at, "'direction' needs 'speed' (units per unit of shutter time)");

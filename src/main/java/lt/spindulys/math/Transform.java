@@ -57,7 +57,9 @@ public final class Transform implements ObjectMapping {
     public Transform then(Transform next) {
         if (identity) return next;
         if (next.identity) return this;
-        return new Transform(multiply(next.m, m));
+        double[] r = new double[12];
+        compose(m, next.m, r);
+        return new Transform(r);
     }
 
     public Transform inverse() { return new Transform(inv.clone()); }
@@ -153,18 +155,6 @@ public final class Transform implements ObjectMapping {
                 out[i * 4 + j] = s;
             }
         }
-    }
-
-    private static double[] multiply(double[] a, double[] b) {
-        double[] r = new double[12];
-        for (int i = 0; i < 3; i++) {
-            for (int j = 0; j < 4; j++) {
-                double s = a[i * 4] * b[j] + a[i * 4 + 1] * b[4 + j] + a[i * 4 + 2] * b[8 + j];
-                if (j == 3) s += a[i * 4 + 3];
-                r[i * 4 + j] = s;
-            }
-        }
-        return r;
     }
 
     private static double[] invert(double[] m) {

@@ -53,7 +53,7 @@ public final class Renderer {
         AovFrame aovs = st.aovs().isEmpty() ? null : new AovFrame(w, h, st.aovs());
         int tilesX = (w + TILE - 1) / TILE, tilesY = (h + TILE - 1) / TILE, tiles = tilesX * tilesY;
         WhittedIntegrator integrator = new WhittedIntegrator(scene);
-        int steps = st.checkTimeSteps().timeSteps();
+        int steps = st.timeSteps(); // a multiple of the samples: the scene checked it when built
         long[] sum = new long[4];
         long start = System.nanoTime();
         for (int k = 0; k < steps; k++) {

@@ -114,8 +114,8 @@ public abstract class GObject {
      */
     public int freeze(Placement parentToWorld, Material inherited, int ids, AcceleratorKind accel) {
         if (frozen) throw new IllegalStateException(name() + " is added to the scene twice");
-        Placement p = placementIn(parentToWorld);
         if (motion != null) motion = motion.resolve(parentToWorld.open(), parentToWorld.close());
+        Placement p = placementIn(parentToWorld);
         frozen = true;
         if (p.isStatic()) objectToWorld = p.staticTransform();
         else moving = p;

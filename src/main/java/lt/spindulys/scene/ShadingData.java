@@ -1,5 +1,7 @@
 package lt.spindulys.scene;
 
+import lt.spindulys.math.Affine;
+
 /**
  * Surface data at the nearest hit, in world space, computed once per shaded hit.
  * Normals are unit length and point out of the object (not towards the ray); the integrator
@@ -26,7 +28,7 @@ public final class ShadingData {
     public GObject object;
     public int prim;
     /** Scratch for a moving object's transform at the shaded ray's time. */
-    final lt.spindulys.math.Affine placementAtTime = new lt.spindulys.math.Affine();
+    final Affine placementAtTime = new Affine();
 
     /** Sets both normals to (x, y, z) normalised. */
     public void setNormal(double x, double y, double z) {

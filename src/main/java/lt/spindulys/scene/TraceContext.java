@@ -1,5 +1,6 @@
 package lt.spindulys.scene;
 
+import lt.spindulys.math.Affine;
 import lt.spindulys.math.Ray;
 
 /**
@@ -10,7 +11,7 @@ public final class TraceContext {
     /** Scratch ray for mapping a world ray into an object's space. */
     public final Ray localRay = new Ray();
     /** Scratch for a moving object's transform at the ray's time (see GObject#toLocal). */
-    public final lt.spindulys.math.Affine placementAtTime = new lt.spindulys.math.Affine();
+    public final Affine placementAtTime = new Affine();
     /** Scratch hit for any-hit and helper queries. */
     public final Hit scratchHit = new Hit();
     /** Range output of bounds tests. */
