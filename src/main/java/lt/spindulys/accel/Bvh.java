@@ -83,6 +83,19 @@ public final class Bvh implements Accelerator {
     /** Length of the longest root-to-leaf path (0 for a single leaf). */
     public int depth() { return depth; }
 
+    /** The node records (see {@link #node}); shared, not copied: callers must not change them. */
+    int[] nodes() { return node; }
+
+    /** The leaf-slot permutation, or null when slot k holds primitive k. */
+    int[] perm() { return perm; }
+
+    /** Largest primitive count of any leaf. */
+    int maxLeafCount() {
+        int m = 0;
+        for (int i = 0; i < nodeCount; i++) m = Math.max(m, node[8 * i + 7]);
+        return m;
+    }
+
     /** Bounds of everything indexed ({@link Bounds#EMPTY} when nothing is). */
     public Bounds bounds() { return bounds; }
 

@@ -31,13 +31,14 @@ import lt.spindulys.subdiv.RefinedMesh;
  * from scenes/bench/ under the current folder (the repository root).
  */
 final class BenchCommand {
+    private static final String VECTOR_MODULE = "jdk.incubator.vector";
     static final String USAGE = """
             usage: render bench [--only NAME] [--runs N] [--accel A] [--list]
 
               --only NAME   run only the row NAME (see --list)
               --runs N      timed runs per row after the warm-up (default 5); the median is reported
               --accel A     acceleration structure of the peer-scene rows: bvh (the scenes' default),
-                            octree or bruteforce; to compare structures on the same scene
+                            bvh2, octree or bruteforce; to compare structures on the same scene
               --list        list the rows and exit
             Run from the repository root: inputs are read from scenes/bench/; the torus-* rows first write
             their meshes into scenes/bench/meshes/ when missing. See docs/performance.md.""";
@@ -126,6 +127,7 @@ final class BenchCommand {
         Runtime rt = Runtime.getRuntime();
         out.printf(Locale.ROOT, "Spindulys %s benchmark: Java %s, %d cores, max heap %.1f GiB, %d timed runs per row (median)%n",
                 Main.version(), System.getProperty("java.version"), rt.availableProcessors(), rt.maxMemory() / (double) (1L << 30), runs);
+        out.printf(Locale.ROOT, "Structure of the peer-scene rows: %s%n", (accel != null ? accel : AcceleratorKind.DEFAULT).description());
         String section = null;
         for (Row r : ROWS) {
             if (only != null && !only.equals(r.name())) continue;
@@ -143,7 +145,8 @@ final class BenchCommand {
             out.println("  leaf order, and the top-level BVH over the objects); render s: trace the frame; all medians");
             out.printf(Locale.ROOT, "  after %d warm-up renders in this JVM. Mrays/s: rays of all kinds / render s. peak heap: the heap pools'%n", WARMUPS);
             out.println("  peak use during one load+build+render. bytes/tri: the meshes' arrays and BVHs / their triangles.");
-            out.println("  cold s: wall clock of a whole new process `java -jar render.jar SCENE -o x.tga --quiet --threads 2`");
+            out.println("  cold s: wall clock of a whole new process `java [--add-modules jdk.incubator.vector, when this JVM has it]");
+            out.println("  -jar render.jar SCENE -o x.tga --quiet --threads 2`");
             out.println("  (median; one untimed run first so the files are in the page cache).");
         }
         return 0;
@@ -342,7 +345,10 @@ final class BenchCommand {
         }
         Path image = Files.createTempFile("spindulys-bench", ".tga");
         try {
-            List<String> cmd = new java.util.ArrayList<>(List.of(javaExe, "-cp", cp, Main.class.getName(), scene.toString(), "-o", image.toString(),
+            List<String> cmd = new java.util.ArrayList<>(List.of(javaExe));
+            // The new process gets the vector module when this one has it, as ./render passes it.
+            if (ModuleLayer.boot().findModule(VECTOR_MODULE).isPresent()) cmd.addAll(List.of("--add-modules", VECTOR_MODULE));
+            cmd.addAll(List.of("-cp", cp, Main.class.getName(), scene.toString(), "-o", image.toString(),
                     "--quiet", "--threads", Integer.toString(THREADS)));
             if (accel != null) cmd.addAll(List.of("--accel", accel.keyword()));
             double[] t = new double[runs];

@@ -44,7 +44,7 @@ final class RenderCommand {
               --focus D          distance to the focal plane along the view (overrides the scene)
               --threads N        render threads (default: all cores)
               --seed S           global random seed (overrides the scene)
-              --accel A          acceleration structure: bvh, octree or bruteforce (overrides the scene)
+              --accel A          acceleration structure: bvh, bvh2, octree or bruteforce (overrides the scene)
               --aov LIST         render passes beside the image, comma-separated: depth, normal, object
                                  (OUT.depth.pfm, OUT.normal.pfm, OUT.object.png; overrides the scene)
               --shutter OPEN,CLOSE  shutter interval of the motion blur, e.g. 0,1 (overrides the scene)
@@ -170,7 +170,7 @@ final class RenderCommand {
             if (bar != null) bar.finish();
         }
         ImageWriter.write(result.image(), output, new ImageOptions(s.srgb(), quality), result.aovs());
-        if (stats) printStats(out, (t1 - t0) / 1e9, (t2 - t1) / 1e9, result.stats(), n);
+        if (stats) printStats(out, (t1 - t0) / 1e9, (t2 - t1) / 1e9, s.accelerator(), result.stats(), n);
         return 0;
     }
 
@@ -197,9 +197,9 @@ final class RenderCommand {
         }
     }
 
-    private static void printStats(PrintStream out, double load, double build, RenderStats r, int threads) {
+    private static void printStats(PrintStream out, double load, double build, AcceleratorKind accel, RenderStats r, int threads) {
         out.printf(Locale.ROOT, "load:    %.3f s%n", load);
-        out.printf(Locale.ROOT, "build:   %.3f s%n", build);
+        out.printf(Locale.ROOT, "build:   %.3f s (%s)%n", build, accel.description());
         out.printf(Locale.ROOT, "render:  %.3f s (%d threads)%n", r.seconds(), threads);
         out.printf(Locale.ROOT, "rays:    %d camera, %d shadow, %d reflection, %d refraction%n",
                 r.cameraRays(), r.shadowRays(), r.reflectionRays(), r.refractionRays());

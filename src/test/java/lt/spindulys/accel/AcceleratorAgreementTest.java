@@ -36,13 +36,13 @@ class AcceleratorAgreementTest {
     }
 
     @ParameterizedTest
-    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "OCTREE"})
+    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "BVH2", "OCTREE"})
     void randomSoup(AcceleratorKind kind) {
         mesh(kind, soup(new Random(101), 150, 0.005, 0.2), 102);
     }
 
     @ParameterizedTest
-    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "OCTREE"})
+    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "BVH2", "OCTREE"})
     void closedGridWithFacesOnCellPlanes(AcceleratorKind kind) {
         // Faces at multiples of 1/2 from the low corner: exactly on octree cell planes from level 2 on.
         TriangleMesh m = new TriangleMesh(TestMeshes.gridCube(4));
@@ -72,7 +72,7 @@ class AcceleratorAgreementTest {
     }
 
     @ParameterizedTest
-    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "OCTREE"})
+    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "BVH2", "OCTREE"})
     void twoLevelSceneAgreesWithBruteForceAtBothLevels(AcceleratorKind kind) {
         Scene fast = scene(kind, 110), slow = scene(AcceleratorKind.BRUTE_FORCE, 110);
         Random r = new Random(111);
@@ -107,7 +107,7 @@ class AcceleratorAgreementTest {
      * which asks every object, finds.
      */
     @ParameterizedTest
-    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "OCTREE"})
+    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "BVH2", "OCTREE"})
     void movingObjectsAreFoundAtEveryTime(AcceleratorKind kind) {
         Scene fast = movingScene(kind, 120), slow = movingScene(AcceleratorKind.BRUTE_FORCE, 120);
         Random r = new Random(121);

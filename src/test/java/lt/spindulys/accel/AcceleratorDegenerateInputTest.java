@@ -16,7 +16,7 @@ import org.junit.jupiter.params.provider.EnumSource;
 class AcceleratorDegenerateInputTest {
 
     @ParameterizedTest
-    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "OCTREE"})
+    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "BVH2", "OCTREE"})
     void everythingInOnePlane(AcceleratorKind kind) {
         double[] c = soup(new Random(103), 150, 0.01, 0.15);
         for (int i = 2; i < c.length; i += 3) c[i] = 0.5;
@@ -24,7 +24,7 @@ class AcceleratorDegenerateInputTest {
     }
 
     @ParameterizedTest
-    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "OCTREE"})
+    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "BVH2", "OCTREE"})
     void identicalTriangles(AcceleratorKind kind) {
         double[] one = {0.2, 0.2, 0.3, 0.8, 0.3, 0.5, 0.4, 0.9, 0.7};
         double[][] parts = new double[101][];
@@ -34,7 +34,7 @@ class AcceleratorDegenerateInputTest {
     }
 
     @ParameterizedTest
-    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "OCTREE"})
+    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "BVH2", "OCTREE"})
     void tinyAndHugeTriangles(AcceleratorKind kind) {
         Random r = new Random(107);
         mesh(kind, concat(soup(r, 100, 1e-7, 1e-5), soup(r, 5, 10, 1000), soup(r, 50, 0.01, 0.1)), 108);

@@ -174,7 +174,7 @@ class OctreeTest {
         for (AcceleratorKind k : AcceleratorKind.values()) assertEquals(k, AcceleratorKind.fromKeyword(k.keyword()));
         assertEquals(AcceleratorKind.BVH, AcceleratorKind.DEFAULT);
         var e = assertThrows(IllegalArgumentException.class, () -> AcceleratorKind.fromKeyword("kd"));
-        assertEquals("unknown accelerator 'kd' (expected one of bvh, octree, bruteforce)", e.getMessage());
+        assertEquals("unknown accelerator 'kd' (expected one of bvh, bvh2, octree, bruteforce)", e.getMessage());
         BvhTest.Spheres s = new BvhTest.Spheres(new double[] {0, 0, 0, 1});
         assertTrue(AcceleratorKind.OCTREE.build(s) instanceof Octree);
         assertTrue(AcceleratorKind.BVH.build(s) instanceof Bvh);

@@ -64,7 +64,7 @@ class CliTest {
         Files.writeString(dir.resolve("tri.obj"), "v 0 0 0\nv 0.3 0 0\nv 0 0.4 0.1\nv 0.3 0.4 0.2\nf 1 2 3\nf 2 4 3\n");
         Path scene = scene(text.toString());
         FrameBuffer first = null;
-        for (String kind : new String[] {"bvh", "octree", "bruteforce", null}) {
+        for (String kind : new String[] {"bvh", "bvh2", "octree", "bruteforce", null}) {
             Path out = dir.resolve("acc-" + kind + ".pfm");
             Run r = kind == null ? run(scene.toString(), "-o", out.toString(), "--quiet")
                     : run(scene.toString(), "-o", out.toString(), "--accel", kind, "--quiet");
@@ -124,7 +124,7 @@ class CliTest {
                 {"render: unknown option '--widht' (see render --help)", scene.toString(), "--widht", "3"},
                 {"render: --width expects a whole number, found 'ten'", scene.toString(), "--width", "ten"},
                 {"render: --spp must be between 1 and 65536, found 0", scene.toString(), "--spp", "0"},
-                {"render: --accel expects one of bvh, octree, bruteforce, found 'kdtree'", scene.toString(), "--accel", "kdtree"},
+                {"render: --accel expects one of bvh, bvh2, octree, bruteforce, found 'kdtree'", scene.toString(), "--accel", "kdtree"},
                 {"render: option -o needs a value", scene.toString(), "-o"},
                 {"render: unsupported output format '.bmp' (expected .tga, .png, .jpg, .jpeg or .pfm)", scene.toString(), "-o", dir.resolve("x.bmp").toString()},
                 {"render: no scene file given (see render --help)", "--quiet"},
@@ -177,7 +177,7 @@ class CliTest {
         assertEquals(2, badRuns.status());
         Run badAccel = run("bench", "--accel", "kdtree");
         assertEquals(2, badAccel.status());
-        assertEquals("render: unknown accelerator 'kdtree' (expected one of bvh, octree, bruteforce)" + System.lineSeparator(), badAccel.err());
+        assertEquals("render: unknown accelerator 'kdtree' (expected one of bvh, bvh2, octree, bruteforce)" + System.lineSeparator(), badAccel.err());
         assertEquals(0, run("bench", "--help").status());
     }
 }

@@ -84,7 +84,7 @@ class MeshWatertightTest {
     };
 
     @ParameterizedTest
-    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "OCTREE"})
+    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "BVH2", "OCTREE"})
     void everyRayFromInsideAnIcosphereHitsIt(AcceleratorKind kind) {
         TriangleMesh m = frozen(new TriangleMesh(TestMeshes.icosphere(4, 1)), kind);
         assertTrue(m.isClosed());
@@ -92,7 +92,7 @@ class MeshWatertightTest {
     }
 
     @ParameterizedTest
-    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "OCTREE"})
+    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "BVH2", "OCTREE"})
     void everyRayFromInsideAGridCubeHitsIt(AcceleratorKind kind) {
         TriangleMesh m = frozen(new TriangleMesh(TestMeshes.gridCube(8)), kind);
         assertTrue(m.isClosed());
@@ -100,7 +100,7 @@ class MeshWatertightTest {
     }
 
     @ParameterizedTest
-    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "OCTREE"})
+    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "BVH2", "OCTREE"})
     void everyRayFromInsideATransformedMeshHitsIt(AcceleratorKind kind) {
         TriangleMesh m = new TriangleMesh(TestMeshes.icosphere(3, 1));
         m.transform(Transform.scale(3, 0.5, 1.5).then(Transform.rotate(new lt.spindulys.math.Vec3(1, 2, 3), 37)).then(Transform.translate(5, -2, 7)));
@@ -109,7 +109,7 @@ class MeshWatertightTest {
     }
 
     @ParameterizedTest
-    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "OCTREE"})
+    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "BVH2", "OCTREE"})
     void raysFromTheCentreThroughEveryVertexAndEdgeMidpointHit(AcceleratorKind kind) {
         for (MeshData d : new MeshData[] {TestMeshes.icosphere(3, 1), TestMeshes.gridCube(16)}) {
             TriangleMesh m = frozen(new TriangleMesh(d), kind);

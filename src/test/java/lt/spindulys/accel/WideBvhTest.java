@@ -1,0 +1,131 @@
+package lt.spindulys.accel;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.util.Random;
+
+import org.junit.jupiter.api.Test;
+
+import lt.spindulys.math.Ray;
+import lt.spindulys.scene.TestMeshes;
+import lt.spindulys.scene.TraceContext;
+import lt.spindulys.scene.TriangleMesh;
+
+/**
+ * The eight-wide vector BVH: that the test JVM really runs it (so the parameterised agreement and
+ * watertightness tests over {@link AcceleratorKind#BVH} exercise it), the inputs where its float
+ * ray setup could lose a hit, its {@code visit}, and the collapse itself.
+ */
+class WideBvhTest {
+
+    @Test
+    void theTestJvmHasTheVectorModuleAndBvhBuildsTheWideTree() {
+        // The build passes --add-modules jdk.incubator.vector to the tests, as ./render does.
+        assertTrue(ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent(), "surefire argLine lost --add-modules");
+        assumeTrue(WideBvh.AVAILABLE, "this machine has no 256-bit vectors");
+        TriangleMesh m = new TriangleMesh(TestMeshes.icosphere(3, 1));
+        assertInstanceOf(WideBvh.class, AcceleratorKind.BVH.build(m));
+        assertInstanceOf(Bvh.class, AcceleratorKind.BVH2.build(m));
+    }
+
+    /** A random soup in the unit cube, scaled by {@code scale} and moved by (x, y, z). */
+    private static TriangleMesh soupMesh(long seed, int n, double scale, double x, double y, double z) {
+        double[] c = BvhTest.soup(new Random(seed), n, 0.002, 0.1);
+        for (int i = 0; i < c.length; i += 3) {
+            c[i] = c[i] * scale + x;
+            c[i + 1] = c[i + 1] * scale + y;
+            c[i + 2] = c[i + 2] * scale + z;
+        }
+        return new TriangleMesh(TestMeshes.soup(c));
+    }
+
+    private static WideBvh wide(TriangleMesh m) {
+        assumeTrue(WideBvh.AVAILABLE, "this machine has no 256-bit vectors");
+        return new WideBvh(new Bvh(m));
+    }
+
+    @Test
+    void agreesWithBruteForceFarFromTheOrigin() {
+        // Small triangles around (1e5, -3e4, 7e5): the float ray origin is off by up to 1/32,
+        // far more than the triangles' gaps, so only the slack added to it keeps their boxes hit.
+        TriangleMesh m = soupMesh(301, 400, 1, 1e5, -3e4, 7e5);
+        BvhTest.compare(m, wide(m), BvhTest.around(m), 100_000, 302);
+    }
+
+    @Test
+    void agreesWithBruteForceOnATinyMeshAndOnSlabPlanes() {
+        // Coordinates of 1e-6 and faces exactly on box planes, hit by axis-parallel rays.
+        TriangleMesh tiny = soupMesh(311, 300, 1e-6, 0, 0, 0);
+        BvhTest.compare(tiny, wide(tiny), BvhTest.around(tiny), 50_000, 312);
+        TriangleMesh grid = new TriangleMesh(TestMeshes.gridCube(6));
+        WideBvh w = wide(grid);
+        TraceContext ctx = new TraceContext();
+        BruteForce brute = new BruteForce(grid);
+        Ray ray = new Ray();
+        int hits = 0;
+        // Rays along each axis from points on the grid's planes (multiples of 1/3 of the side).
+        for (int i = -9; i <= 9; i++) {
+            for (int j = -9; j <= 9; j++) {
+                double a = i / 3.0, b = j / 3.0;
+                for (int axis = 0; axis < 3; axis++) {
+                    for (int sign = -1; sign <= 1; sign += 2) {
+                        double[] o = new double[3];
+                        o[axis] = -3.0 * sign;
+                        o[(axis + 1) % 3] = a;
+                        o[(axis + 2) % 3] = b;
+                        double[] d = {0, 0, 0};
+                        d[axis] = sign;
+                        ray.set(o[0], o[1], o[2], d[0], d[1], d[2], 0, Double.POSITIVE_INFINITY);
+                        String what = "ray from " + java.util.Arrays.toString(o) + " along " + java.util.Arrays.toString(d);
+                        if (BvhTest.agree(grid, brute, w, ray, ctx, () -> what)) hits++;
+                    }
+                }
+            }
+        }
+        assertTrue(hits > 100, "axis rays should hit the grid cube: " + hits);
+    }
+
+    @Test
+    void visitOffersEveryPrimitiveTheLineCrosses() {
+        TriangleMesh m = soupMesh(321, 500, 1, 0, 0, 0);
+        WideBvh w = wide(m);
+        TraceContext ctx = new TraceContext();
+        Random r = new Random(322);
+        Ray line = new Ray();
+        lt.spindulys.scene.Hit h = new lt.spindulys.scene.Hit();
+        int crossed = 0;
+        for (int i = 0; i < 2000; i++) {
+            line.set(r.nextDouble(), r.nextDouble(), r.nextDouble(), r.nextGaussian(), r.nextGaussian(), r.nextGaussian(),
+                    Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY);
+            boolean[] offered = new boolean[m.size()];
+            w.visit(line, ctx, (prim, ray, c) -> offered[prim] = true);
+            assertEquals(0, ctx.stackTop);
+            for (int p = 0; p < m.size(); p++) {
+                // Whatever the line crosses, on either side of its origin, must have been offered.
+                Ray whole = new Ray().set(line.ox, line.oy, line.oz, line.dx, line.dy, line.dz, -1e9, 1e9);
+                if (m.intersect(p, whole, h.reset(whole.tMax), ctx)) {
+                    crossed++;
+                    final int prim = p, n = i;
+                    assertTrue(offered[p], () -> "line " + n + " crosses primitive " + prim + " but it was not offered");
+                }
+            }
+        }
+        assertTrue(crossed > 500, "lines should cross triangles: " + crossed);
+    }
+
+    @Test
+    void collapseKeepsEveryLeafOnceInEightWideNodes() {
+        TriangleMesh m = new TriangleMesh(TestMeshes.icosphere(4, 1));
+        Bvh binary = new Bvh(m);
+        WideBvh w = wide(m);
+        int[] slots = w.leafSlotCounts(binary.primitiveCount());
+        for (int k = 0; k < slots.length; k++) assertEquals(1, slots[k], "slot " + k);
+        // Each wide node replaces at least one binary inner node; a tree of n leaves has n - 1.
+        int binaryLeaves = (binary.nodeCount() + 1) / 2;
+        assertTrue(w.nodeCount() <= binaryLeaves - 1, w.nodeCount() + " wide nodes");
+        assertTrue(w.nodeCount() >= (binaryLeaves - 1) / 7, w.nodeCount() + " wide nodes");
+    }
+}
