@@ -130,7 +130,10 @@ final class RenderCommand {
         }
         if (aovs != null) checkAovOutputs(aovs);
         long t0 = System.nanoTime();
-        SceneBuilder builder = SceneParser.parse(scene);
+        SceneBuilder builder;
+        try (JitWarmup warmup = JitWarmup.start()) {
+            builder = SceneParser.parse(scene);
+        }
         RenderSettings s = builder.settings();
         if (width != null || height != null) s = s.withSize(width != null ? width : s.width(), height != null ? height : s.height());
         if (spp != null) s = s.withSamplesPerPixel(spp);
