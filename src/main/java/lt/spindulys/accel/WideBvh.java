@@ -85,13 +85,26 @@ public final class WideBvh implements Accelerator {
 
     private static float slack(float o) { return 2 * Math.ulp(Math.abs(o)); }
 
+    /**
+     * The ray's constants for the float box test, in ctx's scratch: the inverse direction
+     * (clamped, so never zero or infinite), then for x, y, z the origin moved two ulps towards
+     * the near and towards the far side of every slab (which covers its rounding to float).
+     */
+    private static float[] prepare(Ray ray, TraceContext ctx) {
+        ctx.direction(ray);
+        float[] r = ctx.wideRay;
+        float ix = inv(ctx.invX), iy = inv(ctx.invY), iz = inv(ctx.invZ);
+        float ox = (float) ray.ox, oy = (float) ray.oy, oz = (float) ray.oz;
+        float ex = ix >= 0 ? slack(ox) : -slack(ox), ey = iy >= 0 ? slack(oy) : -slack(oy), ez = iz >= 0 ? slack(oz) : -slack(oz);
+        r[0] = ix; r[1] = iy; r[2] = iz;
+        r[3] = ox + ex; r[4] = ox - ex; r[5] = oy + ey; r[6] = oy - ey; r[7] = oz + ez; r[8] = oz - ez;
+        return r;
+    }
+
     @Override
     public boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
-        ctx.direction(ray);
-        final float ix = inv(ctx.invX), iy = inv(ctx.invY), iz = inv(ctx.invZ);
-        final float ox = (float) ray.ox, oy = (float) ray.oy, oz = (float) ray.oz;
-        final float ex = ix >= 0 ? slack(ox) : -slack(ox), ey = iy >= 0 ? slack(oy) : -slack(oy), ez = iz >= 0 ? slack(oz) : -slack(oz);
-        final float oxn = ox + ex, oxf = ox - ex, oyn = oy + ey, oyf = oy - ey, ozn = oz + ez, ozf = oz - ez;
+        final float[] r = prepare(ray, ctx);
+        final float ix = r[0], iy = r[1], iz = r[2], oxn = r[3], oxf = r[4], oyn = r[5], oyf = r[6], ozn = r[7], ozf = r[8];
         final int nx = ix >= 0 ? 0 : 8, ny = iy >= 0 ? 0 : 8, nz = iz >= 0 ? 0 : 8;
         final float tMin = Bvh.down(ray.tMin);
         float tMax = Bvh.up(ray.tMax);
@@ -161,14 +174,21 @@ public final class WideBvh implements Accelerator {
     }
 
     @Override
-    public boolean occluded(Ray ray, TraceContext ctx) {
-        ctx.direction(ray);
-        final float ix = inv(ctx.invX), iy = inv(ctx.invY), iz = inv(ctx.invZ);
-        final float ox = (float) ray.ox, oy = (float) ray.oy, oz = (float) ray.oz;
-        final float ex = ix >= 0 ? slack(ox) : -slack(ox), ey = iy >= 0 ? slack(oy) : -slack(oy), ez = iz >= 0 ? slack(oz) : -slack(oz);
-        final float oxn = ox + ex, oxf = ox - ex, oyn = oy + ey, oyf = oy - ey, ozn = oz + ez, ozf = oz - ez;
+    public boolean occluded(Ray ray, TraceContext ctx) { return walk(ray, ctx, null); }
+
+    @Override
+    public void visit(Ray ray, TraceContext ctx, Bvh.Visitor visitor) { walk(ray, ctx, visitor); }
+
+    /**
+     * Every leaf the ray passes through in [ray.tMin, ray.tMax] (infinite limits allowed), in
+     * no order: with a visitor, each of its primitives is offered to it; without one, the walk
+     * is the any-hit query and stops at the first leaf that blocks the ray.
+     */
+    private boolean walk(Ray ray, TraceContext ctx, Bvh.Visitor visitor) {
+        final float[] r = prepare(ray, ctx);
+        final float ix = r[0], iy = r[1], iz = r[2], oxn = r[3], oxf = r[4], oyn = r[5], oyf = r[6], ozn = r[7], ozf = r[8];
         final int nx = ix >= 0 ? 0 : 8, ny = iy >= 0 ? 0 : 8, nz = iz >= 0 ? 0 : 8;
-        final float tMin = Bvh.down(ray.tMin), tMax = Bvh.up(ray.tMax);
+        final float tMin = Math.max(-Float.MAX_VALUE, Bvh.down(ray.tMin)), tMax = Math.min(Float.MAX_VALUE, Bvh.up(ray.tMax));
         final int base = ctx.stackTop, need = stackNeed();
         final int[] stack = ctx.stack(base + need);
         final float[] dist = ctx.lanes;
@@ -187,8 +207,12 @@ public final class WideBvh implements Accelerator {
                     }
                 } else {
                     int code = -1 - n;
-                    int first = code >>> 4;
-                    if (set.occludedRange(perm, first, first + (code & 15), ray, ctx)) return true;
+                    int first = code >>> 4, end = first + (code & 15);
+                    if (visitor == null) {
+                        if (set.occludedRange(perm, first, end, ray, ctx)) return true;
+                    } else {
+                        for (int k = first; k < end; k++) visitor.visit(perm == null ? k : perm[k], ray, ctx);
+                    }
                 }
                 if (sp == base) break;
                 n = stack[--sp];
@@ -197,41 +221,6 @@ public final class WideBvh implements Accelerator {
             ctx.stackTop = base;
         }
         return false;
-    }
-
-    @Override
-    public void visit(Ray ray, TraceContext ctx, Bvh.Visitor visitor) {
-        ctx.direction(ray);
-        final float ix = inv(ctx.invX), iy = inv(ctx.invY), iz = inv(ctx.invZ);
-        final float ox = (float) ray.ox, oy = (float) ray.oy, oz = (float) ray.oz;
-        final float ex = ix >= 0 ? slack(ox) : -slack(ox), ey = iy >= 0 ? slack(oy) : -slack(oy), ez = iz >= 0 ? slack(oz) : -slack(oz);
-        final float oxn = ox + ex, oxf = ox - ex, oyn = oy + ey, oyf = oy - ey, ozn = oz + ez, ozf = oz - ez;
-        final int nx = ix >= 0 ? 0 : 8, ny = iy >= 0 ? 0 : 8, nz = iz >= 0 ? 0 : 8;
-        final float tMin = Math.max(-Float.MAX_VALUE, Bvh.down(ray.tMin)), tMax = Math.min(Float.MAX_VALUE, Bvh.up(ray.tMax));
-        final int base = ctx.stackTop, need = stackNeed();
-        final int[] stack = ctx.stack(base + need);
-        final float[] dist = ctx.lanes;
-        ctx.stackTop = base + need;
-        try {
-            int sp = base, n = 0;
-            while (true) {
-                if (n >= 0) {
-                    int bits = SimdBoxes.test(box, FLOATS * n, nx, ny, nz, oxn, oxf, oyn, oyf, ozn, ozf, ix, iy, iz, tMin, tMax, GAMMA, dist);
-                    int c0 = 8 * n;
-                    while (bits != 0) {
-                        stack[sp++] = child[c0 + Integer.numberOfTrailingZeros(bits)];
-                        bits &= bits - 1;
-                    }
-                } else {
-                    int code = -1 - n;
-                    for (int k = code >>> 4, end = k + (code & 15); k < end; k++) visitor.visit(perm == null ? k : perm[k], ray, ctx);
-                }
-                if (sp == base) break;
-                n = stack[--sp];
-            }
-        } finally {
-            ctx.stackTop = base;
-        }
     }
 
     /** Builds the wide nodes depth-first from the binary ones. */

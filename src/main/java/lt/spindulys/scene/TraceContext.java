@@ -39,8 +39,8 @@ public final class TraceContext {
     public double[] crossings = new double[64];
     public int crossingCount;
 
-    /** Per-lane scratch of the wide BVH's vector box test. */
-    public final float[] lanes = new float[8];
+    /** Per-lane scratch of the wide BVH's vector box test, and its per-ray constants. */
+    public final float[] lanes = new float[8], wideRay = new float[9];
 
     private int[] stack = new int[64];
     private SpanBuffer[] spanPool = new SpanBuffer[8];
