@@ -33,8 +33,13 @@ public final class WideBvh implements Accelerator {
     private static boolean probe() {
         if (ModuleLayer.boot().findModule("jdk.incubator.vector").isEmpty()) return false;
         try {
-            return SimdBoxes.supported();
-        } catch (LinkageError e) {
+            // One real test of an empty node, so that a JDK whose incubating API differs from
+            // the one compiled against falls back here rather than failing in the render.
+            float[] node = new float[FLOATS];
+            for (int i = 0; i < FLOATS; i++) node[i] = (i / 8) % 2 == 0 ? Float.POSITIVE_INFINITY : Float.NEGATIVE_INFINITY;
+            return SimdBoxes.supported()
+                    && SimdBoxes.test(node, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 0, Float.POSITIVE_INFINITY, GAMMA, new float[8]) == 0;
+        } catch (LinkageError | RuntimeException e) {
             return false;
         }
     }
