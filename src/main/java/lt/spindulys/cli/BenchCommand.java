@@ -31,7 +31,6 @@ import lt.spindulys.subdiv.RefinedMesh;
  * from scenes/bench/ under the current folder (the repository root).
  */
 final class BenchCommand {
-    private static final String VECTOR_MODULE = "jdk.incubator.vector";
     static final String USAGE = """
             usage: render bench [--only NAME] [--runs N] [--accel A] [--list]
 
@@ -145,8 +144,8 @@ final class BenchCommand {
             out.println("  leaf order, and the top-level BVH over the objects); render s: trace the frame; all medians");
             out.printf(Locale.ROOT, "  after %d warm-up renders in this JVM. Mrays/s: rays of all kinds / render s. peak heap: the heap pools'%n", WARMUPS);
             out.println("  peak use during one load+build+render. bytes/tri: the meshes' arrays and BVHs / their triangles.");
-            out.println("  cold s: wall clock of a whole new process `java [--add-modules jdk.incubator.vector, when this JVM has it]");
-            out.println("  -jar render.jar SCENE -o x.tga --quiet --threads 2`");
+            out.println("  cold s: wall clock of a whole new process `java [this JVM's options] -jar render.jar SCENE -o x.tga");
+            out.println("  --quiet --threads 2`");
             out.println("  (median; one untimed run first so the files are in the page cache).");
         }
         return 0;
@@ -346,8 +345,9 @@ final class BenchCommand {
         Path image = Files.createTempFile("spindulys-bench", ".tga");
         try {
             List<String> cmd = new java.util.ArrayList<>(List.of(javaExe));
-            // The new process gets the vector module when this one has it, as ./render passes it.
-            if (ModuleLayer.boot().findModule(VECTOR_MODULE).isPresent()) cmd.addAll(List.of("--add-modules", VECTOR_MODULE));
+            // The new process gets this one's JVM options (those ./render passes: the vector
+            // module, the collector), so it measures what a render from the launcher does.
+            cmd.addAll(java.lang.management.ManagementFactory.getRuntimeMXBean().getInputArguments());
             cmd.addAll(List.of("-cp", cp, Main.class.getName(), scene.toString(), "-o", image.toString(),
                     "--quiet", "--threads", Integer.toString(THREADS)));
             if (accel != null) cmd.addAll(List.of("--accel", accel.keyword()));
