@@ -1,5 +1,6 @@
 package lt.spindulys.accel;
 
+import jdk.incubator.vector.ByteVector;
 import jdk.incubator.vector.FloatVector;
 import jdk.incubator.vector.VectorMask;
 import jdk.incubator.vector.VectorOperators;
@@ -12,6 +13,7 @@ import jdk.incubator.vector.VectorSpecies;
  */
 final class SimdBoxes {
     private static final VectorSpecies<Float> S = FloatVector.SPECIES_256;
+    private static final VectorSpecies<Byte> B = ByteVector.SPECIES_64;
 
     private SimdBoxes() {}
 
@@ -21,18 +23,21 @@ final class SimdBoxes {
     }
 
     /**
-     * Tests the eight boxes of the node whose floats start at {@code o}: writes each box's
+     * Tests the eight boxes of a node: their planes are bytes {@code q[o..o+47]} (min x of the
+     * eight children, max x, min y, ... as rows of eight), each decoded as base + q * scale with
+     * the node's frame {@code frame[f..f+5]} (base x, y, z, scale x, y, z). Writes each box's
      * widened entry distance to {@code dist[0..7]} and returns the lanes hit as bits.
      */
-    static int test(float[] b, int o, int nx, int ny, int nz,
+    static int test(byte[] q, int o, float[] frame, int f, int nx, int ny, int nz,
                     float oxn, float oxf, float oyn, float oyf, float ozn, float ozf,
                     float ix, float iy, float iz, float tMin, float tMax, float gamma, float[] dist) {
-        FloatVector t0 = FloatVector.fromArray(S, b, o + nx).sub(oxn).mul(ix);
-        FloatVector t1 = FloatVector.fromArray(S, b, o + (8 - nx)).sub(oxf).mul(ix);
-        t0 = t0.max(FloatVector.fromArray(S, b, o + 16 + ny).sub(oyn).mul(iy));
-        t1 = t1.min(FloatVector.fromArray(S, b, o + 16 + (8 - ny)).sub(oyf).mul(iy));
-        t0 = t0.max(FloatVector.fromArray(S, b, o + 32 + nz).sub(ozn).mul(iz));
-        t1 = t1.min(FloatVector.fromArray(S, b, o + 32 + (8 - nz)).sub(ozf).mul(iz));
+        float bx = frame[f], by = frame[f + 1], bz = frame[f + 2], sx = frame[f + 3], sy = frame[f + 4], sz = frame[f + 5];
+        FloatVector t0 = plane(q, o + nx, sx, bx).sub(oxn).mul(ix);
+        FloatVector t1 = plane(q, o + (8 - nx), sx, bx).sub(oxf).mul(ix);
+        t0 = t0.max(plane(q, o + 16 + ny, sy, by).sub(oyn).mul(iy));
+        t1 = t1.min(plane(q, o + 16 + (8 - ny), sy, by).sub(oyf).mul(iy));
+        t0 = t0.max(plane(q, o + 32 + nz, sz, bz).sub(ozn).mul(iz));
+        t1 = t1.min(plane(q, o + 32 + (8 - nz), sz, bz).sub(ozf).mul(iz));
         t0 = t0.max(tMin);
         t1 = t1.min(tMax);
         t0 = t0.abs().mul(-gamma).add(t0);
@@ -45,5 +50,10 @@ final class SimdBoxes {
         int bits = 0;
         for (int i = 0; i < 8; i++) bits |= (dist[i] < Float.POSITIVE_INFINITY ? 1 : 0) << i;
         return bits;
+    }
+
+    /** Eight planes: the signed bytes q[o..o+7] as floats, times scale, plus base (as {@link WideBvh#decode}). */
+    private static FloatVector plane(byte[] q, int o, float scale, float base) {
+        return ((FloatVector) ByteVector.fromArray(B, q, o).convertShape(VectorOperators.B2F, S, 0)).mul(scale).add(base);
     }
 }

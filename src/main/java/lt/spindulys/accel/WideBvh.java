@@ -7,13 +7,16 @@ import lt.spindulys.scene.TraceContext;
 /**
  * A {@link Bvh} collapsed to eight children per node, whose eight boxes are tested together with
  * the JDK's Vector API ({@link SimdBoxes}). Used in place of the binary tree when the
- * {@code jdk.incubator.vector} module is present and the machine has 256-bit vectors.
+ * {@code jdk.incubator.vector} module is present and the machine has 256-bit vectors. A node is
+ * 104 bytes: its children's boxes as bytes on a grid over its own box (48), the grid (6 floats)
+ * and eight links. Immutable after construction; thread-safe.
  */
 public final class WideBvh implements Accelerator {
     /** Whether the vector test can run here: the module is resolved and the hardware is wide enough. */
     public static final boolean AVAILABLE = probe();
 
-    private static final int FLOATS = 48;
+    /** Plane bytes per node: six rows (min x, max x, min y, max y, min z, max z) of eight children. */
+    private static final int PLANES = 48;
     /** Relative widening of every computed distance: three float roundings, with room to spare. */
     private static final float GAMMA = 8 * 0x1p-24f;
     private static final float INV_LIMIT = 1e20f;
@@ -22,10 +25,15 @@ public final class WideBvh implements Accelerator {
     private final PrimitiveSet set;
     private final int[] perm;
     /**
-     * Per node 48 floats: minX of its eight children, then maxX, minY, maxY, minZ, maxZ; empty
-     * lanes hold +inf minima and -inf maxima, which no ray enters.
+     * Per node 48 signed bytes: the children's planes on the node's grid ({@link #decode}), in
+     * rows of eight (min x, max x, min y, max y, min z, max z), each rounded outward so the
+     * decoded box holds the child's; an empty lane has min 127 and max -128, a box no ray enters.
+     * A quarter of the memory of float planes (measured: 1.01x the speed at 2M triangles and
+     * 1.07x at 2k, 56.4 instead of 70.6 bytes per triangle with the mesh).
      */
-    private final float[] box;
+    private final byte[] q;
+    /** Per node six floats: the base and the scale of its planes' grid on x, y and z. */
+    private final float[] frame;
     /** Per node eight links: a node index (>= 0), or -1 - (first << 4 | count) for a leaf. */
     private final int[] child;
     private final int nodeCount, depth;
@@ -35,10 +43,11 @@ public final class WideBvh implements Accelerator {
         try {
             // One real test of an empty node, so that a JDK whose incubating API differs from
             // the one compiled against falls back here rather than failing in the render.
-            float[] node = new float[FLOATS];
-            for (int i = 0; i < FLOATS; i++) node[i] = (i / 8) % 2 == 0 ? Float.POSITIVE_INFINITY : Float.NEGATIVE_INFINITY;
+            byte[] node = new byte[PLANES];
+            for (int i = 0; i < PLANES; i++) node[i] = (i / 8) % 2 == 0 ? Byte.MAX_VALUE : Byte.MIN_VALUE;
+            float[] frame = {0, 0, 0, 1, 1, 1};
             return SimdBoxes.supported()
-                    && SimdBoxes.test(node, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 0, Float.POSITIVE_INFINITY, GAMMA, new float[8]) == 0;
+                    && SimdBoxes.test(node, 0, frame, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 0, Float.POSITIVE_INFINITY, GAMMA, new float[8]) == 0;
         } catch (LinkageError | RuntimeException e) {
             return false;
         }
@@ -56,7 +65,8 @@ public final class WideBvh implements Accelerator {
         int cap = Math.max(1, bvh.nodeCount() / 3);
         Collapser c = new Collapser(node, cap);
         c.build(0, 0);
-        box = java.util.Arrays.copyOf(c.box, FLOATS * c.count);
+        q = java.util.Arrays.copyOf(c.q, PLANES * c.count);
+        frame = java.util.Arrays.copyOf(c.frame, 6 * c.count);
         child = java.util.Arrays.copyOf(c.child, 8 * c.count);
         nodeCount = c.count;
         depth = c.maxDepth;
@@ -69,7 +79,8 @@ public final class WideBvh implements Accelerator {
         int[] seen = new int[slots];
         for (int i = 0; i < 8 * nodeCount; i++) {
             int c = child[i];
-            boolean empty = box[FLOATS * (i / 8) + i % 8] == Float.POSITIVE_INFINITY;
+            int row = PLANES * (i / 8) + i % 8;
+            boolean empty = q[row] > q[row + 8]; // an empty lane's min x lies above its max x
             if (c < 0 && !empty) {
                 int code = -1 - c;
                 for (int k = code >>> 4, end = k + (code & 15); k < end; k++) seen[k]++;
@@ -79,7 +90,7 @@ public final class WideBvh implements Accelerator {
     }
 
     @Override
-    public long memoryBytes() { return 4L * box.length + 4L * child.length + (perm == null ? 0 : 4L * perm.length); }
+    public long memoryBytes() { return q.length + 4L * frame.length + 4L * child.length + (perm == null ? 0 : 4L * perm.length); }
 
     private int stackNeed() { return 2 * (7 * (depth + 1) + 2); }
 
@@ -117,7 +128,8 @@ public final class WideBvh implements Accelerator {
         final int base = ctx.stackTop, need = stackNeed();
         final int[] stack = ctx.stack(base + need);
         final float[] dist = ctx.lanes;
-        final float[] box = this.box;
+        final byte[] q = this.q;
+        final float[] frame = this.frame;
         final int[] child = this.child;
         ctx.stackTop = base + need;
         boolean any = false;
@@ -125,7 +137,7 @@ public final class WideBvh implements Accelerator {
             int sp = base, n = 0;
             while (true) {
                 if (n >= 0) {
-                    int bits = SimdBoxes.test(box, FLOATS * n, nx, ny, nz, oxn, oxf, oyn, oyf, ozn, ozf, ix, iy, iz, tMin, tMax, GAMMA, dist);
+                    int bits = SimdBoxes.test(q, PLANES * n, frame, 6 * n, nx, ny, nz, oxn, oxf, oyn, oyf, ozn, ozf, ix, iy, iz, tMin, tMax, GAMMA, dist);
                     if (bits != 0) {
                         int c0 = 8 * n;
                         if ((bits & (bits - 1)) == 0) {
@@ -197,14 +209,15 @@ public final class WideBvh implements Accelerator {
         final int base = ctx.stackTop, need = stackNeed();
         final int[] stack = ctx.stack(base + need);
         final float[] dist = ctx.lanes;
-        final float[] box = this.box;
+        final byte[] q = this.q;
+        final float[] frame = this.frame;
         final int[] child = this.child;
         ctx.stackTop = base + need;
         try {
             int sp = base, n = 0;
             while (true) {
                 if (n >= 0) {
-                    int bits = SimdBoxes.test(box, FLOATS * n, nx, ny, nz, oxn, oxf, oyn, oyf, ozn, ozf, ix, iy, iz, tMin, tMax, GAMMA, dist);
+                    int bits = SimdBoxes.test(q, PLANES * n, frame, 6 * n, nx, ny, nz, oxn, oxf, oyn, oyf, ozn, ozf, ix, iy, iz, tMin, tMax, GAMMA, dist);
                     int c0 = 8 * n;
                     while (bits != 0) {
                         stack[sp++] = child[c0 + Integer.numberOfTrailingZeros(bits)];
@@ -228,17 +241,53 @@ public final class WideBvh implements Accelerator {
         return false;
     }
 
+    /** A plane's value: base + q * scale, in float, exactly as {@link SimdBoxes} computes it. */
+    static float decode(int q, float base, float scale) {
+        return q * scale + base;
+    }
+
     /** Builds the wide nodes depth-first from the binary ones. */
     private static final class Collapser {
         final int[] node;
-        float[] box;
+        byte[] q;
+        float[] frame;
         int[] child;
         int count, maxDepth;
 
         Collapser(int[] node, int cap) {
             this.node = node;
-            box = new float[FLOATS * cap];
+            q = new byte[PLANES * cap];
+            frame = new float[6 * cap];
             child = new int[8 * cap];
+        }
+
+        /**
+         * The grid of one axis over [lo, hi]: a scale with 254 steps reaching past hi, and a base
+         * one step below lo, so that -128 decodes below lo and 127 above hi despite rounding.
+         */
+        private static float scale(float lo, float hi) {
+            float s = (float) (((double) hi - lo) / 253);
+            return s > 0 ? Math.nextUp(s) : 0;
+        }
+
+        /** The largest q whose plane is at or below v. */
+        private static int down(float v, float base, float scale) {
+            if (scale == 0) return Byte.MIN_VALUE;
+            int k = (int) Math.floor(((double) v - base) / scale);
+            k = Math.max(Byte.MIN_VALUE, Math.min(Byte.MAX_VALUE, k));
+            while (k > Byte.MIN_VALUE && decode(k, base, scale) > v) k--;
+            if (decode(k, base, scale) > v) throw new IllegalStateException("plane " + v + " below its node's grid");
+            return k;
+        }
+
+        /** The smallest q whose plane is at or above v. */
+        private static int up(float v, float base, float scale) {
+            if (scale == 0) return Byte.MAX_VALUE;
+            int k = (int) Math.ceil(((double) v - base) / scale);
+            k = Math.max(Byte.MIN_VALUE, Math.min(Byte.MAX_VALUE, k));
+            while (k < Byte.MAX_VALUE && decode(k, base, scale) < v) k++;
+            if (decode(k, base, scale) < v) throw new IllegalStateException("plane " + v + " above its node's grid");
+            return k;
         }
 
         private float area(int b) {
@@ -255,7 +304,8 @@ public final class WideBvh implements Accelerator {
             int w = count++;
             if (count * 8 > child.length) {
                 child = java.util.Arrays.copyOf(child, 2 * child.length);
-                box = java.util.Arrays.copyOf(box, 2 * box.length);
+                q = java.util.Arrays.copyOf(q, 2 * q.length);
+                frame = java.util.Arrays.copyOf(frame, 2 * frame.length);
             }
             if (d > maxDepth) maxDepth = d;
             int[] kids = new int[8];
@@ -275,22 +325,33 @@ public final class WideBvh implements Accelerator {
                 kids[best] = open + 1;
                 kids[k++] = node[8 * open + 6];
             }
-            int o = FLOATS * w;
-            for (int i = 0; i < 8; i++) {
-                if (i < k) {
-                    int c = kids[i];
-                    box[o + i] = f(c, 0); box[o + 8 + i] = f(c, 3);
-                    box[o + 16 + i] = f(c, 1); box[o + 24 + i] = f(c, 4);
-                    box[o + 32 + i] = f(c, 2); box[o + 40 + i] = f(c, 5);
-                } else {
-                    box[o + i] = box[o + 16 + i] = box[o + 32 + i] = Float.POSITIVE_INFINITY;
-                    box[o + 8 + i] = box[o + 24 + i] = box[o + 40 + i] = Float.NEGATIVE_INFINITY;
+            // The node's grid per axis spans its own box, b's (which holds all of its children).
+            int o = PLANES * w;
+            for (int a = 0; a < 3; a++) {
+                float lo = f(b, a), hi = f(b, 3 + a), sc = scale(lo, hi);
+                // With a zero scale every plane decodes to lo: the children are flat, all at lo.
+                float base = sc > 0 ? lo + 127 * sc : lo;
+                if (sc > 0 && decode(Byte.MIN_VALUE, base, sc) > lo) base = Math.nextDown(base);
+                frame[6 * w + a] = base;
+                frame[6 * w + 3 + a] = sc;
+                for (int i = 0; i < 8; i++) {
+                    int row = o + 16 * a + i;
+                    if (i < k) {
+                        q[row] = (byte) down(f(kids[i], a), base, sc);
+                        q[row + 8] = (byte) up(f(kids[i], 3 + a), base, sc);
+                    } else {
+                        q[row] = Byte.MAX_VALUE;
+                        q[row + 8] = Byte.MIN_VALUE;
+                    }
                 }
             }
             for (int i = 0; i < k; i++) {
                 int c = kids[i];
                 child[8 * w + i] = leaf(c) ? -1 - (node[8 * c + 6] << 4 | node[8 * c + 7]) : build(c, d + 1);
             }
+            // An empty lane is missed, except on a node whose box is one point (every axis flat);
+            // then it is an empty leaf, never a link back to the root.
+            for (int i = k; i < 8; i++) child[8 * w + i] = -1;
             return w;
         }
     }

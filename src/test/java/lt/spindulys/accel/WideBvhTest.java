@@ -1,6 +1,7 @@
 package lt.spindulys.accel;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
@@ -86,6 +87,35 @@ class WideBvhTest {
             }
         }
         assertTrue(hits > 100, "axis rays should hit the grid cube: " + hits);
+    }
+
+    @Test
+    void nodesWhoseBoxIsOnePointStillEnd() {
+        assumeTrue(WideBvh.AVAILABLE, "this machine has no 256-bit vectors");
+        // Primitives bounded by one point: every node's grid has zero steps on all three axes,
+        // where even the empty lanes decode to that point and are entered (as empty leaves).
+        PrimitiveSet points = new PrimitiveSet() {
+            @Override public int size() { return 300; }
+            @Override public void bounds(int i, double[] out) {
+                java.util.Arrays.fill(out, 0, 6, 0.5);
+            }
+            @Override public boolean intersect(int i, Ray ray, lt.spindulys.scene.Hit hit, TraceContext ctx) { return false; }
+        };
+        Bvh binary = new Bvh(points);
+        assertTrue(WideBvh.canCollapse(binary), "a tree with inner nodes: " + binary.nodeCount());
+        WideBvh w = new WideBvh(binary);
+        TraceContext ctx = new TraceContext();
+        Ray ray = new Ray();
+        Random r = new Random(331);
+        for (int i = 0; i < 1000; i++) {
+            double dx = r.nextGaussian(), dy = r.nextGaussian(), dz = r.nextGaussian();
+            ray.set(0.5 - dx, 0.5 - dy, 0.5 - dz, dx, dy, dz, 0, Double.POSITIVE_INFINITY);
+            assertFalse(w.intersect(ray, new lt.spindulys.scene.Hit().reset(ray.tMax), ctx));
+            assertFalse(w.occluded(ray, ctx));
+            int[] seen = new int[points.size()];
+            w.visit(ray, ctx, (prim, rr, cc) -> seen[prim]++);
+            for (int k = 0; k < seen.length; k++) assertEquals(1, seen[k], "a line through the point passes primitive " + k + " once");
+        }
     }
 
     @Test
