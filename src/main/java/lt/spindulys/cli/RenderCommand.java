@@ -131,8 +131,12 @@ final class RenderCommand {
         if (aovs != null) checkAovOutputs(aovs);
         long t0 = System.nanoTime();
         SceneBuilder builder;
+        long parsed, warmed;
         try (JitWarmup warmup = JitWarmup.start()) {
             builder = SceneParser.parse(scene);
+            parsed = System.nanoTime();
+            warmup.finishFor(builder);
+            warmed = System.nanoTime();
         }
         RenderSettings s = builder.settings();
         if (width != null || height != null) s = s.withSize(width != null ? width : s.width(), height != null ? height : s.height());
@@ -173,7 +177,7 @@ final class RenderCommand {
             if (bar != null) bar.finish();
         }
         ImageWriter.write(result.image(), output, new ImageOptions(s.srgb(), quality), result.aovs());
-        if (stats) printStats(out, (t1 - t0) / 1e9, (t2 - t1) / 1e9, s.accelerator(), result.stats(), n);
+        if (stats) printStats(out, (parsed - t0 + t1 - warmed) / 1e9, (warmed - parsed) / 1e9, (t2 - t1) / 1e9, s.accelerator(), result.stats(), n);
         return 0;
     }
 
@@ -200,8 +204,9 @@ final class RenderCommand {
         }
     }
 
-    private static void printStats(PrintStream out, double load, double build, AcceleratorKind accel, RenderStats r, int threads) {
-        out.printf(Locale.ROOT, "load:    %.3f s%n", load);
+    private static void printStats(PrintStream out, double load, double warmup, double build, AcceleratorKind accel, RenderStats r, int threads) {
+        if (warmup >= 0.0005) out.printf(Locale.ROOT, "load:    %.3f s (then %.3f s for the JIT warm-up to finish)%n", load, warmup);
+        else out.printf(Locale.ROOT, "load:    %.3f s%n", load);
         out.printf(Locale.ROOT, "build:   %.3f s (%s)%n", build, accel.description());
         out.printf(Locale.ROOT, "render:  %.3f s (%d threads)%n", r.seconds(), threads);
         out.printf(Locale.ROOT, "rays:    %d camera, %d shadow, %d reflection, %d refraction%n",

@@ -28,12 +28,28 @@ class JitWarmupTest {
     }
 
     @Test
-    void closingStopsItPromptly() throws InterruptedException {
+    void closingReturnsAtOnceAndTheThreadEndsSoonAfter() throws InterruptedException {
         long t0 = System.nanoTime();
         JitWarmup w = JitWarmup.start();
         w.close();
         double seconds = (System.nanoTime() - t0) / 1e9;
-        // Generous: a cold JVM's first tile of the warm-up may run interpreted.
-        assertTrue(seconds < 5, "close took " + seconds + " s");
+        assertTrue(seconds < 0.5, "close took " + seconds + " s");
+        // Generous: on a cold JVM the small scene's build and first tile run interpreted.
+        assertTrue(w.ended(10_000), "the warm-up thread is still running 10 s after close");
+    }
+
+    @Test
+    void aSceneWithAMeshWaitsForTheWarmupAndOneWithoutDoesNot() throws InterruptedException {
+        JitWarmup withMesh = JitWarmup.start();
+        withMesh.finishFor(new lt.spindulys.scene.SceneBuilder().add(
+                new lt.spindulys.scene.TriangleMesh(lt.spindulys.scene.TestMeshes.icosphere(2, 1))));
+        assertTrue(withMesh.ended(0), "finishFor returned before the warm-up ended");
+
+        JitWarmup withoutMesh = JitWarmup.start();
+        long t0 = System.nanoTime();
+        withoutMesh.finishFor(new lt.spindulys.scene.SceneBuilder().add(new lt.spindulys.scene.Sphere(lt.spindulys.math.Vec3.ZERO, 1)));
+        double seconds = (System.nanoTime() - t0) / 1e9;
+        assertTrue(seconds < 0.5, "a scene of spheres waited " + seconds + " s");
+        assertTrue(withoutMesh.ended(10_000));
     }
 }
