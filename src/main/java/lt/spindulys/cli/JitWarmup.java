@@ -21,7 +21,8 @@ import lt.spindulys.scene.TriangleMesh;
 /**
  * Renders a small built-in scene (a torus of 1,024 quads on a ground quad, one point light, hard
  * shadows) again and again on a background thread while the command's thread parses the scene
- * file, and stops before the real scene is built.
+ * file; before the real scene is built the command waits for it to finish or stops it
+ * ({@link #finishFor}).
  *
  * <p>Why: parsing is single-threaded, so one core is idle, and a new JVM runs the first part of
  * a render in interpreted and provisionally compiled code. The vector box test suffers most: its
