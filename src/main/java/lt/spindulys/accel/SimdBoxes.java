@@ -14,6 +14,11 @@ import jdk.incubator.vector.VectorSpecies;
 final class SimdBoxes {
     private static final VectorSpecies<Float> S = FloatVector.SPECIES_256;
     private static final VectorSpecies<Byte> B = ByteVector.SPECIES_64;
+    /**
+     * Relative widening of every computed distance: each is three float roundings away from the
+     * exact value for the (shifted) float origin, and 8 ulps leave room to spare.
+     */
+    private static final float GAMMA = 8 * 0x1p-24f;
 
     private SimdBoxes() {}
 
@@ -30,7 +35,7 @@ final class SimdBoxes {
      */
     static int test(byte[] q, int o, float[] frame, int f, int nx, int ny, int nz,
                     float oxn, float oxf, float oyn, float oyf, float ozn, float ozf,
-                    float ix, float iy, float iz, float tMin, float tMax, float gamma, float[] dist) {
+                    float ix, float iy, float iz, float tMin, float tMax, float[] dist) {
         float bx = frame[f], by = frame[f + 1], bz = frame[f + 2], sx = frame[f + 3], sy = frame[f + 4], sz = frame[f + 5];
         FloatVector t0 = plane(q, o + nx, sx, bx).sub(oxn).mul(ix);
         FloatVector t1 = plane(q, o + (8 - nx), sx, bx).sub(oxf).mul(ix);
@@ -40,8 +45,8 @@ final class SimdBoxes {
         t1 = t1.min(plane(q, o + 32 + (8 - nz), sz, bz).sub(ozf).mul(iz));
         t0 = t0.max(tMin);
         t1 = t1.min(tMax);
-        t0 = t0.abs().mul(-gamma).add(t0);
-        t1 = t1.abs().mul(gamma).add(t1);
+        t0 = t0.abs().mul(-GAMMA).add(t0);
+        t1 = t1.abs().mul(GAMMA).add(t1);
         VectorMask<Float> m = t0.compare(VectorOperators.LE, t1);
         // The lanes hit are read back from the stored distances, not with VectorMask.toLong():
         // JDK 17 does not compile that to an instruction (the render took 1.3x as long).

@@ -17,8 +17,6 @@ public final class WideBvh implements Accelerator {
 
     /** Plane bytes per node: six rows (min x, max x, min y, max y, min z, max z) of eight children. */
     private static final int PLANES = 48;
-    /** Relative widening of every computed distance: three float roundings, with room to spare. */
-    private static final float GAMMA = 8 * 0x1p-24f;
     private static final float INV_LIMIT = 1e20f;
     private static final int NONE = Integer.MIN_VALUE;
 
@@ -47,7 +45,7 @@ public final class WideBvh implements Accelerator {
             for (int i = 0; i < PLANES; i++) node[i] = (i / 8) % 2 == 0 ? Byte.MAX_VALUE : Byte.MIN_VALUE;
             float[] frame = {0, 0, 0, 1, 1, 1};
             return SimdBoxes.supported()
-                    && SimdBoxes.test(node, 0, frame, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 0, Float.POSITIVE_INFINITY, GAMMA, new float[8]) == 0;
+                    && SimdBoxes.test(node, 0, frame, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 0, Float.POSITIVE_INFINITY, new float[8]) == 0;
         } catch (LinkageError | RuntimeException e) {
             return false;
         }
@@ -137,7 +135,7 @@ public final class WideBvh implements Accelerator {
             int sp = base, n = 0;
             while (true) {
                 if (n >= 0) {
-                    int bits = SimdBoxes.test(q, PLANES * n, frame, 6 * n, nx, ny, nz, oxn, oxf, oyn, oyf, ozn, ozf, ix, iy, iz, tMin, tMax, GAMMA, dist);
+                    int bits = SimdBoxes.test(q, PLANES * n, frame, 6 * n, nx, ny, nz, oxn, oxf, oyn, oyf, ozn, ozf, ix, iy, iz, tMin, tMax, dist);
                     if (bits != 0) {
                         int c0 = 8 * n;
                         if ((bits & (bits - 1)) == 0) {
@@ -205,7 +203,7 @@ public final class WideBvh implements Accelerator {
         final float[] r = prepare(ray, ctx);
         final float ix = r[0], iy = r[1], iz = r[2], oxn = r[3], oxf = r[4], oyn = r[5], oyf = r[6], ozn = r[7], ozf = r[8];
         final int nx = ix >= 0 ? 0 : 8, ny = iy >= 0 ? 0 : 8, nz = iz >= 0 ? 0 : 8;
-        final float tMin = Math.max(-Float.MAX_VALUE, Bvh.down(ray.tMin)), tMax = Math.min(Float.MAX_VALUE, Bvh.up(ray.tMax));
+        final float tMin = Bvh.down(ray.tMin), tMax = Bvh.up(ray.tMax);
         final int base = ctx.stackTop, need = stackNeed();
         final int[] stack = ctx.stack(base + need);
         final float[] dist = ctx.lanes;
@@ -217,7 +215,7 @@ public final class WideBvh implements Accelerator {
             int sp = base, n = 0;
             while (true) {
                 if (n >= 0) {
-                    int bits = SimdBoxes.test(q, PLANES * n, frame, 6 * n, nx, ny, nz, oxn, oxf, oyn, oyf, ozn, ozf, ix, iy, iz, tMin, tMax, GAMMA, dist);
+                    int bits = SimdBoxes.test(q, PLANES * n, frame, 6 * n, nx, ny, nz, oxn, oxf, oyn, oyf, ozn, ozf, ix, iy, iz, tMin, tMax, dist);
                     int c0 = 8 * n;
                     while (bits != 0) {
                         stack[sp++] = child[c0 + Integer.numberOfTrailingZeros(bits)];
@@ -246,6 +244,43 @@ public final class WideBvh implements Accelerator {
         return q * scale + base;
     }
 
+    /**
+     * The grid step of an axis over [lo, hi]: (hi - lo) / 253 rounded up, and at least four ulps
+     * of the coordinates, so that each rounding of {@link #decode} (half an ulp) is small beside a
+     * step. With the base one step below 127 steps above lo ({@link #gridBase}), -128 then decodes
+     * below lo and 127 above hi. Zero for a flat axis: every plane decodes to lo exactly.
+     */
+    static float gridStep(float lo, float hi) {
+        if (!(hi > lo)) return 0;
+        float s = Math.nextUp((float) (((double) hi - lo) / 253));
+        return Math.max(s, 4 * Math.ulp(Math.max(Math.abs(lo), Math.abs(hi))));
+    }
+
+    /** The grid base of an axis over [lo, hi] with step {@code step}: 127 steps above lo. */
+    static float gridBase(float lo, float step) {
+        return lo + 127 * step;
+    }
+
+    /** The largest q whose plane is at or below v (v on the grid's axis range). */
+    static int gridDown(float v, float base, float step) {
+        if (step == 0) return Byte.MIN_VALUE;
+        int k = (int) Math.floor(((double) v - base) / step);
+        k = Math.max(Byte.MIN_VALUE, Math.min(Byte.MAX_VALUE, k));
+        while (k > Byte.MIN_VALUE && decode(k, base, step) > v) k--;
+        if (decode(k, base, step) > v) throw new IllegalStateException("plane " + v + " below its node's grid");
+        return k;
+    }
+
+    /** The smallest q whose plane is at or above v (v on the grid's axis range). */
+    static int gridUp(float v, float base, float step) {
+        if (step == 0) return Byte.MAX_VALUE;
+        int k = (int) Math.ceil(((double) v - base) / step);
+        k = Math.max(Byte.MIN_VALUE, Math.min(Byte.MAX_VALUE, k));
+        while (k < Byte.MAX_VALUE && decode(k, base, step) < v) k++;
+        if (decode(k, base, step) < v) throw new IllegalStateException("plane " + v + " above its node's grid");
+        return k;
+    }
+
     /** Builds the wide nodes depth-first from the binary ones. */
     private static final class Collapser {
         final int[] node;
@@ -259,35 +294,6 @@ public final class WideBvh implements Accelerator {
             q = new byte[PLANES * cap];
             frame = new float[6 * cap];
             child = new int[8 * cap];
-        }
-
-        /**
-         * The grid of one axis over [lo, hi]: a scale with 254 steps reaching past hi, and a base
-         * one step below lo, so that -128 decodes below lo and 127 above hi despite rounding.
-         */
-        private static float scale(float lo, float hi) {
-            float s = (float) (((double) hi - lo) / 253);
-            return s > 0 ? Math.nextUp(s) : 0;
-        }
-
-        /** The largest q whose plane is at or below v. */
-        private static int down(float v, float base, float scale) {
-            if (scale == 0) return Byte.MIN_VALUE;
-            int k = (int) Math.floor(((double) v - base) / scale);
-            k = Math.max(Byte.MIN_VALUE, Math.min(Byte.MAX_VALUE, k));
-            while (k > Byte.MIN_VALUE && decode(k, base, scale) > v) k--;
-            if (decode(k, base, scale) > v) throw new IllegalStateException("plane " + v + " below its node's grid");
-            return k;
-        }
-
-        /** The smallest q whose plane is at or above v. */
-        private static int up(float v, float base, float scale) {
-            if (scale == 0) return Byte.MAX_VALUE;
-            int k = (int) Math.ceil(((double) v - base) / scale);
-            k = Math.max(Byte.MIN_VALUE, Math.min(Byte.MAX_VALUE, k));
-            while (k < Byte.MAX_VALUE && decode(k, base, scale) < v) k++;
-            if (decode(k, base, scale) < v) throw new IllegalStateException("plane " + v + " above its node's grid");
-            return k;
         }
 
         private float area(int b) {
@@ -328,17 +334,14 @@ public final class WideBvh implements Accelerator {
             // The node's grid per axis spans its own box, b's (which holds all of its children).
             int o = PLANES * w;
             for (int a = 0; a < 3; a++) {
-                float lo = f(b, a), hi = f(b, 3 + a), sc = scale(lo, hi);
-                // With a zero scale every plane decodes to lo: the children are flat, all at lo.
-                float base = sc > 0 ? lo + 127 * sc : lo;
-                if (sc > 0 && decode(Byte.MIN_VALUE, base, sc) > lo) base = Math.nextDown(base);
+                float lo = f(b, a), hi = f(b, 3 + a), sc = gridStep(lo, hi), base = gridBase(lo, sc);
                 frame[6 * w + a] = base;
                 frame[6 * w + 3 + a] = sc;
                 for (int i = 0; i < 8; i++) {
                     int row = o + 16 * a + i;
                     if (i < k) {
-                        q[row] = (byte) down(f(kids[i], a), base, sc);
-                        q[row + 8] = (byte) up(f(kids[i], 3 + a), base, sc);
+                        q[row] = (byte) gridDown(f(kids[i], a), base, sc);
+                        q[row + 8] = (byte) gridUp(f(kids[i], 3 + a), base, sc);
                     } else {
                         q[row] = Byte.MAX_VALUE;
                         q[row + 8] = Byte.MIN_VALUE;

@@ -2,6 +2,8 @@ package lt.spindulys.cli;
 
 import java.util.concurrent.atomic.AtomicBoolean;
 
+import lt.spindulys.accel.AcceleratorKind;
+import lt.spindulys.accel.WideBvh;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
@@ -77,13 +79,15 @@ final class JitWarmup implements AutoCloseable {
 
     /**
      * Waits for the warm-up to finish its renders (at most a few tenths of a second) when the
-     * scene has meshes it exercises, and stops it otherwise. A short parse ends long before the
-     * warm-up, and a small mesh scene then rendered on a cold JVM: the 2k-triangle benchmark
-     * frame in 0.72-0.78 s instead of 0.17-0.21 s after a finished warm-up (whole process
-     * 1.0-1.1 s against 0.64-0.85 s); a scene of spheres gains nothing and would pay 0.25 s.
+     * scene's meshes will be walked with the wide vector tree, the code it compiles, and stops it
+     * otherwise. A short parse ends long before the warm-up, and a small mesh scene then rendered
+     * on a cold JVM: the 2k-triangle benchmark frame in 0.72-0.78 s instead of 0.17-0.21 s after a
+     * finished warm-up (whole process 1.0-1.1 s against 0.64-0.85 s); a scene of spheres, or one
+     * whose structure is another ({@code accel}, the scene's or the command line's), would pay
+     * up to 0.25 s for nothing.
      */
-    void finishFor(SceneBuilder scene) throws InterruptedException {
-        if (scene.objects().stream().noneMatch(JitWarmup::hasMesh)) {
+    void finishFor(SceneBuilder scene, AcceleratorKind accel) throws InterruptedException {
+        if (scene.objects().stream().noneMatch(JitWarmup::hasMesh) || accel != AcceleratorKind.BVH || !WideBvh.AVAILABLE) {
             close();
             return;
         }
@@ -91,9 +95,9 @@ final class JitWarmup implements AutoCloseable {
         close();
     }
 
-    /** Whether the warm-up thread has ended within {@code millis} (for tests). */
+    /** Whether the warm-up thread has ended within {@code millis}, 0 for now (for tests). */
     boolean ended(long millis) throws InterruptedException {
-        thread.join(millis);
+        if (millis > 0) thread.join(millis);
         return !thread.isAlive();
     }
 

@@ -135,7 +135,7 @@ final class RenderCommand {
         try (JitWarmup warmup = JitWarmup.start()) {
             builder = SceneParser.parse(scene);
             parsed = System.nanoTime();
-            warmup.finishFor(builder);
+            warmup.finishFor(builder, accel != null ? accel : builder.settings().accelerator());
             warmed = System.nanoTime();
         }
         RenderSettings s = builder.settings();

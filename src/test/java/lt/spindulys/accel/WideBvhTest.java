@@ -57,6 +57,34 @@ class WideBvhTest {
     }
 
     @Test
+    void theByteGridHoldsEveryPlaneOfItsRange() {
+        // Ranges of 0 to 600 ulps just below powers of two (where the ulp doubles), both signs,
+        // magnitudes 1e-12 to 1e12: the planes at lo, at hi and between round outward on the grid.
+        Random r = new Random(351);
+        for (int i = 0; i < 200_000; i++) {
+            float lo = (float) Math.scalb(r.nextBoolean() ? 1.0 : -1.0, r.nextInt(80) - 40);
+            for (int k = r.nextInt(300); k > 0; k--) lo = Math.nextDown(lo);
+            float hi = lo;
+            for (int k = r.nextInt(3) == 0 ? r.nextInt(4) : r.nextInt(600); k > 0; k--) hi = Math.nextUp(hi);
+            float step = WideBvh.gridStep(lo, hi), base = WideBvh.gridBase(lo, step);
+            float mid = lo + (hi - lo) * r.nextFloat();
+            for (float v : new float[] {lo, hi, Math.max(lo, Math.min(hi, mid))}) {
+                String what = "v " + v + " in [" + lo + ", " + hi + "]";
+                assertTrue(WideBvh.decode(WideBvh.gridDown(v, base, step), base, step) <= v, what);
+                assertTrue(WideBvh.decode(WideBvh.gridUp(v, base, step), base, step) >= v, what);
+            }
+        }
+    }
+
+    @Test
+    void agreesWithBruteForceForNodesOnlyAFewUlpsWide() {
+        // A cluster 0.01 wide at 1e5, where floats are 0.0078 apart: node boxes one or two ulps
+        // wide on an axis, finer than any grid of 254 steps can be laid in float over them.
+        TriangleMesh m = soupMesh(341, 300, 0.01, 1e5, 1e5, 1e5);
+        BvhTest.compare(m, wide(m), BvhTest.around(m), 20_000, 342);
+    }
+
+    @Test
     void agreesWithBruteForceOnATinyMeshAndOnSlabPlanes() {
         // Coordinates of 1e-6 and faces exactly on box planes, hit by axis-parallel rays.
         TriangleMesh tiny = soupMesh(311, 300, 1e-6, 0, 0, 0);
