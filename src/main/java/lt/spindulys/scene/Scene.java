@@ -50,9 +50,12 @@ public final class Scene {
         }
         bounded = b.toArray(new GObject[0]);
         unbounded = u.toArray(new GObject[0]);
-        // A handful of objects fit in one leaf anyway; testing them directly is as fast.
+        // A handful of objects get a tree with one object per leaf, so that a ray is tested
+        // against each object's box before it enters the object (a mesh's own structure costs
+        // more to enter than a box test: 1.02x the speed on the 1m peer scene, alternated runs).
         ObjectSet set = new ObjectSet(bounded);
-        accel = bounded.length > Bvh.DEFAULT_LEAF_SIZE ? settings.accelerator().build(set) : new BruteForce(set);
+        accel = bounded.length > Bvh.DEFAULT_LEAF_SIZE ? settings.accelerator().build(set)
+                : bounded.length > 1 ? new Bvh(set, 1) : new BruteForce(set);
     }
 
     public RenderSettings settings() { return settings; }
