@@ -222,12 +222,21 @@ public abstract class GObject {
      * normals (flipped if the hit says so), uv and derivatives, material.
      */
     public void shade(Ray ray, Hit hit, ShadingData sd) {
+        shade(ray, hit, sd, false);
+    }
+
+    /**
+     * As {@link #shade(Ray, Hit, ShadingData)}, with uv and derivatives computed also for an
+     * untextured material when {@code parameters} is true (for tools that show them).
+     */
+    public void shade(Ray ray, Hit hit, ShadingData sd, boolean parameters) {
         sd.p[0] = ray.pointX(hit.t);
         sd.p[1] = ray.pointY(hit.t);
         sd.p[2] = ray.pointZ(hit.t);
         sd.object = this;
         sd.prim = hit.prim;
         sd.material = hit.material != null ? hit.material : material;
+        sd.needsParameters = parameters || sd.material.isTextured();
         // Object-space point, for the shape's own parametrisation.
         double[] q = sd.dpdu; // scratch; shadeLocal overwrites it
         // A moving object is shaded through its transform at the ray's time, evaluated into the shading scratch.
@@ -240,11 +249,13 @@ public abstract class GObject {
         double lx = q[0], ly = q[1], lz = q[2];
         sd.pObject[0] = lx; sd.pObject[1] = ly; sd.pObject[2] = lz;
         shadeLocal(lx, ly, lz, hit, sd);
-        System.arraycopy(sd.dpdu, 0, sd.dpduObject, 0, 3);
-        System.arraycopy(sd.dpdv, 0, sd.dpdvObject, 0, 3);
-        if (!map.isIdentity()) {
-            map.vectorInPlace(sd.dpdu, 0);
-            map.vectorInPlace(sd.dpdv, 0);
+        if (sd.needsParameters) {
+            System.arraycopy(sd.dpdu, 0, sd.dpduObject, 0, 3);
+            System.arraycopy(sd.dpdv, 0, sd.dpdvObject, 0, 3);
+            if (!map.isIdentity()) {
+                map.vectorInPlace(sd.dpdu, 0);
+                map.vectorInPlace(sd.dpdv, 0);
+            }
         }
         map.normalInPlace(sd.ng, 0);
         map.normalInPlace(sd.ns, 0);
@@ -263,7 +274,8 @@ public abstract class GObject {
 
     /**
      * Shading data in object space at object-space point (x, y, z): normals (outward,
-     * unnormalised is fine: they are normalised after transforming), uv, dpdu, dpdv.
+     * unnormalised is fine: they are normalised after transforming), and uv, dpdu, dpdv, which
+     * may be skipped when {@link ShadingData#needsParameters} is false.
      */
     protected abstract void shadeLocal(double x, double y, double z, Hit hit, ShadingData sd);
 

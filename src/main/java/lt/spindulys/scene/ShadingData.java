@@ -24,6 +24,14 @@ public final class ShadingData {
     public final double[] dpdvObject = new double[3];
     /** Surface texture coordinates. */
     public double u, v;
+    /**
+     * Whether uv, dpdu and dpdv (and their object-space copies) are needed: the material is
+     * textured, or the caller asked for them ({@link GObject#shade(lt.spindulys.math.Ray, Hit,
+     * ShadingData, boolean)}). When false a shape may skip computing them and they hold no
+     * meaning: an untextured mesh hit then reads none of the mesh's texture-coordinate arrays,
+     * which at 2M triangles are cache misses (1.07x the speed on the 1m peer scene).
+     */
+    public boolean needsParameters;
     public Material material;
     public GObject object;
     public int prim;

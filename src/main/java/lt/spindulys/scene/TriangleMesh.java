@@ -427,6 +427,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
             }
         }
         sd.ns[0] = sx; sd.ns[1] = sy; sd.ns[2] = sz;
+        if (!sd.needsParameters) return;
 
         if (triUv != null && triUv[i3] >= 0) {
             int ta = 2 * triUv[i3], tb = 2 * triUv[i3 + 1], tc = 2 * triUv[i3 + 2];

@@ -30,9 +30,10 @@ final class ShapeTestSupport {
         return o.intersect(r, h, new TraceContext()) ? h : null;
     }
 
+    /** Shading data with uv and derivatives whatever the material. */
     static ShadingData shade(GObject o, Ray r, Hit h) {
         ShadingData sd = new ShadingData();
-        o.shade(r, h, sd);
+        o.shade(r, h, sd, true);
         return sd;
     }
 

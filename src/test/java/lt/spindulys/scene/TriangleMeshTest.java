@@ -13,12 +13,23 @@ import lt.spindulys.io.ObjReader;
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
+import lt.spindulys.texture.Channel;
+import lt.spindulys.texture.Uv;
 
 class TriangleMeshTest {
     private static final double EPS = 1e-12;
 
     private static TriangleMesh frozen(TriangleMesh m) {
         m.freeze(Transform.IDENTITY, Material.DEFAULT, 0);
+        return m;
+    }
+
+    /** Textured, so shading computes uv and derivatives (untextured hits may skip them). */
+    private static final Material TEXTURED = Material.builder().name("textured")
+            .texture(Channel.DIFFUSE, (p, rgb) -> { rgb[0] = rgb[1] = rgb[2] = 1; }, new Uv(1, 1)).build();
+
+    private static TriangleMesh frozenTextured(TriangleMesh m) {
+        m.freeze(Transform.IDENTITY, TEXTURED, 0);
         return m;
     }
 
@@ -47,7 +58,7 @@ class TriangleMeshTest {
 
     @Test
     void hitAndShadeAKnownQuad() {
-        TriangleMesh m = frozen(obj(QUAD));
+        TriangleMesh m = frozenTextured(obj(QUAD));
         assertEquals(2, m.triangleCount());
         assertEquals(new Bounds(0, 0, 0, 2, 1, 0), m.localBounds());
         assertFalse(m.isSmooth());
@@ -89,8 +100,25 @@ class TriangleMeshTest {
     }
 
     @Test
+    void anUntexturedHitGetsItsPointAndNormalsButNoParameters() {
+        TriangleMesh m = frozen(obj(QUAD));
+        Ray r = new Ray().set(1.5, 0.25, 3, 0, 0, -2, 0, Double.POSITIVE_INFINITY);
+        Hit h = new Hit().reset(r.tMax);
+        assertTrue(m.intersect(r, h, new TraceContext()));
+        ShadingData sd = new ShadingData();
+        sd.u = sd.v = -7; // left as they were: the uv arrays are not read
+        m.shade(r, h, sd);
+        assertFalse(sd.needsParameters);
+        assertVec(1.5, 0.25, 0, sd.p);
+        assertVec(0, 0, 1, sd.ng);
+        assertVec(0, 0, 1, sd.ns);
+        assertEquals(-7, sd.u);
+        assertEquals(-7, sd.v);
+    }
+
+    @Test
     void withoutTextureCoordinatesUvAreTheBarycentricsAndDerivativesTheEdges() {
-        TriangleMesh m = frozen(obj("v 0 0 0\nv 2 0 0\nv 0 3 0\nf 1 2 3\n"));
+        TriangleMesh m = frozenTextured(obj("v 0 0 0\nv 2 0 0\nv 0 3 0\nf 1 2 3\n"));
         Ray r = new Ray().set(0.5, 1.5, 1, 0, 0, -1, 0, Double.POSITIVE_INFINITY);
         Hit h = new Hit().reset(r.tMax);
         assertTrue(m.intersect(r, h, new TraceContext()));
