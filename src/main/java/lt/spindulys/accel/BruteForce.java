@@ -10,26 +10,18 @@ public final class BruteForce implements Accelerator {
 
     public BruteForce(PrimitiveSet set) { this.set = set; }
 
+    // One range call, so a set with a batched test (a mesh's triangles) reads its per-ray constants once.
     @Override
     public boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
         double saved = ray.tMax;
-        boolean any = false;
-        for (int i = 0, n = set.size(); i < n; i++) {
-            if (set.intersect(i, ray, hit, ctx)) {
-                any = true;
-                ray.tMax = hit.t;
-            }
-        }
+        boolean any = set.intersectRange(null, 0, set.size(), ray, hit, ctx);
         ray.tMax = saved;
         return any;
     }
 
     @Override
     public boolean occluded(Ray ray, TraceContext ctx) {
-        for (int i = 0, n = set.size(); i < n; i++) {
-            if (set.occluded(i, ray, ctx)) return true;
-        }
-        return false;
+        return set.occludedRange(null, 0, set.size(), ray, ctx);
     }
 
     @Override

@@ -31,14 +31,15 @@ public interface PrimitiveSet {
     default boolean reorder(int[] order) { return false; }
 
     /**
-     * Nearest-hit test of the primitives {@code prims[from..to)} (a structure's leaf), shrinking
+     * Nearest-hit test of the primitives {@code prims[from..to)} (a structure's leaf; with
+     * {@code prims} null, the primitives from..to themselves), shrinking
      * ray.tMax to each hit found; true if any was. A set overrides this to hoist its per-ray
      * work out of the loop.
      */
     default boolean intersectRange(int[] prims, int from, int to, Ray ray, Hit hit, TraceContext ctx) {
         boolean any = false;
         for (int k = from; k < to; k++) {
-            if (intersect(prims[k], ray, hit, ctx)) {
+            if (intersect(prims == null ? k : prims[k], ray, hit, ctx)) {
                 any = true;
                 ray.tMax = hit.t;
             }
@@ -46,9 +47,9 @@ public interface PrimitiveSet {
         return any;
     }
 
-    /** Any-hit test of the primitives {@code prims[from..to)}; stops at the first one found. */
+    /** Any-hit test of the primitives {@code prims[from..to)} (from..to with prims null); stops at the first one found. */
     default boolean occludedRange(int[] prims, int from, int to, Ray ray, TraceContext ctx) {
-        for (int k = from; k < to; k++) if (occluded(prims[k], ray, ctx)) return true;
+        for (int k = from; k < to; k++) if (occluded(prims == null ? k : prims[k], ray, ctx)) return true;
         return false;
     }
 }

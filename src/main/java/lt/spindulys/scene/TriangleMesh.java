@@ -4,6 +4,7 @@ import java.util.Arrays;
 
 import lt.spindulys.accel.Accelerator;
 import lt.spindulys.accel.AcceleratorKind;
+import lt.spindulys.accel.BruteForce;
 import lt.spindulys.accel.Bvh;
 import lt.spindulys.accel.PrimitiveSet;
 import lt.spindulys.math.Bounds;
@@ -172,7 +173,9 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     private Accelerator structure(AcceleratorKind kind) {
         Accelerator a = structures.get(kind);
         if (a == null) {
-            a = kind.build(this);
+            // A mesh that fits in one leaf is tested directly: the object's box is tested above
+            // it, and a tree would only add its own entry and box (the peer scene's ground).
+            a = triangleCount <= Bvh.DEFAULT_LEAF_SIZE ? new BruteForce(this) : kind.build(this);
             structures.put(kind, a);
         }
         return a;
