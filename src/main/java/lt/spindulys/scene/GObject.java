@@ -245,7 +245,8 @@ public abstract class GObject {
             moving.evaluate(ray.time, sd.placementAtTime);
             map = sd.placementAtTime;
         }
-        map.toLocalPoint(sd.p, q);
+        if (map.isIdentity()) System.arraycopy(sd.p, 0, q, 0, 3);
+        else map.toLocalPoint(sd.p, q);
         double lx = q[0], ly = q[1], lz = q[2];
         sd.pObject[0] = lx; sd.pObject[1] = ly; sd.pObject[2] = lz;
         shadeLocal(lx, ly, lz, hit, sd);
@@ -257,8 +258,12 @@ public abstract class GObject {
                 map.vectorInPlace(sd.dpdv, 0);
             }
         }
-        map.normalInPlace(sd.ng, 0);
-        map.normalInPlace(sd.ns, 0);
+        double[] ng = sd.ng, ns = sd.ns;
+        boolean same = ns[0] == ng[0] && ns[1] == ng[1] && ns[2] == ng[2];
+        map.normalInPlace(ng, 0);
+        // A flat surface's shading normal is its geometric one: the same result, without a second square root.
+        if (same) System.arraycopy(ng, 0, ns, 0, 3);
+        else map.normalInPlace(ns, 0);
         if (hit.flipNormal) sd.flipNormals();
     }
 
