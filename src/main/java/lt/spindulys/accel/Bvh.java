@@ -254,8 +254,15 @@ public final class Bvh implements Accelerator {
      */
     private double entry(int n, double ox, double oy, double oz, double ix, double iy, double iz,
                          int xn, int yn, int zn, double tMin, double tMax) {
-        final int[] b = node;
-        final int o = 8 * n;
+        return slabEntry(node, 8 * n, ox, oy, oz, ix, iy, iz, xn, yn, zn, tMin, tMax);
+    }
+
+    /**
+     * The slab test of {@link #entry} for the box whose six floats' bits (min x, y, z, max x, y,
+     * z) start at {@code b[o]}; shared with {@link BoxList}.
+     */
+    static double slabEntry(int[] b, int o, double ox, double oy, double oz, double ix, double iy, double iz,
+                            int xn, int yn, int zn, double tMin, double tMax) {
         double near = Double.NEGATIVE_INFINITY, far = Double.POSITIVE_INFINITY;
         double t0 = (Float.intBitsToFloat(b[o + xn]) - ox) * ix;
         double t1 = (Float.intBitsToFloat(b[o + 3 - xn]) - ox) * ix;
