@@ -707,7 +707,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
             final double bx = pos[b + kx] - okx - sx * bz, by = pos[b + ky] - oky - sy * bz;
             final double cx = pos[c + kx] - okx - sx * cz, cy = pos[c + ky] - oky - sy * cz;
             final double u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
-            if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) continue;
+            if (Math.min(u, Math.min(v, w)) < 0 && Math.max(u, Math.max(v, w)) > 0) continue; // signs differ: outside
             final double det = u + v + w;
             if (det == 0) continue;
             final double t = (u * (sz * az) + v * (sz * bz) + w * (sz * cz)) / det;
