@@ -219,7 +219,8 @@ public abstract class GObject {
 
     /**
      * Fills {@code sd} for {@code hit} (found on {@code ray} by this object): world point, outward
-     * normals (flipped if the hit says so), uv and derivatives, material.
+     * normals (flipped if the hit says so), material, and uv and derivatives if the material is
+     * textured ({@link ShadingData#needsParameters}).
      */
     public void shade(Ray ray, Hit hit, ShadingData sd) {
         shade(ray, hit, sd, false);
