@@ -36,10 +36,11 @@ public final class BoxList implements Accelerator {
         ctx.direction(ray);
         // Read once: an object entered below may leave its own (transformed) ray's constants in ctx.
         final double ix = ctx.invX, iy = ctx.invY, iz = ctx.invZ;
+        final int xn = ix < 0 ? 3 : 0, yn = iy < 0 ? 3 : 0, zn = iz < 0 ? 3 : 0;
         final double saved = ray.tMax;
         boolean any = false;
         for (int i = 0; i < count; i++) {
-            if (crosses(i, ray, ix, iy, iz) && set.intersect(i, ray, hit, ctx)) {
+            if (crosses(i, ray, ix, iy, iz, xn, yn, zn) && set.intersect(i, ray, hit, ctx)) {
                 any = true;
                 ray.tMax = hit.t;
             }
@@ -52,7 +53,8 @@ public final class BoxList implements Accelerator {
     public boolean occluded(Ray ray, TraceContext ctx) {
         ctx.direction(ray);
         final double ix = ctx.invX, iy = ctx.invY, iz = ctx.invZ;
-        for (int i = 0; i < count; i++) if (crosses(i, ray, ix, iy, iz) && set.occluded(i, ray, ctx)) return true;
+        final int xn = ix < 0 ? 3 : 0, yn = iy < 0 ? 3 : 0, zn = iz < 0 ? 3 : 0;
+        for (int i = 0; i < count; i++) if (crosses(i, ray, ix, iy, iz, xn, yn, zn) && set.occluded(i, ray, ctx)) return true;
         return false;
     }
 
@@ -60,13 +62,16 @@ public final class BoxList implements Accelerator {
     public void visit(Ray ray, TraceContext ctx, Bvh.Visitor visitor) {
         ctx.direction(ray);
         final double ix = ctx.invX, iy = ctx.invY, iz = ctx.invZ;
-        for (int i = 0; i < count; i++) if (crosses(i, ray, ix, iy, iz)) visitor.visit(i, ray, ctx);
+        final int xn = ix < 0 ? 3 : 0, yn = iy < 0 ? 3 : 0, zn = iz < 0 ? 3 : 0;
+        for (int i = 0; i < count; i++) if (crosses(i, ray, ix, iy, iz, xn, yn, zn)) visitor.visit(i, ray, ctx);
     }
 
-    /** Whether the ray, with inverse direction (ix, iy, iz), crosses box i within [tMin, tMax]. */
-    private boolean crosses(int i, Ray ray, double ix, double iy, double iz) {
-        return !Double.isNaN(Bvh.slabEntry(box, 6 * i, ray.ox, ray.oy, ray.oz, ix, iy, iz,
-                ix < 0 ? 3 : 0, iy < 0 ? 3 : 0, iz < 0 ? 3 : 0, ray.tMin, ray.tMax));
+    /**
+     * Whether the ray, with inverse direction (ix, iy, iz) and near planes xn, yn, zn (3 where
+     * that component is negative: the box's max is met first), crosses box i within [tMin, tMax].
+     */
+    private boolean crosses(int i, Ray ray, double ix, double iy, double iz, int xn, int yn, int zn) {
+        return !Double.isNaN(Bvh.slabEntry(box, 6 * i, ray.ox, ray.oy, ray.oz, ix, iy, iz, xn, yn, zn, ray.tMin, ray.tMax));
     }
 
     @Override

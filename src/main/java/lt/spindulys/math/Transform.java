@@ -88,7 +88,10 @@ public final class Transform implements ObjectMapping {
     public void toLocal(Ray world, Ray local) { toLocal(inv, world, local); }
 
     /** Writes the point {@code world[0..2]} mapped into object space (the inverse) to {@code local[0..2]}. */
-    @Override public void toLocalPoint(double[] world, double[] local) { toLocalPoint(inv, world, local); }
+    @Override public void toLocalPoint(double[] world, double[] local) {
+        if (identity) System.arraycopy(world, 0, local, 0, 3); // the point itself, without twelve products
+        else toLocalPoint(inv, world, local);
+    }
 
     /** Maps the vector {@code v[off..off+2]} in place from object to world space. */
     @Override public void vectorInPlace(double[] v, int off) { vectorInPlace(m, v, off); }

@@ -246,8 +246,7 @@ public abstract class GObject {
             moving.evaluate(ray.time, sd.placementAtTime);
             map = sd.placementAtTime;
         }
-        if (map.isIdentity()) System.arraycopy(sd.p, 0, q, 0, 3);
-        else map.toLocalPoint(sd.p, q);
+        map.toLocalPoint(sd.p, q);
         double lx = q[0], ly = q[1], lz = q[2];
         sd.pObject[0] = lx; sd.pObject[1] = ly; sd.pObject[2] = lz;
         shadeLocal(lx, ly, lz, hit, sd);
