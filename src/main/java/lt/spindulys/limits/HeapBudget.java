@@ -1,0 +1,79 @@
+package lt.spindulys.limits;
+
+import java.util.Locale;
+
+/**
+ * The heap as a budget: every allocation whose size comes from input (counts in file headers,
+ * image dimensions, subdivision levels, the frame size) is checked here before it is made, and
+ * refused with a one-line {@link InsufficientMemoryException} saying how much it needs and how
+ * much there is. The caller adds the location (file:line:column or the object) it knows.
+ *
+ * <p>What the heap can still give is {@code Runtime.maxMemory()} less what is in use. Garbage not
+ * yet collected counts as in use, so a check that would fail first asks for a collection and looks
+ * again; a check that passes costs nothing. A headroom is kept back for everything the caller did
+ * not count (structures built later, the other threads' scratch), so an estimate that is a little
+ * low does not end in OutOfMemoryError.
+ */
+public final class HeapBudget {
+    private HeapBudget() {}
+
+    /** Heap kept back from every check: an eighth of the maximum heap, at most this many bytes. */
+    static final long MAX_HEADROOM = 64L << 20;
+
+    /** Bytes the heap can still give without a collection (a lower bound: garbage counts as used). */
+    public static long available() {
+        Runtime r = Runtime.getRuntime();
+        return r.maxMemory() - (r.totalMemory() - r.freeMemory());
+    }
+
+    /** The heap kept back from every check. */
+    static long headroom() {
+        return Math.min(MAX_HEADROOM, Runtime.getRuntime().maxMemory() / 8);
+    }
+
+    /**
+     * Checks that {@code bytes} more can be allocated, keeping the headroom.
+     *
+     * @param what the thing that needs it, as a noun phrase that starts the message
+     *             ("the 8192x8192 texture", "subdivision level 8 of this mesh")
+     * @throws InsufficientMemoryException "WHAT needs 1.2 GiB of heap, but only 300 MiB is free
+     *         (raise the limit with -Xmx, ...)"
+     */
+    public static void require(long bytes, String what) {
+        if (fits(bytes)) return;
+        // Garbage counts as used until it is collected: look again after a collection before refusing.
+        System.gc();
+        if (fits(bytes)) return;
+        throw new InsufficientMemoryException(what, bytes, Math.max(0, available() - headroom()));
+    }
+
+    /** True if {@code bytes} more fit now, with the headroom kept back; never collects. */
+    public static boolean fits(long bytes) {
+        return bytes >= 0 && bytes <= available() - headroom();
+    }
+
+    /** Product of non-negative factors, saturating at Long.MAX_VALUE instead of overflowing. */
+    public static long product(long... factors) {
+        long p = 1;
+        for (long f : factors) {
+            if (f < 0) throw new IllegalArgumentException("negative size factor " + f);
+            if (f != 0 && p > Long.MAX_VALUE / f) return Long.MAX_VALUE;
+            p *= f;
+        }
+        return p;
+    }
+
+    /** "512 bytes", "3.2 MiB", "1.5 GiB": a size for a message. */
+    public static String format(long bytes) {
+        if (bytes == Long.MAX_VALUE) return "more than 8 EiB";
+        if (bytes < 1024) return bytes + " bytes";
+        String[] units = {"KiB", "MiB", "GiB", "TiB", "PiB", "EiB"};
+        double v = bytes;
+        int u = -1;
+        while (v >= 1024 && u < units.length - 1) {
+            v /= 1024;
+            u++;
+        }
+        return String.format(Locale.ROOT, v < 10 ? "%.1f %s" : "%.0f %s", v, units[u]);
+    }
+}
