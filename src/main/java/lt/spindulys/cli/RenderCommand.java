@@ -5,7 +5,6 @@ import java.io.PrintStream;
 import java.lang.management.ManagementFactory;
 import java.lang.management.MemoryPoolMXBean;
 import java.lang.management.MemoryType;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.Set;
@@ -18,6 +17,7 @@ import lt.spindulys.image.Aov;
 import lt.spindulys.image.ImageOptions;
 import lt.spindulys.image.ImageWriter;
 import lt.spindulys.io.SceneParser;
+import lt.spindulys.limits.InputFiles;
 import lt.spindulys.render.ProgressListener;
 import lt.spindulys.render.RenderStats;
 import lt.spindulys.render.Renderer;
@@ -122,7 +122,9 @@ final class RenderCommand {
 
     /** Runs the command; returns the exit status. Bad input surfaces as exceptions handled by {@link Main}. */
     int run(PrintStream out, PrintStream err) throws IOException, InterruptedException, UsageException {
-        if (!Files.isRegularFile(scene)) throw new NoSuchFileException(scene);
+        // Refused before anything is opened: a pipe would block, a device never end.
+        String problem = InputFiles.problem(scene);
+        if (problem != null) throw new NoSuchFileException(scene, problem);
         try {
             ImageWriter.checkOutput(output); // fail before rendering, not after
         } catch (IOException e) {
@@ -307,5 +309,8 @@ final class RenderCommand {
     /** The scene file is missing: bad input, reported like the parser's errors. */
     static final class NoSuchFileException extends IOException {
         NoSuchFileException(Path p) { super(p + ": scene file not found"); }
+
+        /** The scene path is not a regular file: {@code problem} as {@link InputFiles#problem} says it. */
+        NoSuchFileException(Path p, String problem) { super(p + ": scene file " + problem); }
     }
 }

@@ -70,7 +70,7 @@ final class SubdivideCommand {
     /** Runs the command; returns the exit status. Bad input surfaces as exceptions handled by {@link Main}. */
     int run(PrintStream out, PrintStream err) throws IOException, UsageException {
         try {
-            AtomicFile.checkTarget(output); // fail before the work, not after
+            AtomicFile.checkWritable(output); // fail before the work, not after
         } catch (IOException e) {
             throw new UsageException(e.getMessage());
         }

@@ -63,11 +63,12 @@ public final class ImageWriter {
 
     /**
      * {@link #checkFormat} plus the checks {@link #writeAtomically} makes before writing: the
-     * parent directory exists and {@code out} is not a directory. Writes nothing.
+     * parent directory exists, {@code out} is not a directory, and a file can be created there
+     * ({@link AtomicFile#checkWritable}: a trial file is created and deleted). Leaves nothing.
      */
     public static ImageFormat checkOutput(Path out) throws IOException {
         ImageFormat format = checkFormat(out);
-        AtomicFile.checkTarget(out);
+        AtomicFile.checkWritable(out);
         return format;
     }
 
@@ -131,11 +132,11 @@ public final class ImageWriter {
 
     /**
      * {@link #checkOutput} for {@code out} and for the file of each pass in {@code aovs} beside
-     * it. Writes nothing.
+     * it. Leaves nothing.
      */
     public static void checkOutputs(Path out, Set<Aov> aovs) throws IOException {
         checkOutput(out);
-        for (Aov a : aovs) AtomicFile.checkTarget(a.fileBeside(out));
+        for (Aov a : aovs) AtomicFile.checkWritable(a.fileBeside(out));
     }
 
     /**

@@ -220,6 +220,42 @@ public final class AtomicFile {
         return dir;
     }
 
+    /**
+     * {@link #checkTarget} and a trial: a temporary file is created beside {@code out} and deleted
+     * again, so an output the system will not let us create (a read-only or pseudo file system,
+     * a folder without write permission) is found before the work that would fill it, not after.
+     * Leaves no file behind.
+     *
+     * @throws IOException "cannot write 'OUT': cannot create a file in 'DIR': permission denied"
+     */
+    public static void checkWritable(Path out) throws IOException {
+        Path dir = checkTarget(out);
+        Path shown = out.getParent() != null ? out.getParent() : dir;
+        String name = out.toAbsolutePath().getFileName().toString();
+        for (int attempt = 0; ; attempt++) {
+            Path probe = hiddenSibling(dir, name, ".tmp");
+            try {
+                FileChannel.open(probe, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE).close();
+            } catch (FileAlreadyExistsException e) {
+                if (attempt < 20) continue;
+                throw new IOException("cannot write '" + out + "': cannot create a file in '" + shown + "': " + reason(e), e);
+            } catch (IOException | SecurityException e) {
+                throw new IOException("cannot write '" + out + "': cannot create a file in '" + shown + "': " + reason(e), e);
+            }
+            Files.deleteIfExists(probe);
+            return;
+        }
+    }
+
+    /** The system's reason for a failed file operation, as words rather than an exception's name. */
+    private static String reason(Exception e) {
+        if (e instanceof java.nio.file.AccessDeniedException) return "permission denied";
+        if (e instanceof java.nio.file.NoSuchFileException) return "the file system does not accept new files there";
+        if (e instanceof FileSystemException f && f.getReason() != null) return f.getReason();
+        String m = e.getMessage();
+        return m == null || m.isBlank() ? e.getClass().getSimpleName() : m;
+    }
+
     /** A replaced file keeps its POSIX permissions, as it would if it were overwritten in place. */
     private static void keepPermissions(Path target, Path tmp) {
         try {

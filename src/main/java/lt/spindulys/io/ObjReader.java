@@ -2,7 +2,6 @@ package lt.spindulys.io;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -11,6 +10,8 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 
+import lt.spindulys.limits.InputFiles;
+import lt.spindulys.limits.InsufficientMemoryException;
 import lt.spindulys.scene.MeshData;
 import lt.spindulys.subdiv.SubdivInput;
 import lt.spindulys.subdiv.SubdivOptions;
@@ -63,8 +64,16 @@ public final class ObjReader {
 
     private static byte[] readBytes(Path file) throws IOException {
         String name = file.toString();
+        // A pipe would block and a device never end: only regular files are opened.
+        String problem = InputFiles.problem(file);
+        if (problem != null) {
+            throw new SceneException(name, 0, 0, "OBJ file " + problem + " (looked in " + file.toAbsolutePath().normalize() + ")");
+        }
         try {
-            return Files.readAllBytes(file);
+            // The parser works on the bytes in place; what it builds is checked as it grows.
+            return InputFiles.readAllBytes(file, "OBJ file", 1);
+        } catch (InsufficientMemoryException e) {
+            throw new SceneException(name, 0, 0, e.getMessage(), e);
         } catch (NoSuchFileException e) {
             throw new SceneException(name, 0, 0, "OBJ file not found (looked in " + file.toAbsolutePath().normalize() + ")");
         } catch (IOException e) {

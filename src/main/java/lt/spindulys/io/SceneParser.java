@@ -7,7 +7,6 @@ import java.nio.charset.CharsetDecoder;
 import java.nio.charset.CoderResult;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -29,6 +28,7 @@ import lt.spindulys.io.SceneGrammar.Block;
 import lt.spindulys.io.SceneGrammar.Key;
 import lt.spindulys.io.SceneLexer.Kind;
 import lt.spindulys.io.SceneLexer.Token;
+import lt.spindulys.limits.InputFiles;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Motion;
 import lt.spindulys.math.Transform;
@@ -110,7 +110,17 @@ public final class SceneParser {
      */
     public static SceneBuilder parse(Path file) throws IOException {
         String name = file.toString();
-        String text = decodeUtf8(Files.readAllBytes(file), name);
+        // A pipe would block and a device never end: refused before anything is opened.
+        String problem = InputFiles.problem(file);
+        if (problem != null) throw new SceneException(name, 0, 0, "scene file " + problem);
+        byte[] bytes;
+        try {
+            // Decoding holds the bytes, the chars (2 bytes each) and the String's copy at once.
+            bytes = InputFiles.readAllBytes(file, "scene file", 5);
+        } catch (IllegalArgumentException e) {
+            throw new SceneException(name, 0, 0, e.getMessage(), e);
+        }
+        String text = decodeUtf8(bytes, name);
         return parse(text, name, file.toAbsolutePath().getParent());
     }
 
@@ -523,7 +533,8 @@ public final class SceneParser {
             throw error(f.valueAt, "mesh file name '" + rel + "' is not a valid path: " + e.getReason());
         }
         // Checked here rather than left to the reader so the message points into the scene file.
-        if (!Files.isRegularFile(path)) throw error(f.valueAt, "mesh file '" + rel + "' not found (looked in " + path + ")");
+        String problem = InputFiles.problem(path);
+        if (problem != null) throw error(f.valueAt, "mesh file '" + rel + "' " + problem + " (looked in " + path + ")");
         TriangleMesh first = meshes.get(path);
         if (first != null) {
             // The same file again: another placement of the same geometry, read and indexed once.
@@ -668,7 +679,8 @@ public final class SceneParser {
         } catch (InvalidPathException e) {
             throw error(f.valueAt, what + " name '" + rel + "' is not a valid path: " + e.getReason());
         }
-        if (!Files.isRegularFile(path)) throw error(f.valueAt, what + " '" + rel + "' not found (looked in " + path + ")");
+        String problem = InputFiles.problem(path);
+        if (problem != null) throw error(f.valueAt, what + " '" + rel + "' " + problem + " (looked in " + path + ")");
         return path;
     }
 

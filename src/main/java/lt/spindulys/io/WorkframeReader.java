@@ -3,13 +3,14 @@ package lt.spindulys.io;
 import java.io.IOException;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.regex.Pattern;
 
+import lt.spindulys.limits.InputFiles;
+import lt.spindulys.limits.InsufficientMemoryException;
 import lt.spindulys.scene.MeshData;
 
 /**
@@ -160,8 +161,16 @@ public final class WorkframeReader {
     private static String readText(Path file, String what) throws IOException {
         String name = file.toString();
         byte[] bytes;
+        // A pipe would block and a device never end: only regular files are opened.
+        String problem = InputFiles.problem(file);
+        if (problem != null) {
+            throw new SceneException(name, 0, 0, what + " file " + problem + " (looked in " + file.toAbsolutePath().normalize() + ")");
+        }
         try {
-            bytes = Files.readAllBytes(file);
+            // Decoding to a String holds the bytes and two bytes per char at once.
+            bytes = InputFiles.readAllBytes(file, what + " file", 3);
+        } catch (InsufficientMemoryException e) {
+            throw new SceneException(name, 0, 0, e.getMessage(), e);
         } catch (NoSuchFileException e) {
             throw new SceneException(name, 0, 0, what + " file not found (looked in " + file.toAbsolutePath().normalize() + ")");
         } catch (IOException e) {

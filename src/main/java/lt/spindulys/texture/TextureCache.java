@@ -15,6 +15,8 @@ import javax.imageio.ImageIO;
 import javax.imageio.ImageReader;
 import javax.imageio.stream.ImageInputStream;
 
+import lt.spindulys.limits.InputFiles;
+
 /**
  * Loads texture images, each file once: one cache per scene parse maps the normalised absolute
  * path to its {@link TextureImage}, so every object naming the same file shares one instance
@@ -90,8 +92,9 @@ public final class TextureCache {
     }
 
     private static TextureImage decode(Path file) throws IOException {
-        if (!Files.exists(file)) throw new NoSuchFileException(file.toString());
-        if (Files.isDirectory(file)) throw new IOException("is a directory, not an image");
+        // A pipe would block the decoder and a device never end: only regular files are opened.
+        String problem = InputFiles.problem(file);
+        if (problem != null) throw problem.equals("not found") ? new NoSuchFileException(file.toString()) : new IOException(problem);
         if (!Files.isReadable(file)) throw new IOException("file is not readable");
         String name = file.getFileName() == null ? "" : file.getFileName().toString().toLowerCase(Locale.ROOT);
         if (name.endsWith(".tga")) {

@@ -7,6 +7,8 @@ import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
+import lt.spindulys.limits.InputFiles;
+
 /**
  * Reads Truevision TGA images: types 2 and 10 (uncompressed and run-length encoded true colour,
  * 24 or 32 bits per pixel; alpha is ignored) and types 3 and 11 (uncompressed and RLE 8-bit
@@ -30,6 +32,9 @@ public final class TgaReader {
 
     /** Reads the TGA file at {@code file}. */
     public static Image read(Path file) throws IOException {
+        // A pipe would block and a device never end: only regular files are opened.
+        String problem = InputFiles.problem(file);
+        if (problem != null) throw new IOException(file + " " + problem);
         try (InputStream in = Files.newInputStream(file)) {
             return read(in);
         }
