@@ -1,5 +1,6 @@
 package lt.spindulys.camera;
 
+import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
 
@@ -16,7 +17,7 @@ public final class PinholeCamera implements Camera {
     final double rx, ry, rz, ux, uy, uz, fx, fy, fz, tanHalf;
 
     public PinholeCamera(Vec3 eye, Vec3 lookAt, Vec3 up, double fovDegrees) {
-        if (!eye.isFinite() || !lookAt.isFinite() || !up.isFinite()) throw new IllegalArgumentException("camera vectors must be finite");
+        if (!Ranges.isModest(eye) || !Ranges.isModest(lookAt) || !Ranges.isModest(up)) throw new IllegalArgumentException("camera vectors must be finite and at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude");
         if (!(fovDegrees > 0 && fovDegrees < 180)) throw new IllegalArgumentException("fov must be between 0 and 180 degrees, found " + fovDegrees);
         Vec3 forward = lookAt.minus(eye);
         if (!(forward.length() > 0)) throw new IllegalArgumentException("camera eye and lookat are the same point " + eye);

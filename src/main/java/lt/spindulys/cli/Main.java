@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 
+import lt.spindulys.image.NonFinitePixelException;
 import lt.spindulys.io.SceneException;
 
 /**
@@ -66,6 +67,11 @@ public final class Main {
             return 1;
         } catch (java.io.IOException e) {
             err.println("render: " + e.getMessage());
+            if (debug) e.printStackTrace(err);
+            return 1;
+        } catch (NonFinitePixelException e) {
+            // Unreachable from any input the readers accept (their ranges keep pixels finite): a bug.
+            err.println("render: internal error: " + e.getMessage());
             if (debug) e.printStackTrace(err);
             return 1;
         } catch (OutOfMemoryError e) {

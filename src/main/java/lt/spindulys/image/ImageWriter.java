@@ -93,11 +93,16 @@ public final class ImageWriter {
      * </ul>
      *
      * @throws IllegalStateException if an object id does not fit 24 bits (nothing is written)
+     * @throws NonFinitePixelException if a pixel of the image or of the normal pass is NaN or
+     *         infinite as a float (an internal error: nothing is written)
      */
     public static void write(FrameBuffer fb, Path out, ImageOptions opts, AovFrame aovs) throws IOException {
         Objects.requireNonNull(fb, "fb");
         Objects.requireNonNull(opts, "opts");
         ImageFormat format = checkFormat(out);
+        // The last line of defence: the scene's ranges keep pixels finite, so one that is not is a bug.
+        checkFinite(fb.width(), fb.data(), 3);
+        if (aovs != null && aovs.passes().contains(Aov.NORMAL)) checkFinite(aovs.width(), aovs.normalImage().data(), 3);
         if (format == ImageFormat.TGA && (fb.width() > 0xFFFF || fb.height() > 0xFFFF)) {
             throw new IllegalArgumentException("TGA images are at most 65535x65535 pixels, got "
                     + fb.width() + "x" + fb.height());
@@ -128,6 +133,19 @@ public final class ImageWriter {
             }
         }
         AtomicFile.writeAll(files, bodies);
+    }
+
+    /**
+     * Throws {@link NonFinitePixelException} for the first value (of {@code channels} per pixel,
+     * rows of {@code width} pixels, top row first) that is NaN or infinite as a 32-bit float.
+     */
+    static void checkFinite(int width, double[] d, int channels) {
+        for (int i = 0; i < d.length; i++) {
+            if (!(Math.abs(d[i]) <= Float.MAX_VALUE)) {
+                int pixel = i / channels;
+                throw new NonFinitePixelException(pixel % width, pixel / width);
+            }
+        }
     }
 
     /**

@@ -12,6 +12,7 @@ import java.util.Set;
 
 import lt.spindulys.limits.InputFiles;
 import lt.spindulys.limits.InsufficientMemoryException;
+import lt.spindulys.math.Ranges;
 import lt.spindulys.scene.MeshData;
 import lt.spindulys.subdiv.SubdivInput;
 import lt.spindulys.subdiv.SubdivOptions;
@@ -625,7 +626,11 @@ public final class ObjReader {
             } else {
                 value = Math.abs(Double.parseDouble(new String(b, start, pos - start, StandardCharsets.ISO_8859_1)));
             }
-            if (!Double.isFinite(value)) throw error(start, "number " + text(start, pos) + " is too large for " + what);
+            // Bounded so that squares and products of coordinates cannot overflow (see Ranges).
+            if (!(value <= Ranges.MAX_NUMBER)) {
+                throw error(start, "number " + text(start, pos) + " is too large for " + what + " (mesh numbers are at most "
+                        + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude)");
+            }
             return neg ? -value : value;
         }
 

@@ -31,6 +31,7 @@ import lt.spindulys.io.SceneLexer.Token;
 import lt.spindulys.limits.InputFiles;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Motion;
+import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Transform;
 import lt.spindulys.math.Vec3;
 import lt.spindulys.sampling.LensPattern;
@@ -434,7 +435,14 @@ public final class SceneParser {
             }
         }
         if (name != null) mb.name(name);
-        return mb.build();
+        try {
+            return mb.build();
+        } catch (IllegalArgumentException e) {
+            // kr + kt too large: reported at whichever of the two came last.
+            Prop kr = p.prop("kr"), kt = p.prop("kt");
+            Prop at = kr == null ? kt : kt == null ? kr : p.all.indexOf(kr) > p.all.indexOf(kt) ? kr : kt;
+            throw at != null ? wrap(at.at, e) : wrap(p.opener, e);
+        }
     }
 
     /** The object of an object or CSG statement, with its common keys applied; not yet added to the builder. */
@@ -834,8 +842,18 @@ public final class SceneParser {
 
     /** A number, or an error "{expected}, found ...". */
     private double number(String expected) {
+        Token t = rawNumber(expected);
+        // Bounded so that squares and products of coordinates cannot overflow (see Ranges).
+        if (!Ranges.isModest(t.number())) {
+            throw error(t, "number '" + t.text() + "' is out of range: scene numbers are at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude");
+        }
+        return t.number();
+    }
+
+    /** A number token of any finite size (integers are range-checked by their key), or an error "{expected}, found ...". */
+    private Token rawNumber(String expected) {
         Token t = lex.next();
-        if (t.kind() == Kind.NUMBER) return t.number();
+        if (t.kind() == Kind.NUMBER) return t;
         if (t.kind() == Kind.WORD && SceneLexer.isNonFiniteSpelling(t.text())) {
             throw error(t, expected + ", found " + t.describe() + " (NaN and Infinity are not allowed)");
         }
@@ -855,7 +873,7 @@ public final class SceneParser {
             lex.next();
             throw error(t, expected + ", found " + t.describe());
         }
-        number(expected);
+        rawNumber(expected);
         long v;
         try {
             v = Long.parseLong(t.text().startsWith("+") ? t.text().substring(1) : t.text());

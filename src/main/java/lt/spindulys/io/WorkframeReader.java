@@ -11,6 +11,7 @@ import java.util.regex.Pattern;
 
 import lt.spindulys.limits.InputFiles;
 import lt.spindulys.limits.InsufficientMemoryException;
+import lt.spindulys.math.Ranges;
 import lt.spindulys.scene.MeshData;
 
 /**
@@ -290,7 +291,11 @@ public final class WorkframeReader {
             String t = l.text(i);
             if (!NUMBER.matcher(t).matches()) throw error(l.at(i), "expected a number for " + what + ", found '" + t + "'");
             double v = Double.parseDouble(t);
-            if (!Double.isFinite(v)) throw error(l.at(i), "number " + t + " is too large for " + what);
+            // Bounded so that squares and products of coordinates cannot overflow (see Ranges).
+            if (!Ranges.isModest(v)) {
+                throw error(l.at(i), "number " + t + " is too large for " + what + " (mesh numbers are at most "
+                        + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude)");
+            }
             return v;
         }
     }

@@ -177,7 +177,27 @@ public final class Transform implements ObjectMapping {
         for (int i = 0; i < 3; i++) {
             r[i * 4 + 3] = -(r[i * 4] * m[3] + r[i * 4 + 1] * m[7] + r[i * 4 + 2] * m[11]);
         }
+        checkRanges(m, r);
         return r;
+    }
+
+    /**
+     * Bounded scale both ways and bounded translation ({@link Ranges}): with coordinates of at
+     * most 1e15, points then stay far from where squares and products overflow.
+     */
+    private static void checkRanges(double[] m, double[] inv) {
+        for (int i = 0; i < 12; i++) {
+            boolean translation = i % 4 == 3;
+            if (!translation && !(Math.abs(m[i]) <= Ranges.MAX_SCALE)) {
+                throw new IllegalArgumentException("transform scales by more than " + Ranges.show(Ranges.MAX_SCALE) + " (matrix entry " + m[i] + ")");
+            }
+            if (!translation && !(Math.abs(inv[i]) <= Ranges.MAX_SCALE)) {
+                throw new IllegalArgumentException("transform shrinks by more than a factor of " + Ranges.show(Ranges.MAX_SCALE) + " (inverse matrix entry " + inv[i] + ")");
+            }
+            if (translation && !(Math.abs(m[i]) <= Ranges.MAX_TRANSLATION)) {
+                throw new IllegalArgumentException("transform translates by more than " + Ranges.show(Ranges.MAX_TRANSLATION) + " (" + m[i] + ")");
+            }
+        }
     }
 
     @Override public boolean equals(Object o) {

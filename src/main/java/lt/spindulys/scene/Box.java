@@ -1,6 +1,7 @@
 package lt.spindulys.scene;
 
 import lt.spindulys.math.Bounds;
+import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
 
@@ -21,7 +22,7 @@ public final class Box extends GObject {
     private final double[] lo, hi;
 
     public Box(Vec3 corner1, Vec3 corner2) {
-        if (!corner1.isFinite() || !corner2.isFinite()) throw new IllegalArgumentException("box corners must be finite");
+        if (!Ranges.isModest(corner1) || !Ranges.isModest(corner2)) throw new IllegalArgumentException("box corners must be finite and at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude, found " + corner1 + " and " + corner2);
         Vec3 lo = new Vec3(Math.min(corner1.x(), corner2.x()), Math.min(corner1.y(), corner2.y()), Math.min(corner1.z(), corner2.z()));
         Vec3 hi = new Vec3(Math.max(corner1.x(), corner2.x()), Math.max(corner1.y(), corner2.y()), Math.max(corner1.z(), corner2.z()));
         if (!(hi.x() > lo.x() && hi.y() > lo.y() && hi.z() > lo.z())) {

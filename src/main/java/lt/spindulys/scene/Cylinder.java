@@ -1,6 +1,7 @@
 package lt.spindulys.scene;
 
 import lt.spindulys.math.Bounds;
+import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
 
@@ -39,9 +40,9 @@ public final class Cylinder extends GObject {
     private final double bx, by, bz, ux, uy, uz, vx, vy, vz, wx, wy, wz, height, r2;
 
     public Cylinder(Vec3 base, Vec3 top, double radius) {
-        if (!base.isFinite() || !top.isFinite()) throw new IllegalArgumentException("cylinder end points must be finite");
+        if (!Ranges.isModest(base) || !Ranges.isModest(top)) throw new IllegalArgumentException("cylinder end points must be finite and at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude, found " + base + " and " + top);
         if (!(top.minus(base).length() > 0)) throw new IllegalArgumentException("cylinder base and top are the same point " + base);
-        if (!(radius > 0) || !Double.isFinite(radius)) throw new IllegalArgumentException("cylinder radius must be a positive number, found " + radius);
+        if (!(radius > 0) || !Ranges.isModest(radius)) throw new IllegalArgumentException("cylinder radius must be a positive number at most " + Ranges.show(Ranges.MAX_NUMBER) + ", found " + radius);
         this.base = base;
         this.top = top;
         this.radius = radius;

@@ -1,6 +1,7 @@
 package lt.spindulys.scene;
 
 import lt.spindulys.math.Color;
+import lt.spindulys.math.Ranges;
 import lt.spindulys.texture.Channel;
 import lt.spindulys.texture.Mapping;
 import lt.spindulys.texture.Texture;
@@ -15,7 +16,9 @@ import lt.spindulys.texture.Texture;
  * </ul>
  * Any channel may be driven by a texture through a mapping ({@link Builder#texture}): the
  * integrator evaluates the bound channels at each hit (see {@link Channel} for what each does).
- * Build with {@link #builder()}; every setter validates its value.
+ * Build with {@link #builder()}; every setter validates its value against the ranges that keep
+ * every pixel finite ({@link Ranges}): color 0..100, ka, kd, ks 0..10, shininess 0..1e6, kr, kt
+ * and filter 0..1 with kr + kt at most 1, beta 0..1e15.
  */
 public final class Material {
     /** The material of objects that name none. */
@@ -89,16 +92,18 @@ public final class Material {
         private double bumpStrength = 1;
 
         public Builder name(String v) { name = v; return this; }
-        public Builder color(Color v) { color = colour("color", v); return this; }
-        public Builder filter(Color v) { filter = colour("filter", v); return this; }
-        public Builder beta(Color v) { beta = colour("beta", v); return this; }
+        // The ranges keep every pixel finite (see Ranges): colours and ka, kd, ks bounded; kr, kt
+        // and filter fractions, so that secondary rays never carry more than arrives.
+        public Builder color(Color v) { color = Ranges.colour("color", v, Ranges.MAX_COLOUR); return this; }
+        public Builder filter(Color v) { filter = Ranges.colour("filter", v, 1); return this; }
+        public Builder beta(Color v) { beta = Ranges.colour("beta", v, Ranges.MAX_NUMBER); return this; }
         public Builder beta(double v) { return beta(Color.grey(v)); }
-        public Builder ka(double v) { ka = nonNegative("ka", v); return this; }
-        public Builder kd(double v) { kd = nonNegative("kd", v); return this; }
-        public Builder ks(double v) { ks = nonNegative("ks", v); return this; }
-        public Builder shininess(double v) { shininess = nonNegative("shininess", v); return this; }
-        public Builder kr(double v) { kr = nonNegative("kr", v); return this; }
-        public Builder kt(double v) { kt = nonNegative("kt", v); return this; }
+        public Builder ka(double v) { ka = Ranges.inRange("ka", v, Ranges.MAX_COEFFICIENT); return this; }
+        public Builder kd(double v) { kd = Ranges.inRange("kd", v, Ranges.MAX_COEFFICIENT); return this; }
+        public Builder ks(double v) { ks = Ranges.inRange("ks", v, Ranges.MAX_COEFFICIENT); return this; }
+        public Builder shininess(double v) { shininess = Ranges.inRange("shininess", v, Ranges.MAX_SHININESS); return this; }
+        public Builder kr(double v) { kr = Ranges.inRange("kr", v, 1); return this; }
+        public Builder kt(double v) { kt = Ranges.inRange("kt", v, 1); return this; }
         public Builder fresnel(boolean v) { fresnel = v; return this; }
 
         /**
@@ -115,27 +120,30 @@ public final class Material {
 
         /** Scales the bump channel's height (object-space units per texture value 1); default 1. */
         public Builder bumpStrength(double v) {
-            if (!Double.isFinite(v)) throw new IllegalArgumentException("bump strength must be a finite number, found " + v);
+            if (!Ranges.isModest(v)) throw new IllegalArgumentException("bump strength must be a finite number at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude, found " + v);
             bumpStrength = v;
             return this;
         }
 
         public Builder ior(double v) {
-            if (!(v > 0) || !Double.isFinite(v)) throw new IllegalArgumentException("ior must be a positive number, found " + v);
+            if (!(v > 0) || !Ranges.isModest(v)) throw new IllegalArgumentException("ior must be a positive number at most " + Ranges.show(Ranges.MAX_NUMBER) + ", found " + v);
             ior = v;
             return this;
         }
 
-        public Material build() { return new Material(this); }
-
-        private static double nonNegative(String what, double v) {
-            if (!(v >= 0) || !Double.isFinite(v)) throw new IllegalArgumentException(what + " must be a non-negative number, found " + v);
-            return v;
+        /**
+         * The material.
+         *
+         * @throws IllegalArgumentException if kr + kt exceeds 1: what a surface reflects and
+         *         transmits together cannot exceed what arrives (it would also let a path of
+         *         many surfaces grow without bound)
+         */
+        public Material build() {
+            if (kr + kt > 1 + KR_KT_SLACK) throw new IllegalArgumentException("kr + kt must be at most 1, found kr " + kr + " + kt " + kt + " = " + (kr + kt));
+            return new Material(this);
         }
 
-        private static Color colour(String what, Color c) {
-            if (!c.isFinite() || !c.isNonNegative()) throw new IllegalArgumentException(what + " must have non-negative finite components, found " + c);
-            return c;
-        }
+        /** Rounding in decimal fractions that add up to 1 (0.7 + 0.3) is not an excess. */
+        private static final double KR_KT_SLACK = 1e-9;
     }
 }

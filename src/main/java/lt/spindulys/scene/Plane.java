@@ -1,6 +1,7 @@
 package lt.spindulys.scene;
 
 import lt.spindulys.math.Bounds;
+import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
 
@@ -24,8 +25,8 @@ public final class Plane extends GObject {
     private final double nx, ny, nz;
 
     public Plane(Vec3 normal, double offset) {
-        if (!normal.isFinite() || !(normal.length() > 0)) throw new IllegalArgumentException("plane normal must be a non-zero finite vector, found " + normal);
-        if (!Double.isFinite(offset)) throw new IllegalArgumentException("plane offset must be finite, found " + offset);
+        if (!Ranges.isModest(normal) || !(normal.length() > 0)) throw new IllegalArgumentException("plane normal must be a non-zero vector with components at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude, found " + normal);
+        Ranges.modest("plane offset", offset);
         double len = normal.length();
         this.normal = normal.times(1 / len);
         this.offset = offset / len;

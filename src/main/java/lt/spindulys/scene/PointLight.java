@@ -1,21 +1,28 @@
 package lt.spindulys.scene;
 
 import lt.spindulys.math.Color;
+import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Vec3;
 
 /**
  * A point light with hard shadows. Its contribution at distance d is color * intensity, divided
  * by d^2 when the falloff is {@link Falloff#INVERSE_SQUARE} (physical) and constant with
- * {@link Falloff#NONE} (the thesis's Whitted model).
+ * {@link Falloff#NONE} (the thesis's Whitted model). Position components are at most 1e15 in
+ * magnitude, colour components 0..100 and intensity 0..1e15 ({@link Ranges}); an inverse-square
+ * light's contribution is limited very close to it (see {@link Ranges#MAX_IRRADIANCE}).
  */
 public record PointLight(Vec3 position, Color color, double intensity, Falloff falloff) {
     public enum Falloff { NONE, INVERSE_SQUARE }
 
     public PointLight {
-        if (!position.isFinite()) throw new IllegalArgumentException("light position must be finite, found " + position);
-        if (!color.isFinite() || !color.isNonNegative()) throw new IllegalArgumentException("light color must have non-negative finite components, found " + color);
-        if (!(intensity >= 0) || !Double.isFinite(intensity)) throw new IllegalArgumentException("light intensity must be a non-negative number, found " + intensity);
+        Ranges.modest("light position", position);
+        Ranges.colour("light color", color, Ranges.MAX_COLOUR);
+        Ranges.inRange("light intensity", intensity, Ranges.MAX_INTENSITY);
+        if (falloff == null) throw new IllegalArgumentException("light falloff is missing");
     }
 
     public PointLight(Vec3 position, Color color) { this(position, color, 1, Falloff.NONE); }
+
+    /** Intensity times the largest colour component: what the lights' total ({@link Ranges#MAX_TOTAL_LIGHT}) adds up. */
+    public double power() { return intensity * color.max(); }
 }

@@ -63,8 +63,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         if (samplesPerPixel < 1 || samplesPerPixel > 65536) throw new IllegalArgumentException("samples per pixel must be between 1 and 65536, found " + samplesPerPixel);
         if (maxDepth < 0 || maxDepth > 64) throw new IllegalArgumentException("maxdepth must be between 0 and 64, found " + maxDepth);
         if (!(minContribution >= 0 && minContribution < 1)) throw new IllegalArgumentException("mincontribution must be in [0, 1), found " + minContribution);
-        if (!background.isFinite() || !background.isNonNegative()) throw new IllegalArgumentException("background must have non-negative finite components, found " + background);
-        if (!ambient.isFinite() || !ambient.isNonNegative()) throw new IllegalArgumentException("ambient must have non-negative finite components, found " + ambient);
+        lt.spindulys.math.Ranges.colour("background", background, lt.spindulys.math.Ranges.MAX_COLOUR);
+        lt.spindulys.math.Ranges.colour("ambient", ambient, lt.spindulys.math.Ranges.MAX_COLOUR);
         java.util.Objects.requireNonNull(accelerator, "accelerator");
         java.util.Objects.requireNonNull(aovs, "aovs");
         lt.spindulys.math.Placement.checkShutter(shutterOpen, shutterClose);

@@ -10,6 +10,7 @@ import java.util.Objects;
 import lt.spindulys.camera.Camera;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.math.Color;
+import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Vec3;
 
 /**
@@ -49,7 +50,25 @@ public final class SceneBuilder {
     /** The camera given so far, or null (then {@link #build()} uses {@link #DEFAULT_CAMERA}). */
     public Camera camera() { return camera; }
 
-    public SceneBuilder light(PointLight l) { lights.add(Objects.requireNonNull(l)); return this; }
+    /**
+     * Adds a light.
+     *
+     * @throws IllegalArgumentException if the lights' total (intensity times largest colour
+     *         component, summed) would exceed {@link Ranges#MAX_TOTAL_LIGHT}
+     */
+    public SceneBuilder light(PointLight l) {
+        double total = totalLight + Objects.requireNonNull(l).power();
+        if (!(total <= Ranges.MAX_TOTAL_LIGHT)) {
+            throw new IllegalArgumentException("light intensity " + l.intensity() + " with color " + l.color() + " brings the lights' total (intensity times largest color component, summed) to "
+                    + total + ", more than " + Ranges.show(Ranges.MAX_TOTAL_LIGHT));
+        }
+        totalLight = total;
+        lights.add(l);
+        return this;
+    }
+
+    /** Sum of {@link PointLight#power()} over the lights added so far. */
+    private double totalLight;
 
     /** The lights added so far, in order (read-only view). */
     public List<PointLight> lights() { return Collections.unmodifiableList(lights); }

@@ -1,6 +1,7 @@
 package lt.spindulys.scene;
 
 import lt.spindulys.math.Bounds;
+import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
 
@@ -24,8 +25,8 @@ public final class Sphere extends GObject {
     private final double cx, cy, cz, r2;
 
     public Sphere(Vec3 center, double radius) {
-        if (!center.isFinite()) throw new IllegalArgumentException("sphere center must be finite, found " + center);
-        if (!(radius > 0) || !Double.isFinite(radius)) throw new IllegalArgumentException("sphere radius must be a positive number, found " + radius);
+        Ranges.modest("sphere center", center);
+        if (!(radius > 0) || !Ranges.isModest(radius)) throw new IllegalArgumentException("sphere radius must be a positive number at most " + Ranges.show(Ranges.MAX_NUMBER) + ", found " + radius);
         this.center = center;
         this.radius = radius;
         this.cx = center.x();

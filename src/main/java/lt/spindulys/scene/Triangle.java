@@ -1,6 +1,7 @@
 package lt.spindulys.scene;
 
 import lt.spindulys.math.Bounds;
+import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
 
@@ -25,7 +26,7 @@ public final class Triangle extends GObject {
     private double[] uvs;
 
     public Triangle(Vec3 a, Vec3 b, Vec3 c) {
-        if (!a.isFinite() || !b.isFinite() || !c.isFinite()) throw new IllegalArgumentException("triangle vertices must be finite");
+        if (!Ranges.isModest(a) || !Ranges.isModest(b) || !Ranges.isModest(c)) throw new IllegalArgumentException("triangle vertices must be finite and at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude, found " + a + " " + b + " " + c);
         if (!(b.minus(a).cross(c.minus(a)).length() > 0)) throw new IllegalArgumentException("triangle " + a + " " + b + " " + c + " is degenerate (zero area)");
         this.a = a; this.b = b; this.c = c;
         ax = a.x(); ay = a.y(); az = a.z();

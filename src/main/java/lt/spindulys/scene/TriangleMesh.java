@@ -8,8 +8,9 @@ import lt.spindulys.accel.BruteForce;
 import lt.spindulys.accel.Bvh;
 import lt.spindulys.accel.PrimitiveSet;
 import lt.spindulys.math.Bounds;
-import lt.spindulys.math.Ray;
 import lt.spindulys.math.Placement;
+import lt.spindulys.math.Ranges;
+import lt.spindulys.math.Ray;
 
 /**
  * A triangle mesh held in flat arrays (no object per triangle) with its own acceleration
@@ -195,7 +196,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         String w = d.source() == null ? "mesh: " : d.source() + ": ";
         double[] p = d.positions();
         if (p == null || p.length % 3 != 0) throw new IllegalArgumentException(w + "positions must hold three numbers per vertex");
-        for (double v : p) if (!Double.isFinite(v)) throw new IllegalArgumentException(w + "vertex positions must be finite, found " + v);
+        for (double v : p) if (!Ranges.isModest(v)) throw new IllegalArgumentException(w + "vertex positions must be finite and at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude, found " + v);
         int[] sizes = d.faceSizes(), vi = d.vertexIndex();
         long corners = 0;
         for (int f = 0; f < sizes.length; f++) {

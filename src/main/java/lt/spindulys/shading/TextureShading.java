@@ -42,8 +42,9 @@ final class TextureShading {
             t[0] *= rgb[0]; t[1] *= rgb[1]; t[2] *= rgb[2];
         }
         if (sample(m, Channel.SPECULAR, sd, sd.pObject, objectFootprint, s, rgb)) t[3] *= mean(rgb);
-        if (sample(m, Channel.REFLECTION, sd, sd.pObject, objectFootprint, s, rgb)) t[4] *= mean(rgb);
-        if (sample(m, Channel.TRANSPARENCY, sd, sd.pObject, objectFootprint, s, rgb)) t[5] *= mean(rgb);
+        // kr and kt textures are fractions: clamped to [0, 1], so a path never gains (see Ranges).
+        if (sample(m, Channel.REFLECTION, sd, sd.pObject, objectFootprint, s, rgb)) t[4] *= fraction(mean(rgb));
+        if (sample(m, Channel.TRANSPARENCY, sd, sd.pObject, objectFootprint, s, rgb)) t[5] *= fraction(mean(rgb));
         if (sample(m, Channel.EMISSION, sd, sd.pObject, objectFootprint, s, rgb)) {
             t[6] = rgb[0]; t[7] = rgb[1]; t[8] = rgb[2];
         }
@@ -53,11 +54,14 @@ final class TextureShading {
     /** kt at a hit a shadow ray crosses, after a transparency texture (sharpest filtering). */
     static double shadowKt(Material m, ShadingData sd, TracerScratch s) {
         double kt = m.kt();
-        if (sample(m, Channel.TRANSPARENCY, sd, sd.pObject, 0, s, s.texRgb)) kt *= mean(s.texRgb);
+        if (sample(m, Channel.TRANSPARENCY, sd, sd.pObject, 0, s, s.texRgb)) kt *= fraction(mean(s.texRgb));
         return kt;
     }
 
     private static double mean(double[] rgb) { return (rgb[0] + rgb[1] + rgb[2]) / 3; }
+
+    /** {@code v} clamped to [0, 1]. */
+    private static double fraction(double v) { return v > 0 ? (v < 1 ? v : 1) : 0; }
 
     /** Evaluates the channel's texture at object point p into rgb; false if the channel has none. */
     private static boolean sample(Material m, Channel c, ShadingData sd, double[] p, double objectFootprint, TracerScratch s, double[] rgb) {

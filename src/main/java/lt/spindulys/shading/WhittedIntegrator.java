@@ -1,6 +1,7 @@
 package lt.spindulys.shading;
 
 import lt.spindulys.math.Color;
+import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.scene.GObject;
 import lt.spindulys.scene.Hit;
@@ -38,6 +39,13 @@ public final class WhittedIntegrator {
     private final boolean transparentShadows;
     /** Angle between the primary rays of neighbouring pixels at the image centre, radians (texture footprints). */
     private final double pixelAngle;
+    /**
+     * Smallest squared distance an inverse-square light's falloff divides by: the one at which
+     * all of them together could deliver {@link Ranges#MAX_IRRADIANCE}. A point (nearly) on a
+     * light would otherwise receive an unbounded amount; for lights of everyday intensities this
+     * distance is below 1e-12 and changes nothing.
+     */
+    private final double minDistance2;
 
     public WhittedIntegrator(Scene scene) {
         this.scene = scene;
@@ -45,6 +53,9 @@ public final class WhittedIntegrator {
         this.lights = scene.lightArray();
         this.transparentShadows = scene.hasTransparentObjects();
         this.pixelAngle = pixelAngle(scene);
+        double power = 0;
+        for (PointLight l : lights) if (l.falloff() == PointLight.Falloff.INVERSE_SQUARE) power += l.power();
+        this.minDistance2 = power / Ranges.MAX_IRRADIANCE;
     }
 
     /**
@@ -182,7 +193,7 @@ public final class WhittedIntegrator {
                 if (!shadowTransmission(ox, oy, oz, sx, sy, sz, dist, time, s)) continue;
                 double[] t = s.transmission;
                 double scale = light.intensity();
-                if (light.falloff() == PointLight.Falloff.INVERSE_SQUARE) scale /= dist2;
+                if (light.falloff() == PointLight.Falloff.INVERSE_SQUARE) scale /= Math.max(dist2, minDistance2);
                 Color lc = light.color();
                 double ir = lc.r() * scale * t[0], ig = lc.g() * scale * t[1], ib = lc.b() * scale * t[2];
                 double diff = kd * ndotl;

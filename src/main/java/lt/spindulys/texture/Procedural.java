@@ -1,6 +1,7 @@
 package lt.spindulys.texture;
 
 import lt.spindulys.math.Color;
+import lt.spindulys.math.Ranges;
 
 /**
  * Shared part of the procedural textures: two colours mixed by a pattern value {@code t} in
@@ -16,7 +17,11 @@ abstract class Procedural implements Texture {
 
     Procedural(Color a, Color b, double scale, boolean solid) {
         if (a == null || b == null) throw new NullPointerException("both colours are required");
-        if (!a.isFinite() || !b.isFinite()) throw new IllegalArgumentException("colours must be finite: " + a + ", " + b);
+        // Negative values are allowed (heights for bump maps); the bound keeps pixels finite (see Ranges).
+        if (!modest(a) || !modest(b)) {
+            throw new IllegalArgumentException("colours must have components between -" + Ranges.show(Ranges.MAX_COLOUR) + " and "
+                    + Ranges.show(Ranges.MAX_COLOUR) + ", found " + a + ", " + b);
+        }
         if (!(scale > 0) || !Double.isFinite(scale)) throw new IllegalArgumentException("scale must be positive and finite, got " + scale);
         ar = a.r();
         ag = a.g();
@@ -26,6 +31,11 @@ abstract class Procedural implements Texture {
         bb = b.b();
         this.scale = scale;
         this.solid = solid;
+    }
+
+    private static boolean modest(Color c) {
+        double m = Ranges.MAX_COLOUR;
+        return Math.abs(c.r()) <= m && Math.abs(c.g()) <= m && Math.abs(c.b()) <= m;
     }
 
     static int checkOctaves(int octaves) {

@@ -1,5 +1,7 @@
 package lt.spindulys.texture;
 
+import lt.spindulys.math.Ranges;
+
 /**
  * An image of linear RGB texels with its mip chain. Texels are stored as flat {@code float}
  * arrays (three per texel, rows TOP-DOWN as in image files) to halve the memory of a large image;
@@ -40,7 +42,11 @@ public final class TextureImage {
         }
         float[] f = new float[rgb.length];
         for (int i = 0; i < f.length; i++) {
-            if (!Double.isFinite(rgb[i])) throw new IllegalArgumentException("texel value " + rgb[i] + " at index " + i);
+            // The bound keeps pixels finite (see Ranges); images read from files hold 0..1.
+            if (!(Math.abs(rgb[i]) <= Ranges.MAX_COLOUR)) {
+                throw new IllegalArgumentException("texel value " + rgb[i] + " at index " + i + " (texel values must be between -"
+                        + Ranges.show(Ranges.MAX_COLOUR) + " and " + Ranges.show(Ranges.MAX_COLOUR) + ")");
+            }
             f[i] = (float) rgb[i];
         }
         return new TextureImage(w, h, f);

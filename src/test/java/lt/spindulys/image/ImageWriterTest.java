@@ -114,8 +114,8 @@ class ImageWriterTest {
         FrameBuffer fb = new FrameBuffer(w, h);
         double[] d = fb.data();
         for (int i = 0; i < d.length; i++) d[i] = (float) ((rnd.nextDouble() - 0.3) * Math.pow(10, rnd.nextInt(9) - 4));
-        d[0] = Float.POSITIVE_INFINITY;
-        d[1] = Float.NaN;
+        d[0] = Float.MAX_VALUE;
+        d[1] = -Float.MAX_VALUE;
         d[2] = -0.0f;
         d[3] = Float.MIN_VALUE;
         d[4] = 1e30f;
@@ -126,6 +126,24 @@ class ImageWriterTest {
         assertEquals(h, back.height());
         for (int i = 0; i < d.length; i++) {
             assertEquals(0, Double.compare(d[i], back.data()[i]), "value " + i + ": " + d[i] + " vs " + back.data()[i]);
+        }
+    }
+
+    /** The last line of defence: a pixel that is not a finite float is an internal error, and nothing is written. */
+    @Test
+    void nonFinitePixelsAreNeverWritten() throws IOException {
+        for (double bad : new double[] {Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NaN, 1e39}) {
+            for (String name : new String[] {"x.pfm", "x.png", "x.tga", "x.jpg"}) {
+                FrameBuffer fb = new FrameBuffer(4, 3);
+                fb.set(2, 1, 0.5, bad, 0.5);
+                Path out = dir.resolve(name);
+                NonFinitePixelException e = assertThrows(NonFinitePixelException.class, () -> ImageWriter.write(fb, out, ImageOptions.DEFAULT));
+                assertEquals("non-finite pixel at 2,1", e.getMessage());
+                assertFalse(Files.exists(out), name);
+            }
+        }
+        try (var files = Files.list(dir)) {
+            assertEquals(0, files.count(), "no temporary file is left");
         }
     }
 
