@@ -59,7 +59,7 @@ public final class SceneBuilder {
     public SceneBuilder light(PointLight l) {
         double total = totalLight + Objects.requireNonNull(l).power();
         if (!(total <= Ranges.MAX_TOTAL_LIGHT)) {
-            throw new IllegalArgumentException("light intensity " + l.intensity() + " with color " + l.color() + " brings the lights' total (intensity times largest color component, summed) to "
+            throw new IllegalArgumentException("light intensity " + l.intensity() + " brings the lights' total (intensity times the largest colour component, summed over the lights) to "
                     + total + ", more than " + Ranges.show(Ranges.MAX_TOTAL_LIGHT));
         }
         totalLight = total;

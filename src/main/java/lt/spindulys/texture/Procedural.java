@@ -19,8 +19,8 @@ abstract class Procedural implements Texture {
         if (a == null || b == null) throw new NullPointerException("both colours are required");
         // Negative values are allowed (heights for bump maps); the bound keeps pixels finite (see Ranges).
         if (!modest(a) || !modest(b)) {
-            throw new IllegalArgumentException("colours must have components between -" + Ranges.show(Ranges.MAX_COLOUR) + " and "
-                    + Ranges.show(Ranges.MAX_COLOUR) + ", found " + a + ", " + b);
+            throw new IllegalArgumentException((modest(a) ? "color2" : "color1") + " must have components between -" + Ranges.show(Ranges.MAX_COLOUR)
+                    + " and " + Ranges.show(Ranges.MAX_COLOUR) + ", found " + (modest(a) ? b : a));
         }
         if (!(scale > 0) || !Double.isFinite(scale)) throw new IllegalArgumentException("scale must be positive and finite, got " + scale);
         ar = a.r();
