@@ -162,6 +162,7 @@ public final class Transform implements ObjectMapping {
 
     private static double[] invert(double[] m) {
         for (double v : m) if (!Double.isFinite(v)) throw new IllegalArgumentException("transform has a non-finite entry");
+        checkRanges(m, null);
         double a = m[0], b = m[1], c = m[2], d = m[4], e = m[5], f = m[6], g = m[8], h = m[9], k = m[10];
         double A = e * k - f * h, B = -(d * k - f * g), C = d * h - e * g;
         double det = a * A + b * B + c * C;
@@ -188,6 +189,13 @@ public final class Transform implements ObjectMapping {
     private static void checkRanges(double[] m, double[] inv) {
         for (int i = 0; i < 12; i++) {
             boolean translation = i % 4 == 3;
+            if (inv == null) {
+                // The matrix alone, before it is inverted: a huge scale reads as such, not as "singular".
+                if (!translation && !(Math.abs(m[i]) <= Ranges.MAX_SCALE)) {
+                    throw new IllegalArgumentException("transform scales by more than " + Ranges.show(Ranges.MAX_SCALE) + " (matrix entry " + m[i] + ")");
+                }
+                continue;
+            }
             if (!translation && !(Math.abs(m[i]) <= Ranges.MAX_SCALE)) {
                 throw new IllegalArgumentException("transform scales by more than " + Ranges.show(Ranges.MAX_SCALE) + " (matrix entry " + m[i] + ")");
             }
