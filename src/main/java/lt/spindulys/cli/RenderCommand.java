@@ -18,6 +18,7 @@ import lt.spindulys.image.ImageOptions;
 import lt.spindulys.image.ImageWriter;
 import lt.spindulys.io.SceneParser;
 import lt.spindulys.limits.InputFiles;
+import lt.spindulys.math.Ranges;
 import lt.spindulys.render.ProgressListener;
 import lt.spindulys.render.RenderStats;
 import lt.spindulys.render.Renderer;
@@ -303,6 +304,8 @@ final class RenderCommand {
         if (!Double.isFinite(d) || (positive ? !(d > 0) : !(d >= 0))) {
             throw new UsageException(option + " must be a finite number " + (positive ? "greater than 0" : "at least 0") + ", found " + v);
         }
+        // As any scene number (Ranges): larger ones could overflow the camera's ray arithmetic.
+        if (!Ranges.isModest(d)) throw new UsageException(option + " must be at most " + Ranges.show(Ranges.MAX_NUMBER) + ", found " + v);
         return d;
     }
 

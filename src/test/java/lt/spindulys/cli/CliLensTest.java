@@ -67,6 +67,8 @@ class CliLensTest {
                 {"render: --aperture expects a number, found 'wide'", "--aperture", "wide"},
                 {"render: --focus must be a finite number greater than 0, found 0", "--focus", "0"},
                 {"render: --focus must be a finite number greater than 0, found Infinity", "--focus", "Infinity"},
+                {"render: --focus must be at most 1e15, found 1e300", "--focus", "1e300"},
+                {"render: --aperture must be at most 1e15, found 2e15", "--aperture", "2e15"},
                 {"render: option --focus needs a value", "--focus"},
         };
         for (String[] c : cases) {
