@@ -11,6 +11,7 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 
+import lt.spindulys.limits.MessageText;
 import lt.spindulys.scene.MeshData;
 import lt.spindulys.subdiv.SubdivInput;
 import lt.spindulys.subdiv.SubdivOptions;
@@ -159,7 +160,7 @@ public final class ObjReader {
                     String word = new String(b, start, len, StandardCharsets.UTF_8);
                     String what = unsupported(word);
                     throw error(start, what != null ? "OBJ statement '" + word + "' (" + what + ") is not supported"
-                            : "unknown OBJ statement '" + word + "'");
+                            : "unknown OBJ statement " + MessageText.quote(word));
                 }
                 nextLine();
             }
@@ -303,7 +304,7 @@ public final class ObjReader {
             if (atLineEnd()) throw error(nameAt, "expected a tag name after 't', found " + describe(nameAt));
             String name = token();
             if (!TAGS.contains(name)) {
-                throw error(nameAt, "unknown tag '" + name + "'" + SceneGrammar.didYouMean(name, TAGS)
+                throw error(nameAt, "unknown tag " + MessageText.quote(name) + SceneGrammar.didYouMean(name, TAGS)
                         + " (known: " + String.join(", ", TAGS) + ")");
             }
             skipBlanks();
@@ -340,7 +341,7 @@ public final class ObjReader {
                 int at = pos;
                 boolean sharpness = name.equals("crease") || name.equals("corner");
                 double v = number((sharpness ? "sharpness " : "float ") + (i + 1) + " of " + nf + " of tag '" + name + "'" + argsSay);
-                if (sharpness && v < 0) throw error(at, name + " sharpness must not be negative, found " + text(at, pos));
+                if (sharpness && v < 0) throw error(at, name + " sharpness must not be negative, found " + MessageText.quote(text(at, pos), ""));
                 floats[i] = (float) v; // OpenSubdiv keeps sharpness as float
             }
             String[] strings = new String[ns];
@@ -399,7 +400,7 @@ public final class ObjReader {
                     tags.options = tags.options.withCreasing(switch (strings[0]) {
                         case "normal" -> SubdivOptions.Creasing.UNIFORM;
                         case "chaikin" -> SubdivOptions.Creasing.CHAIKIN;
-                        default -> throw error(stringAt[0], "expected normal or chaikin for tag 'creasemethod', found '" + strings[0] + "'"
+                        default -> throw error(stringAt[0], "expected normal or chaikin for tag 'creasemethod', found " + MessageText.quote(strings[0])
                                 + SceneGrammar.didYouMean(strings[0], List.of("normal", "chaikin")));
                     });
                 }
@@ -407,7 +408,7 @@ public final class ObjReader {
                     tags.options = tags.options.withTriangles(switch (strings[0]) {
                         case "catmark" -> SubdivOptions.Triangles.CATMARK;
                         case "smooth" -> SubdivOptions.Triangles.SMOOTH;
-                        default -> throw error(stringAt[0], "expected catmark or smooth for tag 'smoothtriangles', found '" + strings[0] + "'"
+                        default -> throw error(stringAt[0], "expected catmark or smooth for tag 'smoothtriangles', found " + MessageText.quote(strings[0])
                                 + SceneGrammar.didYouMean(strings[0], List.of("catmark", "smooth")));
                     });
                 }
@@ -548,7 +549,7 @@ public final class ObjReader {
             if (v == 0) throw error(start, "index 0 is not valid (OBJ indices start at 1)");
             String which = what.equals("vertex") ? "f index " : "f " + what + " index ";
             if (v > have) {
-                throw error(start, which + text(start, pos) + " out of range (the file has " + have + " " + (have == 1 ? singular : plural) + " so far)");
+                throw error(start, which + MessageText.quote(text(start, pos), "") + " out of range (the file has " + have + " " + (have == 1 ? singular : plural) + " so far)");
             }
             return neg ? (int) (have - v) : (int) (v - 1);
         }
@@ -616,7 +617,7 @@ public final class ObjReader {
             } else {
                 value = Math.abs(Double.parseDouble(new String(b, start, pos - start, StandardCharsets.ISO_8859_1)));
             }
-            if (!Double.isFinite(value)) throw error(start, "number " + text(start, pos) + " is too large for " + what);
+            if (!Double.isFinite(value)) throw error(start, "number " + MessageText.quote(text(start, pos), "") + " is too large for " + what);
             return neg ? -value : value;
         }
 
@@ -707,8 +708,8 @@ public final class ObjReader {
             if (c == '#') return "a comment";
             if (isBlank(c)) return "a space";
             int e = at;
-            while (e < end && !isBlank(b[e]) && !isLineEnd(b[e]) && e - at < 40) e++;
-            return "'" + text(at, e) + "'";
+            while (e < end && !isBlank(b[e]) && !isLineEnd(b[e])) e++;
+            return MessageText.quote(text(at, e));
         }
     }
 
