@@ -75,6 +75,8 @@ import lt.spindulys.texture.Wrap;
 public final class SceneParser {
     private final SceneLexer lex;
     private final String file;
+    /** The file as objects' sources name it ("&lt;input&gt;" for text without a name), one string for all. */
+    private final String sourceName;
     private final Path baseDir;
     private final SceneBuilder builder = new SceneBuilder();
     private Token settingsAt, cameraAt;
@@ -93,6 +95,7 @@ public final class SceneParser {
     private SceneParser(String text, String file, Path baseDir) {
         this.lex = new SceneLexer(text, file);
         this.file = file;
+        this.sourceName = SceneException.location(file, 0, 0);
         this.baseDir = baseDir;
     }
 
@@ -450,7 +453,7 @@ public final class SceneParser {
             }
         }
         // Errors found only when the scene is built name this statement.
-        o.source(SceneException.location(file, kw.line(), kw.column()));
+        o.source(sourceName, kw.line(), kw.column());
         // Common keys; transforms compose in the order written (GObject.transform appends).
         for (Prop pr : p.all) {
             switch (pr.key.name()) {

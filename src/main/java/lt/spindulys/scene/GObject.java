@@ -34,8 +34,13 @@ public abstract class GObject {
     private Motion motion;
     private Material material;
     private String name;
-    /** Where the object was made, for messages only (see {@link #source(String)}). */
+    /**
+     * Where the object was made, for messages only (see {@link #source(String)}): the whole text,
+     * or a file name shared by every object of the file with the line and column apart, so that
+     * a scene of many small objects does not keep a string per object.
+     */
     private String source;
+    private int sourceLine, sourceColumn;
 
     /** Composed object-to-world transform of an object that does not move (else null); set by {@link #freeze}. */
     protected Transform objectToWorld;
@@ -91,18 +96,35 @@ public abstract class GObject {
     public abstract String kind();
 
     /**
-     * Records where this object was made, such as "scene.dat:12:3" for the statement that made it
-     * (the scene parser sets it), so that errors found only when the scene is built name that
-     * place ({@link SceneBuildException}). Used for messages only; null: none.
+     * Records where this object was made, such as "scene.dat:12:3" for the statement that made it,
+     * so that errors found only when the scene is built name that place ({@link SceneBuildException}).
+     * Used for messages only; null: none.
      */
     public GObject source(String where) {
         checkMutable();
         source = where;
+        sourceLine = sourceColumn = 0;
+        return this;
+    }
+
+    /**
+     * {@link #source(String)} as "file:line:column" (the scene parser's; "file:line" if the column
+     * is 0), kept without making the string until a message needs it.
+     */
+    public GObject source(String file, int line, int column) {
+        checkMutable();
+        if (line < 1) throw new IllegalArgumentException("source line must be at least 1, found " + line);
+        source = file;
+        sourceLine = line;
+        sourceColumn = Math.max(column, 0);
         return this;
     }
 
     /** Where this object was made (see {@link #source(String)}), or null. */
-    public String source() { return source; }
+    public String source() {
+        if (sourceLine == 0) return source;
+        return source + ":" + sourceLine + (sourceColumn > 0 ? ":" + sourceColumn : "");
+    }
 
     /** The object as build errors name it: its kind, and its name if it was given one ("sphere 'ball'"). */
     final String label() {

@@ -66,10 +66,21 @@ class SceneBuildErrorTest {
     void aMotionOutsideTheShutterIsNamed() {
         Sphere s = new Sphere(Vec3.ZERO, 1);
         s.motion(Motion.translation(new Vec3(1, 0, 0), 2, Double.NaN));
-        s.source("m.dat:4:1");
+        s.source("m.dat", 4, 1);
+        assertEquals("m.dat:4:1", s.source());
         SceneBuildException e = assertThrows(SceneBuildException.class, () -> new SceneBuilder().add(s).build());
         assertEquals("m.dat:4:1: sphere: motion finish must be after its start, found start 2.0 and finish 1.0 (finish is the shutter close time)",
                 e.getMessage());
+    }
+
+    @Test
+    void sourcesAreKeptAsGiven() {
+        Sphere s = new Sphere(Vec3.ZERO, 1);
+        assertNull(s.source());
+        assertEquals("node 'Cube.001'", s.source("node 'Cube.001'").source());
+        assertEquals("a.dat:7", s.source("a.dat", 7, 0).source());
+        assertNull(s.source(null).source());
+        assertThrows(IllegalArgumentException.class, () -> s.source("a.dat", 0, 1));
     }
 
     @Test
