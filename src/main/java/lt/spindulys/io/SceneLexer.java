@@ -95,7 +95,7 @@ final class SceneLexer {
         if (ch == '"') return string(l, c);
         if (isWordStart(ch)) return word(l, c);
         if ((ch >= '0' && ch <= '9') || ch == '+' || ch == '-' || ch == '.') return number(l, c);
-        throw error(l, c, "unexpected character " + describeChar(ch));
+        throw error(l, c, "unexpected character " + describeChar(src.codePointAt(pos)));
     }
 
     private void skipBlanksAndComments() {
@@ -118,7 +118,7 @@ final class SceneLexer {
         if (pos < src.length() && !isDelimiter(src.charAt(pos))) {
             char ch = src.charAt(pos);
             String hint = ch == '=' || ch == ':' ? " (write a value after its key, separated by a space)" : "";
-            throw error(line, column, "unexpected character " + describeChar(ch) + " after " + MessageText.quote(w) + hint);
+            throw error(line, column, "unexpected character " + describeChar(src.codePointAt(pos)) + " after " + MessageText.quote(w) + hint);
         }
         return new Token(Kind.WORD, w, 0, l, c);
     }
@@ -234,8 +234,8 @@ final class SceneLexer {
     }
 
     /** A character quoted, or as U+XXXX if it would not show as itself (blanks, controls, separators, a lone surrogate). */
-    private static String describeChar(char ch) {
-        String s = String.valueOf(ch);
-        return ch > ' ' && MessageText.escape(s).equals(s) ? "'" + s + "'" : String.format("U+%04X", (int) ch);
+    private static String describeChar(int codePoint) {
+        String s = new String(Character.toChars(codePoint));
+        return codePoint > ' ' && MessageText.escape(s).equals(s) ? "'" + s + "'" : String.format("U+%04X", codePoint);
     }
 }

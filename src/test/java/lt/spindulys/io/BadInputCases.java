@@ -285,6 +285,7 @@ public final class BadInputCases {
                 c("paragraph separator alone", "sphere { radius 1 }\u2029", "1:20: unexpected character U+2029"),
                 c("C1 control in a word", "sphere { radius\u0085 1 }", "1:16: unexpected character U+0085 after 'radius'"),
                 c("NUL in a material name", "material m\u0000n { }", "1:11: unexpected character U+0000 after 'm'"),
+                c("character outside the BMP", "sphere { radius 1 } \uD83D\uDE00", "1:21: unexpected character '\uD83D\uDE00'"),
                 // ---- textures ----
                 c("missing texture image", "texture t {\n  image \"maps/wood.png\"\n}", "2:9: texture image 'maps/wood.png' not found (looked in ${dir}/maps/wood.png)"),
                 withFile("unreadable texture image", "texture t { image \"bad.png\" }", "bad.png", "this is not a PNG\n", false,
