@@ -157,10 +157,9 @@ public final class ObjReader {
                 } else if (isSkipped(start, len)) {
                     skipStatement();
                 } else {
-                    String word = new String(b, start, len, StandardCharsets.UTF_8);
-                    String what = unsupported(word);
-                    throw error(start, what != null ? "OBJ statement '" + word + "' (" + what + ") is not supported"
-                            : "unknown OBJ statement " + MessageText.quote(word));
+                    String what = len <= 16 ? unsupported(text(start, pos)) : null;
+                    throw error(start, what != null ? "OBJ statement '" + text(start, pos) + "' (" + what + ") is not supported"
+                            : "unknown OBJ statement " + quote(start, pos, "'"));
                 }
                 nextLine();
             }
@@ -302,9 +301,11 @@ public final class ObjReader {
             skipBlanks();
             int nameAt = pos;
             if (atLineEnd()) throw error(nameAt, "expected a tag name after 't', found " + describe(nameAt));
-            String name = token();
-            if (!TAGS.contains(name)) {
-                throw error(nameAt, "unknown tag " + MessageText.quote(name) + SceneGrammar.didYouMean(name, TAGS)
+            skipToken();
+            // A name far longer than any tag's is not decoded whole (it may be most of the file).
+            String name = pos - nameAt <= 64 ? text(nameAt, pos) : null;
+            if (name == null || !TAGS.contains(name)) {
+                throw error(nameAt, "unknown tag " + quote(nameAt, pos, "'") + (name == null ? "" : SceneGrammar.didYouMean(name, TAGS))
                         + " (known: " + String.join(", ", TAGS) + ")");
             }
             skipBlanks();
@@ -341,7 +342,7 @@ public final class ObjReader {
                 int at = pos;
                 boolean sharpness = name.equals("crease") || name.equals("corner");
                 double v = number((sharpness ? "sharpness " : "float ") + (i + 1) + " of " + nf + " of tag '" + name + "'" + argsSay);
-                if (sharpness && v < 0) throw error(at, name + " sharpness must not be negative, found " + MessageText.quote(text(at, pos), ""));
+                if (sharpness && v < 0) throw error(at, name + " sharpness must not be negative, found " + quote(at, pos, ""));
                 floats[i] = (float) v; // OpenSubdiv keeps sharpness as float
             }
             String[] strings = new String[ns];
@@ -467,8 +468,12 @@ public final class ObjReader {
         /** The token at pos (up to a blank, a comment or the line's end), consumed. */
         private String token() {
             int start = pos;
-            while (pos < end && !isBlank(b[pos]) && !isLineEnd(b[pos]) && b[pos] != '#') pos++;
+            skipToken();
             return text(start, pos);
+        }
+
+        private void skipToken() {
+            while (pos < end && !isBlank(b[pos]) && !isLineEnd(b[pos]) && b[pos] != '#') pos++;
         }
 
         private static String plural(int n, String word) {
@@ -549,7 +554,7 @@ public final class ObjReader {
             if (v == 0) throw error(start, "index 0 is not valid (OBJ indices start at 1)");
             String which = what.equals("vertex") ? "f index " : "f " + what + " index ";
             if (v > have) {
-                throw error(start, which + MessageText.quote(text(start, pos), "") + " out of range (the file has " + have + " " + (have == 1 ? singular : plural) + " so far)");
+                throw error(start, which + quote(start, pos, "") + " out of range (the file has " + have + " " + (have == 1 ? singular : plural) + " so far)");
             }
             return neg ? (int) (have - v) : (int) (v - 1);
         }
@@ -617,7 +622,7 @@ public final class ObjReader {
             } else {
                 value = Math.abs(Double.parseDouble(new String(b, start, pos - start, StandardCharsets.ISO_8859_1)));
             }
-            if (!Double.isFinite(value)) throw error(start, "number " + MessageText.quote(text(start, pos), "") + " is too large for " + what);
+            if (!Double.isFinite(value)) throw error(start, "number " + quote(start, pos, "") + " is too large for " + what);
             return neg ? -value : value;
         }
 
@@ -700,6 +705,21 @@ public final class ObjReader {
             return new String(b, from, to - from, StandardCharsets.UTF_8);
         }
 
+        /**
+         * Bytes {@code from..to} as a message quotes them ({@link MessageText#quote(String, long, String)}):
+         * only the start of a long token is decoded, since a token may be most of the file.
+         */
+        private String quote(int from, int to, String mark) {
+            long characters = 0;
+            int headEnd = to;
+            for (int i = from; i < to; i++) {
+                if ((b[i] & 0xC0) == 0x80) continue; // a UTF-8 continuation byte
+                if (characters == MessageText.SHOWN + 1 && headEnd == to) headEnd = i;
+                characters++;
+            }
+            return MessageText.quote(text(from, characters > MessageText.SHOWN + MessageText.SLACK ? headEnd : to), characters, mark);
+        }
+
         /** What is at {@code at}, for "found ..." in messages: a quoted token or a description. */
         private String describe(int at) {
             if (at >= end) return "end of file";
@@ -709,7 +729,7 @@ public final class ObjReader {
             if (isBlank(c)) return "a space";
             int e = at;
             while (e < end && !isBlank(b[e]) && !isLineEnd(b[e])) e++;
-            return MessageText.quote(text(at, e));
+            return quote(at, e, "'");
         }
     }
 

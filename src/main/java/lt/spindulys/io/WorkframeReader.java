@@ -182,7 +182,19 @@ public final class WorkframeReader {
         String position(int i) { return number + ":" + columns[i]; }
 
         String describe() {
-            return tokens.isEmpty() ? "an empty line" : MessageText.quote(String.join(" ", tokens));
+            if (tokens.isEmpty()) return "an empty line";
+            // Joined only as far as a message shows: a line may hold a huge token, or very many.
+            int show = MessageText.SHOWN + MessageText.SLACK + 1;
+            StringBuilder head = new StringBuilder();
+            long length = -1;
+            for (String t : tokens) {
+                length += 1 + t.length();
+                if (head.length() < show) {
+                    if (head.length() > 0) head.append(' ');
+                    head.append(t, 0, Math.min(t.length(), show));
+                }
+            }
+            return MessageText.quote(head.toString(), length, "'");
         }
     }
 

@@ -14,7 +14,7 @@ public final class MessageText {
     public static final int SHOWN = 40;
 
     /** A token is shown whole if cutting it would save fewer characters than this. */
-    static final int SLACK = 20;
+    public static final int SLACK = 20;
 
     /**
      * {@code s} itself if it is at most {@value #SHOWN} + {@value #SLACK} characters, else its
@@ -41,6 +41,18 @@ public final class MessageText {
 
     /** {@link #quote(String, String)} in single quotes, as messages quote a token after "found". */
     public static String quote(String s) { return quote(s, "'"); }
+
+    /**
+     * As {@link #quote(String, String)} for a token known by its start and its length, so that a
+     * reader need not decode a huge token whole to quote it: {@code head} is the token itself if
+     * it is at most {@value #SHOWN} + {@value #SLACK} characters long, else at least its first
+     * {@value #SHOWN}.
+     */
+    public static String quote(String head, long length, String mark) {
+        if (length <= SHOWN + SLACK) return mark + head + mark;
+        int n = Character.isHighSurrogate(head.charAt(SHOWN - 1)) ? SHOWN - 1 : SHOWN;
+        return mark + head.substring(0, n) + "..." + mark + " (" + length + " characters)";
+    }
 
     /**
      * {@code s} with every character that would not print as itself on one line escaped: \0

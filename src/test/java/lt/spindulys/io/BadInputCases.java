@@ -279,6 +279,11 @@ public final class BadInputCases {
                         "1:7: number " + run('5', 40) + "... (" + MB + " characters) is too large for vertex z"),
                 withFile("1 MB statement in an OBJ mesh", "mesh { file \"m.obj\" }", "m.obj", "v 0 0 0\n" + run('w', MB) + " 1\n", true,
                         "2:1: unknown OBJ statement '" + run('w', 40) + "...' (" + MB + " characters)"),
+                withFile("1 MB tag name in an OBJ mesh", "subdiv { file \"m.obj\" }", "m.obj", QUAD_OBJ + "t " + run('c', MB) + " 1/0/0 0\n", true,
+                        "6:3: unknown tag '" + run('c', 40) + "...' (" + MB + " characters) (known: crease, corner, hole, interpolateboundary, "
+                                + "facevaryinginterpolateboundary, facevaryingpropagatecorners, creasemethod, smoothtriangles, vertexedit, edgeedit, faceedit)"),
+                withFile("half a million numbers in a .dat header", "subdiv { file \"m.dat\" }", "m.dat", "1 2 " + "3 ".repeat(MB / 2) + "\n", true,
+                        "1:5: expected the header 'point_count face_count' (two integers), found '1 2 " + "3 ".repeat(18) + "...' (" + (MB + 3) + " characters)"),
                 c("NUL in a number", "sphere { radius 1\u0000x }", "1:17: malformed number '1\\0x'"),
                 c("DEL in a string", "sphere { radius \"a\u007fb\" }", "1:17: expected a number for 'radius', found string \"a\\x7Fb\""),
                 c("line separator in a number", "sphere { radius 2\u2028 }", "1:17: malformed number '2\\u2028'"),

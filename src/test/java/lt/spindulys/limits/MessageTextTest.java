@@ -24,6 +24,14 @@ class MessageTextTest {
     }
 
     @Test
+    void aTokenKnownByItsStartIsQuotedAlike() {
+        assertEquals("'abc'", MessageText.quote("abc", 3, "'"));
+        String head = "0123456789".repeat(7);
+        assertEquals("'" + head.substring(0, 40) + "...' (123456789 characters)", MessageText.quote(head, 123456789, "'"));
+        assertEquals(MessageText.quote("x".repeat(500)), MessageText.quote("x".repeat(61), 500, "'"));
+    }
+
+    @Test
     void cuttingKeepsSurrogatePairsWhole() {
         String s = "x".repeat(39) + "\uD83D\uDE00" + "y".repeat(40);
         assertEquals("x".repeat(39) + "...", MessageText.cut(s));
