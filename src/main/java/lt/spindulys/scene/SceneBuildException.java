@@ -1,12 +1,15 @@
 package lt.spindulys.scene;
 
+import lt.spindulys.limits.MessageText;
+
 /**
  * An object refused while {@link SceneBuilder#build()} freezes the scene (a transform that
  * becomes singular or overflows once composed with an enclosing object's, a motion whose times do
  * not fit the shutter), named by where it was made: its {@link GObject#source()}, as in
  * {@code "scene.dat:12:3: sphere: transform is singular (a scale of zero?)"}; or, for an
  * object without one, by its place in the scene: {@code "object 2 (union), operand 1 (sphere
- * 'ball'): ..."} (counted from 1). {@link #problem()} is the refusal alone.
+ * 'ball'): ..."} (counted from 1). {@link #problem()} is the refusal alone. Like
+ * {@code SceneException}'s, the message is one line (unprintable characters escaped).
  */
 public final class SceneBuildException extends IllegalArgumentException {
     private final String problem;
@@ -50,6 +53,6 @@ public final class SceneBuildException extends IllegalArgumentException {
     public String source() { return source; }
 
     @Override public String getMessage() {
-        return (source != null ? source + ": " : "") + head + tail + ": " + problem;
+        return MessageText.escape((source != null ? source + ": " : "") + head + tail + ": " + problem);
     }
 }

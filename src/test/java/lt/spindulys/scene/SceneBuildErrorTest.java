@@ -44,6 +44,14 @@ class SceneBuildErrorTest {
     }
 
     @Test
+    void theMessageIsOneLine() {
+        Sphere s = new Sphere(Vec3.ZERO, 1);
+        s.name("a\nb");
+        SceneBuildException e = assertThrows(SceneBuildException.class, () -> new SceneBuilder().add(tinyUnion(s)).build());
+        assertEquals("object 1 (union), operand 2 (sphere 'a\\nb'): " + SINGULAR, e.getMessage());
+    }
+
+    @Test
     void theSourceOfTheObjectPlacesTheMessage() {
         Sphere s = new Sphere(Vec3.ZERO, 1);
         s.source("scene.dat:3:3");
