@@ -7,6 +7,7 @@ import java.util.List;
 
 import lt.spindulys.image.NonFinitePixelException;
 import lt.spindulys.io.SceneException;
+import lt.spindulys.limits.MessageText;
 
 /**
  * The {@code render} command line: {@code render SCENE.dat ...} renders ({@link RenderCommand}),
@@ -55,18 +56,18 @@ public final class Main {
             }
             return new RenderCommand(rest.toArray(new String[0])).run(out, err);
         } catch (UsageException e) {
-            err.println("render: " + e.getMessage());
+            line(err, "render: " + e.getMessage());
             return 2;
         } catch (SceneException | RenderCommand.NoSuchFileException | IllegalArgumentException e) {
             // Bad input: the message already names the place (file:line:column or the object).
-            err.println(e.getMessage());
+            line(err, e.getMessage());
             if (debug) e.printStackTrace(err);
             return 2;
         } catch (InterruptedException e) {
-            err.println("render: interrupted; no image written");
+            line(err, "render: interrupted; no image written");
             return 1;
         } catch (java.io.IOException e) {
-            err.println("render: " + e.getMessage());
+            line(err, "render: " + e.getMessage());
             if (debug) e.printStackTrace(err);
             return 1;
         } catch (NonFinitePixelException e) {
@@ -75,13 +76,22 @@ public final class Main {
             if (debug) e.printStackTrace(err);
             return 1;
         } catch (OutOfMemoryError e) {
-            err.println("render: out of memory (give the JVM more with -Xmx, or lower the resolution)");
+            line(err, "render: out of memory (give the JVM more with -Xmx, or lower the resolution)");
             return 1;
         } catch (RuntimeException e) {
-            err.println("render: internal error: " + e + (debug ? "" : " (run with --debug for details)"));
+            line(err, "render: internal error: " + e + (debug ? "" : " (run with --debug for details)"));
             if (debug) e.printStackTrace(err);
             return 1;
         }
+    }
+
+    /**
+     * Prints one message line: whatever the input put into it (a newline, a NUL, a U+2028 in a
+     * file name or a token), it stays one line on stderr. SceneException has escaped its own
+     * already; this is the safety net for every other message.
+     */
+    private static void line(PrintStream err, String message) {
+        err.println(MessageText.escape(message));
     }
 
     static String version() {

@@ -25,6 +25,7 @@ import lt.spindulys.render.Renderer;
 import lt.spindulys.render.TerminalProgress;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
+import lt.spindulys.scene.SceneBuildException;
 import lt.spindulys.scene.SceneBuilder;
 
 /** {@code render SCENE.dat [options]}: parse, override settings, render, write the image atomically. */
@@ -166,8 +167,11 @@ final class RenderCommand {
             built = builder.build();
         } catch (IllegalArgumentException e) {
             // A motion's own times may not fit a shutter given here (an open start or finish is the shutter's).
-            if (shutter != null) throw new UsageException("--shutter " + shutter[0] + "," + shutter[1] + ": " + e.getMessage());
-            throw e;
+            if (shutter == null) throw e;
+            String given = "--shutter " + shutter[0] + "," + shutter[1];
+            // The object's statement comes first when there is one, as in every other input error.
+            if (e instanceof SceneBuildException b && b.source() != null) throw new IllegalArgumentException(e.getMessage() + " (with " + given + ")", e);
+            throw new UsageException(given + ": " + e.getMessage());
         }
         long t2 = System.nanoTime();
 

@@ -9,6 +9,7 @@ import lt.spindulys.io.AtomicFile;
 import lt.spindulys.io.ObjReader;
 import lt.spindulys.io.ObjWriter;
 import lt.spindulys.io.SceneException;
+import lt.spindulys.limits.MessageText;
 import lt.spindulys.io.WorkframeReader;
 import lt.spindulys.scene.SubdivisionSurface;
 import lt.spindulys.subdiv.CatmullClark;
@@ -83,7 +84,7 @@ final class SubdivideCommand {
             throw new SceneException(name, 0, 0, e.getMessage());
         }
         for (String tag : in.tags().ignored()) {
-            err.println(name + ": note: tag '" + tag + "' is ignored (OpenSubdiv's Far does not apply it either)");
+            err.println(MessageText.escape(name + ": note: tag '" + tag + "' is ignored (OpenSubdiv's Far does not apply it either)"));
         }
         ControlMesh control = in.toControlMesh();
         RefinedMesh refined = CatmullClark.refine(control, level);

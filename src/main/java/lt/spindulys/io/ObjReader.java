@@ -12,6 +12,7 @@ import java.util.Set;
 
 import lt.spindulys.limits.InputFiles;
 import lt.spindulys.limits.InsufficientMemoryException;
+import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.scene.MeshData;
 import lt.spindulys.subdiv.SubdivInput;
@@ -166,10 +167,9 @@ public final class ObjReader {
                 } else if (isSkipped(start, len)) {
                     skipStatement();
                 } else {
-                    String word = new String(b, start, len, StandardCharsets.UTF_8);
-                    String what = unsupported(word);
-                    throw error(start, what != null ? "OBJ statement '" + word + "' (" + what + ") is not supported"
-                            : "unknown OBJ statement '" + word + "'");
+                    String what = len <= 16 ? unsupported(text(start, pos)) : null;
+                    throw error(start, what != null ? "OBJ statement '" + text(start, pos) + "' (" + what + ") is not supported"
+                            : "unknown OBJ statement " + quote(start, pos, "'"));
                 }
                 nextLine();
             }
@@ -311,9 +311,11 @@ public final class ObjReader {
             skipBlanks();
             int nameAt = pos;
             if (atLineEnd()) throw error(nameAt, "expected a tag name after 't', found " + describe(nameAt));
-            String name = token();
-            if (!TAGS.contains(name)) {
-                throw error(nameAt, "unknown tag '" + name + "'" + SceneGrammar.didYouMean(name, TAGS)
+            skipToken();
+            // A name far longer than any tag's is not decoded whole (it may be most of the file).
+            String name = pos - nameAt <= 64 ? text(nameAt, pos) : null;
+            if (name == null || !TAGS.contains(name)) {
+                throw error(nameAt, "unknown tag " + quote(nameAt, pos, "'") + (name == null ? "" : SceneGrammar.didYouMean(name, TAGS))
                         + " (known: " + String.join(", ", TAGS) + ")");
             }
             skipBlanks();
@@ -350,7 +352,7 @@ public final class ObjReader {
                 int at = pos;
                 boolean sharpness = name.equals("crease") || name.equals("corner");
                 double v = number((sharpness ? "sharpness " : "float ") + (i + 1) + " of " + nf + " of tag '" + name + "'" + argsSay);
-                if (sharpness && v < 0) throw error(at, name + " sharpness must not be negative, found " + text(at, pos));
+                if (sharpness && v < 0) throw error(at, name + " sharpness must not be negative, found " + quote(at, pos, ""));
                 floats[i] = (float) v; // OpenSubdiv keeps sharpness as float
             }
             String[] strings = new String[ns];
@@ -409,7 +411,7 @@ public final class ObjReader {
                     tags.options = tags.options.withCreasing(switch (strings[0]) {
                         case "normal" -> SubdivOptions.Creasing.UNIFORM;
                         case "chaikin" -> SubdivOptions.Creasing.CHAIKIN;
-                        default -> throw error(stringAt[0], "expected normal or chaikin for tag 'creasemethod', found '" + strings[0] + "'"
+                        default -> throw error(stringAt[0], "expected normal or chaikin for tag 'creasemethod', found " + MessageText.quote(strings[0])
                                 + SceneGrammar.didYouMean(strings[0], List.of("normal", "chaikin")));
                     });
                 }
@@ -417,7 +419,7 @@ public final class ObjReader {
                     tags.options = tags.options.withTriangles(switch (strings[0]) {
                         case "catmark" -> SubdivOptions.Triangles.CATMARK;
                         case "smooth" -> SubdivOptions.Triangles.SMOOTH;
-                        default -> throw error(stringAt[0], "expected catmark or smooth for tag 'smoothtriangles', found '" + strings[0] + "'"
+                        default -> throw error(stringAt[0], "expected catmark or smooth for tag 'smoothtriangles', found " + MessageText.quote(strings[0])
                                 + SceneGrammar.didYouMean(strings[0], List.of("catmark", "smooth")));
                     });
                 }
@@ -476,8 +478,12 @@ public final class ObjReader {
         /** The token at pos (up to a blank, a comment or the line's end), consumed. */
         private String token() {
             int start = pos;
-            while (pos < end && !isBlank(b[pos]) && !isLineEnd(b[pos]) && b[pos] != '#') pos++;
+            skipToken();
             return text(start, pos);
+        }
+
+        private void skipToken() {
+            while (pos < end && !isBlank(b[pos]) && !isLineEnd(b[pos]) && b[pos] != '#') pos++;
         }
 
         private static String plural(int n, String word) {
@@ -558,7 +564,7 @@ public final class ObjReader {
             if (v == 0) throw error(start, "index 0 is not valid (OBJ indices start at 1)");
             String which = what.equals("vertex") ? "f index " : "f " + what + " index ";
             if (v > have) {
-                throw error(start, which + text(start, pos) + " out of range (the file has " + have + " " + (have == 1 ? singular : plural) + " so far)");
+                throw error(start, which + quote(start, pos, "") + " out of range (the file has " + have + " " + (have == 1 ? singular : plural) + " so far)");
             }
             return neg ? (int) (have - v) : (int) (v - 1);
         }
@@ -628,7 +634,7 @@ public final class ObjReader {
             }
             // Bounded so that squares and products of coordinates cannot overflow (see Ranges).
             if (!(value <= Ranges.MAX_NUMBER)) {
-                throw error(start, "number " + text(start, pos) + " is too large for " + what + " (mesh numbers are at most "
+                throw error(start, "number " + quote(start, pos, "") + " is too large for " + what + " (mesh numbers are at most "
                         + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude)");
             }
             return neg ? -value : value;
@@ -713,6 +719,21 @@ public final class ObjReader {
             return new String(b, from, to - from, StandardCharsets.UTF_8);
         }
 
+        /**
+         * Bytes {@code from..to} as a message quotes them ({@link MessageText#quote(String, long, String)}):
+         * only the start of a long token is decoded, since a token may be most of the file.
+         */
+        private String quote(int from, int to, String mark) {
+            long characters = 0;
+            int headEnd = to;
+            for (int i = from; i < to; i++) {
+                if ((b[i] & 0xC0) == 0x80) continue; // a UTF-8 continuation byte
+                if (characters == MessageText.SHOWN + 1 && headEnd == to) headEnd = i;
+                characters++;
+            }
+            return MessageText.quote(text(from, characters > MessageText.SHOWN + MessageText.SLACK ? headEnd : to), characters, mark);
+        }
+
         /** What is at {@code at}, for "found ..." in messages: a quoted token or a description. */
         private String describe(int at) {
             if (at >= end) return "end of file";
@@ -721,8 +742,8 @@ public final class ObjReader {
             if (c == '#') return "a comment";
             if (isBlank(c)) return "a space";
             int e = at;
-            while (e < end && !isBlank(b[e]) && !isLineEnd(b[e]) && e - at < 40) e++;
-            return "'" + text(at, e) + "'";
+            while (e < end && !isBlank(b[e]) && !isLineEnd(b[e])) e++;
+            return quote(at, e, "'");
         }
     }
 

@@ -299,9 +299,15 @@ final class SceneGrammar {
      * unrelated two-letter key); the first in the given order wins ties. Null if there is none.
      */
     static String nearest(String word, Collection<String> candidates) {
+        // Only words of plausible length are compared, so the cost stays bounded whatever the input.
+        int longest = 0;
+        for (String c : candidates) longest = Math.max(longest, c.length());
+        if (word.length() > Math.min(MAX_SUGGESTED_LENGTH, 2 * longest + 2)) return null;
         String best = null;
         int bestDistance = Integer.MAX_VALUE;
         for (String c : candidates) {
+            // The distance is at least the difference in length: such a candidate could not be suggested.
+            if (Math.abs(c.length() - word.length()) > 2) continue;
             int d = editDistance(word, c);
             if (d < bestDistance) {
                 best = c;
@@ -310,6 +316,9 @@ final class SceneGrammar {
         }
         return best != null && bestDistance <= 2 && bestDistance < word.length() ? best : null;
     }
+
+    /** Words longer than this get no suggestion (nor those longer than twice the longest candidate + 2). */
+    static final int MAX_SUGGESTED_LENGTH = 64;
 
     /** " (did you mean 'x'?)" for the nearest candidate, or "" when none is close. */
     static String didYouMean(String word, Collection<String> candidates) {

@@ -1,6 +1,14 @@
 package lt.spindulys.io;
 
+import java.nio.ByteBuffer;
+import java.nio.CharBuffer;
+import java.nio.charset.CharsetDecoder;
+import java.nio.charset.CoderResult;
+import java.nio.charset.CodingErrorAction;
+import java.nio.charset.StandardCharsets;
 import java.util.regex.Pattern;
+
+import lt.spindulys.limits.MessageText;
 
 /**
  * Splits scene text into tokens on demand, recording the line and column where each starts.
@@ -16,12 +24,12 @@ final class SceneLexer {
      * escapes resolved; {@code number} is the value of a number token (always finite).
      */
     record Token(Kind kind, String text, double number, int line, int column) {
-        /** The token as an error message quotes it after "found". */
+        /** The token as an error message quotes it after "found" (a long one cut, see {@link MessageText#quote}). */
         String describe() {
             return switch (kind) {
                 case EOF -> "end of file";
-                case STRING -> "string \"" + text + "\"";
-                default -> "'" + text + "'";
+                case STRING -> "string " + MessageText.quote(text, "\"");
+                default -> MessageText.quote(text);
             };
         }
 
@@ -87,7 +95,7 @@ final class SceneLexer {
         if (ch == '"') return string(l, c);
         if (isWordStart(ch)) return word(l, c);
         if ((ch >= '0' && ch <= '9') || ch == '+' || ch == '-' || ch == '.') return number(l, c);
-        throw error(l, c, "unexpected character " + describeChar(ch));
+        throw error(l, c, "unexpected character " + describeChar(src.codePointAt(pos)));
     }
 
     private void skipBlanksAndComments() {
@@ -110,7 +118,7 @@ final class SceneLexer {
         if (pos < src.length() && !isDelimiter(src.charAt(pos))) {
             char ch = src.charAt(pos);
             String hint = ch == '=' || ch == ':' ? " (write a value after its key, separated by a space)" : "";
-            throw error(line, column, "unexpected character " + describeChar(ch) + " after '" + w + "'" + hint);
+            throw error(line, column, "unexpected character " + describeChar(src.codePointAt(pos)) + " after " + MessageText.quote(w) + hint);
         }
         return new Token(Kind.WORD, w, 0, l, c);
     }
@@ -122,11 +130,11 @@ final class SceneLexer {
         while (pos < src.length() && !isDelimiter(src.charAt(pos))) advance();
         String s = src.substring(start, pos);
         if (!NUMBER.matcher(s).matches()) {
-            if (isNonFiniteSpelling(s)) throw error(l, c, "NaN and Infinity are not allowed, found '" + s + "'");
-            throw error(l, c, "malformed number '" + s + "'");
+            if (isNonFiniteSpelling(s)) throw error(l, c, "NaN and Infinity are not allowed, found " + MessageText.quote(s));
+            throw error(l, c, "malformed number " + MessageText.quote(s));
         }
         double v = Double.parseDouble(s);
-        if (!Double.isFinite(v)) throw error(l, c, "number '" + s + "' is out of range");
+        if (!Double.isFinite(v)) throw error(l, c, "number " + MessageText.quote(s) + " is out of range");
         return new Token(Kind.NUMBER, s, v, l, c);
     }
 
@@ -188,6 +196,31 @@ final class SceneLexer {
         return new int[] {l, c};
     }
 
+    /**
+     * Decodes UTF-8 strictly, so that text in another encoding is reported rather than read as
+     * garbage: "FILE:LINE:COLUMN: WHAT is not UTF-8 text: byte 0xE9 cannot be decoded", placed
+     * where an editor shows the bad byte. Shared by every line-based text reader (scene files,
+     * Workframe meshes and unwraps), whose positions count as {@link #endPosition} does.
+     *
+     * @param what the file as the message names it: "the file", "the mesh file"
+     */
+    static String decodeUtf8(byte[] bytes, String fileName, String what) {
+        CharsetDecoder d = StandardCharsets.UTF_8.newDecoder()
+                .onMalformedInput(CodingErrorAction.REPORT)
+                .onUnmappableCharacter(CodingErrorAction.REPORT);
+        ByteBuffer in = ByteBuffer.wrap(bytes);
+        CharBuffer out = CharBuffer.allocate(bytes.length + 1);
+        CoderResult r = d.decode(in, out, true);
+        if (!r.isError()) r = d.flush(out);
+        out.flip();
+        if (r.isError()) {
+            int[] at = endPosition(out.toString());
+            throw new SceneException(fileName, at[0], at[1],
+                    String.format("%s is not UTF-8 text: byte 0x%02X cannot be decoded", what, bytes[in.position()] & 0xff));
+        }
+        return out.toString();
+    }
+
     static boolean isWordStart(char ch) {
         return (ch >= 'A' && ch <= 'Z') || (ch >= 'a' && ch <= 'z') || ch == '_';
     }
@@ -200,7 +233,9 @@ final class SceneLexer {
         return ch == ' ' || ch == '\t' || ch == '\n' || ch == '\r' || ch == '\f' || ch == '{' || ch == '}' || ch == '#' || ch == '"';
     }
 
-    private static String describeChar(char ch) {
-        return ch > ' ' && ch != 0x7f ? "'" + ch + "'" : String.format("U+%04X", (int) ch);
+    /** A character quoted, or as U+XXXX if it would not show as itself (blanks, controls, separators, a lone surrogate). */
+    private static String describeChar(int codePoint) {
+        String s = new String(Character.toChars(codePoint));
+        return codePoint > ' ' && MessageText.escape(s).equals(s) ? "'" + s + "'" : String.format("U+%04X", codePoint);
     }
 }

@@ -1,12 +1,6 @@
 package lt.spindulys.io;
 
 import java.io.IOException;
-import java.nio.ByteBuffer;
-import java.nio.CharBuffer;
-import java.nio.charset.CharsetDecoder;
-import java.nio.charset.CoderResult;
-import java.nio.charset.CodingErrorAction;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -29,6 +23,7 @@ import lt.spindulys.io.SceneGrammar.Key;
 import lt.spindulys.io.SceneLexer.Kind;
 import lt.spindulys.io.SceneLexer.Token;
 import lt.spindulys.limits.InputFiles;
+import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Motion;
 import lt.spindulys.math.Ranges;
@@ -81,6 +76,8 @@ import lt.spindulys.texture.Wrap;
 public final class SceneParser {
     private final SceneLexer lex;
     private final String file;
+    /** The file as objects' sources name it ("&lt;input&gt;" for text without a name), one string for all. */
+    private final String sourceName;
     private final Path baseDir;
     private final SceneBuilder builder = new SceneBuilder();
     private Token settingsAt, cameraAt;
@@ -99,6 +96,7 @@ public final class SceneParser {
     private SceneParser(String text, String file, Path baseDir) {
         this.lex = new SceneLexer(text, file);
         this.file = file;
+        this.sourceName = SceneException.location(file, 0, 0);
         this.baseDir = baseDir;
     }
 
@@ -176,9 +174,9 @@ public final class SceneParser {
             // A property outside any block usually means a '}' came too early.
             List<String> owners = new ArrayList<>();
             for (Block b : SceneGrammar.STATEMENTS) if (b.key(w) != null) owners.add(b.keyword());
-            if (!owners.isEmpty()) hint = " ('" + w + "' is a property of " + orList(owners) + ": was a block closed too early?)";
+            if (!owners.isEmpty()) hint = " (" + MessageText.quote(w) + " is a property of " + orList(owners) + ": was a block closed too early?)";
         }
-        return error(kw, "unknown statement '" + w + "'" + hint);
+        return error(kw, "unknown statement " + MessageText.quote(w) + hint);
     }
 
     private void settings(Token kw) {
@@ -283,7 +281,7 @@ public final class SceneParser {
                     + (n.kind() == Kind.STRING ? " (material names are bare words, without quotes)" : ""));
         }
         Token first = materialsAt.get(n.text());
-        if (first != null) throw error(n, "material '" + n.text() + "' is already defined at " + first.position());
+        if (first != null) throw error(n, "material " + MessageText.quote(n.text()) + " is already defined at " + first.position());
         Material m = material(block(SceneGrammar.MATERIAL, kw, n.text()), n.text());
         builder.defineMaterial(n.text(), m);
         materialsAt.put(n.text(), kw);
@@ -297,8 +295,8 @@ public final class SceneParser {
                     + (n.kind() == Kind.STRING ? " (texture names are bare words, without quotes)" : ""));
         }
         Token first = texturesAt.get(n.text());
-        if (first != null) throw error(n, "texture '" + n.text() + "' is already defined at " + first.position());
-        String label = "texture '" + n.text() + "'";
+        if (first != null) throw error(n, "texture " + MessageText.quote(n.text()) + " is already defined at " + first.position());
+        String label = "texture " + MessageText.quote(n.text());
         Props p = block(SceneGrammar.TEXTURE, kw, n.text());
         Prop image = p.prop("image"), pattern = p.prop("pattern");
         if (image != null && pattern != null) throw error(pattern.at, label + " has both 'image' and 'pattern': give one");
@@ -324,7 +322,7 @@ public final class SceneParser {
             // The cache says "FILE: reason"; the scene location and the name as written replace FILE.
             String reason = String.valueOf(e.getMessage());
             if (reason.startsWith(path + ": ")) reason = reason.substring(path.toString().length() + 2);
-            throw error(image.valueAt, "cannot read texture image '" + image.value + "': " + reason);
+            throw error(image.valueAt, "cannot read texture image " + MessageText.quote((String) image.value) + ": " + reason);
         }
         Filter filter = switch ((String) p.get("filter")) {
             case "nearest" -> Filter.NEAREST;
@@ -472,6 +470,8 @@ public final class SceneParser {
                 throw blame(p, e);
             }
         }
+        // Errors found only when the scene is built name this statement.
+        o.source(sourceName, kw.line(), kw.column());
         // Common keys; transforms compose in the order written (GObject.transform appends).
         for (Prop pr : p.all) {
             switch (pr.key.name()) {
@@ -538,11 +538,11 @@ public final class SceneParser {
         try {
             path = baseDir.resolve(rel).normalize();
         } catch (InvalidPathException e) {
-            throw error(f.valueAt, "mesh file name '" + rel + "' is not a valid path: " + e.getReason());
+            throw error(f.valueAt, "mesh file name " + MessageText.quote(rel) + " is not a valid path: " + e.getReason());
         }
         // Checked here rather than left to the reader so the message points into the scene file.
         String problem = InputFiles.problem(path);
-        if (problem != null) throw error(f.valueAt, "mesh file '" + rel + "' " + problem + " (looked in " + path + ")");
+        if (problem != null) throw error(f.valueAt, "mesh file " + MessageText.quote(rel) + " " + problem + " (looked in " + MessageText.cut(path.toString(), 200) + ")");
         TriangleMesh first = meshes.get(path);
         if (first != null) {
             // The same file again: another placement of the same geometry, read and indexed once.
@@ -555,7 +555,7 @@ public final class SceneParser {
         try {
             data = ObjReader.read(path);
         } catch (IOException e) {
-            throw error(f.valueAt, "cannot read mesh file '" + rel + "': " + e.getMessage());
+            throw error(f.valueAt, "cannot read mesh file " + MessageText.quote(rel) + ": " + e.getMessage());
         }
         TriangleMesh m;
         try {
@@ -603,13 +603,13 @@ public final class SceneParser {
     private SubdivisionSurface refineSurface(Props p, Prop f, String rel, Path path, Token levelAt, int level) {
         String ext = extension(rel);
         if (!ext.equals("obj") && !ext.equals("dat")) {
-            throw error(f.valueAt, "subdivision mesh file '" + rel + "' must be a Wavefront .obj or a Workframe .dat file");
+            throw error(f.valueAt, "subdivision mesh file " + MessageText.quote(rel) + " must be a Wavefront .obj or a Workframe .dat file");
         }
         SubdivInput input;
         try {
             input = ext.equals("obj") ? ObjReader.readSubdiv(path) : SubdivInput.of(WorkframeReader.readMesh(path));
         } catch (IOException e) {
-            throw error(f.valueAt, "cannot read subdivision mesh file '" + rel + "': " + e.getMessage());
+            throw error(f.valueAt, "cannot read subdivision mesh file " + MessageText.quote(rel) + ": " + e.getMessage());
         }
         Prop uv = p.prop("uv");
         if (uv != null) {
@@ -617,7 +617,7 @@ public final class SceneParser {
             try {
                 input = input.withCornerUvs(WorkframeReader.readUnwrap(uvPath, input.mesh()));
             } catch (IOException e) {
-                throw error(uv.valueAt, "cannot read unwrap file '" + uv.value + "': " + e.getMessage());
+                throw error(uv.valueAt, "cannot read unwrap file " + MessageText.quote((String) uv.value) + ": " + e.getMessage());
             }
         }
         input = input.withOptions(options(p, input.options()));
@@ -685,10 +685,10 @@ public final class SceneParser {
         try {
             path = baseDir.resolve(rel).normalize();
         } catch (InvalidPathException e) {
-            throw error(f.valueAt, what + " name '" + rel + "' is not a valid path: " + e.getReason());
+            throw error(f.valueAt, what + " name " + MessageText.quote(rel) + " is not a valid path: " + e.getReason());
         }
         String problem = InputFiles.problem(path);
-        if (problem != null) throw error(f.valueAt, what + " '" + rel + "' " + problem + " (looked in " + path + ")");
+        if (problem != null) throw error(f.valueAt, what + " " + MessageText.quote(rel) + " " + problem + " (looked in " + MessageText.cut(path.toString(), 200) + ")");
         return path;
     }
 
@@ -744,10 +744,10 @@ public final class SceneParser {
      * @param name the material's name for a named material, else null
      */
     private Props block(Block b, Token kw, String name) {
-        String label = name == null ? b.keyword() : b.keyword() + " '" + name + "'";
+        String label = name == null ? b.keyword() : b.keyword() + " " + MessageText.quote(name);
         Token open = lex.next();
         if (open.kind() != Kind.OPEN) {
-            throw error(open, "expected '{' after '" + b.keyword() + (name == null ? "" : " " + name) + "', found " + open.describe());
+            throw error(open, "expected '{' after " + MessageText.quote(b.keyword() + (name == null ? "" : " " + name)) + ", found " + open.describe());
         }
         Props p = new Props(b, kw);
         boolean csg = b.category() == SceneGrammar.Category.CSG;
@@ -793,7 +793,7 @@ public final class SceneParser {
         if (hint.isEmpty() && SceneGrammar.statement(t.text()) != null) {
             hint = " (is a '}' missing to close '" + b.keyword() + "' opened at " + opener.position() + "?)";
         }
-        return error(t, "unknown " + (csg ? "property or operand" : "property") + " '" + t.text() + "' in " + label + hint);
+        return error(t, "unknown " + (csg ? "property or operand" : "property") + " " + MessageText.quote(t.text()) + " in " + label + hint);
     }
 
     private Object value(Block b, Key k, Token keyToken) {
@@ -878,10 +878,10 @@ public final class SceneParser {
         try {
             v = Long.parseLong(t.text().startsWith("+") ? t.text().substring(1) : t.text());
         } catch (NumberFormatException e) {
-            throw error(t, "integer " + t.text() + " is out of range for '" + key + "'");
+            throw error(t, "integer " + MessageText.quote(t.text(), "") + " is out of range for '" + key + "'");
         }
         if (isLong) return v;
-        if (v < Integer.MIN_VALUE || v > Integer.MAX_VALUE) throw error(t, "integer " + t.text() + " is out of range for '" + key + "'");
+        if (v < Integer.MIN_VALUE || v > Integer.MAX_VALUE) throw error(t, "integer " + MessageText.quote(t.text(), "") + " is out of range for '" + key + "'");
         return (int) v;
     }
 
@@ -921,7 +921,7 @@ public final class SceneParser {
                 }
                 throw error(t, "expected " + orList(choices) + " for '" + key + "', found " + t.describe() + hint);
             }
-            if (out.contains(t.text())) throw error(t, "'" + t.text() + "' listed twice for '" + key + "'");
+            if (out.contains(t.text())) throw error(t, MessageText.quote(t.text()) + " listed twice for '" + key + "'");
             out.add(t.text());
         }
     }
@@ -941,7 +941,7 @@ public final class SceneParser {
         if (builder.hasMaterial(t.text())) return builder.material(t.text());
         String hint = SceneGrammar.didYouMean(t.text(), materialsAt.keySet());
         if (hint.isEmpty()) hint = " (a material must be defined before the objects that use it)";
-        throw error(t, "unknown material '" + t.text() + "'" + hint);
+        throw error(t, "unknown material " + MessageText.quote(t.text()) + hint);
     }
 
     /** A texture name defined earlier. */
@@ -952,7 +952,7 @@ public final class SceneParser {
         if (tex != null) return tex;
         String hint = SceneGrammar.didYouMean(t.text(), texturesAt.keySet());
         if (hint.isEmpty()) hint = " (a texture must be defined before the materials that use it)";
-        throw error(t, "unknown texture '" + t.text() + "'" + hint);
+        throw error(t, "unknown texture " + MessageText.quote(t.text()) + hint);
     }
 
     private Transform rotate(Token keyToken) {
@@ -1088,19 +1088,6 @@ public final class SceneParser {
 
     /** Decodes strictly, so that a file in another encoding is reported rather than read as garbage. */
     private static String decodeUtf8(byte[] bytes, String name) {
-        CharsetDecoder d = StandardCharsets.UTF_8.newDecoder()
-                .onMalformedInput(CodingErrorAction.REPORT)
-                .onUnmappableCharacter(CodingErrorAction.REPORT);
-        ByteBuffer in = ByteBuffer.wrap(bytes);
-        CharBuffer out = CharBuffer.allocate(bytes.length + 1);
-        CoderResult r = d.decode(in, out, true);
-        if (!r.isError()) r = d.flush(out);
-        out.flip();
-        if (r.isError()) {
-            int[] at = SceneLexer.endPosition(out.toString());
-            throw new SceneException(name, at[0], at[1],
-                    String.format("the file is not UTF-8 text: byte 0x%02X cannot be decoded", bytes[in.position()] & 0xff));
-        }
-        return out.toString();
+        return SceneLexer.decodeUtf8(bytes, name, "the file");
     }
 }

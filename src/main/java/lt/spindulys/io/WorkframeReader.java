@@ -1,8 +1,6 @@
 package lt.spindulys.io;
 
 import java.io.IOException;
-import java.nio.charset.CharacterCodingException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -11,6 +9,7 @@ import java.util.regex.Pattern;
 
 import lt.spindulys.limits.InputFiles;
 import lt.spindulys.limits.InsufficientMemoryException;
+import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.scene.MeshData;
 
@@ -177,11 +176,7 @@ public final class WorkframeReader {
         } catch (IOException e) {
             throw new SceneException(name, 0, 0, "cannot read " + what + " file: " + e.getMessage(), e);
         }
-        try {
-            return StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(bytes)).toString();
-        } catch (CharacterCodingException e) {
-            throw new SceneException(name, 0, 0, "the " + what + " file is not UTF-8 text");
-        }
+        return SceneLexer.decodeUtf8(bytes, name, "the " + what + " file");
     }
 
     /** One line's tokens with their 1-based columns. */
@@ -197,7 +192,19 @@ public final class WorkframeReader {
         String position(int i) { return number + ":" + columns[i]; }
 
         String describe() {
-            return tokens.isEmpty() ? "an empty line" : "'" + String.join(" ", tokens) + "'";
+            if (tokens.isEmpty()) return "an empty line";
+            // Joined only as far as a message shows: a line may hold a huge token, or very many.
+            int show = MessageText.SHOWN + MessageText.SLACK + 1;
+            StringBuilder head = new StringBuilder();
+            long length = -1;
+            for (String t : tokens) {
+                length += 1 + t.length();
+                if (head.length() < show) {
+                    if (head.length() > 0) head.append(' ');
+                    head.append(t, 0, Math.min(t.length(), show));
+                }
+            }
+            return MessageText.quote(head.toString(), length, "'");
         }
     }
 
@@ -270,11 +277,11 @@ public final class WorkframeReader {
 
         long integer(Line l, int i, String what) {
             String t = l.text(i);
-            if (!INTEGER.matcher(t).matches()) throw error(l.at(i), "expected an integer for the " + what + ", found '" + t + "'");
+            if (!INTEGER.matcher(t).matches()) throw error(l.at(i), "expected an integer for the " + what + ", found " + MessageText.quote(t));
             try {
                 return Long.parseLong(t.startsWith("+") ? t.substring(1) : t);
             } catch (NumberFormatException e) {
-                throw error(l.at(i), "integer " + t + " is out of range for the " + what);
+                throw error(l.at(i), "integer " + MessageText.quote(t, "") + " is out of range for the " + what);
             }
         }
 
@@ -289,11 +296,11 @@ public final class WorkframeReader {
 
         double number(Line l, int i, String what) {
             String t = l.text(i);
-            if (!NUMBER.matcher(t).matches()) throw error(l.at(i), "expected a number for " + what + ", found '" + t + "'");
+            if (!NUMBER.matcher(t).matches()) throw error(l.at(i), "expected a number for " + what + ", found " + MessageText.quote(t));
             double v = Double.parseDouble(t);
             // Bounded so that squares and products of coordinates cannot overflow (see Ranges).
             if (!Ranges.isModest(v)) {
-                throw error(l.at(i), "number " + t + " is too large for " + what + " (mesh numbers are at most "
+                throw error(l.at(i), "number " + MessageText.quote(t, "") + " is too large for " + what + " (mesh numbers are at most "
                         + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude)");
             }
             return v;

@@ -62,6 +62,18 @@ public final class Ranges {
         return bound == Math.rint(bound) ? Long.toString((long) bound) : Double.toString(bound);
     }
 
+    /** "1e20", "1.5e16", "-3e-7", "250": a magnitude for a message, to three significant digits. */
+    public static String approx(double v) {
+        if (v == Math.rint(v) && Math.abs(v) < 1e6) return Long.toString((long) v);
+        String s = String.format(Locale.ROOT, "%.3g", v);
+        int e = s.indexOf('e');
+        if (e < 0) return s.contains(".") ? s.replaceAll("0+$", "").replaceAll("\\.$", "") : s;
+        String mantissa = s.substring(0, e), exponent = s.substring(e + 1);
+        if (mantissa.contains(".")) mantissa = mantissa.replaceAll("0+$", "").replaceAll("\\.$", "");
+        exponent = exponent.replace("+", "").replaceFirst("^(-?)0+(?=\\d)", "$1");
+        return mantissa + "e" + exponent;
+    }
+
     /** {@code v}, if it is in [0, max]; else "WHAT must be between 0 and MAX, found V". */
     public static double inRange(String what, double v, double max) {
         if (!(v >= 0 && v <= max)) throw new IllegalArgumentException(what + " must be between 0 and " + show(max) + ", found " + v);

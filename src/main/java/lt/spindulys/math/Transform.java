@@ -192,18 +192,18 @@ public final class Transform implements ObjectMapping {
             if (inv == null) {
                 // The matrix alone, before it is inverted: a huge scale reads as such, not as "singular".
                 if (!translation && !(Math.abs(m[i]) <= Ranges.MAX_SCALE)) {
-                    throw new IllegalArgumentException("transform scales by more than " + Ranges.show(Ranges.MAX_SCALE) + " (matrix entry " + m[i] + ")");
+                    throw new IllegalArgumentException("transform scales by more than " + Ranges.show(Ranges.MAX_SCALE) + " (a matrix entry is " + Ranges.approx(m[i]) + ")");
                 }
                 continue;
             }
             if (!translation && !(Math.abs(m[i]) <= Ranges.MAX_SCALE)) {
-                throw new IllegalArgumentException("transform scales by more than " + Ranges.show(Ranges.MAX_SCALE) + " (matrix entry " + m[i] + ")");
+                throw new IllegalArgumentException("transform scales by more than " + Ranges.show(Ranges.MAX_SCALE) + " (a matrix entry is " + Ranges.approx(m[i]) + ")");
             }
             if (!translation && !(Math.abs(inv[i]) <= Ranges.MAX_SCALE)) {
-                throw new IllegalArgumentException("transform shrinks by more than a factor of " + Ranges.show(Ranges.MAX_SCALE) + " (inverse matrix entry " + inv[i] + ")");
+                throw new IllegalArgumentException("transform shrinks by more than a factor of " + Ranges.show(Ranges.MAX_SCALE) + " (an entry of its inverse is " + Ranges.approx(inv[i]) + ")");
             }
             if (translation && !(Math.abs(m[i]) <= Ranges.MAX_TRANSLATION)) {
-                throw new IllegalArgumentException("transform translates by more than " + Ranges.show(Ranges.MAX_TRANSLATION) + " (" + m[i] + ")");
+                throw new IllegalArgumentException("transform translates by more than " + Ranges.show(Ranges.MAX_TRANSLATION) + " (by " + Ranges.approx(m[i]) + ")");
             }
         }
     }

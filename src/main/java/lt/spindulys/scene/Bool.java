@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.function.Consumer;
 
 import lt.spindulys.accel.AcceleratorKind;
+import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Motion;
@@ -106,13 +107,18 @@ public final class Bool extends GObject {
             GObject o = operands.get(i);
             String which = op.keyword() + " operand " + (i + 1);
             if (o == null) throw new IllegalArgumentException(which + " is missing");
-            if (o.isFrozen()) throw new IllegalArgumentException(which + " (" + o.name() + ") already belongs to a built scene");
-            if (o.solid() != o) throw new IllegalArgumentException(which + " (" + o.name() + ") is already an operand of another " + o.solid().kind());
+            if (o.isFrozen()) throw new IllegalArgumentException(which + " (" + MessageText.cut(o.name()) + ") already belongs to a built scene");
+            if (o.solid() != o) throw new IllegalArgumentException(which + " (" + MessageText.cut(o.name()) + ") is already an operand of another " + o.solid().kind());
             Integer before = seen.put(o, i);
-            if (before != null) throw new IllegalArgumentException(which + " (" + o.name() + ") is the same object as operand " + (before + 1));
+            if (before != null) throw new IllegalArgumentException(which + " (" + MessageText.cut(o.name()) + ") is the same object as operand " + (before + 1));
+            if (o instanceof TriangleMesh m && m.triangleCount() == 0) {
+                int zero = m.degenerateCount();
+                throw new IllegalArgumentException(which + " (" + MessageText.cut(o.name()) + ") is empty: "
+                        + (zero == 0 ? "it has no faces" : "all of its " + zero + " triangles have zero area") + ", so it has no inside");
+            }
             if (!o.isClosed()) {
                 int n = boundaryEdges(o);
-                throw new IllegalArgumentException(which + " (" + o.name() + ") is not closed: "
+                throw new IllegalArgumentException(which + " (" + MessageText.cut(o.name()) + ") is not closed: "
                         + (n >= 0 ? "it has " + n + " boundary edges" : "it has no inside"));
             }
             this.operands[i] = o;
@@ -148,7 +154,13 @@ public final class Bool extends GObject {
         Placement toWorld = placementIn(parentToWorld);
         Material inner = own != null ? own : inherited;
         int next = ids + 1;
-        for (GObject o : operands) next = o.freeze(toWorld, inner, next, accel);
+        for (int i = 0; i < operands.length; i++) {
+            try {
+                next = operands[i].freeze(toWorld, inner, next, accel);
+            } catch (IllegalArgumentException e) {
+                throw SceneBuildException.of(operands[i], e).inOperand(this, i);
+            }
+        }
         markSolid(this);
         // Last, because the world bounds are computed from the frozen operands'.
         super.freeze(parentToWorld, inherited, ids, accel);

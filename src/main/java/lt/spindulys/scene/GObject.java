@@ -1,6 +1,7 @@
 package lt.spindulys.scene;
 
 import lt.spindulys.accel.AcceleratorKind;
+import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Motion;
 import lt.spindulys.math.ObjectMapping;
@@ -33,6 +34,13 @@ public abstract class GObject {
     private Motion motion;
     private Material material;
     private String name;
+    /**
+     * Where the object was made, for messages only (see {@link #source(String)}): the whole text,
+     * or a file name shared by every object of the file with the line and column apart, so that
+     * a scene of many small objects does not keep a string per object.
+     */
+    private String source;
+    private int sourceLine, sourceColumn;
 
     /** Composed object-to-world transform of an object that does not move (else null); set by {@link #freeze}. */
     protected Transform objectToWorld;
@@ -87,6 +95,42 @@ public abstract class GObject {
     /** The kind of object for messages, for example "sphere". */
     public abstract String kind();
 
+    /**
+     * Records where this object was made, such as "scene.dat:12:3" for the statement that made it,
+     * so that errors found only when the scene is built name that place ({@link SceneBuildException}).
+     * Used for messages only; null: none.
+     */
+    public GObject source(String where) {
+        checkMutable();
+        source = where;
+        sourceLine = sourceColumn = 0;
+        return this;
+    }
+
+    /**
+     * {@link #source(String)} as "file:line:column" (the scene parser's; "file:line" if the column
+     * is 0), kept without making the string until a message needs it.
+     */
+    public GObject source(String file, int line, int column) {
+        checkMutable();
+        if (line < 1) throw new IllegalArgumentException("source line must be at least 1, found " + line);
+        source = file;
+        sourceLine = line;
+        sourceColumn = Math.max(column, 0);
+        return this;
+    }
+
+    /** Where this object was made (see {@link #source(String)}), or null. */
+    public String source() {
+        if (sourceLine == 0) return source;
+        return source + ":" + sourceLine + (sourceColumn > 0 ? ":" + sourceColumn : "");
+    }
+
+    /** The object as build errors name it: its kind, and its name if it was given one ("sphere 'ball'"). */
+    final String label() {
+        return name == null ? kind() : kind() + " " + MessageText.quote(name);
+    }
+
     protected final void checkMutable() {
         if (frozen) throw new IllegalStateException(name() + " is part of a frozen scene and cannot change");
     }
@@ -114,8 +158,13 @@ public abstract class GObject {
      */
     public int freeze(Placement parentToWorld, Material inherited, int ids, AcceleratorKind accel) {
         if (frozen) throw new IllegalStateException(name() + " is added to the scene twice");
-        if (motion != null) motion = motion.resolve(parentToWorld.open(), parentToWorld.close());
-        Placement p = placementIn(parentToWorld);
+        Placement p;
+        try {
+            if (motion != null) motion = motion.resolve(parentToWorld.open(), parentToWorld.close());
+            p = placementIn(parentToWorld);
+        } catch (IllegalArgumentException e) {
+            throw SceneBuildException.of(this, e);
+        }
         frozen = true;
         if (p.isStatic()) objectToWorld = p.staticTransform();
         else moving = p;
@@ -139,9 +188,14 @@ public abstract class GObject {
      * transform, its motion (open times from the parent's shutter), then the parent's.
      */
     protected final Placement placementIn(Placement parentToWorld) {
-        Placement own = Placement.of(transform, parentToWorld.open(), parentToWorld.close());
-        if (motion != null) own = own.then(motion);
-        return own.then(parentToWorld);
+        try {
+            Placement own = Placement.of(transform, parentToWorld.open(), parentToWorld.close());
+            if (motion != null) own = own.then(motion);
+            return own.then(parentToWorld);
+        } catch (IllegalArgumentException e) {
+            // Composing may overflow or make a transform singular that was fine alone.
+            throw SceneBuildException.of(this, e);
+        }
     }
 
     /** True if this object moves during the shutter (by its own motion or an enclosing object's); known once frozen. */

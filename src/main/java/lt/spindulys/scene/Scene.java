@@ -38,7 +38,14 @@ public final class Scene {
         int ids = 0;
         // The shutter fills in motions' open start and finish times; bounds cover all of it.
         Placement world = Placement.of(Transform.IDENTITY, settings.shutterOpen(), settings.shutterClose());
-        for (GObject o : objects) ids = o.freeze(world, Material.DEFAULT, ids, settings.accelerator());
+        for (int i = 0; i < objects.size(); i++) {
+            GObject o = objects.get(i);
+            try {
+                ids = o.freeze(world, Material.DEFAULT, ids, settings.accelerator());
+            } catch (IllegalArgumentException e) {
+                throw SceneBuildException.of(o, e).inScene(i);
+            }
+        }
         objectIds = ids;
         boolean[] anyTransparent = {false};
         for (GObject o : objects) o.forEachMaterial(m -> anyTransparent[0] |= m.isTransparent());

@@ -77,7 +77,12 @@ public final class SubdivisionSurface extends GObject {
         int next = super.freeze(parentToWorld, inherited, ids, accel);
         // The inner mesh is never part of a scene; frozen in place, its own queries (occluded)
         // take the object-space rays this surface hands it unchanged.
-        mesh.freeze(Transform.IDENTITY, null, 0, accel);
+        try {
+            mesh.freeze(Transform.IDENTITY, null, 0, accel);
+        } catch (IllegalArgumentException e) {
+            // Named as this surface: the inner mesh is not an object of the scene.
+            throw SceneBuildException.of(this, e instanceof SceneBuildException b ? (IllegalArgumentException) b.getCause() : e);
+        }
         return next;
     }
 

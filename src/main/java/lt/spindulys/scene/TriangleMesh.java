@@ -383,7 +383,11 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     public int freeze(Placement parentToWorld, Material inherited, int ids, AcceleratorKind kind) {
         int next = super.freeze(parentToWorld, inherited, ids, kind);
         TriangleMesh r = root();
-        accel = r.structure(kind);
+        try {
+            accel = r.structure(kind);
+        } catch (IllegalArgumentException e) {
+            throw SceneBuildException.of(this, e);
+        }
         // The first structure may have renumbered the vertices into a new array: read it after.
         pos = r.pos;
         vertexNormals = smooth && needsVertexNormals ? r.sharedVertexNormals() : null;

@@ -8,6 +8,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.stream.Stream;
 
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
@@ -57,6 +58,59 @@ class CliBadInputTest {
         Path scene = dir.resolve("scene.dat");
         Files.writeString(scene, "camera { eye 0 0 -5 lookat 0 0 0 }\nmesh { file \"m.obj\" }\n");
         assertFailsCleanly(scene, obj.toAbsolutePath().normalize() + ":" + c.expected());
+    }
+
+    /** Scenes whose error echoes hostile input: huge tokens, control characters, line separators. */
+    static Stream<String> hostileScenes() {
+        String mb = "7".repeat(1 << 20), tenMb = "q".repeat(10 << 20);
+        return Stream.of(
+                "sphere { " + tenMb + " 1 }",
+                tenMb + " { }",
+                "sphere { radius " + mb + " }",
+                "settings { encoding " + tenMb + " }",
+                "material m { kd 1 }\nsphere { material " + tenMb + " }",
+                "material " + tenMb + " { kd 1 }\nsphere { material " + tenMb.substring(1) + " }",
+                "sphere { radius 1\u0000\u007F\u2028\u2029\u0085 }",
+                "sphere { name \"\u0000\u0007\u001B[2J\u009B\" radius \"\u2028\" }",
+                "mesh { file \"a\u2028b\u0000" + mb + ".obj\" }");
+    }
+
+    @ParameterizedTest
+    @MethodSource("hostileScenes")
+    void anErrorIsOneShortLineWhateverTheInput(String text) throws IOException {
+        Path scene = dir.resolve("scene.dat");
+        Files.writeString(scene, text);
+        assertOneShortLine(CliTest.run(scene.toString(), "-o", dir.resolve("out.png").toString(), "--quiet"));
+    }
+
+    @Test
+    void aFileNameWithALineBreakStaysOnOneLine() {
+        CliTest.Run r = CliTest.run(dir.resolve("two\nlines\u2028.dat").toString(), "-o", dir.resolve("out.png").toString());
+        assertOneShortLine(r);
+        assertTrue(r.err().contains("two\\nlines\\u2028.dat"), r.err());
+    }
+
+    /** A motion that fits the file's shutter but not the one given on the command line is reported at its object's statement. */
+    @Test
+    void aMotionOutsideTheShutterGivenIsReportedAtItsObject() throws IOException {
+        Path scene = dir.resolve("scene.dat");
+        Files.writeString(scene, "camera { eye 0 0 -5 lookat 0 0 0 }\nunion {\n  box { min 0 0 0 max 1 1 1 }\n"
+                + "  sphere { motion { translate 1 0 0  start 0.5 } }\n}\n");
+        Path out = dir.resolve("out.png");
+        CliTest.Run r = CliTest.run(scene.toString(), "-o", out.toString(), "--quiet", "--shutter", "0,0.2");
+        assertEquals(2, r.status(), r.err());
+        assertEquals(scene + ":4:3: sphere: motion finish must be after its start, found start 0.5 and finish 0.2"
+                + " (finish is the shutter close time) (with --shutter 0.0,0.2)" + System.lineSeparator(), r.err());
+        assertFalse(Files.exists(out), "no image written");
+    }
+
+    private static void assertOneShortLine(CliTest.Run r) {
+        assertEquals(2, r.status(), r.err());
+        String line = r.err();
+        assertTrue(line.endsWith(System.lineSeparator()), line);
+        line = line.substring(0, line.length() - System.lineSeparator().length());
+        assertTrue(line.length() < 300, line.length() + " characters: " + line.substring(0, Math.min(line.length(), 300)));
+        assertTrue(line.chars().allMatch(c -> c >= 0x20 && !(c >= 0x7F && c <= 0x9F) && c != 0x2028 && c != 0x2029), line);
     }
 
     private void assertFailsCleanly(Path scene, String expected) throws IOException {

@@ -1,6 +1,7 @@
 package lt.spindulys.io;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -40,12 +41,14 @@ public final class BadInputCases {
             return errorFile == null ? fileName : baseDir.toAbsolutePath().normalize().resolve(errorFile).toString();
         }
 
-        /** Writes {@link #files} into {@code dir}. */
+        /** Writes {@link #files} into {@code dir}: as UTF-8, or as raw bytes when made by {@link BadInputCases#bytes}. */
         public void writeFiles(Path dir) throws IOException {
             for (Map.Entry<String, String> f : files.entrySet()) {
                 Path p = dir.resolve(f.getKey());
                 Files.createDirectories(p.getParent());
-                Files.writeString(p, f.getValue());
+                String content = f.getValue();
+                if (content.startsWith(BYTES)) Files.write(p, content.substring(BYTES.length()).getBytes(StandardCharsets.ISO_8859_1));
+                else Files.writeString(p, content);
             }
         }
 
@@ -53,6 +56,17 @@ public final class BadInputCases {
     }
 
     private static Case c(String name, String scene, String expected) { return new Case(name, scene, expected); }
+
+    /** Marks file content that {@link Case#writeFiles} writes as bytes (one per character, 0-255), not as UTF-8. */
+    private static final String BYTES = "\uE000bytes:";
+
+    /** File content written byte for byte: each character of {@code latin1} is one byte (for files that are not UTF-8). */
+    static String bytes(String latin1) { return BYTES + latin1; }
+
+    /** {@code n} copies of {@code c}: a token far longer than a message should show. */
+    private static String run(char c, int n) { return String.valueOf(c).repeat(n); }
+
+    private static final int MB = 1 << 20;
 
     /** A case whose scene refers to {@code file} with {@code content}; {@code errorInFile}: the error is reported in that file. */
     private static Case withFile(String name, String scene, String file, String content, boolean errorInFile, String expected) {
@@ -226,6 +240,57 @@ public final class BadInputCases {
                 withFile("open subdivision surface in a nested operand", "union {\n  sphere { }\n  intersection {\n    sphere { center 1 0 0 }\n"
                         + "    subdiv { file \"sheet.obj\"  level 1 }\n  }\n}",
                         "sheet.obj", QUAD_OBJ, false, "5:5: intersection operand 2 (subdiv) is not closed: it has 4 boundary edges"),
+                // ---- errors found when the scene is built, reported at the object's statement ----
+                c("zero scale on a CSG operand", "union { box { min 0 0 0 max 1 1 1 } sphere { scale 0 } }",
+                        "1:46: invalid 'scale': transform is singular (a scale of zero?)"),
+                c("zero scale on a CSG node", "union { box { min 0 0 0 max 1 1 1 } sphere { } scale 0 }",
+                        "1:48: invalid 'scale': transform is singular (a scale of zero?)"),
+                c("shrinking too far only composed with the CSG node's scale", "union {\n  box { min 0 0 0 max 1 1 1 }\n  sphere { scale 1e-10 }\n  scale 1e-10\n}",
+                        "3:3: sphere: transform shrinks by more than a factor of 1e15 (an entry of its inverse is 1e20)"),
+                c("named operand shrinking too far when composed", "difference {\n  box { min 0 0 0 max 1 1 1 }\n  sphere { name \"ball\"  scale 1e-10 }\n  scale 1e-10\n}",
+                        "3:3: sphere 'ball': transform shrinks by more than a factor of 1e15 (an entry of its inverse is 1e20)"),
+                c("nested CSG node shrinking too far when composed", "difference {\n  box { min 0 0 0 max 1 1 1 }\n  union {\n    sphere { }\n    sphere { center 1 0 0 }\n"
+                        + "    scale 1e-10\n  }\n  scale 1e-10\n}", "3:3: union: transform shrinks by more than a factor of 1e15 (an entry of its inverse is 1e20)"),
+                c("operand overflowing when composed", "union {\n  box { min 0 0 0 max 1 1 1 }\n  sphere { scale 1e10 }\n  scale 1e10\n}",
+                        "3:3: sphere: transform scales by more than 1e15 (a matrix entry is 1e20)"),
+                withFile("empty mesh as an operand", "difference {\n  box { min -1 -1 -1 max 1 1 1 }\n  mesh { file \"empty.obj\" }\n}",
+                        "empty.obj", "# no faces\n", false, "3:3: difference operand 2 (mesh) is empty: it has no faces, so it has no inside"),
+                // ---- undecodable bytes in the other text files, placed like the scene's own ----
+                withFile("subdiv .dat that is not UTF-8", "subdiv { file \"m.dat\" }", "m.dat", bytes("3 1\n0 0 0\n1 \u00e9 0\n0 1 0\n3 0 1 2\n"), true,
+                        "3:3: the mesh file is not UTF-8 text: byte 0xE9 cannot be decoded"),
+                withFiles("unwrap that is not UTF-8", "subdiv { file \"cube.dat\"  uv \"cube.tex\" }", "cube.dat", CUBE_DAT,
+                        "cube.tex", bytes("24\r\n0 0\r\n0 \u00ff\r\n"), "3:3: the unwrap file is not UTF-8 text: byte 0xFF cannot be decoded"),
+                // ---- long tokens are cut, controls escaped: every message is one short line ----
+                c("1 MB number", "sphere { radius " + run('7', MB) + " }",
+                        "1:17: number '" + run('7', 40) + "...' (" + MB + " characters) is out of range"),
+                c("1 MB malformed number", "sphere { radius 1" + run('x', MB) + " }",
+                        "1:17: malformed number '1" + run('x', 39) + "...' (" + (MB + 1) + " characters)"),
+                c("10 MB unknown property", "sphere { " + run('r', 10 * MB) + " 1 }",
+                        "1:10: unknown property '" + run('r', 40) + "...' (" + 10 * MB + " characters) in sphere"),
+                c("10 MB unknown statement", run('s', 10 * MB) + " { }",
+                        "1:1: unknown statement '" + run('s', 40) + "...' (" + 10 * MB + " characters)"),
+                c("1 MB string where a number belongs", "sphere { radius \"" + run('q', MB) + "\" }",
+                        "1:17: expected a number for 'radius', found string \"" + run('q', 40) + "...\" (" + MB + " characters)"),
+                c("1 MB word where a number belongs", "sphere { radius " + run('z', MB) + " }",
+                        "1:17: expected a number for 'radius', found '" + run('z', 40) + "...' (" + MB + " characters)"),
+                withFile("1 MB token in a .dat mesh", "subdiv { file \"m.dat\" }", "m.dat", "3 1\n0 0 0\n1 " + run('y', MB) + " 0\n0 1 0\n3 0 1 2\n", true,
+                        "3:3: expected a number for point 1 y, found '" + run('y', 40) + "...' (" + MB + " characters)"),
+                withFile("1 MB number in an OBJ mesh", "mesh { file \"m.obj\" }", "m.obj", "v 0 0 " + run('5', MB) + "\n", true,
+                        "1:7: number " + run('5', 40) + "... (" + MB + " characters) is too large for vertex z (mesh numbers are at most 1e15 in magnitude)"),
+                withFile("1 MB statement in an OBJ mesh", "mesh { file \"m.obj\" }", "m.obj", "v 0 0 0\n" + run('w', MB) + " 1\n", true,
+                        "2:1: unknown OBJ statement '" + run('w', 40) + "...' (" + MB + " characters)"),
+                withFile("1 MB tag name in an OBJ mesh", "subdiv { file \"m.obj\" }", "m.obj", QUAD_OBJ + "t " + run('c', MB) + " 1/0/0 0\n", true,
+                        "6:3: unknown tag '" + run('c', 40) + "...' (" + MB + " characters) (known: crease, corner, hole, interpolateboundary, "
+                                + "facevaryinginterpolateboundary, facevaryingpropagatecorners, creasemethod, smoothtriangles, vertexedit, edgeedit, faceedit)"),
+                withFile("half a million numbers in a .dat header", "subdiv { file \"m.dat\" }", "m.dat", "1 2 " + "3 ".repeat(MB / 2) + "\n", true,
+                        "1:5: expected the header 'point_count face_count' (two integers), found '1 2 " + "3 ".repeat(18) + "...' (" + (MB + 3) + " characters)"),
+                c("NUL in a number", "sphere { radius 1\u0000x }", "1:17: malformed number '1\\0x'"),
+                c("DEL in a string", "sphere { radius \"a\u007fb\" }", "1:17: expected a number for 'radius', found string \"a\\x7Fb\""),
+                c("line separator in a number", "sphere { radius 2\u2028 }", "1:17: malformed number '2\\u2028'"),
+                c("paragraph separator alone", "sphere { radius 1 }\u2029", "1:20: unexpected character U+2029"),
+                c("C1 control in a word", "sphere { radius\u0085 1 }", "1:16: unexpected character U+0085 after 'radius'"),
+                c("NUL in a material name", "material m\u0000n { }", "1:11: unexpected character U+0000 after 'm'"),
+                c("character outside the BMP", "sphere { radius 1 } \uD83D\uDE00", "1:21: unexpected character '\uD83D\uDE00'"),
                 // ---- textures ----
                 c("missing texture image", "texture t {\n  image \"maps/wood.png\"\n}", "2:9: texture image 'maps/wood.png' not found (looked in ${dir}/maps/wood.png)"),
                 withFile("unreadable texture image", "texture t { image \"bad.png\" }", "bad.png", "this is not a PNG\n", false,
@@ -304,8 +369,8 @@ public final class BadInputCases {
                 c("coordinate 1e300", "box { min 0 0 0  max 1 1e300 1 }", "1:24: number '1e300' is out of range: scene numbers are at most 1e15 in magnitude"),
                 c("camera far away", "camera { eye 0 0 -2e15 }", "1:18: number '-2e15' is out of range: scene numbers are at most 1e15 in magnitude"),
                 c("scale factor over 1e15", "sphere { scale 1e16 }", "1:16: number '1e16' is out of range: scene numbers are at most 1e15 in magnitude"),
-                c("scales composing over 1e15", "sphere {\n  scale 1e10\n  scale 1e10\n}", "3:3: invalid 'scale': transform scales by more than 1e15 (matrix entry 1.0E20)"),
-                c("scale factor under 1e-15", "sphere { scale 1 1e-16 1 }", "1:10: invalid 'scale': transform shrinks by more than a factor of 1e15 (inverse matrix entry 1.0E16)"),
+                c("scales composing over 1e15", "sphere {\n  scale 1e10\n  scale 1e10\n}", "3:3: invalid 'scale': transform scales by more than 1e15 (a matrix entry is 1e20)"),
+                c("scale factor under 1e-15", "sphere { scale 1 1e-16 1 }", "1:10: invalid 'scale': transform shrinks by more than a factor of 1e15 (an entry of its inverse is 1e16)"),
                 withFile("OBJ vertex over 1e15", "mesh { file \"m.obj\" }", "m.obj", "v 0 0 0\nv 1 0 0\nv 0 2e15 0\nf 1 2 3\n", true,
                         "3:5: number 2e15 is too large for vertex y (mesh numbers are at most 1e15 in magnitude)"),
                 withFile("OBJ normal over 1e15", "mesh { file \"m.obj\" }", "m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 -1e16\nf 1//1 2//1 3//1\n", true,

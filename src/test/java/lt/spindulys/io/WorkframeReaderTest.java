@@ -133,6 +133,13 @@ class WorkframeReaderTest {
         Path latin1 = dir.resolve("latin1.dat");
         Files.write(latin1, new byte[] {'3', ' ', '1', '\n', (byte) 0xE9, '\n'});
         e = assertThrows(SceneException.class, () -> WorkframeReader.readMesh(latin1));
-        assertEquals(latin1 + ": the mesh file is not UTF-8 text", e.getMessage());
+        assertEquals(latin1 + ":2:1: the mesh file is not UTF-8 text: byte 0xE9 cannot be decoded", e.getMessage());
+        // The unwrap is decoded alike, placed where an editor shows the byte.
+        Path mesh = dir.resolve("tri.dat");
+        Files.writeString(mesh, "3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+        Path tex = dir.resolve("tri.tex");
+        Files.write(tex, new byte[] {'3', '\r', '\n', '0', ' ', '0', '\n', '1', ' ', (byte) 0xFF, '\n'});
+        e = assertThrows(SceneException.class, () -> WorkframeReader.readUnwrap(tex, WorkframeReader.readMesh(mesh)));
+        assertEquals(tex + ":3:3: the unwrap file is not UTF-8 text: byte 0xFF cannot be decoded", e.getMessage());
     }
 }

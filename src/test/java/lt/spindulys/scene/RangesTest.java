@@ -56,9 +56,9 @@ class RangesTest {
         refused("sphere radius must be a positive number at most 1e15, found 1.0E200", () -> new Sphere(Vec3.ZERO, 1e200));
         assertThrows(IllegalArgumentException.class, () -> new Box(Vec3.ZERO, new Vec3(1, 1e300, 1)));
         assertThrows(IllegalArgumentException.class, () -> new Triangle(Vec3.ZERO, Vec3.X, new Vec3(0, -1e16, 0)));
-        refused("transform scales by more than 1e15 (matrix entry 1.0E16)", () -> Transform.scale(1e16, 1, 1));
-        refused("transform shrinks by more than a factor of 1e15 (inverse matrix entry 1.0E16)", () -> Transform.scale(1, 1, 1e-16));
-        refused("transform scales by more than 1e15 (matrix entry 1.0E20)", () -> Transform.scale(1e10, 1e10, 1e10).then(Transform.scale(1e10, 1e10, 1e10)));
+        refused("transform scales by more than 1e15 (a matrix entry is 1e16)", () -> Transform.scale(1e16, 1, 1));
+        refused("transform shrinks by more than a factor of 1e15 (an entry of its inverse is 1e16)", () -> Transform.scale(1, 1, 1e-16));
+        refused("transform scales by more than 1e15 (a matrix entry is 1e20)", () -> Transform.scale(1e10, 1e10, 1e10).then(Transform.scale(1e10, 1e10, 1e10)));
         Transform.scale(1e15, 1e15, 1e15).then(Transform.translate(1e15, 0, 0));
         Transform.scale(1e-15, 1e-15, 1e-15).then(Transform.translate(1e15, 0, 0));
         assertTrue(Ranges.isModest(1e15) && Ranges.isModest(-1e15) && !Ranges.isModest(Math.nextUp(1e15)) && !Ranges.isModest(Double.NaN));
