@@ -167,7 +167,7 @@ public abstract class GObject {
      */
     public final GObject solid() { return solid != null ? solid : this; }
 
-    /** Set by the CSG node that takes this object as an operand, then at its freeze (outer nodes after inner ones, so the outermost wins). */
+    /** Set by the CSG node that takes this object as an operand, then, to the outermost one, by the enclosing node's freeze before it freezes this object. */
     void solid(GObject s) { solid = s; }
 
     private GObject solid;
