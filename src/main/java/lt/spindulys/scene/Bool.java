@@ -45,7 +45,9 @@ import lt.spindulys.math.Placement;
  * shorter than it.
  *
  * <p><b>Materials and media.</b> A surface keeps its operand's material unless the Bool (or an
- * enclosing Bool) was given one, which then overrides every surface inside it. For refraction
+ * enclosing Bool) was given one, which then overrides every surface inside it and maps its
+ * textures in that Bool's space (its placement and motion), not the leaf's, so the block is
+ * textured as one solid ({@link Hit#materialSpace}; uv mapping still reads the leaf's uv). For refraction
  * and shadows the whole tree is one solid ({@link GObject#solid()} of every object in it is the
  * outermost Bool): a ray that enters it through one leaf may leave through another, and it
  * leaves the medium it entered. That medium is the material of the surface it entered by, so a
@@ -245,7 +247,10 @@ public final class Bool extends GObject {
         GObject only = sole(ray);
         if (only != null) {
             if (!only.intersect(ray, hit, ctx)) return false;
-            if (own != null) hit.material = own;
+            if (own != null) {
+                hit.material = own;
+                hit.materialSpace = this;
+            }
             return true;
         }
         SpanBuffer out = ctx.acquireSpans();
@@ -339,7 +344,7 @@ public final class Bool extends GObject {
                 run[base + 2 * i] = 2 * from;
                 run[base + 2 * i + 1] = 2 * all.size();
             }
-            if (own != null) all.overrideMaterial(own);
+            if (own != null) all.overrideMaterial(own, this);
             merge(ray, all, run, base, out);
         } finally {
             ctx.stackTop = base;
