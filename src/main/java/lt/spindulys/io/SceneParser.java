@@ -427,7 +427,12 @@ public final class SceneParser {
 
     /** The object of an object or CSG statement, with its common keys applied; not yet added to the builder. */
     private GObject object(Token kw, Block b) {
-        Props p = block(b, kw, null);
+        return object(block(b, kw, null));
+    }
+
+    /** The object of a block read by {@link #block}, with its common keys applied. */
+    private GObject object(Props p) {
+        Block b = p.block;
         GObject o;
         if (b.category() == SceneGrammar.Category.CSG) {
             o = bool(p);
@@ -730,39 +735,73 @@ public final class SceneParser {
             throw error(open, "expected '{' after " + MessageText.quote(b.keyword() + (name == null ? "" : " " + name)) + ", found " + open.describe());
         }
         Props p = new Props(b, kw);
-        boolean csg = b.category() == SceneGrammar.Category.CSG;
+        // The CSG blocks enclosing the one being read, innermost last. A CSG operand of a CSG block
+        // is read by this loop, not by recursion, so that the stack does not grow with the nesting
+        // (other blocks nest a fixed number of levels). This block, if CSG, is level 1.
+        List<Props> outer = new ArrayList<>();
         while (true) {
+            boolean csg = p.block.category() == SceneGrammar.Category.CSG;
             Token t = lex.next();
-            if (t.kind() == Kind.CLOSE) break;
+            if (t.kind() == Kind.CLOSE) {
+                checkComplete(p, label);
+                if (outer.isEmpty()) return p;
+                GObject o = object(p);
+                Token at = p.opener;
+                p = outer.remove(outer.size() - 1);
+                p.operands.add(new Operand(at, o));
+                label = p.block.keyword();
+                continue;
+            }
             if (t.kind() == Kind.EOF) {
-                throw error(t, "unexpected end of file: missing '}' to close '" + b.keyword() + "' opened at " + kw.position());
+                throw error(t, "unexpected end of file: missing '}' to close '" + p.block.keyword() + "' opened at " + p.opener.position());
             }
             if (t.kind() != Kind.WORD) {
                 throw error(t, "expected a property " + (csg ? "or an operand " : "") + "of " + label + " or '}', found " + t.describe());
             }
-            Key k = b.key(t.text());
+            Key k = p.block.key(t.text());
             if (k == null && csg) {
                 Block nested = SceneGrammar.statement(t.text());
                 if (nested != null && nested.category().isObject()) {
-                    p.operands.add(new Operand(t, operand(t, nested, b)));
+                    if (nested.category() != SceneGrammar.Category.CSG) {
+                        p.operands.add(new Operand(t, operand(t, nested, p.block)));
+                        continue;
+                    }
+                    int level = outer.size() + 2;
+                    if (level > Bool.MAX_NESTING) {
+                        throw error(t, "CSG nesting deeper than " + Bool.MAX_NESTING + " levels: this '" + t.text() + "' is level " + level
+                                + " (union and intersection take any number of operands, so a long chain can be one block)");
+                    }
+                    Token nestedOpen = lex.next();
+                    if (nestedOpen.kind() != Kind.OPEN) {
+                        throw error(nestedOpen, "expected '{' after '" + nested.keyword() + "', found " + nestedOpen.describe());
+                    }
+                    outer.add(p);
+                    p = new Props(nested, t);
+                    label = nested.keyword();
                     continue;
                 }
             }
-            if (k == null) throw unknownKey(t, b, label, kw);
+            if (k == null) throw unknownKey(t, p.block, label, p.opener);
             Prop earlier = p.first.get(k.name());
             if (earlier != null && !k.repeatable()) {
                 throw error(t, "'" + k.name() + "' given twice in " + label + " (first at " + earlier.at.position() + ")");
             }
             Token valueAt = lex.peek();
-            Prop pr = new Prop(k, t, valueAt, value(b, k, t));
+            Prop pr = new Prop(k, t, valueAt, value(p.block, k, t));
             p.all.add(pr);
             p.first.putIfAbsent(k.name(), pr);
         }
+    }
+
+    /** Every required key of a block just closed is present, and a CSG block has at least two operands. */
+    private void checkComplete(Props p, String label) {
+        Block b = p.block;
         List<String> missing = new ArrayList<>();
         for (Key k : b.keys()) if (k.required() && !p.first.containsKey(k.name())) missing.add("'" + k.name() + "'");
-        if (!missing.isEmpty()) throw error(kw, label + " needs " + andList(missing));
-        if (csg && p.operands.size() < 2) throw error(kw, b.keyword() + " needs at least 2 operands, found " + p.operands.size());
-        return p;
+        if (!missing.isEmpty()) throw error(p.opener, label + " needs " + andList(missing));
+        if (b.category() == SceneGrammar.Category.CSG && p.operands.size() < 2) {
+            throw error(p.opener, b.keyword() + " needs at least 2 operands, found " + p.operands.size());
+        }
     }
 
     private SceneException unknownKey(Token t, Block b, String label, Token opener) {

@@ -82,6 +82,20 @@ public final class BadInputCases {
             + "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 1 2 6 5\n4 0 4 7 3\n";
     private static final String QUAD_OBJ = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
 
+    /**
+     * {@code levels} CSG blocks nested one in another, one keyword a line from line 1 (unions, or
+     * differences and intersections alternating), each with a sphere beside the nested block.
+     */
+    static String nestedCsg(int levels, boolean alternate) {
+        StringBuilder b = new StringBuilder(levels * 60);
+        for (int i = 0; i < levels; i++) b.append(!alternate ? "union" : i % 2 == 0 ? "difference" : "intersection").append(" {\n");
+        b.append("sphere { }\nsphere { center 0.5 0 0 }\n");
+        for (int i = levels - 1; i >= 0; i--) {
+            b.append(alternate && i % 2 == 0 ? "sphere { center 0 0 -3  radius 0.1 }\n" : "sphere { radius 0.9 }\n").append("}\n");
+        }
+        return b.toString();
+    }
+
     /** An uncompressed 24-bit TGA header (type 2, top-left origin) for 16384 x 4097 pixels, without pixels. */
     private static final String HUGE_TGA_HEADER = "\0\0\u0002\0\0\0\0\0\0\0\0\0\u0000\u0040\u0001\u0010\u0018\u0020";
 
@@ -235,6 +249,12 @@ public final class BadInputCases {
                 c("unclosed CSG block", "union {\n  sphere { }\n  sphere { }\n", "4:1: unexpected end of file: missing '}' to close 'union' opened at 1:1"),
                 c("bad value inside an operand", "difference {\n  box { min 0 0 0 max 1 1 1 }\n  sphere { radius -2 }\n}", "3:12: sphere radius must be a positive number, found -2.0"),
                 c("CSG key given twice", "union { sphere { } sphere { } name \"a\" name \"b\" }", "1:40: 'name' given twice in union (first at 1:31)"),
+                // 10,000 levels: refused at the keyword of level 1001, before the parser goes deeper.
+                c("10,000 nested unions", nestedCsg(10_000, false), "1001:1: CSG nesting deeper than " + lt.spindulys.scene.Bool.MAX_NESTING
+                        + " levels: this 'union' is level 1001 (union and intersection take any number of operands, so a long chain can be one block)"),
+                c("10,000 nested differences and intersections", nestedCsg(10_000, true), "1001:1: CSG nesting deeper than "
+                        + lt.spindulys.scene.Bool.MAX_NESTING + " levels: this 'difference' is level 1001 (union and intersection take any number"
+                        + " of operands, so a long chain can be one block)"),
                 withFile("open mesh as an operand", "difference {\n  box { min -1 -1 -1 max 1 1 1 }\n  mesh { file \"lid.obj\"  name \"lid\" }\n}",
                         "lid.obj", QUAD_OBJ, false, "3:3: difference operand 2 (lid) is not closed: it has 4 boundary edges"),
                 withFile("open subdivision surface in a nested operand", "union {\n  sphere { }\n  intersection {\n    sphere { center 1 0 0 }\n"
