@@ -458,7 +458,7 @@ public final class SceneParser {
             }
         }
         // Errors found only when the scene is built name this statement.
-        o.source(sourceName, kw.line(), kw.column());
+        o.source(sourceName, p.opener.line(), p.opener.column());
         // Common keys; transforms compose in the order written (GObject.transform appends).
         for (Prop pr : p.all) {
             switch (pr.key.name()) {
