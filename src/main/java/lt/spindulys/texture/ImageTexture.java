@@ -22,7 +22,10 @@ public final class ImageTexture implements Texture {
     private final TextureImage image;
     private final Filter filter;
     private final Wrap wrap;
-    /** Mip levels (only level 0 unless trilinear), fetched once so sampling never synchronises. */
+    /**
+     * Mip levels (only level 0 unless trilinear), fetched once so sampling never synchronises;
+     * level 0's entry is null when the image stores it as bytes (then read through the image).
+     */
     private final float[][] levels;
     private final int[] lw, lh;
     private final double maxSide;
@@ -74,7 +77,7 @@ public final class ImageTexture implements Texture {
     public void evaluate(TexturePoint p, double[] rgb) {
         // A NaN or infinite coordinate (degenerate mapping) would poison every weight; sample the
         // origin instead.
-        double u = Double.isFinite(p.u) ? p.u : 0, v = Double.isFinite(p.v) ? p.v : 0;
+        double u = Double.isFinite(p.u) ? wrap.fold(p.u) : 0, v = Double.isFinite(p.v) ? wrap.fold(p.v) : 0;
         switch (filter) {
             case NEAREST:
                 nearest(u, v, rgb);
@@ -99,37 +102,41 @@ public final class ImageTexture implements Texture {
         int w = lw[0], h = lh[0];
         int i = wrap.apply(floor(u * w), w);
         int j = wrap.apply(floor(v * h), h);
-        float[] d = levels[0];
-        int q = ((h - 1 - j) * w + i) * 3;  // j counts from the bottom; storage is top-down
-        rgb[0] = d[q];
-        rgb[1] = d[q + 1];
-        rgb[2] = d[q + 2];
+        int t = (h - 1 - j) * w + i;  // j counts from the bottom; storage is top-down
+        rgb[0] = value(0, t, 0);
+        rgb[1] = value(0, t, 1);
+        rgb[2] = value(0, t, 2);
     }
 
     /** Writes (or, if {@code add}, adds) {@code scale} times the bilinear sample of level {@code k}. */
     private void bilinear(int k, double u, double v, double[] rgb, double scale, boolean add) {
         int w = lw[k], h = lh[k];
         double x = u * w - 0.5, y = v * h - 0.5;
-        int x0 = floor(x), y0 = floor(y);
+        long x0 = floor(x), y0 = floor(y);
         // Fractions from the unclamped floor, so they stay in [0, 1) however far out (u, v) is.
         double fx = x - Math.floor(x), fy = y - Math.floor(y);
         int i0 = wrap.apply(x0, w), i1 = wrap.apply(x0 + 1, w);
         int r0 = h - 1 - wrap.apply(y0, h), r1 = h - 1 - wrap.apply(y0 + 1, h);
-        float[] d = levels[k];
-        int a = (r0 * w + i0) * 3, b = (r0 * w + i1) * 3, c = (r1 * w + i0) * 3, e = (r1 * w + i1) * 3;
+        int a = r0 * w + i0, b = r0 * w + i1, c = r1 * w + i0, e = r1 * w + i1;
         double w00 = (1 - fx) * (1 - fy) * scale, w10 = fx * (1 - fy) * scale;
         double w01 = (1 - fx) * fy * scale, w11 = fx * fy * scale;
         for (int ch = 0; ch < 3; ch++) {
-            double s = w00 * d[a + ch] + w10 * d[b + ch] + w01 * d[c + ch] + w11 * d[e + ch];
+            double s = w00 * value(k, a, ch) + w10 * value(k, b, ch) + w01 * value(k, c, ch) + w11 * value(k, e, ch);
             rgb[ch] = add ? rgb[ch] + s : s;
         }
     }
 
-    /** Floor to int, saturating for huge or infinite coordinates (the wrap then folds them). */
-    private static int floor(double x) {
-        // Bounded well inside int range so that index + 1 cannot overflow.
+    /** Channel {@code ch} of texel {@code t} (row-major, top-down) of level {@code k}: a float, whatever the storage. */
+    private float value(int k, int t, int ch) {
+        float[] d = levels[k];
+        return d != null ? d[3 * t + ch] : image.base(t, ch);
+    }
+
+    /** Floor to long, saturating for huge or infinite coordinates (the wrap then folds them). */
+    private static long floor(double x) {
+        // Bounded well inside long range so that index + 1 cannot overflow.
         double f = Math.floor(x);
-        return f < -(1 << 30) ? -(1 << 30) : f > (1 << 30) ? 1 << 30 : (int) f;
+        return f < -0x1p62 ? -(1L << 62) : f > 0x1p62 ? 1L << 62 : (long) f;
     }
 
     @Override
