@@ -28,6 +28,11 @@ public final class ImageTexture implements Texture {
      */
     private final float[][] levels;
     private final int[] lw, lh;
+    /** Level 0 when the image keeps it as codes (see {@link TextureImage}): codes, their values, codes per texel. */
+    private final byte[] bytes0;
+    private final char[] chars0;
+    private final float[] table0;
+    private final int channels0;
     private final double maxSide;
 
     /** A texture over {@code img} with the given filter and wrap mode. */
@@ -45,6 +50,10 @@ public final class ImageTexture implements Texture {
             lh[k] = img.height(k);
         }
         maxSide = Math.max(img.width(), img.height());
+        bytes0 = img.baseBytes();
+        chars0 = img.baseChars();
+        table0 = img.table();
+        channels0 = img.channels();
     }
 
     /** The image sampled. */
@@ -103,9 +112,8 @@ public final class ImageTexture implements Texture {
         int i = wrap.apply(floor(u * w), w);
         int j = wrap.apply(floor(v * h), h);
         int t = (h - 1 - j) * w + i;  // j counts from the bottom; storage is top-down
-        rgb[0] = value(0, t, 0);
-        rgb[1] = value(0, t, 1);
-        rgb[2] = value(0, t, 2);
+        float[] d = levels[0];
+        for (int ch = 0; ch < 3; ch++) rgb[ch] = d != null ? d[3 * t + ch] : image.base(t, ch);
     }
 
     /** Writes (or, if {@code add}, adds) {@code scale} times the bilinear sample of level {@code k}. */
@@ -120,16 +128,32 @@ public final class ImageTexture implements Texture {
         int a = r0 * w + i0, b = r0 * w + i1, c = r1 * w + i0, e = r1 * w + i1;
         double w00 = (1 - fx) * (1 - fy) * scale, w10 = fx * (1 - fy) * scale;
         double w01 = (1 - fx) * fy * scale, w11 = fx * fy * scale;
-        for (int ch = 0; ch < 3; ch++) {
-            double s = w00 * value(k, a, ch) + w10 * value(k, b, ch) + w01 * value(k, c, ch) + w11 * value(k, e, ch);
-            rgb[ch] = add ? rgb[ch] + s : s;
-        }
-    }
-
-    /** Channel {@code ch} of texel {@code t} (row-major, top-down) of level {@code k}: a float, whatever the storage. */
-    private float value(int k, int t, int ch) {
         float[] d = levels[k];
-        return d != null ? d[3 * t + ch] : image.base(t, ch);
+        if (d != null) {
+            a *= 3;
+            b *= 3;
+            c *= 3;
+            e *= 3;
+            for (int ch = 0; ch < 3; ch++) {
+                double s = w00 * d[a + ch] + w10 * d[b + ch] + w01 * d[c + ch] + w11 * d[e + ch];
+                rgb[ch] = add ? rgb[ch] + s : s;
+            }
+        } else if (bytes0 != null) {
+            // Level 0 as bytes: the same floats through the table (one byte a texel for grey).
+            int m = channels0, step = m == 3 ? 1 : 0;
+            a *= m;
+            b *= m;
+            c *= m;
+            e *= m;
+            for (int ch = 0, o = 0; ch < 3; ch++, o += step) {
+                double s = w00 * table0[bytes0[a + o] & 0xFF] + w10 * table0[bytes0[b + o] & 0xFF]
+                        + w01 * table0[bytes0[c + o] & 0xFF] + w11 * table0[bytes0[e + o] & 0xFF];
+                rgb[ch] = add ? rgb[ch] + s : s;
+            }
+        } else {
+            double s = w00 * table0[chars0[a]] + w10 * table0[chars0[b]] + w01 * table0[chars0[c]] + w11 * table0[chars0[e]];
+            for (int ch = 0; ch < 3; ch++) rgb[ch] = add ? rgb[ch] + s : s;
+        }
     }
 
     /** Floor to long, saturating for huge or infinite coordinates (the wrap then folds them). */
