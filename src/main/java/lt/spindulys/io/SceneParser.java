@@ -342,7 +342,11 @@ public final class SceneParser {
             case "mirror" -> Wrap.MIRROR;
             default -> throw new IllegalStateException("wrap choice without a mapping: " + p.get("wrap"));
         };
-        return new ImageTexture(img, filter, wrap);
+        try {
+            return new ImageTexture(img, filter, wrap); // trilinear builds the mip chain here, asking the heap first
+        } catch (IllegalArgumentException e) {
+            throw wrap(p.prop("filter") != null ? p.prop("filter").at : image.valueAt, e);
+        }
     }
 
     /** Turbulence of marble and wood when the block gives none: veins and rings visibly disturbed. */

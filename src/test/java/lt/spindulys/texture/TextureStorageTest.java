@@ -239,6 +239,18 @@ class TextureStorageTest {
     }
 
     @Test
+    void theMipChainAsksTheHeapBeforeItIsBuilt() {
+        TextureImage img = TextureImage.fromLinear(4, 4, new double[3 * 16]);
+        try (HeapBudget.Scope s = HeapBudget.cap(0)) {
+            InsufficientMemoryException e = assertThrows(InsufficientMemoryException.class, () -> new ImageTexture(img, Filter.TRILINEAR, Wrap.REPEAT));
+            assertEquals((4 + 1) * 12, e.needed(), "levels 2x2 and 1x1, three floats a texel");
+            assertTrue(e.getMessage().startsWith("the mip chain of the 4x4 texture needs 60 bytes of heap, but only 0 bytes is free"), e.getMessage());
+            new ImageTexture(img, Filter.BILINEAR, Wrap.REPEAT); // no chain, nothing asked
+        }
+        assertEquals(3, new ImageTexture(img, Filter.TRILINEAR, Wrap.REPEAT).image().levelCount());
+    }
+
+    @Test
     void anImageIsRefusedBeforeDecodingWhenTheHeapCannotHoldIt() throws Exception {
         // The figure counted for an 8192 x 8192 true-colour TGA: 4 bytes a pixel for the decoder,
         // 3 for the texels, and the mip chain.
