@@ -124,6 +124,18 @@ class TextureStorageTest {
         assertSamplesEqual(TextureImage.wrap(W, H, f), gi);
     }
 
+    @Test
+    void oneBitImagesLoadAsZeroAndOne() throws Exception {
+        BufferedImage bits = new BufferedImage(W, H, BufferedImage.TYPE_BYTE_BINARY);
+        for (int y = 0; y < H; y++) for (int x = 0; x < W; x++) bits.getRaster().setSample(x, y, 0, (x * 3 + y) % 2);
+        Path b = dir.resolve("bits.png");
+        ImageIO.write(bits, "png", b.toFile());
+        TextureImage img = new TextureCache().load(b);
+        for (int y = 0; y < H; y++) {
+            for (int x = 0; x < W; x++) for (int c = 0; c < 3; c++) assertEquals((x * 3 + y) % 2, img.texel(0, x, y, c), 0);
+        }
+    }
+
     /** The mip chain as it was built before: every row halved into a whole intermediate image, then the columns. */
     @Test
     void mipChainIsTheOneBuiltThroughAWholeIntermediateImage() {
