@@ -19,6 +19,7 @@ import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.camera.ThinLensCamera;
 import lt.spindulys.image.Aov;
+import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.io.SceneGrammar.Block;
 import lt.spindulys.io.SceneGrammar.Key;
 import lt.spindulys.io.SceneLexer.Kind;
@@ -196,6 +197,20 @@ public final class SceneParser {
                 throw wrap(pr.at, e);
             }
         }
+        // The frame is allocated from these keys: a size the heap cannot hold is refused here, at
+        // the key that made it too big (the last of width, height and aov given), not at render time.
+        Prop sizeAt = null;
+        for (Prop pr : p.all) {
+            String k = pr.key.name();
+            if (k.equals("width") || k.equals("height") || k.equals("aov")) sizeAt = pr;
+        }
+        if (sizeAt != null) {
+            try {
+                FrameBuffer.checkHeap(s.width(), s.height(), s.aovs());
+            } catch (IllegalArgumentException e) {
+                throw wrap(sizeAt.at, e);
+            }
+        }
         Prop steps = p.prop("timesteps");
         if (steps != null) {
             try {
@@ -325,7 +340,11 @@ public final class SceneParser {
             case "mirror" -> Wrap.MIRROR;
             default -> throw new IllegalStateException("wrap choice without a mapping: " + p.get("wrap"));
         };
-        return new ImageTexture(img, filter, wrap);
+        try {
+            return new ImageTexture(img, filter, wrap); // trilinear builds the mip chain here, asking the heap first
+        } catch (IllegalArgumentException e) {
+            throw wrap(p.prop("filter") != null ? p.prop("filter").at : image.valueAt, e);
+        }
     }
 
     /** Turbulence of marble and wood when the block gives none: veins and rings visibly disturbed. */

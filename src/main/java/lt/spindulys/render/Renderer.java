@@ -52,11 +52,15 @@ public final class Renderer {
     /**
      * Renders {@code scene} with {@code threads} threads (at least 1), reporting progress.
      * Interrupting the calling thread stops the workers and throws InterruptedException.
+     *
+     * @throws lt.spindulys.limits.InsufficientMemoryException (an IllegalArgumentException) if
+     *         the heap cannot hold the frame and its passes ({@link FrameBuffer#checkHeap})
      */
     public static Result render(Scene scene, int threads, ProgressListener progress) throws InterruptedException {
         if (threads < 1) throw new IllegalArgumentException("threads must be at least 1, found " + threads);
         RenderSettings st = scene.settings();
         int w = st.width(), h = st.height();
+        FrameBuffer.checkHeap(w, h, st.aovs()); // the frame is asked for by input: checked before it is allocated
         FrameBuffer fb = new FrameBuffer(w, h);
         AovFrame aovs = st.aovs().isEmpty() ? null : new AovFrame(w, h, st.aovs());
         int tilesX = (w + TILE - 1) / TILE, tilesY = (h + TILE - 1) / TILE, tiles = tilesX * tilesY;
