@@ -1,5 +1,6 @@
 package lt.spindulys.cli;
 
+import java.util.ArrayDeque;
 import java.util.concurrent.atomic.AtomicBoolean;
 
 import lt.spindulys.accel.AcceleratorKind;
@@ -101,10 +102,18 @@ final class JitWarmup implements AutoCloseable {
         return !thread.isAlive();
     }
 
-    private static boolean hasMesh(GObject o) {
-        if (o instanceof TriangleMesh m) return m.triangleCount() >= MESH_TRIANGLES;
-        if (o instanceof SubdivisionSurface) return true;
-        return o instanceof Bool b && b.operands().stream().anyMatch(JitWarmup::hasMesh);
+    private static boolean hasMesh(GObject top) {
+        // A walk with its own stack: CSG nests up to Bool.MAX_NESTING levels, too deep for a
+        // recursion through streams on the caller's stack.
+        ArrayDeque<GObject> pending = new ArrayDeque<>();
+        pending.push(top);
+        while (!pending.isEmpty()) {
+            GObject o = pending.pop();
+            if (o instanceof TriangleMesh m && m.triangleCount() >= MESH_TRIANGLES) return true;
+            if (o instanceof SubdivisionSurface) return true;
+            if (o instanceof Bool b) for (GObject operand : b.operands()) pending.push(operand);
+        }
+        return false;
     }
 
     /** The benchmark's view of a small torus; 96 x 54 pixels, so one render takes a few milliseconds. */

@@ -14,6 +14,7 @@ import lt.spindulys.camera.Camera;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.camera.ThinLensCamera;
 import lt.spindulys.image.Aov;
+import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.image.ImageOptions;
 import lt.spindulys.image.ImageWriter;
 import lt.spindulys.io.SceneParser;
@@ -157,6 +158,16 @@ final class RenderCommand {
             } catch (IllegalArgumentException e) {
                 throw new UsageException((spp != null ? "--spp " + spp : "samples " + s.samplesPerPixel()) + " is not a multiple of "
                         + (timeSteps != null ? "--timesteps " : "the scene's timesteps ") + s.timeSteps() + " (each time step renders spp / timesteps per pixel)");
+            }
+        }
+        if (width != null || height != null || aovs != null) {
+            // The options resized the frame (the scene's own size was checked where it was read).
+            try {
+                FrameBuffer.checkHeap(s.width(), s.height(), s.aovs());
+            } catch (IllegalArgumentException e) {
+                String options = (width != null ? " --width " + width : "") + (height != null ? " --height " + height : "")
+                        + (aovs != null ? " --aov " + aovs.stream().map(Aov::keyword).collect(java.util.stream.Collectors.joining(",")) : "");
+                throw new UsageException(options.substring(1) + ": " + e.getMessage());
             }
         }
         builder.settings(s);

@@ -1,6 +1,11 @@
 package lt.spindulys.image;
 
 import java.util.Objects;
+import java.util.Set;
+import java.util.stream.Collectors;
+
+import lt.spindulys.limits.HeapBudget;
+import lt.spindulys.limits.InsufficientMemoryException;
 
 /**
  * A width x height image of linear RGB values in one flat {@code double[]}: row-major, y = 0 is
@@ -30,6 +35,31 @@ public final class FrameBuffer {
         this.width = width;
         this.height = height;
         this.data = new double[3 * width * height];
+    }
+
+    /**
+     * Heap a render of a {@code width x height} frame needs for its images, per pixel: the frame
+     * (three doubles), the 8-bit copy and the encoder's image made when it is written, and for
+     * each pass asked: depth (a double), normal (three doubles, and a frame's worth again when it
+     * is written), object (an int, and the codes and the encoder's image when written).
+     */
+    public static long bytesToRender(int width, int height, Set<Aov> aovs) {
+        long perPixel = 3 * 8 + 4 + 8;
+        if (aovs.contains(Aov.DEPTH)) perPixel += 8;
+        if (aovs.contains(Aov.NORMAL)) perPixel += 3 * 8 + 3 * 8;
+        if (aovs.contains(Aov.OBJECT)) perPixel += 4 + 4 + 8;
+        return HeapBudget.product(Math.max(0, width), Math.max(0, height), perPixel);
+    }
+
+    /**
+     * Refuses a frame whose {@link #bytesToRender} the heap cannot give now.
+     *
+     * @throws InsufficientMemoryException "the 32768x16384 frame needs 17 GiB of heap, but only ..."
+     */
+    public static void checkHeap(int width, int height, Set<Aov> aovs) {
+        String passes = aovs.isEmpty() ? "" : " with its " + aovs.stream().map(Aov::keyword).collect(Collectors.joining(", ")) + " pass"
+                + (aovs.size() > 1 ? "es" : "");
+        HeapBudget.require(bytesToRender(width, height, aovs), "the " + width + "x" + height + " frame" + passes);
     }
 
     public int width() { return width; }

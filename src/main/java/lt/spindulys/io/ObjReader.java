@@ -338,16 +338,25 @@ public final class ObjReader {
 
             String argsSay = " (its counts " + countsText + " say " + plural(ni, "integer") + ", " + plural(nf, "float")
                     + " and " + plural(ns, "string") + ")";
-            long[] ints = new long[ni];
-            int[] intLine = new int[ni], intColumn = new int[ni];
+            // The counts are the file's word: the arrays grow as the arguments arrive (to exactly the
+            // counts once all are read), so a tag that announces 10^9 of them costs nothing.
+            long[] ints = new long[Math.min(ni, FIRST_ARGS)];
+            int[] intLine = new int[ints.length], intColumn = new int[ints.length];
             for (int i = 0; i < ni; i++) {
+                if (i == ints.length) {
+                    int n = grown(i, ni);
+                    ints = Arrays.copyOf(ints, n);
+                    intLine = Arrays.copyOf(intLine, n);
+                    intColumn = Arrays.copyOf(intColumn, n);
+                }
                 skipBlanks();
                 intLine[i] = line;
                 intColumn[i] = column(pos);
                 ints[i] = tagInteger(name, "integer " + (i + 1) + " of " + ni + argsSay);
             }
-            float[] floats = new float[nf];
+            float[] floats = new float[Math.min(nf, FIRST_ARGS)];
             for (int i = 0; i < nf; i++) {
+                if (i == floats.length) floats = Arrays.copyOf(floats, grown(i, nf));
                 skipBlanks();
                 int at = pos;
                 boolean sharpness = name.equals("crease") || name.equals("corner");
@@ -355,9 +364,13 @@ public final class ObjReader {
                 if (sharpness && v < 0) throw error(at, name + " sharpness must not be negative, found " + quote(at, pos, ""));
                 floats[i] = (float) v; // OpenSubdiv keeps sharpness as float
             }
-            String[] strings = new String[ns];
-            int[] stringAt = new int[ns];
+            String[] strings = new String[Math.min(ns, FIRST_ARGS)];
+            int[] stringAt = new int[strings.length];
             for (int i = 0; i < ns; i++) {
+                if (i == strings.length) {
+                    strings = Arrays.copyOf(strings, grown(i, ns));
+                    stringAt = Arrays.copyOf(stringAt, strings.length);
+                }
                 skipBlanks();
                 stringAt[i] = pos;
                 if (atLineEnd()) {
@@ -430,6 +443,14 @@ public final class ObjReader {
         }
 
         /** "nints/nfloats/nstrings": three counts from 0, separated by slashes. */
+        /** Tag arguments allocated before any is read; the arrays double from there. */
+        private static final int FIRST_ARGS = 16;
+
+        /** The next length of an argument array that is full at {@code length} of {@code count}. */
+        private static int grown(int length, int count) {
+            return (int) Math.min(count, 2L * length);
+        }
+
         private int[] tagCounts(String name) {
             int start = pos;
             int[] counts = new int[3];

@@ -18,6 +18,7 @@ import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.camera.ThinLensCamera;
 import lt.spindulys.image.Aov;
+import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.io.SceneGrammar.Block;
 import lt.spindulys.io.SceneGrammar.Key;
 import lt.spindulys.io.SceneLexer.Kind;
@@ -207,6 +208,20 @@ public final class SceneParser {
                 throw wrap(pr.at, e);
             }
         }
+        // The frame is allocated from these keys: a size the heap cannot hold is refused here, at
+        // the key that made it too big (the last of width, height and aov given), not at render time.
+        Prop sizeAt = null;
+        for (Prop pr : p.all) {
+            String k = pr.key.name();
+            if (k.equals("width") || k.equals("height") || k.equals("aov")) sizeAt = pr;
+        }
+        if (sizeAt != null) {
+            try {
+                FrameBuffer.checkHeap(s.width(), s.height(), s.aovs());
+            } catch (IllegalArgumentException e) {
+                throw wrap(sizeAt.at, e);
+            }
+        }
         Prop steps = p.prop("timesteps");
         if (steps != null) {
             try {
@@ -336,7 +351,11 @@ public final class SceneParser {
             case "mirror" -> Wrap.MIRROR;
             default -> throw new IllegalStateException("wrap choice without a mapping: " + p.get("wrap"));
         };
-        return new ImageTexture(img, filter, wrap);
+        try {
+            return new ImageTexture(img, filter, wrap); // trilinear builds the mip chain here, asking the heap first
+        } catch (IllegalArgumentException e) {
+            throw wrap(p.prop("filter") != null ? p.prop("filter").at : image.valueAt, e);
+        }
     }
 
     /** Turbulence of marble and wood when the block gives none: veins and rings visibly disturbed. */
@@ -445,7 +464,12 @@ public final class SceneParser {
 
     /** The object of an object or CSG statement, with its common keys applied; not yet added to the builder. */
     private GObject object(Token kw, Block b) {
-        Props p = block(b, kw, null);
+        return object(block(b, kw, null));
+    }
+
+    /** The object of a block read by {@link #block}, with its common keys applied. */
+    private GObject object(Props p) {
+        Block b = p.block;
         GObject o;
         if (b.category() == SceneGrammar.Category.CSG) {
             o = bool(p);
@@ -471,7 +495,7 @@ public final class SceneParser {
             }
         }
         // Errors found only when the scene is built name this statement.
-        o.source(sourceName, kw.line(), kw.column());
+        o.source(sourceName, p.opener.line(), p.opener.column());
         // Common keys; transforms compose in the order written (GObject.transform appends).
         for (Prop pr : p.all) {
             switch (pr.key.name()) {
@@ -750,39 +774,73 @@ public final class SceneParser {
             throw error(open, "expected '{' after " + MessageText.quote(b.keyword() + (name == null ? "" : " " + name)) + ", found " + open.describe());
         }
         Props p = new Props(b, kw);
-        boolean csg = b.category() == SceneGrammar.Category.CSG;
+        // The CSG blocks enclosing the one being read, innermost last. A CSG operand of a CSG block
+        // is read by this loop, not by recursion, so that the stack does not grow with the nesting
+        // (other blocks nest a fixed number of levels). This block, if CSG, is level 1.
+        List<Props> outer = new ArrayList<>();
         while (true) {
+            boolean csg = p.block.category() == SceneGrammar.Category.CSG;
             Token t = lex.next();
-            if (t.kind() == Kind.CLOSE) break;
+            if (t.kind() == Kind.CLOSE) {
+                checkComplete(p, label);
+                if (outer.isEmpty()) return p;
+                GObject o = object(p);
+                Token at = p.opener;
+                p = outer.remove(outer.size() - 1);
+                p.operands.add(new Operand(at, o));
+                label = p.block.keyword();
+                continue;
+            }
             if (t.kind() == Kind.EOF) {
-                throw error(t, "unexpected end of file: missing '}' to close '" + b.keyword() + "' opened at " + kw.position());
+                throw error(t, "unexpected end of file: missing '}' to close '" + p.block.keyword() + "' opened at " + p.opener.position());
             }
             if (t.kind() != Kind.WORD) {
                 throw error(t, "expected a property " + (csg ? "or an operand " : "") + "of " + label + " or '}', found " + t.describe());
             }
-            Key k = b.key(t.text());
+            Key k = p.block.key(t.text());
             if (k == null && csg) {
                 Block nested = SceneGrammar.statement(t.text());
                 if (nested != null && nested.category().isObject()) {
-                    p.operands.add(new Operand(t, operand(t, nested, b)));
+                    if (nested.category() != SceneGrammar.Category.CSG) {
+                        p.operands.add(new Operand(t, operand(t, nested, p.block)));
+                        continue;
+                    }
+                    int level = outer.size() + 2;
+                    if (level > Bool.MAX_NESTING) {
+                        throw error(t, "CSG nesting deeper than " + Bool.MAX_NESTING + " levels: this '" + t.text() + "' is level " + level
+                                + " (union and intersection take any number of operands, so a long chain can be one block)");
+                    }
+                    Token nestedOpen = lex.next();
+                    if (nestedOpen.kind() != Kind.OPEN) {
+                        throw error(nestedOpen, "expected '{' after '" + nested.keyword() + "', found " + nestedOpen.describe());
+                    }
+                    outer.add(p);
+                    p = new Props(nested, t);
+                    label = nested.keyword();
                     continue;
                 }
             }
-            if (k == null) throw unknownKey(t, b, label, kw);
+            if (k == null) throw unknownKey(t, p.block, label, p.opener);
             Prop earlier = p.first.get(k.name());
             if (earlier != null && !k.repeatable()) {
                 throw error(t, "'" + k.name() + "' given twice in " + label + " (first at " + earlier.at.position() + ")");
             }
             Token valueAt = lex.peek();
-            Prop pr = new Prop(k, t, valueAt, value(b, k, t));
+            Prop pr = new Prop(k, t, valueAt, value(p.block, k, t));
             p.all.add(pr);
             p.first.putIfAbsent(k.name(), pr);
         }
+    }
+
+    /** Every required key of a block just closed is present, and a CSG block has at least two operands. */
+    private void checkComplete(Props p, String label) {
+        Block b = p.block;
         List<String> missing = new ArrayList<>();
         for (Key k : b.keys()) if (k.required() && !p.first.containsKey(k.name())) missing.add("'" + k.name() + "'");
-        if (!missing.isEmpty()) throw error(kw, label + " needs " + andList(missing));
-        if (csg && p.operands.size() < 2) throw error(kw, b.keyword() + " needs at least 2 operands, found " + p.operands.size());
-        return p;
+        if (!missing.isEmpty()) throw error(p.opener, label + " needs " + andList(missing));
+        if (b.category() == SceneGrammar.Category.CSG && p.operands.size() < 2) {
+            throw error(p.opener, b.keyword() + " needs at least 2 operands, found " + p.operands.size());
+        }
     }
 
     private SceneException unknownKey(Token t, Block b, String label, Token opener) {

@@ -4,9 +4,11 @@ import java.io.IOException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.regex.Pattern;
 
+import lt.spindulys.limits.HeapBudget;
 import lt.spindulys.limits.InputFiles;
 import lt.spindulys.limits.InsufficientMemoryException;
 import lt.spindulys.limits.MessageText;
@@ -30,6 +32,9 @@ import lt.spindulys.scene.MeshData;
 public final class WorkframeReader {
     private WorkframeReader() {}
 
+    /** The shortest lines, with their line break: "0 0 0", "3 0 1 2" and "0 0". */
+    private static final int MIN_POINT_LINE = 6, MIN_FACE_LINE = 8, MIN_CORNER_LINE = 4;
+
     private static final Pattern INTEGER = Pattern.compile("[+-]?[0-9]+");
     private static final Pattern NUMBER = Pattern.compile("[+-]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][+-]?[0-9]+)?");
 
@@ -49,9 +54,28 @@ public final class WorkframeReader {
         }
         int points = in.count(header, 0, "point count", 3);
         int faces = in.count(header, 1, "face count", 1);
+        // A header that announces more lines than the rest of the file has room for is wrong, and
+        // is said to be so here, before anything is allocated for it (each line is at least a
+        // number and a line break). Smaller overstatements are found where the lines run out.
+        long rest = in.remaining(), room = (rest + 1) / 2;
+        if (points > room || (long) points + faces > room) {
+            throw in.error(header.at(points > room ? 0 : 1), "the header announces " + plural(points, "point") + " and " + plural(faces, "face")
+                    + ", but the rest of the file (" + plural(rest, "character") + ") has room for at most " + plural(room, "line"));
+        }
+        // The arrays are sized by what the rest of the file can hold ('0 0 0' and '3 0 1 2' with a
+        // line break), so whatever the header says they cost at most a few bytes per character.
+        int pointRoom = (int) Math.min(points, (rest + 1) / MIN_POINT_LINE);
+        int faceRoom = (int) Math.min(faces, (rest + 1) / MIN_FACE_LINE);
+        try {
+            HeapBudget.require(HeapBudget.product(pointRoom, 3 * 8) + HeapBudget.product(faceRoom, 4),
+                    "the mesh's " + plural(points, "point") + " and " + plural(faces, "face"));
+        } catch (IllegalArgumentException e) {
+            throw in.error(header.at(0), e.getMessage());
+        }
 
-        double[] positions = new double[3 * points];
+        double[] positions = new double[3 * pointRoom];
         for (int i = 0; i < points; i++) {
+            if (3 * i == positions.length) positions = Arrays.copyOf(positions, 3 * (int) Math.min(points, 2L * i + 16));
             Line l = in.next();
             if (l == null) throw in.errorAtEnd("the file ends after " + i + " of the " + points + " points the header announces (at " + header.position(0) + ")");
             if (l.size() != 3) {
@@ -64,9 +88,10 @@ public final class WorkframeReader {
             for (int k = 0; k < 3; k++) positions[3 * i + k] = in.number(l, k, "point " + i + " " + "xyz".charAt(k));
         }
 
-        int[] sizes = new int[faces];
+        int[] sizes = new int[faceRoom];
         List<Integer> corners = new ArrayList<>();
         for (int f = 0; f < faces; f++) {
+            if (f == sizes.length) sizes = Arrays.copyOf(sizes, (int) Math.min(faces, 2L * f + 16));
             Line l = in.next();
             if (l == null) throw in.errorAtEnd("the file ends after " + f + " of the " + faces + " faces the header announces (at " + header.position(1) + ")");
             // Three numbers that do not start with a 2 (a face too small) are a point too many.
@@ -121,8 +146,11 @@ public final class WorkframeReader {
             throw in.error(header.at(0), "the unwrap has " + plural(count, "corner") + " but " + meshName + " has " + plural(expected, "face corner")
                     + " (one 'u v' per corner, face after face)");
         }
-        double[] uv = new double[2 * count];
+        // As for a mesh: the array is sized by what the rest of the file can hold ('0 0' and a line break).
+        int room = (int) Math.min(count, (in.remaining() + 1) / MIN_CORNER_LINE);
+        double[] uv = new double[2 * room];
         for (int i = 0; i < count; i++) {
+            if (2 * i == uv.length) uv = Arrays.copyOf(uv, 2 * (int) Math.min(count, 2L * i + 16));
             Line l = in.next();
             if (l == null) throw in.errorAtEnd("the file ends after " + i + " of the " + count + " corners the header announces (at " + header.position(0) + ")");
             if (l.size() != 2) {
@@ -218,6 +246,11 @@ public final class WorkframeReader {
         Lines(String text, String file) {
             this.text = text.startsWith("\uFEFF") ? text.substring(1) : text;
             this.file = file;
+        }
+
+        /** Characters not yet read (after the last line returned). */
+        long remaining() {
+            return text.length() - pos;
         }
 
         /** The next line with at least one token, or null at the end of the text. */

@@ -44,12 +44,43 @@ public final class HeapBudget {
         // Garbage counts as used until it is collected: look again after a collection before refusing.
         System.gc();
         if (fits(bytes)) return;
-        throw new InsufficientMemoryException(what, bytes, Math.max(0, available() - headroom()));
+        throw new InsufficientMemoryException(what, bytes, Math.max(0, free()));
     }
 
     /** True if {@code bytes} more fit now, with the headroom kept back; never collects. */
     public static boolean fits(long bytes) {
-        return bytes >= 0 && bytes <= available() - headroom();
+        return bytes >= 0 && bytes <= free();
+    }
+
+    /** What a check may hand out: the available heap less the headroom, within this thread's cap. */
+    private static long free() {
+        long f = available() - headroom();
+        Long cap = CAP.get();
+        return cap == null ? f : Math.min(f, cap);
+    }
+
+    /** This thread's cap on {@link #free()}, set by {@link #cap}; null when none. */
+    private static final ThreadLocal<Long> CAP = new ThreadLocal<>();
+
+    /**
+     * Until the returned scope is closed, checks on THIS thread see at most {@code bytes} free, as
+     * if the heap were that small. For tests: a refusal that must not depend on the machine's
+     * momentary free memory caps the budget below what the refused thing needs. Scopes nest.
+     */
+    public static Scope cap(long bytes) {
+        if (bytes < 0) throw new IllegalArgumentException("negative cap " + bytes);
+        Long previous = CAP.get();
+        CAP.set(previous == null ? bytes : Math.min(previous, bytes));
+        return () -> {
+            if (previous == null) CAP.remove();
+            else CAP.set(previous);
+        };
+    }
+
+    /** The scope of a {@link #cap}: closing it restores the previous cap. */
+    public interface Scope extends AutoCloseable {
+        @Override
+        void close();
     }
 
     /** Product of non-negative factors, saturating at Long.MAX_VALUE instead of overflowing. */

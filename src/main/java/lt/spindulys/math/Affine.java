@@ -20,6 +20,8 @@ public final class Affine implements ObjectMapping {
     @Override public void vectorInPlace(double[] v, int off) { Transform.vectorInPlace(m, v, off); }
 
     /** Maps the normal {@code n[off..off+2]} in place from object to world space and normalises it. */
+    @Override public void vectorToLocalInPlace(double[] v, int off) { Transform.vectorInPlace(inv, v, off); }
+
     @Override public void normalInPlace(double[] n, int off) { Transform.normalInPlace(inv, false, n, off); }
 
     /** False: an evaluated motion is treated as a general transform. */

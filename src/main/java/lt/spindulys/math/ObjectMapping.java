@@ -11,6 +11,9 @@ public interface ObjectMapping {
     /** Maps the vector {@code v[off..off+2]} in place from object to world space. */
     void vectorInPlace(double[] v, int off);
 
+    /** Maps the vector {@code v[off..off+2]} in place from world to object space (the inverse of {@link #vectorInPlace}). */
+    void vectorToLocalInPlace(double[] v, int off);
+
     /** Maps the normal {@code n[off..off+2]} in place from object to world space and normalises it. */
     void normalInPlace(double[] n, int off);
 

@@ -96,6 +96,9 @@ public final class Transform implements ObjectMapping {
     /** Maps the vector {@code v[off..off+2]} in place from object to world space. */
     @Override public void vectorInPlace(double[] v, int off) { vectorInPlace(m, v, off); }
 
+    /** Maps the vector {@code v[off..off+2]} in place from world to object space. */
+    @Override public void vectorToLocalInPlace(double[] v, int off) { if (!identity) vectorInPlace(inv, v, off); }
+
     /** Maps the normal {@code n[off..off+2]} in place from object to world space and normalises it. */
     @Override public void normalInPlace(double[] n, int off) { normalInPlace(inv, identity, n, off); }
 

@@ -17,7 +17,8 @@ import lt.spindulys.math.Placement;
 /**
  * Constructive solid geometry node (the thesis's name): the union, intersection or difference
  * of closed operands (spheres, boxes, cylinders, closed meshes and subdivision surfaces, half
- * spaces, other {@code Bool}s), each with its own transform and material, nested to any depth.
+ * spaces, other {@code Bool}s), each with its own transform and material, nested up to
+ * {@link #MAX_NESTING} levels.
  *
  * <p><b>How a ray is answered.</b> Each operand reports the spans the ray spends inside it
  * ({@link GObject#spans}); the spans are merged by ray parameter and the operation decides, at
@@ -45,7 +46,9 @@ import lt.spindulys.math.Placement;
  * shorter than it.
  *
  * <p><b>Materials and media.</b> A surface keeps its operand's material unless the Bool (or an
- * enclosing Bool) was given one, which then overrides every surface inside it. For refraction
+ * enclosing Bool) was given one, which then overrides every surface inside it and maps its
+ * textures in that Bool's space (its placement and motion), not the leaf's, so the block is
+ * textured as one solid ({@link Hit#materialSpace}; uv mapping still reads the leaf's uv). For refraction
  * and shadows the whole tree is one solid ({@link GObject#solid()} of every object in it is the
  * outermost Bool): a ray that enters it through one leaf may leave through another, and it
  * leaves the medium it entered. That medium is the material of the surface it entered by, so a
@@ -81,11 +84,25 @@ public final class Bool extends GObject {
     /** Relative tie tolerance for coincident operand surfaces (see the class comment). */
     public static final double TIE = 1e-9;
 
+    /**
+     * The deepest CSG nesting allowed: a Bool whose operands are not Bools is 1 level, a Bool with
+     * a Bool operand one more than that operand. Building, bounds, materials and every ray recurse
+     * once (or twice) per level; the limit keeps that within a known stack (measured, compiled and
+     * interpreted alike): at it, freezing uses about 0.2 to 0.27 MB of the caller's stack (the 1 MB
+     * default holds about 5,000 levels) and a ray, under 64 mirror bounces, about 0.55 MB of a
+     * render thread's, which the renderer makes 16 MB. The parser reads nested blocks without
+     * recursion and refuses a deeper one at its keyword. Union and intersection take
+     * any number of operands, so a long chain of them never needs to nest.
+     */
+    public static final int MAX_NESTING = 1000;
+
     private final Op op;
     private final GObject[] operands;
     private final List<GObject> operandList;
     /** The material given to this Bool itself (not an inherited one); overrides the operands'. */
     private Material own;
+    /** Levels of CSG in this node's tree: 1 + the deepest Bool operand's (see {@link #MAX_NESTING}). */
+    private final int nesting;
 
     /**
      * An n-ary CSG node: union or intersection of all operands; difference = the first minus all
@@ -103,6 +120,7 @@ public final class Bool extends GObject {
         this.op = op;
         this.operands = new GObject[operands.size()];
         Map<GObject, Integer> seen = new IdentityHashMap<>();
+        int deepest = 0;
         for (int i = 0; i < operands.size(); i++) {
             GObject o = operands.get(i);
             String which = op.keyword() + " operand " + (i + 1);
@@ -121,8 +139,14 @@ public final class Bool extends GObject {
                 throw new IllegalArgumentException(which + " (" + MessageText.cut(o.name()) + ") is not closed: "
                         + (n >= 0 ? "it has " + n + " boundary edges" : "it has no inside"));
             }
+            if (o instanceof Bool b && b.nesting >= MAX_NESTING) {
+                throw new IllegalArgumentException("CSG nesting deeper than " + MAX_NESTING + " levels: " + which + " (" + o.name()
+                        + ") is " + b.nesting + " levels deep (union and intersection take any number of operands, so a long chain can be one node)");
+            }
+            if (o instanceof Bool b) deepest = Math.max(deepest, b.nesting);
             this.operands[i] = o;
         }
+        this.nesting = deepest + 1;
         this.operandList = Collections.unmodifiableList(new ArrayList<>(operands));
         // Claimed only once all are accepted; freezing makes the outermost Bool their solid.
         for (GObject o : this.operands) o.solid(this);
@@ -137,6 +161,9 @@ public final class Bool extends GObject {
     }
 
     public Op op() { return op; }
+
+    /** Levels of CSG nesting in this node's tree, counting this one: 1 if no operand is a Bool. */
+    public int nesting() { return nesting; }
 
     /** The operands in the order given (read-only). */
     public List<GObject> operands() { return operandList; }
@@ -153,26 +180,22 @@ public final class Bool extends GObject {
         own = material();
         Placement toWorld = placementIn(parentToWorld);
         Material inner = own != null ? own : inherited;
+        // The outermost Bool: an enclosing Bool's freeze made it ours before freezing us (until then
+        // an operand's solid is the Bool it was given to); a Bool frozen on its own is its own. Set
+        // on the way down, so each object is marked once, not once per enclosing level.
+        GObject top = solid();
         int next = ids + 1;
         for (int i = 0; i < operands.length; i++) {
+            operands[i].solid(top);
             try {
                 next = operands[i].freeze(toWorld, inner, next, accel);
             } catch (IllegalArgumentException e) {
                 throw SceneBuildException.of(operands[i], e).inOperand(this, i);
             }
         }
-        markSolid(this);
         // Last, because the world bounds are computed from the frozen operands'.
         super.freeze(parentToWorld, inherited, ids, accel);
         return next;
-    }
-
-    /** Makes {@code top} the {@link GObject#solid()} of every object inside this Bool. */
-    private void markSolid(GObject top) {
-        for (GObject o : operands) {
-            o.solid(top);
-            if (o instanceof Bool b) b.markSolid(top);
-        }
     }
 
     /** Union: all operands' bounds; intersection: their overlap; difference: the first operand's. */
@@ -236,7 +259,10 @@ public final class Bool extends GObject {
         GObject only = sole(ray);
         if (only != null) {
             if (!only.intersect(ray, hit, ctx)) return false;
-            if (own != null) hit.material = own;
+            if (own != null) {
+                hit.material = own;
+                hit.materialSpace = this;
+            }
             return true;
         }
         SpanBuffer out = ctx.acquireSpans();
@@ -330,7 +356,7 @@ public final class Bool extends GObject {
                 run[base + 2 * i] = 2 * from;
                 run[base + 2 * i + 1] = 2 * all.size();
             }
-            if (own != null) all.overrideMaterial(own);
+            if (own != null) all.overrideMaterial(own, this);
             merge(ray, all, run, base, out);
         } finally {
             ctx.stackTop = base;

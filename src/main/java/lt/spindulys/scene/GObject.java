@@ -221,7 +221,7 @@ public abstract class GObject {
      */
     public final GObject solid() { return solid != null ? solid : this; }
 
-    /** Set by the CSG node that takes this object as an operand, then at its freeze (outer nodes after inner ones, so the outermost wins). */
+    /** Set by the CSG node that takes this object as an operand, then, to the outermost one, by the enclosing node's freeze before it freezes this object. */
     void solid(GObject s) { solid = s; }
 
     private GObject solid;
@@ -252,6 +252,7 @@ public abstract class GObject {
         // A farther candidate found earlier on this ray may have been a subtracted CSG surface.
         hit.flipNormal = false;
         hit.material = material; // a leaf's own; an enclosing object with a material overrides it after
+        hit.materialSpace = null;
         return true;
     }
 
@@ -319,6 +320,27 @@ public abstract class GObject {
         if (same) System.arraycopy(ng, 0, ns, 0, 3);
         else map.normalInPlace(ns, 0);
         if (hit.flipNormal) sd.flipNormals();
+        if (hit.materialSpace != null && sd.needsParameters) hit.materialSpace.mappingInputsInto(ray.time, sd);
+    }
+
+    /**
+     * Re-expresses what texture mappings read ({@link ShadingData#pObject}, dpduObject,
+     * dpdvObject) in this object's space, from the world point and derivatives already in
+     * {@code sd}: for a CSG node whose material shades a leaf's surface, so that the node is
+     * textured as one solid (uv stays the leaf's own). Runs after the leaf's shading is complete,
+     * so the leaf's mapping scratch may be reused.
+     */
+    final void mappingInputsInto(double time, ShadingData sd) {
+        ObjectMapping map = objectToWorld;
+        if (moving != null) {
+            moving.evaluate(time, sd.placementAtTime);
+            map = sd.placementAtTime;
+        }
+        map.toLocalPoint(sd.p, sd.pObject);
+        System.arraycopy(sd.dpdu, 0, sd.dpduObject, 0, 3);
+        System.arraycopy(sd.dpdv, 0, sd.dpdvObject, 0, 3);
+        map.vectorToLocalInPlace(sd.dpduObject, 0);
+        map.vectorToLocalInPlace(sd.dpdvObject, 0);
     }
 
     // ---- what leaf shapes implement, in object space ----

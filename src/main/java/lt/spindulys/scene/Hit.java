@@ -19,6 +19,12 @@ public final class Hit {
     public boolean flipNormal;
     /** The material to shade with; set by the leaf, overridden by an enclosing object that has one. */
     public Material material;
+    /**
+     * The CSG node whose own material {@link #material} is (texture mappings then take points in
+     * its space, so the block is textured as one solid), or null: the leaf's material, mapped in
+     * the leaf's space.
+     */
+    public GObject materialSpace;
 
     public Hit reset(double tMax) {
         t = tMax;
@@ -27,6 +33,7 @@ public final class Hit {
         u = v = 0;
         flipNormal = false;
         material = null;
+        materialSpace = null;
         return this;
     }
 
@@ -34,5 +41,6 @@ public final class Hit {
 
     public void set(Hit o) {
         t = o.t; object = o.object; prim = o.prim; u = o.u; v = o.v; flipNormal = o.flipNormal; material = o.material;
+        materialSpace = o.materialSpace;
     }
 }

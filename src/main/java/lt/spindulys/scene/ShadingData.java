@@ -17,7 +17,10 @@ public final class ShadingData {
     /** Partial derivatives of the point with respect to u and v (not normalised). */
     public final double[] dpdu = new double[3];
     public final double[] dpdv = new double[3];
-    /** The hit point in the object's own space (what texture mappings project). */
+    /**
+     * The hit point in the object's own space (what texture mappings project); where the material
+     * is a CSG node's own, in that node's space, as are dpduObject and dpdvObject.
+     */
     public final double[] pObject = new double[3];
     /** dpdu and dpdv in the object's own space, before the object-to-world transform. */
     public final double[] dpduObject = new double[3];

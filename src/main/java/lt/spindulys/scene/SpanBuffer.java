@@ -14,6 +14,8 @@ public final class SpanBuffer {
     private double[] u = new double[8], v = new double[8];
     private boolean[] flip = new boolean[8];
     private Material[] material = new Material[8];
+    /** The CSG node whose material overrides the endpoint's, else null (see {@link Hit#materialSpace}). */
+    private GObject[] space = new GObject[8];
 
     public void clear() { count = 0; }
 
@@ -25,8 +27,8 @@ public final class SpanBuffer {
                     double tOut, GObject oOut, int pOut, double uOut, double vOut) {
         int i = 2 * count;
         ensure(i + 2);
-        setEndpoint(i, tIn, oIn, pIn, uIn, vIn, false, oIn == null ? null : oIn.material());
-        setEndpoint(i + 1, tOut, oOut, pOut, uOut, vOut, false, oOut == null ? null : oOut.material());
+        setEndpoint(i, tIn, oIn, pIn, uIn, vIn, false, oIn == null ? null : oIn.material(), null);
+        setEndpoint(i + 1, tOut, oOut, pOut, uOut, vOut, false, oOut == null ? null : oOut.material(), null);
         count++;
     }
 
@@ -35,14 +37,14 @@ public final class SpanBuffer {
         int i = 2 * count + pending;
         ensure(i + 1);
         setEndpoint(i, from.t[endpoint], from.object[endpoint], from.prim[endpoint], from.u[endpoint], from.v[endpoint],
-                from.flip[endpoint] ^ flipNormal, from.material[endpoint]);
+                from.flip[endpoint] ^ flipNormal, from.material[endpoint], from.space[endpoint]);
         if (++pending == 2) { pending = 0; count++; }
     }
 
     private int pending;
 
-    private void setEndpoint(int i, double tt, GObject o, int p, double uu, double vv, boolean f, Material m) {
-        t[i] = tt; object[i] = o; prim[i] = p; u[i] = uu; v[i] = vv; flip[i] = f; material[i] = m;
+    private void setEndpoint(int i, double tt, GObject o, int p, double uu, double vv, boolean f, Material m, GObject s) {
+        t[i] = tt; object[i] = o; prim[i] = p; u[i] = uu; v[i] = vv; flip[i] = f; material[i] = m; space[i] = s;
     }
 
     /**
@@ -55,12 +57,19 @@ public final class SpanBuffer {
         for (int i = 2 * fromSpan; i < 2 * count; i++) {
             object[i] = o;
             material[i] = m;
+            space[i] = null;
         }
     }
 
-    /** Overrides the material of every endpoint (an enclosing object with its own material). */
-    public void overrideMaterial(Material m) {
-        for (int i = 0; i < 2 * count; i++) material[i] = m;
+    /**
+     * Overrides the material of every endpoint: {@code owner}, an enclosing CSG node, has its own
+     * material {@code m}, which maps textures in the owner's space.
+     */
+    public void overrideMaterial(Material m, GObject owner) {
+        for (int i = 0; i < 2 * count; i++) {
+            material[i] = m;
+            space[i] = owner;
+        }
     }
 
     public double entry(int span) { return t[2 * span]; }
@@ -76,6 +85,7 @@ public final class SpanBuffer {
         hit.v = v[endpoint];
         hit.flipNormal = flip[endpoint];
         hit.material = material[endpoint];
+        hit.materialSpace = space[endpoint];
     }
 
     private void ensure(int endpoints) {
@@ -88,5 +98,6 @@ public final class SpanBuffer {
         v = java.util.Arrays.copyOf(v, n);
         flip = java.util.Arrays.copyOf(flip, n);
         material = java.util.Arrays.copyOf(material, n);
+        space = java.util.Arrays.copyOf(space, n);
     }
 }

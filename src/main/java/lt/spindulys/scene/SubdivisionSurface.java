@@ -1,6 +1,8 @@
 package lt.spindulys.scene;
 
 import lt.spindulys.accel.AcceleratorKind;
+import lt.spindulys.limits.HeapBudget;
+import lt.spindulys.limits.InsufficientMemoryException;
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Placement;
@@ -43,7 +45,7 @@ public final class SubdivisionSurface extends GObject {
      * @throws IllegalArgumentException if the level is not between 0 and {@link #MAX_LEVEL}
      */
     public SubdivisionSurface(ControlMesh control, int level, boolean smooth) {
-        checkLevel(level);
+        checkLevel(level, refinedFaces(control, level));
         this.level = level;
         this.smooth = smooth;
         this.refined = CatmullClark.refine(control, level);
@@ -111,12 +113,44 @@ public final class SubdivisionSurface extends GObject {
      * @param refinedFaces the faces the control mesh has after {@code level} refinements
      */
     public static int checkLevel(int level, long refinedFaces) {
+        return checkLevel(level, refinedFaces, BYTES_PER_FACE);
+    }
+
+    /**
+     * Heap a surface needs per refined face while it is built, at its peak: the refined mesh, its
+     * limit normals, the triangles and the acceleration structure, with the garbage of the
+     * earlier levels. Measured: a 24-quad cube refined to level 8 (1,572,864 faces) and frozen
+     * needs a heap of 750 to 800 MB (it fails at -Xmx750m and passes at -Xmx800m), 480 to 510
+     * bytes a face; about 220 a face stay once it is built. See docs/performance.md.
+     */
+    public static final long BYTES_PER_FACE = 560;
+
+    /**
+     * {@link #checkLevel(int, long)} with the heap each refined face costs given: also refuses a
+     * level whose {@code refinedFaces * bytesPerFace} the heap cannot give now, with a message that
+     * says how much it needs and how much is free.
+     *
+     * @throws IllegalArgumentException (an {@link InsufficientMemoryException} when it is the heap)
+     */
+    public static int checkLevel(int level, long refinedFaces, long bytesPerFace) {
         checkLevel(level);
         if (refinedFaces > MAX_FACES) {
             throw new IllegalArgumentException("subdivision level " + level + " would make " + refinedFaces + " faces from this mesh, more than the "
                     + MAX_FACES + " allowed (choose a lower level)");
         }
+        // Refinement is uniform: every face is split to the level asked, whether the camera
+        // needs that detail or not. Until an adaptive method exists, a level that does not fit is refused.
+        HeapBudget.require(HeapBudget.product(refinedFaces, bytesPerFace), "subdivision level " + level + " of this mesh ("
+                + refinedFaces + " faces; refinement is uniform until an adaptive method exists, so choose a lower level or give more heap)");
         return level;
+    }
+
+    /** The faces {@code control} has after {@code level} refinements (each n-gon gives n quads, each quad 4). */
+    static long refinedFaces(ControlMesh control, int level) {
+        if (level <= 0) return control.faceCount();
+        long corners = control.faceVertices().length;
+        for (int l = 1; l < level && corners < (1L << 60); l++) corners *= 4;
+        return corners;
     }
 
     /**

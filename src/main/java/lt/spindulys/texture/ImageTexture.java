@@ -22,9 +22,17 @@ public final class ImageTexture implements Texture {
     private final TextureImage image;
     private final Filter filter;
     private final Wrap wrap;
-    /** Mip levels (only level 0 unless trilinear), fetched once so sampling never synchronises. */
+    /**
+     * Mip levels (only level 0 unless trilinear), fetched once so sampling never synchronises;
+     * level 0's entry is null when the image stores it as bytes (then read through the image).
+     */
     private final float[][] levels;
     private final int[] lw, lh;
+    /** Level 0 when the image keeps it as codes (see {@link TextureImage}): codes, their values, codes per texel. */
+    private final byte[] bytes0;
+    private final char[] chars0;
+    private final float[] table0;
+    private final int channels0;
     private final double maxSide;
 
     /** A texture over {@code img} with the given filter and wrap mode. */
@@ -42,6 +50,10 @@ public final class ImageTexture implements Texture {
             lh[k] = img.height(k);
         }
         maxSide = Math.max(img.width(), img.height());
+        bytes0 = img.baseBytes();
+        chars0 = img.baseChars();
+        table0 = img.table();
+        channels0 = img.channels();
     }
 
     /** The image sampled. */
@@ -74,7 +86,7 @@ public final class ImageTexture implements Texture {
     public void evaluate(TexturePoint p, double[] rgb) {
         // A NaN or infinite coordinate (degenerate mapping) would poison every weight; sample the
         // origin instead.
-        double u = Double.isFinite(p.u) ? p.u : 0, v = Double.isFinite(p.v) ? p.v : 0;
+        double u = Double.isFinite(p.u) ? wrap.fold(p.u) : 0, v = Double.isFinite(p.v) ? wrap.fold(p.v) : 0;
         switch (filter) {
             case NEAREST:
                 nearest(u, v, rgb);
@@ -99,37 +111,56 @@ public final class ImageTexture implements Texture {
         int w = lw[0], h = lh[0];
         int i = wrap.apply(floor(u * w), w);
         int j = wrap.apply(floor(v * h), h);
+        int t = (h - 1 - j) * w + i;  // j counts from the bottom; storage is top-down
         float[] d = levels[0];
-        int q = ((h - 1 - j) * w + i) * 3;  // j counts from the bottom; storage is top-down
-        rgb[0] = d[q];
-        rgb[1] = d[q + 1];
-        rgb[2] = d[q + 2];
+        for (int ch = 0; ch < 3; ch++) rgb[ch] = d != null ? d[3 * t + ch] : image.base(t, ch);
     }
 
     /** Writes (or, if {@code add}, adds) {@code scale} times the bilinear sample of level {@code k}. */
     private void bilinear(int k, double u, double v, double[] rgb, double scale, boolean add) {
         int w = lw[k], h = lh[k];
         double x = u * w - 0.5, y = v * h - 0.5;
-        int x0 = floor(x), y0 = floor(y);
+        long x0 = floor(x), y0 = floor(y);
         // Fractions from the unclamped floor, so they stay in [0, 1) however far out (u, v) is.
         double fx = x - Math.floor(x), fy = y - Math.floor(y);
         int i0 = wrap.apply(x0, w), i1 = wrap.apply(x0 + 1, w);
         int r0 = h - 1 - wrap.apply(y0, h), r1 = h - 1 - wrap.apply(y0 + 1, h);
-        float[] d = levels[k];
-        int a = (r0 * w + i0) * 3, b = (r0 * w + i1) * 3, c = (r1 * w + i0) * 3, e = (r1 * w + i1) * 3;
+        int a = r0 * w + i0, b = r0 * w + i1, c = r1 * w + i0, e = r1 * w + i1;
         double w00 = (1 - fx) * (1 - fy) * scale, w10 = fx * (1 - fy) * scale;
         double w01 = (1 - fx) * fy * scale, w11 = fx * fy * scale;
-        for (int ch = 0; ch < 3; ch++) {
-            double s = w00 * d[a + ch] + w10 * d[b + ch] + w01 * d[c + ch] + w11 * d[e + ch];
-            rgb[ch] = add ? rgb[ch] + s : s;
+        float[] d = levels[k];
+        if (d != null) {
+            a *= 3;
+            b *= 3;
+            c *= 3;
+            e *= 3;
+            for (int ch = 0; ch < 3; ch++) {
+                double s = w00 * d[a + ch] + w10 * d[b + ch] + w01 * d[c + ch] + w11 * d[e + ch];
+                rgb[ch] = add ? rgb[ch] + s : s;
+            }
+        } else if (bytes0 != null) {
+            // Level 0 as bytes: the same floats through the table (one byte a texel for grey).
+            int m = channels0, step = m == 3 ? 1 : 0;
+            a *= m;
+            b *= m;
+            c *= m;
+            e *= m;
+            for (int ch = 0, o = 0; ch < 3; ch++, o += step) {
+                double s = w00 * table0[bytes0[a + o] & 0xFF] + w10 * table0[bytes0[b + o] & 0xFF]
+                        + w01 * table0[bytes0[c + o] & 0xFF] + w11 * table0[bytes0[e + o] & 0xFF];
+                rgb[ch] = add ? rgb[ch] + s : s;
+            }
+        } else {
+            double s = w00 * table0[chars0[a]] + w10 * table0[chars0[b]] + w01 * table0[chars0[c]] + w11 * table0[chars0[e]];
+            for (int ch = 0; ch < 3; ch++) rgb[ch] = add ? rgb[ch] + s : s;
         }
     }
 
-    /** Floor to int, saturating for huge or infinite coordinates (the wrap then folds them). */
-    private static int floor(double x) {
-        // Bounded well inside int range so that index + 1 cannot overflow.
+    /** Floor to long, saturating for huge or infinite coordinates (the wrap then folds them). */
+    private static long floor(double x) {
+        // Bounded well inside long range so that index + 1 cannot overflow.
         double f = Math.floor(x);
-        return f < -(1 << 30) ? -(1 << 30) : f > (1 << 30) ? 1 << 30 : (int) f;
+        return f < -0x1p62 ? -(1L << 62) : f > 0x1p62 ? 1L << 62 : (long) f;
     }
 
     @Override

@@ -2,7 +2,10 @@ package lt.spindulys.texture;
 
 import java.awt.color.ColorSpace;
 import java.awt.image.BufferedImage;
+import java.awt.image.DataBuffer;
+import java.awt.image.MultiPixelPackedSampleModel;
 import java.awt.image.Raster;
+import java.awt.image.SampleModel;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
@@ -13,8 +16,10 @@ import java.util.Locale;
 import java.util.Map;
 import javax.imageio.ImageIO;
 import javax.imageio.ImageReader;
+import javax.imageio.ImageTypeSpecifier;
 import javax.imageio.stream.ImageInputStream;
 
+import lt.spindulys.limits.HeapBudget;
 import lt.spindulys.limits.InputFiles;
 
 /**
@@ -32,9 +37,14 @@ import lt.spindulys.limits.InputFiles;
  * (greyscale PNG/JPEG, TGA types 3 and 11) are taken as LINEAR data ({@code value / max}), since
  * they usually hold heights or masks for bump, transparency or specular channels, not colours.
  *
- * <p>Limit: images of more than {@link #MAX_PIXELS} pixels are refused (before their pixels are
- * decoded): a texel costs 12 bytes plus a third for the mip chain, so the limit keeps one texture
- * near 1 GiB.
+ * <p>Memory: a texel of an 8-bit image is kept as its bytes (3 for colour, 1 for greyscale; 2
+ * for 16-bit greyscale), see {@link TextureImage}; the mip chain adds 4 bytes per texel (floats,
+ * a third of the texel count). Before any pixel is decoded, the heap is asked for all of it:
+ * what the decoder itself allocates (TGA: an int per pixel; javax.imageio: its BufferedImage, 1
+ * to 8 bytes per pixel by the file's kind), the texels and the mip chain; an image that does
+ * not fit is refused with how much it needs and how much is free. Images of more than
+ * {@link #MAX_PIXELS} pixels are refused outright: at 7 bytes per colour texel with its chain,
+ * the limit keeps one texture under half a GiB once loaded.
  *
  * <p>Errors are {@link IOException}s with a one-line message "FILE: reason"; the scene parser
  * adds the scene location. Loading is synchronised, so a cache may be shared between threads.
@@ -44,8 +54,27 @@ public final class TextureCache {
     public static final int MAX_PIXELS = 1 << 26;
 
     private static final double[] SRGB_TO_LINEAR = new double[256];
+    /** The float each byte of an 8-bit image stands for: sRGB-decoded (colour) or divided by 255 (grey). */
+    private static final float[] SRGB_TABLE = new float[256], LINEAR_TABLE = new float[256];
     static {
-        for (int i = 0; i < 256; i++) SRGB_TO_LINEAR[i] = srgbToLinear(i / 255.0);
+        for (int i = 0; i < 256; i++) {
+            SRGB_TO_LINEAR[i] = srgbToLinear(i / 255.0);
+            SRGB_TABLE[i] = (float) SRGB_TO_LINEAR[i];
+            LINEAR_TABLE[i] = (float) (i / 255.0);
+        }
+    }
+
+    /** The float of each 16-bit grey code ({@code code / 65535}); made on the first 16-bit image. */
+    private static final class Grey16 {
+        static final float[] TABLE = greyTable(16);
+    }
+
+    /** {@code (float) (code / (2^bits - 1))} for every code of {@code bits} bits, in a table of 256 or 65,536. */
+    private static float[] greyTable(int bits) {
+        double max = (1L << bits) - 1;
+        float[] t = new float[bits <= 8 ? 256 : 65536];
+        for (int i = 0; i <= max && i < t.length; i++) t[i] = (float) (i / max);
+        return t;
     }
 
     private final Map<Path, TextureImage> images = new HashMap<>();
@@ -81,6 +110,43 @@ public final class TextureCache {
     /** The exact sRGB decoding function, for {@code c} in [0, 1]. */
     public static double srgbToLinear(double c) {
         return c <= 0.04045 ? c / 12.92 : Math.pow((c + 0.055) / 1.055, 2.4);
+    }
+
+    /**
+     * Asks the heap for a {@code w x h} image before it is decoded: {@code decodeBytes} that the
+     * decoder allocates for its own image, {@code texelBytes} per texel kept, and the mip chain.
+     *
+     * @throws lt.spindulys.limits.InsufficientMemoryException if the heap cannot give it now
+     */
+    static void checkHeap(long w, long h, long decodeBytes, int texelBytes) {
+        long texels = HeapBudget.product(w, h);
+        long bytes = sum(decodeBytes, HeapBudget.product(texels, texelBytes), TextureImage.mipBytes((int) w, (int) h));
+        HeapBudget.require(bytes, "the " + w + "x" + h + " image");
+    }
+
+    private static long sum(long... terms) {
+        long s = 0;
+        for (long t : terms) s = t > Long.MAX_VALUE - s ? Long.MAX_VALUE : s + t;
+        return s;
+    }
+
+    /**
+     * Bytes javax.imageio's decoder allocates for a {@code w x h} image of the first type
+     * {@code reader} offers (the one {@code read} decodes into); 8 bytes a pixel if it says none.
+     */
+    private static long decodeBytes(ImageReader reader, int w, int h) {
+        long bits = 64;
+        try {
+            Iterator<ImageTypeSpecifier> types = reader.getImageTypes(0);
+            if (types != null && types.hasNext()) {
+                SampleModel sm = types.next().getSampleModel();
+                bits = sm instanceof MultiPixelPackedSampleModel mp ? mp.getPixelBitStride()
+                        : (long) sm.getNumDataElements() * DataBuffer.getDataTypeSize(sm.getDataType());
+            }
+        } catch (IOException | RuntimeException e) {
+            // Not known before decoding: the widest kind (four 16-bit samples) stands in.
+        }
+        return HeapBudget.product((HeapBudget.product(w, bits) + 7) / 8, h);
     }
 
     /** Refuses sizes above {@link #MAX_PIXELS}; the message states the size and the limit. */
@@ -119,6 +185,7 @@ public final class TextureCache {
                     throw corrupt(format, e);
                 }
                 checkSize(w, h);  // before the pixels are decoded
+                checkHeap(w, h, decodeBytes(reader, w, h), 3);
                 BufferedImage img;
                 try {
                     img = reader.read(0);
@@ -139,7 +206,18 @@ public final class TextureCache {
             // getRGB would push Java's linear grey colour space through an sRGB conversion; the
             // stored samples are what the file means (linear data, see the class comment).
             Raster raster = img.getRaster();
-            double max = (1L << img.getColorModel().getComponentSize(0)) - 1;
+            int bits = img.getColorModel().getComponentSize(0);
+            if (bits <= 8) {
+                byte[] codes = new byte[w * h];
+                for (int y = 0, q = 0; y < h; y++) for (int x = 0; x < w; x++) codes[q++] = (byte) raster.getSample(x, y, 0);
+                return TextureImage.ofBytes(w, h, codes, 1, bits == 8 ? LINEAR_TABLE : greyTable(bits));
+            }
+            if (bits <= 16) {
+                char[] codes = new char[w * h];
+                for (int y = 0, q = 0; y < h; y++) for (int x = 0; x < w; x++) codes[q++] = (char) raster.getSample(x, y, 0);
+                return TextureImage.ofChars(w, h, codes, bits == 16 ? Grey16.TABLE : greyTable(bits));
+            }
+            double max = (1L << bits) - 1;
             float[] f = new float[w * h * 3];
             for (int y = 0, q = 0; y < h; y++) {
                 for (int x = 0; x < w; x++, q += 3) {
@@ -152,30 +230,39 @@ public final class TextureCache {
             return TextureImage.wrap(w, h, f);
         }
         int[] row = new int[w];
-        float[] f = new float[w * h * 3];
+        byte[] codes = new byte[w * h * 3];
         for (int y = 0, q = 0; y < h; y++) {
             img.getRGB(0, y, w, 1, row, 0, w);
             for (int x = 0; x < w; x++, q += 3) {
                 int p = row[x];
-                f[q] = (float) SRGB_TO_LINEAR[p >> 16 & 0xFF];
-                f[q + 1] = (float) SRGB_TO_LINEAR[p >> 8 & 0xFF];
-                f[q + 2] = (float) SRGB_TO_LINEAR[p & 0xFF];
+                codes[q] = (byte) (p >> 16);
+                codes[q + 1] = (byte) (p >> 8);
+                codes[q + 2] = (byte) p;
             }
         }
-        return TextureImage.wrap(w, h, f);
+        return TextureImage.ofBytes(w, h, codes, 3, SRGB_TABLE);
     }
 
-    /** 8-bit packed RGB, rows top-down; sRGB-decoded if {@code srgb}, else divided by 255. */
+    /** 8-bit packed RGB, rows top-down; sRGB-decoded if {@code srgb}, else divided by 255 (grey: R = G = B, one byte kept). */
     static TextureImage fromRgb8(int w, int h, int[] rgb, boolean srgb) {
-        float[] f = new float[w * h * 3];
+        if (!srgb && isGrey(rgb)) {
+            byte[] codes = new byte[rgb.length];
+            for (int i = 0; i < rgb.length; i++) codes[i] = (byte) rgb[i];
+            return TextureImage.ofBytes(w, h, codes, 1, LINEAR_TABLE);
+        }
+        byte[] codes = new byte[rgb.length * 3];
         for (int i = 0, q = 0; i < rgb.length; i++, q += 3) {
             int p = rgb[i];
-            for (int c = 0; c < 3; c++) {
-                int b = p >> (16 - 8 * c) & 0xFF;
-                f[q + c] = (float) (srgb ? SRGB_TO_LINEAR[b] : b / 255.0);
-            }
+            codes[q] = (byte) (p >> 16);
+            codes[q + 1] = (byte) (p >> 8);
+            codes[q + 2] = (byte) p;
         }
-        return TextureImage.wrap(w, h, f);
+        return TextureImage.ofBytes(w, h, codes, 3, srgb ? SRGB_TABLE : LINEAR_TABLE);
+    }
+
+    private static boolean isGrey(int[] rgb) {
+        for (int p : rgb) if ((p >> 16 & 0xFF) != (p & 0xFF) || (p >> 8 & 0xFF) != (p & 0xFF)) return false;
+        return true;
     }
 
     private static IOException corrupt(String format, IOException e) {

@@ -15,8 +15,9 @@ import lt.spindulys.limits.InputFiles;
  * greyscale). Both vertical origins (descriptor bit 5: set = top-left, clear = bottom-left) and
  * both horizontal directions (bit 4) are honoured. Colour-mapped images are refused.
  *
- * <p>The header is checked against {@link TextureCache#MAX_PIXELS} before any pixel memory is
- * allocated, and the data are decoded as a stream, so a huge or lying header costs nothing.
+ * <p>The header is checked against {@link TextureCache#MAX_PIXELS} and the heap (the pixels, the
+ * texels and the mip chain the cache makes of them) before any pixel memory is allocated, and the
+ * data are decoded as a stream, so a huge or lying header costs nothing.
  * Errors are {@link IOException}s whose message is a one-line reason (the caller names the file).
  */
 public final class TgaReader {
@@ -60,6 +61,8 @@ public final class TgaReader {
         if (colorMapType > 1) throw new IOException("corrupt TGA header: colour map type " + colorMapType);
         if (w == 0 || ht == 0) throw new IOException("empty TGA image " + w + "x" + ht);
         TextureCache.checkSize(w, ht);
+        // The pixels below (an int each), then the texels and the mip chain the cache makes of them.
+        TextureCache.checkHeap(w, ht, 4L * w * ht, grey ? 1 : 3);
 
         // A colour map may be present even in a true-colour file; it is unused, so skip it.
         long skip = idLength + (colorMapType == 1 ? (long) mapLength * ((mapEntryBits + 7) / 8) : 0);

@@ -82,6 +82,20 @@ public final class BadInputCases {
             + "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 1 2 6 5\n4 0 4 7 3\n";
     private static final String QUAD_OBJ = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
 
+    /**
+     * {@code levels} CSG blocks nested one in another, one keyword a line from line 1 (unions, or
+     * differences and intersections alternating), each with a sphere beside the nested block.
+     */
+    static String nestedCsg(int levels, boolean alternate) {
+        StringBuilder b = new StringBuilder(levels * 60);
+        for (int i = 0; i < levels; i++) b.append(!alternate ? "union" : i % 2 == 0 ? "difference" : "intersection").append(" {\n");
+        b.append("sphere { }\nsphere { center 0.5 0 0 }\n");
+        for (int i = levels - 1; i >= 0; i--) {
+            b.append(alternate && i % 2 == 0 ? "sphere { center 0 0 -3  radius 0.1 }\n" : "sphere { radius 0.9 }\n").append("}\n");
+        }
+        return b.toString();
+    }
+
     /** An uncompressed 24-bit TGA header (type 2, top-left origin) for 16384 x 4097 pixels, without pixels. */
     private static final String HUGE_TGA_HEADER = "\0\0\u0002\0\0\0\0\0\0\0\0\0\u0000\u0040\u0001\u0010\u0018\u0020";
 
@@ -215,6 +229,19 @@ public final class BadInputCases {
                         "5:1: point 3 has 5 numbers, expected 3 (x y z); this looks like a face: does the header at 1:1 count too many points?"),
                 withFile("subdiv .dat with too many faces", "subdiv { file \"m.dat\" }", "m.dat", "3 2\n0 0 0\n1 0 0\n1 1 0\n3 0 1 2\n", true,
                         "6:1: the file ends after 1 of the 2 faces the header announces (at 1:3)"),
+                // ---- counts in files size nothing before the data arrive (issue 14) ----
+                withFile("subdiv .dat header announcing 10^8 points in 12 bytes", "subdiv { file \"m.dat\" }", "m.dat", "100000000 1\n", true,
+                        "1:1: the header announces 100000000 points and 1 face, but the rest of the file (0 characters) has room for at most 0 lines"),
+                withFile("subdiv .dat header announcing more faces than the file has room for", "subdiv { file \"m.dat\" }", "m.dat",
+                        "3 100000000\n0 0 0\n1 0 0\n1 1 0\n3 0 1 2\n", true,
+                        "1:3: the header announces 3 points and 100000000 faces, but the rest of the file (26 characters) has room for at most 13 lines"),
+                withFiles("subdiv unwrap header announcing more corners than the file has room for", "subdiv { file \"cube.dat\"  uv \"cube.tex\" }",
+                        "cube.dat", CUBE_DAT, "cube.tex", "24\n0 0\n",
+                        "3:1: the file ends after 1 of the 24 corners the header announces (at 1:1)"),
+                withFile("subdiv t hole with 10^8 face indices", "subdiv { file \"m.obj\" }", "m.obj", QUAD_OBJ + "t hole 100000000/0/0 0\n", true,
+                        "6:23: expected integer 2 of 100000000 (its counts 100000000/0/0 say 100000000 integers, 0 floats and 0 strings) of tag 'hole', found end of line"),
+                withFile("subdiv t crease with 10^9 vertex indices", "subdiv { file \"m.obj\" }", "m.obj", QUAD_OBJ + "t crease 1000000000/1/0 0 1 1\n", true,
+                        "6:30: expected integer 4 of 1000000000 (its counts 1000000000/1/0 say 1000000000 integers, 1 float and 0 strings) of tag 'crease', found end of line"),
                 withFile("subdiv unwrap not found", "subdiv { file \"cube.dat\"  uv \"cube.tex\" }", "cube.dat", CUBE_DAT, false,
                         "1:30: unwrap file 'cube.tex' not found (looked in ${dir}/cube.tex)"),
                 withFiles("subdiv unwrap with the wrong number of corners", "subdiv { file \"cube.dat\"  uv \"cube.tex\" }", "cube.dat", CUBE_DAT,
@@ -235,6 +262,12 @@ public final class BadInputCases {
                 c("unclosed CSG block", "union {\n  sphere { }\n  sphere { }\n", "4:1: unexpected end of file: missing '}' to close 'union' opened at 1:1"),
                 c("bad value inside an operand", "difference {\n  box { min 0 0 0 max 1 1 1 }\n  sphere { radius -2 }\n}", "3:12: sphere radius must be a positive number at most 1e15, found -2.0"),
                 c("CSG key given twice", "union { sphere { } sphere { } name \"a\" name \"b\" }", "1:40: 'name' given twice in union (first at 1:31)"),
+                // 10,000 levels: refused at the keyword of level 1001, before the parser goes deeper.
+                c("10,000 nested unions", nestedCsg(10_000, false), "1001:1: CSG nesting deeper than " + lt.spindulys.scene.Bool.MAX_NESTING
+                        + " levels: this 'union' is level 1001 (union and intersection take any number of operands, so a long chain can be one block)"),
+                c("10,000 nested differences and intersections", nestedCsg(10_000, true), "1001:1: CSG nesting deeper than "
+                        + lt.spindulys.scene.Bool.MAX_NESTING + " levels: this 'difference' is level 1001 (union and intersection take any number"
+                        + " of operands, so a long chain can be one block)"),
                 withFile("open mesh as an operand", "difference {\n  box { min -1 -1 -1 max 1 1 1 }\n  mesh { file \"lid.obj\"  name \"lid\" }\n}",
                         "lid.obj", QUAD_OBJ, false, "3:3: difference operand 2 (lid) is not closed: it has 4 boundary edges"),
                 withFile("open subdivision surface in a nested operand", "union {\n  sphere { }\n  intersection {\n    sphere { center 1 0 0 }\n"

@@ -239,6 +239,31 @@ class BoolTest {
     }
 
     @Test
+    void nestingIsLimited() {
+        // MAX_NESTING levels build, and every object inside is marked with the outermost as its solid.
+        Sphere leaf = new Sphere(Vec3.ZERO, 1);
+        Bool chain = bool(Bool.Op.UNION, leaf, new Sphere(Vec3.X, 1));
+        assertEquals(1, chain.nesting());
+        for (int level = 2; level <= Bool.MAX_NESTING; level++) {
+            chain = level % 2 == 0 ? bool(Bool.Op.INTERSECTION, new Sphere(Vec3.ZERO, 3), chain) : bool(Bool.Op.DIFFERENCE, chain, new Sphere(new Vec3(0, 5, 0), 1));
+        }
+        assertEquals(Bool.MAX_NESTING, chain.nesting());
+        // One level more is refused, naming the operand (so the parser can locate it) and the limit.
+        Bool deepest = chain;
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> bool(Bool.Op.UNION, new Sphere(Vec3.Y, 1), deepest));
+        assertEquals("CSG nesting deeper than " + Bool.MAX_NESTING + " levels: union operand 2 (" + deepest.kind() + ") is " + Bool.MAX_NESTING
+                + " levels deep (union and intersection take any number of operands, so a long chain can be one node)", e.getMessage());
+        // The refusal leaves the tree free to be used.
+        Scene scene = new SceneBuilder().add(chain).build();
+        assertSame(chain, leaf.solid());
+        assertSame(chain, chain.operands().get(0).solid());
+        Hit h = new Hit();
+        assertTrue(scene.intersect(ray(-5, 0, 0, 1, 0, 0), h, new TraceContext()));
+        assertSame(leaf, h.object);
+        assertEquals(4, h.t, EPS);
+    }
+
+    @Test
     void meshOperandsWork() {
         TriangleMesh cube = new TriangleMesh(TestMeshes.cube()); // [-1, 1]^3
         Bool d = frozen(bool(Bool.Op.DIFFERENCE, cube, new Sphere(new Vec3(-1, 0, 0), 0.5)));

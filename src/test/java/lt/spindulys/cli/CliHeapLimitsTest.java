@@ -1,0 +1,191 @@
+package lt.spindulys.cli;
+
+import static org.junit.jupiter.api.Assertions.*;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Map;
+import java.util.stream.Stream;
+import java.util.zip.CRC32;
+import java.util.zip.Deflater;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+
+import lt.spindulys.limits.HeapBudget;
+import lt.spindulys.limits.InsufficientMemoryException;
+import lt.spindulys.render.ProgressListener;
+import lt.spindulys.render.Renderer;
+import lt.spindulys.scene.RenderSettings;
+import lt.spindulys.scene.SceneBuilder;
+import lt.spindulys.scene.Sphere;
+
+/**
+ * Allocations sized by input that the heap cannot give are refused before they are made: small
+ * files that ask for a huge texture, subdivision level or frame. Each runs through the command
+ * line with the budget capped at {@link #CAP} on this thread ({@link HeapBudget#cap}), so the
+ * outcome does not depend on the machine's free memory: exit status 2, one line naming the place
+ * and what is needed and free, and no output file.
+ */
+class CliHeapLimitsTest {
+    @TempDir Path dir;
+
+    /** The budget the checks see: far below what every case needs, far below any test heap. */
+    static final long CAP = 64L << 20;
+
+    private static final String CAM = "camera { eye 0 0 -5  lookat 0 0 0 }\n";
+
+    /**
+     * A scene (with files beside it, as bytes) that must be refused.
+     *
+     * @param expected the start of the message after the scene's name, "line:column: ..."
+     */
+    record Case(String name, String scene, Map<String, byte[]> files, String expected) {
+        @Override public String toString() { return name; }
+    }
+
+    /**
+     * The texture figures: 8192 x 8192 pixels decoded (TGA: an int each, 256 MiB; a 1-bit PNG: 8
+     * MiB), 3 bytes a texel (192 MiB) and the mip chain (256 MiB).
+     */
+    static Stream<Case> cases() {
+        return Stream.of(
+                new Case("frame of 32768x16384 (valid sides)", CAM + "settings {\n  width 32768\n  height 16384\n}\n", Map.of(),
+                        "4:3: the 32768x16384 frame needs 18 GiB of heap, but only 64 MiB is free (raise the JVM's limit with -Xmx"),
+                new Case("frame made too big by its passes", CAM + "settings { height 1024  width 1024  aov depth normal object }\n", Map.of(),
+                        "2:37: the 1024x1024 frame with its depth, normal, object passes needs 108 MiB of heap, but only 64 MiB is free"),
+                new Case("8192x8192 run-length TGA of 18 bytes", CAM + "texture t {\n  image \"big.tga\"\n}\n", Map.of("big.tga", tgaHeader(8192, 8192, 10)),
+                        "3:9: cannot read texture image 'big.tga': the 8192x8192 image needs 704 MiB of heap"),
+                new Case("8 KB PNG of 8192x8192 1-bit pixels", CAM + "texture t {\n  image \"big.png\"\n}\n", Map.of("big.png", blackPng(8192, 8192)),
+                        "3:9: cannot read texture image 'big.png': the 8192x8192 image needs 456 MiB of heap"),
+                new Case("32 quads at level 8", CAM + "subdiv {\n  file \"grid.obj\"\n  level 8\n}\n", Map.of("grid.obj", grid(8, 4)),
+                        "4:3: subdivision level 8 of this mesh (2097152 faces; refinement is uniform until an adaptive method exists, so choose a lower "
+                                + "level or give more heap) needs 1.1 GiB of heap, but only 64 MiB is free"));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("cases")
+    void refusedBeforeAllocating(Case c) throws IOException {
+        Path scene = dir.resolve("scene.dat");
+        Files.writeString(scene, c.scene());
+        for (Map.Entry<String, byte[]> f : c.files().entrySet()) Files.write(dir.resolve(f.getKey()), f.getValue());
+        Path out = dir.resolve("out.png");
+        CliTest.Run r;
+        try (HeapBudget.Scope s = HeapBudget.cap(CAP)) {
+            r = CliTest.run(scene.toString(), "-o", out.toString(), "--quiet");
+        }
+        assertEquals(2, r.status(), r.err());
+        assertTrue(r.err().startsWith(scene + ":" + c.expected()), r.err());
+        assertTrue(r.err().contains("of heap, but only 64 MiB is free (raise the JVM's limit with -Xmx"), r.err());
+        assertEquals(1, r.err().lines().count(), r.err());
+        assertFalse(Files.exists(out), "no image written");
+    }
+
+    @Test
+    void frameOptionsAreNamed() throws IOException {
+        Path scene = dir.resolve("scene.dat");
+        Files.writeString(scene, CAM + "settings { width 64 height 48 }\nsphere { }\n");
+        Path out = dir.resolve("out.png");
+        try (HeapBudget.Scope s = HeapBudget.cap(CAP)) {
+            CliTest.Run r = CliTest.run(scene.toString(), "-o", out.toString(), "--quiet", "--width", "32768", "--height", "16384");
+            assertEquals(2, r.status(), r.err());
+            assertTrue(r.err().startsWith("render: --width 32768 --height 16384: the 32768x16384 frame needs 18 GiB of heap, but only 64 MiB is free"), r.err());
+            assertEquals(1, r.err().lines().count(), r.err());
+            r = CliTest.run(scene.toString(), "-o", out.toString(), "--quiet", "--width", "4096", "--height", "4096", "--aov", "normal");
+            assertEquals(2, r.status(), r.err());
+            assertTrue(r.err().startsWith("render: --width 4096 --height 4096 --aov normal: the 4096x4096 frame with its normal pass needs 1.3 GiB"), r.err());
+        }
+        assertFalse(Files.exists(out), "no image written");
+    }
+
+    @Test
+    void subdivideRefusesALevelAtTheOption() throws IOException {
+        Path mesh = dir.resolve("grid.obj"), out = dir.resolve("out.obj");
+        Files.write(mesh, grid(16, 8));
+        CliTest.Run r;
+        try (HeapBudget.Scope s = HeapBudget.cap(CAP)) {
+            r = CliTest.run("subdivide", mesh.toString(), "--level", "8", "-o", out.toString());
+        }
+        assertEquals(2, r.status(), r.err());
+        assertTrue(r.err().startsWith("render: --level 8: " + mesh + ": subdivision level 8 of this mesh (8388608 faces; refinement is uniform"), r.err());
+        assertTrue(r.err().contains("needs 1.4 GiB of heap, but only 64 MiB is free"), r.err());
+        assertEquals(1, r.err().lines().count(), r.err());
+        assertFalse(Files.exists(out), "no mesh written");
+    }
+
+    @Test
+    void theRendererChecksTheFrameForLibraryUsers() {
+        SceneBuilder b = new SceneBuilder();
+        b.settings(RenderSettings.DEFAULT.withSize(32768, 16384));
+        b.add(new Sphere(lt.spindulys.math.Vec3.ZERO, 1));
+        var scene = b.build();
+        try (HeapBudget.Scope s = HeapBudget.cap(CAP)) {
+            InsufficientMemoryException e = assertThrows(InsufficientMemoryException.class, () -> Renderer.render(scene, 1, ProgressListener.NONE));
+            assertTrue(e.getMessage().startsWith("the 32768x16384 frame needs 18 GiB of heap"), e.getMessage());
+        }
+    }
+
+    /** A TGA header (true colour, 24 bits, top-left origin) of the given type, without pixels. */
+    static byte[] tgaHeader(int w, int h, int type) {
+        byte[] b = new byte[18];
+        b[2] = (byte) type;
+        b[12] = (byte) w;
+        b[13] = (byte) (w >> 8);
+        b[14] = (byte) h;
+        b[15] = (byte) (h >> 8);
+        b[16] = 24;
+        b[17] = 0x20;
+        return b;
+    }
+
+    /**
+     * A whole black PNG of {@code w x h} 1-bit greyscale pixels: signature, IHDR, one IDAT of
+     * deflated zero rows (8 KB for 8192 x 8192) and IEND.
+     */
+    static byte[] blackPng(int w, int h) {
+        byte[] raw = new byte[(1 + (w + 7) / 8) * h]; // a filter byte (0) and the row's bits, all zero
+        Deflater d = new Deflater(9);
+        d.setInput(raw);
+        d.finish();
+        ByteArrayOutputStream z = new ByteArrayOutputStream();
+        byte[] buf = new byte[1 << 16];
+        while (!d.finished()) z.write(buf, 0, d.deflate(buf));
+        d.end();
+        ByteArrayOutputStream png = new ByteArrayOutputStream();
+        png.writeBytes(new byte[] {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'});
+        chunk(png, "IHDR", ByteBuffer.allocate(13).putInt(w).putInt(h).put((byte) 1).put((byte) 0).put((byte) 0).put((byte) 0).put((byte) 0).array());
+        chunk(png, "IDAT", z.toByteArray());
+        chunk(png, "IEND", new byte[0]);
+        return png.toByteArray();
+    }
+
+    private static void chunk(ByteArrayOutputStream png, String type, byte[] data) {
+        byte[] t = type.getBytes(StandardCharsets.US_ASCII);
+        CRC32 crc = new CRC32();
+        crc.update(t);
+        crc.update(data);
+        png.writeBytes(ByteBuffer.allocate(4).putInt(data.length).array());
+        png.writeBytes(t);
+        png.writeBytes(data);
+        png.writeBytes(ByteBuffer.allocate(4).putInt((int) crc.getValue()).array());
+    }
+
+    /** An OBJ grid of {@code nx x ny} quads. */
+    static byte[] grid(int nx, int ny) {
+        StringBuilder s = new StringBuilder();
+        for (int j = 0; j <= ny; j++) for (int i = 0; i <= nx; i++) s.append("v ").append(i).append(' ').append(j).append(" 0\n");
+        for (int j = 0; j < ny; j++) {
+            for (int i = 0; i < nx; i++) {
+                int a = j * (nx + 1) + i + 1;
+                s.append("f ").append(a).append(' ').append(a + 1).append(' ').append(a + nx + 2).append(' ').append(a + nx + 1).append('\n');
+            }
+        }
+        return s.toString().getBytes(StandardCharsets.US_ASCII);
+    }
+}
