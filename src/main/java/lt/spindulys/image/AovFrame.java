@@ -83,6 +83,9 @@ public final class AovFrame {
     /** The single depth channel, row-major, top row first (the backing array, not a copy). */
     double[] depthData() { return require(depth, Aov.DEPTH); }
 
+    /** The normal pass, three per pixel, row-major, top row first (the backing array, not a copy). */
+    double[] normalData() { return require(normal, Aov.NORMAL); }
+
     /** The normal pass as an image (x, y, z in r, g, b). */
     FrameBuffer normalImage() {
         FrameBuffer fb = new FrameBuffer(width, height);

@@ -102,7 +102,7 @@ public final class ImageWriter {
         ImageFormat format = checkFormat(out);
         // The last line of defence: the scene's ranges keep pixels finite, so one that is not is a bug.
         checkFinite(fb.width(), fb.data(), 3);
-        if (aovs != null && aovs.passes().contains(Aov.NORMAL)) checkFinite(aovs.width(), aovs.normalImage().data(), 3);
+        if (aovs != null && aovs.passes().contains(Aov.NORMAL)) checkFinite(aovs.width(), aovs.normalData(), 3);
         if (format == ImageFormat.TGA && (fb.width() > 0xFFFF || fb.height() > 0xFFFF)) {
             throw new IllegalArgumentException("TGA images are at most 65535x65535 pixels, got "
                     + fb.width() + "x" + fb.height());
