@@ -72,7 +72,7 @@ public final class Main {
             return 1;
         } catch (NonFinitePixelException e) {
             // Unreachable from any input the readers accept (their ranges keep pixels finite): a bug.
-            err.println("render: internal error: " + e.getMessage());
+            line(err, "render: internal error: " + e.getMessage());
             if (debug) e.printStackTrace(err);
             return 1;
         } catch (OutOfMemoryError e) {
