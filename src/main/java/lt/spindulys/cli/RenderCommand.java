@@ -19,6 +19,7 @@ import lt.spindulys.image.ImageOptions;
 import lt.spindulys.image.ImageWriter;
 import lt.spindulys.io.SceneParser;
 import lt.spindulys.limits.InputFiles;
+import lt.spindulys.limits.InsufficientMemoryException;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.render.ProgressListener;
 import lt.spindulys.render.RenderStats;
@@ -160,15 +161,10 @@ final class RenderCommand {
                         + (timeSteps != null ? "--timesteps " : "the scene's timesteps ") + s.timeSteps() + " (each time step renders spp / timesteps per pixel)");
             }
         }
-        if (width != null || height != null || aovs != null) {
-            // The options resized the frame (the scene's own size was checked where it was read).
-            try {
-                FrameBuffer.checkHeap(s.width(), s.height(), s.aovs());
-            } catch (IllegalArgumentException e) {
-                String options = (width != null ? " --width " + width : "") + (height != null ? " --height " + height : "")
-                        + (aovs != null ? " --aov " + aovs.stream().map(Aov::keyword).collect(java.util.stream.Collectors.joining(",")) : "");
-                throw new UsageException(options.substring(1) + ": " + e.getMessage());
-            }
+        try {
+            FrameBuffer.checkHeap(s.width(), s.height(), s.aovs());
+        } catch (InsufficientMemoryException e) {
+            throw frameTooLarge(builder, e);
         }
         builder.settings(s);
         if (aperture != null || focus != null) builder.camera(withLens(builder.camera(), aperture, focus));
@@ -191,12 +187,29 @@ final class RenderCommand {
         Renderer.Result result;
         try {
             result = Renderer.render(built, n, bar != null ? bar : ProgressListener.NONE);
+        } catch (InsufficientMemoryException e) {
+            // The scene's meshes and textures took what the frame would have needed.
+            throw frameTooLarge(builder, e);
         } finally {
             if (bar != null) bar.finish();
         }
         ImageWriter.write(result.image(), output, new ImageOptions(s.srgb(), quality), result.aovs());
         if (stats) printStats(out, (parsed - t0 + t1 - warmed) / 1e9, (warmed - parsed) / 1e9, (t2 - t1) / 1e9, s.accelerator(), result.stats(), n);
         return 0;
+    }
+
+    /**
+     * A frame the heap cannot hold, reported where its size was given: the options that resized
+     * it, else the scene's settings key.
+     */
+    private RuntimeException frameTooLarge(SceneBuilder builder, InsufficientMemoryException e) throws UsageException {
+        if (width != null || height != null || aovs != null) {
+            String options = (width != null ? " --width " + width : "") + (height != null ? " --height " + height : "")
+                    + (aovs != null ? " --aov " + aovs.stream().map(Aov::keyword).collect(java.util.stream.Collectors.joining(",")) : "");
+            throw new UsageException(options.substring(1) + ": " + e.getMessage());
+        }
+        String at = builder.frameSource();
+        return at == null ? e : new IllegalArgumentException(at + ": " + e.getMessage(), e);
     }
 
     /**

@@ -18,7 +18,6 @@ import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.camera.ThinLensCamera;
 import lt.spindulys.image.Aov;
-import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.io.SceneGrammar.Block;
 import lt.spindulys.io.SceneGrammar.Key;
 import lt.spindulys.io.SceneLexer.Kind;
@@ -208,20 +207,14 @@ public final class SceneParser {
                 throw wrap(pr.at, e);
             }
         }
-        // The frame is allocated from these keys: a size the heap cannot hold is refused here, at
-        // the key that made it too big (the last of width, height and aov given), not at render time.
+        // The frame is allocated from these keys; its size is checked against the heap once the
+        // command line's overrides are known, and reported here (the last of width, height and aov).
         Prop sizeAt = null;
         for (Prop pr : p.all) {
             String k = pr.key.name();
             if (k.equals("width") || k.equals("height") || k.equals("aov")) sizeAt = pr;
         }
-        if (sizeAt != null) {
-            try {
-                FrameBuffer.checkHeap(s.width(), s.height(), s.aovs());
-            } catch (IllegalArgumentException e) {
-                throw wrap(sizeAt.at, e);
-            }
-        }
+        if (sizeAt != null) builder.frameSource(SceneException.location(file, sizeAt.at.line(), sizeAt.at.column()));
         Prop steps = p.prop("timesteps");
         if (steps != null) {
             try {

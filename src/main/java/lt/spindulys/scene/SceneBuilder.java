@@ -38,6 +38,7 @@ public final class SceneBuilder {
     private final List<GObject> objects = new ArrayList<>();
     private final Map<String, Material> materials = new LinkedHashMap<>();
     private boolean built;
+    private String frameSource;
 
     public SceneBuilder settings(RenderSettings s) { settings = Objects.requireNonNull(s); return this; }
     public RenderSettings settings() { return settings; }
@@ -109,6 +110,16 @@ public final class SceneBuilder {
         Camera c = camera != null ? camera : DEFAULT_CAMERA;
         return new Scene(settings, c, lights, objects);
     }
+
+    /**
+     * Records where the frame's size was given, such as "scene.dat:3:14" for the settings key that
+     * set it, so that a frame the heap cannot hold is reported there (the size is checked only
+     * once every override is known, just before rendering). Used for messages only; null: none.
+     */
+    public SceneBuilder frameSource(String where) { frameSource = where; return this; }
+
+    /** Where the frame's size was given (see {@link #frameSource(String)}), or null. */
+    public String frameSource() { return frameSource; }
 
     /** Convenience for code: the ambient light intensity. */
     public SceneBuilder ambient(Color c) { settings = settings.withAmbient(c); return this; }

@@ -105,6 +105,19 @@ class CliHeapLimitsTest {
     }
 
     @Test
+    void optionsThatShrinkAHugeFrameRenderIt() throws IOException {
+        // The scene's own size is checked only once the options are known, so they can make it fit.
+        Path scene = dir.resolve("scene.dat");
+        Files.writeString(scene, CAM + "settings { width 32768 height 16384 }\nsphere { }\n");
+        Path out = dir.resolve("out.png");
+        try (HeapBudget.Scope s = HeapBudget.cap(CAP)) {
+            CliTest.Run r = CliTest.run(scene.toString(), "-o", out.toString(), "--quiet", "--width", "32", "--height", "16");
+            assertEquals(0, r.status(), r.err());
+        }
+        assertTrue(Files.exists(out));
+    }
+
+    @Test
     void subdivideRefusesALevelAtTheOption() throws IOException {
         Path mesh = dir.resolve("grid.obj"), out = dir.resolve("out.obj");
         Files.write(mesh, grid(16, 8));
