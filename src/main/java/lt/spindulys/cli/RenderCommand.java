@@ -41,8 +41,9 @@ final class RenderCommand {
                    render --help | --version
 
               -o, --output OUT   image to write: .png .jpg .jpeg .tga .pfm (default: SCENE.png here)
-              --width W          image width in pixels (overrides the scene)
-              --height H         image height in pixels (overrides the scene)
+              --width W          image width in pixels (overrides the scene); alone, the height
+                                 follows the scene's aspect ratio (800x450 with --width 400: 400x225)
+              --height H         image height in pixels (overrides the scene); alone, likewise the width
               --spp N            samples per pixel, stratified (overrides the scene)
               --aperture R       lens radius of the camera, 0 for a pinhole (overrides the scene)
               --focus D          distance to the focal plane along the view (overrides the scene)
@@ -145,7 +146,12 @@ final class RenderCommand {
             warmed = System.nanoTime();
         }
         RenderSettings s = builder.settings();
-        if (width != null || height != null) s = s.withSize(width != null ? width : s.width(), height != null ? height : s.height());
+        if (width != null || height != null) {
+            // One side alone keeps the scene's aspect ratio: 800x450 with --width 400 becomes 400x225.
+            int w = width != null ? width : scaledSide(height, s.height(), s.width());
+            int h = height != null ? height : scaledSide(width, s.width(), s.height());
+            s = s.withSize(w, h);
+        }
         if (spp != null) s = s.withSamplesPerPixel(spp);
         if (seed != null) s = s.withSeed(seed);
         if (accel != null) s = s.withAccelerator(accel);
@@ -196,6 +202,16 @@ final class RenderCommand {
         ImageWriter.write(result.image(), output, new ImageOptions(s.srgb(), quality), result.aovs());
         if (stats) printStats(out, (parsed - t0 + t1 - warmed) / 1e9, (warmed - parsed) / 1e9, (t2 - t1) / 1e9, s.accelerator(), result.stats(), n);
         return 0;
+    }
+
+    /**
+     * The other side of a frame resized to {@code given} along a side that was {@code from}, in
+     * the proportion {@code to : from}: rounded to the nearest pixel, at least 1 and at most
+     * {@link RenderSettings#MAX_SIDE} (a very thin frame may lose its exact aspect there).
+     */
+    static int scaledSide(int given, int from, int to) {
+        long side = Math.round((double) given * to / from);
+        return (int) Math.max(1, Math.min(RenderSettings.MAX_SIDE, side));
     }
 
     /**

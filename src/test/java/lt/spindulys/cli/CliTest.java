@@ -55,6 +55,31 @@ class CliTest {
     }
 
     @Test
+    void oneSideAloneKeepsTheScenesAspectRatio() throws IOException {
+        Path scene = scene(SMALL.replace("width 24 height 16", "width 800 height 450"));
+        Path out = dir.resolve("one.png");
+        // {option, value, expected width, expected height}
+        int[][] cases = {{0, 40, 40, 23}, {1, 9, 16, 9}, {0, 1, 1, 1}, {1, 1, 2, 1}};
+        for (int[] c : cases) {
+            String option = c[0] == 0 ? "--width" : "--height";
+            Run r = run(scene.toString(), "-o", out.toString(), option, Integer.toString(c[1]), "--spp", "1", "--quiet");
+            assertEquals(0, r.status(), r.err());
+            FrameBuffer img = Images.read(out);
+            assertEquals(c[2] + "x" + c[3], img.width() + "x" + img.height(), option + " " + c[1]);
+        }
+    }
+
+    @Test
+    void scaledSideRoundsAndStaysInRange() {
+        assertEquals(225, RenderCommand.scaledSide(400, 800, 450));   // 800x450 --width 400
+        assertEquals(400, RenderCommand.scaledSide(225, 450, 800));   // 800x450 --height 225
+        assertEquals(23, RenderCommand.scaledSide(40, 800, 450));     // 22.5 rounds up
+        assertEquals(1, RenderCommand.scaledSide(1, 1000, 1));        // never below one pixel
+        assertEquals(32768, RenderCommand.scaledSide(32768, 1, 32768)); // never above MAX_SIDE
+        assertEquals(32768, RenderCommand.scaledSide(100, 1, 32768));
+    }
+
+    @Test
     void everyAcceleratorRendersTheSameImage() throws IOException {
         // Enough objects for a scene-level structure, and meshes with structures of their own.
         StringBuilder text = new StringBuilder(SMALL.replace("settings { width 24 height 16 }", "settings { width 24 height 16 accelerator octree }"));
