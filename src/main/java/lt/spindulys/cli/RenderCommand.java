@@ -1,10 +1,12 @@
 package lt.spindulys.cli;
 
 import java.io.IOException;
+import java.io.InputStream;
 import java.io.PrintStream;
 import java.lang.management.ManagementFactory;
 import java.lang.management.MemoryPoolMXBean;
 import java.lang.management.MemoryType;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.Set;
@@ -17,9 +19,11 @@ import lt.spindulys.image.Aov;
 import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.image.ImageOptions;
 import lt.spindulys.image.ImageWriter;
+import lt.spindulys.io.SceneException;
 import lt.spindulys.io.SceneParser;
 import lt.spindulys.limits.InputFiles;
 import lt.spindulys.limits.InsufficientMemoryException;
+import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.render.ProgressListener;
 import lt.spindulys.render.RenderStats;
@@ -130,6 +134,12 @@ final class RenderCommand {
         // Refused before anything is opened: a pipe would block, a device never end.
         String problem = InputFiles.problem(scene);
         if (problem != null) throw new NoSuchFileException(scene, problem);
+        String mesh = meshKind(scene);
+        if (mesh != null) {
+            String name = MessageText.quote(scene.getFileName().toString(), "\"");
+            throw new SceneException(scene.toString(), 0, 0, "this is " + mesh + ", not a scene: to render it, name it in a scene's mesh { file "
+                    + name + " } or subdiv { file " + name + " } block, or refine it with render subdivide");
+        }
         try {
             ImageWriter.checkOutput(output); // fail before rendering, not after
         } catch (IOException e) {
@@ -202,6 +212,40 @@ final class RenderCommand {
         ImageWriter.write(result.image(), output, new ImageOptions(s.srgb(), quality), result.aovs());
         if (stats) printStats(out, (parsed - t0 + t1 - warmed) / 1e9, (warmed - parsed) / 1e9, (t2 - t1) / 1e9, s.accelerator(), result.stats(), n);
         return 0;
+    }
+
+    /** How much of a file {@link #meshKind} reads: far more than any comment heading a mesh. */
+    private static final int HEAD_BYTES = 4096;
+
+    /**
+     * What kind of mesh {@code file} is, when a mesh was given where a scene is expected; else
+     * null. An OBJ is known by its extension; a Workframe mesh is a {@code .dat} like a scene, so
+     * it is known by its content: its first token (after comments) is an integer, the point count,
+     * where a scene's is the name of a statement. Only the start of the file is read.
+     */
+    static String meshKind(Path file) throws IOException {
+        Path fileName = file.getFileName();
+        String name = fileName == null ? "" : fileName.toString().toLowerCase(Locale.ROOT);
+        if (name.endsWith(".obj")) return "an OBJ mesh";
+        if (!name.endsWith(".dat")) return null;
+        byte[] head;
+        try (InputStream in = Files.newInputStream(file)) {
+            head = in.readNBytes(HEAD_BYTES);
+        }
+        int n = head.length, i = n >= 3 && (head[0] & 0xFF) == 0xEF && (head[1] & 0xFF) == 0xBB && (head[2] & 0xFF) == 0xBF ? 3 : 0;
+        while (i < n) {
+            byte c = head[i];
+            if (c == '#') while (i < n && head[i] != '\n' && head[i] != '\r') i++;
+            else if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f') i++;
+            else break;
+        }
+        if (i < n && (head[i] == '+' || head[i] == '-')) i++;
+        int digits = i;
+        while (i < n && head[i] >= '0' && head[i] <= '9') i++;
+        if (i == digits) return null;
+        // The integer must end the token (as the scene lexer cuts tokens): "2.5" or "3x" are no counts.
+        boolean ends = i == n || " \t\n\r\f{}#\"".indexOf(head[i]) >= 0;
+        return ends ? "a Workframe mesh" : null;
     }
 
     /**
