@@ -61,7 +61,7 @@ final class RenderCommand {
                                  method, N whole-frame passes at fixed times averaged (spp must be a multiple of N)
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
               --stats            print load, build and render times, rays by kind, Mrays/s, peak heap
-              --quiet            no progress bar
+              --quiet            no progress bar, and no closing 'wrote OUT (WxH, N spp) in T s' line
               --debug            stack traces on errors
             Exit status: 0 success, 2 bad usage or bad input, 1 failure while rendering or writing.""";
 
@@ -210,8 +210,20 @@ final class RenderCommand {
             if (bar != null) bar.finish();
         }
         ImageWriter.write(result.image(), output, new ImageOptions(s.srgb(), quality), result.aovs());
+        // On stderr with the progress bar it replaces: stdout carries only what was asked for (--stats).
+        if (!quiet) err.println(MessageText.escape(doneLine(output, s, (System.nanoTime() - t0) / 1e9)));
         if (stats) printStats(out, (parsed - t0 + t1 - warmed) / 1e9, (warmed - parsed) / 1e9, (t2 - t1) / 1e9, s.accelerator(), result.stats(), n);
         return 0;
+    }
+
+    /**
+     * The line that ends a render: the files written (the image, then its passes), the frame and
+     * the time from start to written files, e.g. {@code wrote out.png (800x450, 16 spp) in 3.2 s}.
+     */
+    static String doneLine(Path output, RenderSettings s, double seconds) {
+        StringBuilder line = new StringBuilder("wrote ").append(output);
+        for (Aov a : s.aovs()) line.append(", ").append(a.fileBeside(output));
+        return line.append(String.format(Locale.ROOT, " (%dx%d, %d spp) in %.1f s", s.width(), s.height(), s.samplesPerPixel(), seconds)).toString();
     }
 
     /** How much of a file {@link #meshKind} reads: far more than any comment heading a mesh. */

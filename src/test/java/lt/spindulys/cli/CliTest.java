@@ -70,6 +70,27 @@ class CliTest {
     }
 
     @Test
+    void aFinishedRenderEndsWithOneLineOnStderrUnlessQuiet() throws IOException {
+        Path scene = scene(SMALL);
+        Path out = dir.resolve("out.png");
+        Run r = run(scene.toString(), "-o", out.toString(), "--spp", "2");
+        assertEquals(0, r.status(), r.err());
+        assertEquals("", r.out());
+        assertTrue(r.err().matches("wrote \\Q" + out + "\\E \\(24x16, 2 spp\\) in \\d+\\.\\d s" + System.lineSeparator()), r.err());
+
+        // The passes are named after the image; --stats keeps stdout for its figures.
+        r = run(scene.toString(), "-o", out.toString(), "--aov", "depth,object", "--width", "12", "--stats");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().startsWith("load:"), r.out());
+        String passes = ", " + dir.resolve("out.depth.pfm") + ", " + dir.resolve("out.object.png");
+        assertTrue(r.err().matches("wrote \\Q" + out + passes + "\\E \\(12x8, 1 spp\\) in \\d+\\.\\d s" + System.lineSeparator()), r.err());
+
+        r = run(scene.toString(), "-o", out.toString(), "--quiet");
+        assertEquals(0, r.status(), r.err());
+        assertEquals("", r.err());
+    }
+
+    @Test
     void scaledSideRoundsAndStaysInRange() {
         assertEquals(225, RenderCommand.scaledSide(400, 800, 450));   // 800x450 --width 400
         assertEquals(400, RenderCommand.scaledSide(225, 450, 800));   // 800x450 --height 225
