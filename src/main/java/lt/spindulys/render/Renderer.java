@@ -16,8 +16,9 @@ import lt.spindulys.shading.WhittedIntegrator;
 
 /**
  * Renders a frozen scene on several threads. The image is cut into square tiles handed out from
- * an atomic counter; each thread has its own sampler and scratch, and every sample is seeded from
- * its pixel, so the result is the same for any thread count. When the settings ask for render
+ * an atomic counter, in an order spread over the frame ({@link #tileAt}) so that progress tracks
+ * work; each thread has its own sampler and scratch, and every sample is seeded from its pixel,
+ * so the result is the same for any thread count (and any tile order). When the settings ask for render
  * passes ({@link RenderSettings#aovs()}), each pixel gets one more camera ray for them; otherwise
  * nothing is traced or stored for them.
  *
@@ -31,6 +32,35 @@ import lt.spindulys.shading.WhittedIntegrator;
 public final class Renderer {
     /** Tile side in pixels: small enough to balance two cores, large enough to keep counters cheap. */
     static final int TILE = 16;
+
+    /**
+     * The tile (row-major index) handed out {@code k}-th: {@code k * stride mod tiles}, with the
+     * golden-ratio stride of {@link #spreadStride}. Tiles differ in cost (sky is cheap, the objects
+     * below it are not), so top to bottom the share of pixels done would run ahead of the share
+     * of work done, and a remaining time estimated from it would grow as the render went on. In
+     * this order the tiles done at any moment are spread evenly
+     * over the rows and the columns of the frame (successive ones fall into the largest gaps
+     * left, the golden ratio's three-gap property), so pixels done track work done. Every sample
+     * is seeded from its pixel, so the image is identical in any order.
+     */
+    static int tileAt(int k, int tiles, int stride) {
+        return (int) ((long) k * stride % tiles);
+    }
+
+    /**
+     * The stride of {@link #tileAt}: the integer nearest {@code tiles / phi} that is coprime to
+     * {@code tiles}, so that every tile comes exactly once.
+     */
+    static int spreadStride(int tiles) {
+        int s = Math.max(1, (int) Math.round(tiles / 1.618033988749895));
+        while (gcd(s, tiles) != 1) s++; // ends: tiles - 1 (or 1) is coprime to tiles
+        return s;
+    }
+
+    private static int gcd(int a, int b) {
+        while (b != 0) { int r = a % b; a = b; b = r; }
+        return a;
+    }
 
     /**
      * Stack size of a render thread. A ray recurses through each level of CSG nesting and each
@@ -102,6 +132,7 @@ public final class Renderer {
                                      AovFrame aovs, Pass pass, int tilesX, int tiles) throws InterruptedException {
         RenderSettings st = scene.settings();
         int w = st.width(), h = st.height();
+        int stride = spreadStride(tiles);
         AtomicInteger nextTile = new AtomicInteger();
         AtomicLong donePixels = new AtomicLong();
         AtomicReference<Throwable> failure = new AtomicReference<>();
@@ -116,8 +147,9 @@ public final class Renderer {
                 Ray ray = new Ray();
                 double[] colour = new double[4];
                 try {
-                    for (int t; (t = nextTile.getAndIncrement()) < tiles && failure.get() == null; ) {
+                    for (int next; (next = nextTile.getAndIncrement()) < tiles && failure.get() == null; ) {
                         if (Thread.currentThread().isInterrupted()) return;
+                        int t = tileAt(next, tiles, stride);
                         int x0 = (t % tilesX) * TILE, y0 = (t / tilesX) * TILE;
                         int x1 = Math.min(x0 + TILE, w), y1 = Math.min(y0 + TILE, h);
                         renderTile(scene.camera(), integrator, st, pass, sampler, scratch, ray, colour, fb, aovs, x0, y0, x1, y1);

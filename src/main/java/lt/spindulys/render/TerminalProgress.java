@@ -26,12 +26,30 @@ public final class TerminalProgress implements ProgressListener {
         StringBuilder line = new StringBuilder("\r[");
         for (int i = 0; i < BAR; i++) line.append(i < filled ? '=' : ' ');
         line.append(String.format("] %3d%%  elapsed %s", (int) Math.floor(f * 100), clock(elapsed)));
-        if (f > 0 && f < 1) line.append("  remaining ").append(clock(elapsed * (1 - f) / f));
+        double remaining = remainingSeconds(done, total, elapsed);
+        if (!Double.isNaN(remaining)) line.append("  remaining ").append(clock(remaining));
         int len = line.length();
         while (line.length() < lastLength) line.append(' ');
         lastLength = len;
         out.print(line);
         out.flush();
+    }
+
+    /** Share of the work done before a remaining time is shown: the first tiles are too few to go by. */
+    static final double FIRST_ESTIMATE = 0.01;
+
+    /**
+     * The time still to go, from the average rate so far: {@code elapsed} per share done. The
+     * Renderer hands out tiles spread over the frame ({@link Renderer#tileAt}), so the share
+     * of pixels done is an even sample of the frame's work at every moment, and the rate over the
+     * whole run is its least noisy measure (no smoothing window to tune, and the start-up's slow
+     * first tiles, while the JIT compiles, weigh less and less). NaN before
+     * {@value #FIRST_ESTIMATE} of the pixels are done, and once all are.
+     */
+    static double remainingSeconds(long done, long total, double elapsed) {
+        if (total <= 0 || done >= total || done < FIRST_ESTIMATE * total) return Double.NaN;
+        double f = (double) done / total;
+        return elapsed * (1 - f) / f;
     }
 
     /** Erases the bar so that later output starts on a clean line. */
