@@ -61,7 +61,9 @@ class CliBadInputTest {
     }
 
     /** A file given as the scene, its content, and whether it is a mesh (and of which kind) rather than a scene. */
-    record MeshCase(String file, String content, String kind) {
+    record MeshCase(String file, String content, String kind, String at) {
+        MeshCase(String file, String content, String kind) { this(file, content, kind, kind == null || kind.contains("OBJ") ? "" : ":1:1"); }
+
         @Override public String toString() { return file + " " + (kind == null ? "is no mesh" : kind); }
     }
 
@@ -70,7 +72,7 @@ class CliBadInputTest {
                 new MeshCase("knot.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "an OBJ mesh"),
                 new MeshCase("KNOT.OBJ", "# exported\nv 0 0 0\n", "an OBJ mesh"),
                 new MeshCase("cube.dat", "3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "a Workframe mesh"),
-                new MeshCase("commented.dat", "\uFEFF# a cube from the modeller\n\n  # points, faces\n8 6\n", "a Workframe mesh"),
+                new MeshCase("commented.dat", "\uFEFF# a cube from the modeller\r\n\r\n  # points, faces\n\t8 6\n", "a Workframe mesh", ":4:2"),
                 new MeshCase("signed.dat", "+3 1\n", "a Workframe mesh"),
                 // Not meshes: the scene parser reports these as it always did.
                 new MeshCase("decimal.dat", "2.5 1\n", null),
@@ -85,17 +87,18 @@ class CliBadInputTest {
     void aMeshGivenAsTheSceneIsNamedAsOne(MeshCase c) throws IOException {
         Path file = dir.resolve(c.file());
         Files.writeString(file, c.content());
-        assertEquals(c.kind(), RenderCommand.meshKind(file));
+        RenderCommand.MeshGiven m = RenderCommand.meshGiven(file);
+        assertEquals(c.kind(), m == null ? null : m.kind());
         if (c.kind() == null) return;
-        assertFailsCleanly(file, file + ": this is " + c.kind() + ", not a scene: to render it, name it in a scene's mesh { file \""
+        assertFailsCleanly(file, file + c.at() + ": this is " + c.kind() + ", not a scene: to render it, name it in a scene's mesh { file \""
                 + c.file() + "\" } or subdiv { file \"" + c.file() + "\" } block, or refine it with render subdivide");
     }
 
     @Test
     void theRepositorysOwnMeshesAreNamedAsMeshes() throws IOException {
-        assertEquals("an OBJ mesh", RenderCommand.meshKind(Path.of("scenes/models/knot.obj")));
-        assertEquals("a Workframe mesh", RenderCommand.meshKind(Path.of("scenes/models/cube.dat")));
-        assertNull(RenderCommand.meshKind(Path.of("scenes/spheres.dat")));
+        assertEquals("an OBJ mesh", RenderCommand.meshGiven(Path.of("scenes/models/knot.obj")).kind());
+        assertEquals("a Workframe mesh", RenderCommand.meshGiven(Path.of("scenes/models/cube.dat")).kind());
+        assertNull(RenderCommand.meshGiven(Path.of("scenes/spheres.dat")));
     }
 
     /** Scenes whose error echoes hostile input: huge tokens, control characters, line separators. */
