@@ -20,7 +20,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 
-import lt.spindulys.io.AtomicFile;
+import lt.spindulys.files.AtomicFile;
 import lt.spindulys.io.ObjReader;
 import lt.spindulys.io.SceneException;
 import lt.spindulys.io.SceneParser;
