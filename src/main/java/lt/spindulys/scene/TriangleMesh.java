@@ -11,6 +11,7 @@ import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Placement;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
+import lt.spindulys.mesh.MeshData;
 
 /**
  * A triangle mesh held in flat arrays (no object per triangle) with its own acceleration

@@ -25,7 +25,7 @@ import lt.spindulys.io.ObjReader;
 import lt.spindulys.io.SceneException;
 import lt.spindulys.io.SceneParser;
 import lt.spindulys.io.WorkframeReader;
-import lt.spindulys.scene.MeshData;
+import lt.spindulys.mesh.MeshData;
 import lt.spindulys.texture.TextureCache;
 import lt.spindulys.texture.TgaReader;
 
