@@ -182,7 +182,7 @@ class BvhTest {
             }
         }
 
-        @Override public boolean intersect(int i, Ray ray, Hit hit, TraceContext ctx) {
+        @Override public boolean intersect(int i, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
             double px = ray.ox - c[4 * i], py = ray.oy - c[4 * i + 1], pz = ray.oz - c[4 * i + 2];
             double a = ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz;
             double b = px * ray.dx + py * ray.dy + pz * ray.dz;
