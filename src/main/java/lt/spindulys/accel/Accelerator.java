@@ -1,8 +1,6 @@
 package lt.spindulys.accel;
 
 import lt.spindulys.math.Ray;
-import lt.spindulys.scene.Hit;
-import lt.spindulys.scene.TraceContext;
 
 /** A ray query structure over a {@link PrimitiveSet}. Immutable after construction; thread-safe. */
 public interface Accelerator {
@@ -10,10 +8,10 @@ public interface Accelerator {
      * Finds the nearest hit in (ray.tMin, ray.tMax), recording it in {@code hit}. On return
      * ray.tMax is unchanged; hit.t holds the nearest distance if the result is true.
      */
-    boolean intersect(Ray ray, Hit hit, TraceContext ctx);
+    boolean intersect(Ray ray, PrimitiveHit hit, TraversalScratch ctx);
 
     /** True if any primitive blocks the ray in (ray.tMin, ray.tMax); stops at the first one found. */
-    boolean occluded(Ray ray, TraceContext ctx);
+    boolean occluded(Ray ray, TraversalScratch ctx);
 
     /**
      * Calls {@code visitor} for every primitive the structure cannot rule out for the ray within
@@ -21,7 +19,7 @@ public interface Accelerator {
      * once (a structure may reference a primitive from several cells). The visitor must not change
      * the ray. Used to collect all crossings of a line (mesh spans).
      */
-    void visit(Ray ray, TraceContext ctx, Bvh.Visitor visitor);
+    void visit(Ray ray, TraversalScratch ctx, PrimitiveVisitor visitor);
 
     /** Bytes held by the structure's own arrays (not the primitives it indexes). */
     long memoryBytes();

@@ -1,8 +1,6 @@
 package lt.spindulys.accel;
 
 import lt.spindulys.math.Ray;
-import lt.spindulys.scene.Hit;
-import lt.spindulys.scene.TraceContext;
 
 /**
  * A handful of primitives, each behind its own box: a ray tests every box (the same widened
@@ -32,7 +30,7 @@ public final class BoxList implements Accelerator {
     }
 
     @Override
-    public boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
+    public boolean intersect(Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
         ctx.direction(ray);
         // Read once: an object entered below may leave its own (transformed) ray's constants in ctx.
         final double ix = ctx.invX, iy = ctx.invY, iz = ctx.invZ;
@@ -50,7 +48,7 @@ public final class BoxList implements Accelerator {
     }
 
     @Override
-    public boolean occluded(Ray ray, TraceContext ctx) {
+    public boolean occluded(Ray ray, TraversalScratch ctx) {
         ctx.direction(ray);
         final double ix = ctx.invX, iy = ctx.invY, iz = ctx.invZ;
         final int xn = ix < 0 ? 3 : 0, yn = iy < 0 ? 3 : 0, zn = iz < 0 ? 3 : 0;
@@ -59,7 +57,7 @@ public final class BoxList implements Accelerator {
     }
 
     @Override
-    public void visit(Ray ray, TraceContext ctx, Bvh.Visitor visitor) {
+    public void visit(Ray ray, TraversalScratch ctx, PrimitiveVisitor visitor) {
         ctx.direction(ray);
         final double ix = ctx.invX, iy = ctx.invY, iz = ctx.invZ;
         final int xn = ix < 0 ? 3 : 0, yn = iy < 0 ? 3 : 0, zn = iz < 0 ? 3 : 0;

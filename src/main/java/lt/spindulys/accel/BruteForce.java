@@ -1,8 +1,6 @@
 package lt.spindulys.accel;
 
 import lt.spindulys.math.Ray;
-import lt.spindulys.scene.Hit;
-import lt.spindulys.scene.TraceContext;
 
 /** Tests every primitive: the reference the real structures are checked against, and fine for a handful. */
 public final class BruteForce implements Accelerator {
@@ -12,7 +10,7 @@ public final class BruteForce implements Accelerator {
 
     // One range call, so a set with a batched test (a mesh's triangles) reads its per-ray constants once.
     @Override
-    public boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
+    public boolean intersect(Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
         double saved = ray.tMax;
         boolean any = set.intersectRange(null, 0, set.size(), ray, hit, ctx);
         ray.tMax = saved;
@@ -20,12 +18,12 @@ public final class BruteForce implements Accelerator {
     }
 
     @Override
-    public boolean occluded(Ray ray, TraceContext ctx) {
+    public boolean occluded(Ray ray, TraversalScratch ctx) {
         return set.occludedRange(null, 0, set.size(), ray, ctx);
     }
 
     @Override
-    public void visit(Ray ray, TraceContext ctx, Bvh.Visitor visitor) {
+    public void visit(Ray ray, TraversalScratch ctx, PrimitiveVisitor visitor) {
         for (int i = 0, n = set.size(); i < n; i++) visitor.visit(i, ray, ctx);
     }
 

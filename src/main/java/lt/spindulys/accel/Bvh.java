@@ -5,8 +5,6 @@ import java.util.concurrent.RecursiveTask;
 
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
-import lt.spindulys.scene.Hit;
-import lt.spindulys.scene.TraceContext;
 
 /**
  * Bounding volume hierarchy over a {@link PrimitiveSet}, built with the binned surface-area
@@ -50,12 +48,6 @@ public final class Bvh implements Accelerator {
     private final Bounds bounds;
     private final int nodeCount;
     private final int depth;
-
-    /** Called for each primitive of {@link #visit}. */
-    @FunctionalInterface
-    public interface Visitor {
-        void visit(int prim, Ray ray, TraceContext ctx);
-    }
 
     public Bvh(PrimitiveSet set) { this(set, DEFAULT_LEAF_SIZE); }
 
@@ -114,7 +106,7 @@ public final class Bvh implements Accelerator {
      * nearest hit found since is skipped without touching its box.
      */
     @Override
-    public boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
+    public boolean intersect(Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
         if (nodeCount == 0) return false;
         final double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         ctx.direction(ray);
@@ -172,7 +164,7 @@ public final class Bvh implements Accelerator {
     }
 
     @Override
-    public boolean occluded(Ray ray, TraceContext ctx) {
+    public boolean occluded(Ray ray, TraversalScratch ctx) {
         if (nodeCount == 0) return false;
         final double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         ctx.direction(ray);
@@ -210,7 +202,7 @@ public final class Bvh implements Accelerator {
      * the primitive in any way but must not change the ray.
      */
     @Override
-    public void visit(Ray ray, TraceContext ctx, Visitor visitor) {
+    public void visit(Ray ray, TraversalScratch ctx, PrimitiveVisitor visitor) {
         if (nodeCount == 0) return;
         final double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         ctx.direction(ray);

@@ -4,8 +4,6 @@ import java.util.Arrays;
 
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
-import lt.spindulys.scene.Hit;
-import lt.spindulys.scene.TraceContext;
 
 /**
  * An octree over a {@link PrimitiveSet} (the thesis's "Octobox"): a cube around everything,
@@ -105,12 +103,12 @@ public final class Octree implements Accelerator {
     private static final int INTERSECT = 0, OCCLUDED = 1, VISIT = 2;
 
     @Override
-    public boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
+    public boolean intersect(Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
         return traverse(ray, hit, ctx, INTERSECT, null);
     }
 
     @Override
-    public boolean occluded(Ray ray, TraceContext ctx) {
+    public boolean occluded(Ray ray, TraversalScratch ctx) {
         return traverse(ray, null, ctx, OCCLUDED, null);
     }
 
@@ -120,12 +118,12 @@ public final class Octree implements Accelerator {
      * each; the visitor must not change the ray.
      */
     @Override
-    public void visit(Ray ray, TraceContext ctx, Bvh.Visitor visitor) {
+    public void visit(Ray ray, TraversalScratch ctx, PrimitiveVisitor visitor) {
         traverse(ray, null, ctx, VISIT, visitor);
     }
 
     /** The one walk behind intersect, occluded and visit: front to back, with a stack from the context. */
-    private boolean traverse(Ray ray, Hit hit, TraceContext ctx, int mode, Bvh.Visitor visitor) {
+    private boolean traverse(Ray ray, PrimitiveHit hit, TraversalScratch ctx, int mode, PrimitiveVisitor visitor) {
         if (nodeCount == 0) return false;
         final double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         final double ix = 1 / ray.dx, iy = 1 / ray.dy, iz = 1 / ray.dz;

@@ -1,8 +1,6 @@
 package lt.spindulys.accel;
 
 import lt.spindulys.math.Ray;
-import lt.spindulys.scene.Hit;
-import lt.spindulys.scene.TraceContext;
 
 /**
  * What an acceleration structure indexes: a fixed number of primitives with bounds and a
@@ -15,11 +13,14 @@ public interface PrimitiveSet {
     void bounds(int i, double[] out);
 
     /** Nearest-hit test of primitive {@code i} for t in (ray.tMin, ray.tMax); records a hit and returns true if nearer. */
-    boolean intersect(int i, Ray ray, Hit hit, TraceContext ctx);
+    boolean intersect(int i, Ray ray, PrimitiveHit hit, TraversalScratch ctx);
 
     /** Any-hit test of primitive {@code i}. */
-    default boolean occluded(int i, Ray ray, TraceContext ctx) {
-        return intersect(i, ray, ctx.scratchHit.reset(ray.tMax), ctx);
+    default boolean occluded(int i, Ray ray, TraversalScratch ctx) {
+        PrimitiveHit h = ctx.anyHit;
+        h.t = ray.tMax;
+        h.prim = -1;
+        return intersect(i, ray, h, ctx);
     }
 
     /**
@@ -36,7 +37,7 @@ public interface PrimitiveSet {
      * ray.tMax to each hit found; true if any was. A set overrides this to hoist its per-ray
      * work out of the loop.
      */
-    default boolean intersectRange(int[] prims, int from, int to, Ray ray, Hit hit, TraceContext ctx) {
+    default boolean intersectRange(int[] prims, int from, int to, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
         boolean any = false;
         for (int k = from; k < to; k++) {
             if (intersect(prims == null ? k : prims[k], ray, hit, ctx)) {
@@ -48,7 +49,7 @@ public interface PrimitiveSet {
     }
 
     /** Any-hit test of the primitives {@code prims[from..to)} (from..to with prims null); stops at the first one found. */
-    default boolean occludedRange(int[] prims, int from, int to, Ray ray, TraceContext ctx) {
+    default boolean occludedRange(int[] prims, int from, int to, Ray ray, TraversalScratch ctx) {
         for (int k = from; k < to; k++) if (occluded(prims == null ? k : prims[k], ray, ctx)) return true;
         return false;
     }

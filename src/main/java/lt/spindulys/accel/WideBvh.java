@@ -1,8 +1,6 @@
 package lt.spindulys.accel;
 
 import lt.spindulys.math.Ray;
-import lt.spindulys.scene.Hit;
-import lt.spindulys.scene.TraceContext;
 
 /**
  * A {@link Bvh} collapsed to eight children per node, whose eight boxes are tested together with
@@ -104,7 +102,7 @@ public final class WideBvh implements Accelerator {
      * (clamped, so never zero or infinite), then for x, y, z the origin moved two ulps towards
      * the near and towards the far side of every slab (which covers its rounding to float).
      */
-    private static float[] prepare(Ray ray, TraceContext ctx) {
+    private static float[] prepare(Ray ray, TraversalScratch ctx) {
         ctx.direction(ray);
         float[] r = ctx.wideRay;
         float ix = inv(ctx.invX), iy = inv(ctx.invY), iz = inv(ctx.invZ);
@@ -116,7 +114,7 @@ public final class WideBvh implements Accelerator {
     }
 
     @Override
-    public boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
+    public boolean intersect(Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
         final float[] r = prepare(ray, ctx);
         final float ix = r[0], iy = r[1], iz = r[2], oxn = r[3], oxf = r[4], oyn = r[5], oyf = r[6], ozn = r[7], ozf = r[8];
         final int nx = ix >= 0 ? 0 : 8, ny = iy >= 0 ? 0 : 8, nz = iz >= 0 ? 0 : 8;
@@ -189,17 +187,17 @@ public final class WideBvh implements Accelerator {
     }
 
     @Override
-    public boolean occluded(Ray ray, TraceContext ctx) { return walk(ray, ctx, null); }
+    public boolean occluded(Ray ray, TraversalScratch ctx) { return walk(ray, ctx, null); }
 
     @Override
-    public void visit(Ray ray, TraceContext ctx, Bvh.Visitor visitor) { walk(ray, ctx, visitor); }
+    public void visit(Ray ray, TraversalScratch ctx, PrimitiveVisitor visitor) { walk(ray, ctx, visitor); }
 
     /**
      * Every leaf the ray passes through in [ray.tMin, ray.tMax] (infinite limits allowed), in
      * no order: with a visitor, each of its primitives is offered to it; without one, the walk
      * is the any-hit query and stops at the first leaf that blocks the ray.
      */
-    private boolean walk(Ray ray, TraceContext ctx, Bvh.Visitor visitor) {
+    private boolean walk(Ray ray, TraversalScratch ctx, PrimitiveVisitor visitor) {
         final float[] r = prepare(ray, ctx);
         final float ix = r[0], iy = r[1], iz = r[2], oxn = r[3], oxf = r[4], oyn = r[5], oyf = r[6], ozn = r[7], ozf = r[8];
         final int nx = ix >= 0 ? 0 : 8, ny = iy >= 0 ? 0 : 8, nz = iz >= 0 ? 0 : 8;

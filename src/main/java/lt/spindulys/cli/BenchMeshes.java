@@ -9,7 +9,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
-import lt.spindulys.io.AtomicFile;
+import lt.spindulys.files.AtomicFile;
 
 /**
  * Writes the meshes of the shared peer benchmark scene (scenes/bench/torus-*.dat): a torus of

@@ -5,7 +5,7 @@ import java.io.PrintStream;
 import java.nio.file.Path;
 import java.util.Locale;
 
-import lt.spindulys.io.AtomicFile;
+import lt.spindulys.files.AtomicFile;
 import lt.spindulys.io.ObjReader;
 import lt.spindulys.io.ObjWriter;
 import lt.spindulys.limits.MessageText;

@@ -19,7 +19,7 @@ import javax.imageio.ImageWriteParam;
 import javax.imageio.stream.ImageOutputStream;
 import javax.imageio.stream.MemoryCacheImageOutputStream;
 
-import lt.spindulys.io.AtomicFile;
+import lt.spindulys.files.AtomicFile;
 
 /**
  * Writes a {@link FrameBuffer} to a file whose format is chosen by its extension (any case):

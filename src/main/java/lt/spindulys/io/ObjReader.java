@@ -14,7 +14,7 @@ import lt.spindulys.limits.InputFiles;
 import lt.spindulys.limits.InsufficientMemoryException;
 import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Ranges;
-import lt.spindulys.scene.MeshData;
+import lt.spindulys.mesh.MeshData;
 import lt.spindulys.subdiv.SubdivInput;
 import lt.spindulys.subdiv.SubdivOptions;
 import lt.spindulys.subdiv.SubdivTags;

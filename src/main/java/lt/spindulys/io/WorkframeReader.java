@@ -13,7 +13,7 @@ import lt.spindulys.limits.InputFiles;
 import lt.spindulys.limits.InsufficientMemoryException;
 import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Ranges;
-import lt.spindulys.scene.MeshData;
+import lt.spindulys.mesh.MeshData;
 
 /**
  * Reads the two files of the thesis's modeller (Workframe): a {@code .dat} polygon mesh and a

@@ -1,20 +1,16 @@
 package lt.spindulys.scene;
 
+import lt.spindulys.accel.PrimitiveHit;
+
 /**
- * The nearest-hit record of the first intersection phase: distance, the leaf object and its
- * primitive, and two primitive-local parameters (barycentrics for triangles, surface parameters
- * for analytic shapes). Shading data is derived from it once, for the nearest hit only, by
- * {@link GObject#shade}. Mutable per-thread scratch.
+ * The nearest-hit record of the first intersection phase: the acceleration structures' record
+ * (distance, primitive within the leaf object, two primitive-local parameters) extended with the
+ * leaf object hit and its material and CSG state. Shading data is derived from it once, for the
+ * nearest hit only, by {@link GObject#shade}. Mutable per-thread scratch.
  */
-public final class Hit {
-    /** Ray parameter of the hit (the same in world and object space). */
-    public double t;
+public final class Hit extends PrimitiveHit {
     /** The leaf object hit; null while nothing is hit. */
     public GObject object;
-    /** Primitive index within the object (triangle, box face, cylinder part...). */
-    public int prim;
-    /** Primitive-local parameters. */
-    public double u, v;
     /** True where the visible surface faces the other way from its object's outward normal (a CSG cut). */
     public boolean flipNormal;
     /** The material to shade with; set by the leaf, overridden by an enclosing object that has one. */

@@ -6,7 +6,9 @@ import java.util.List;
 import lt.spindulys.accel.Accelerator;
 import lt.spindulys.accel.BoxList;
 import lt.spindulys.accel.Bvh;
+import lt.spindulys.accel.PrimitiveHit;
 import lt.spindulys.accel.PrimitiveSet;
+import lt.spindulys.accel.TraversalScratch;
 import lt.spindulys.camera.Camera;
 import lt.spindulys.math.Placement;
 import lt.spindulys.math.Ray;
@@ -100,7 +102,11 @@ public final class Scene {
         return accel.occluded(ray, ctx);
     }
 
-    /** The scene's objects as primitives of the top-level structure. */
+    /**
+     * The scene's objects as primitives of the top-level structure. The structure passes back the
+     * scene's own hit and context it was given (it knows them only as its base types), so the casts
+     * below always succeed; they are checks against final classes, no extra call.
+     */
     private record ObjectSet(GObject[] objects) implements PrimitiveSet {
         @Override public int size() { return objects.length; }
 
@@ -110,12 +116,12 @@ public final class Scene {
             out[3] = b.maxX(); out[4] = b.maxY(); out[5] = b.maxZ();
         }
 
-        @Override public boolean intersect(int i, Ray ray, Hit hit, TraceContext ctx) {
-            return objects[i].intersect(ray, hit, ctx);
+        @Override public boolean intersect(int i, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
+            return objects[i].intersect(ray, (Hit) hit, (TraceContext) ctx);
         }
 
-        @Override public boolean occluded(int i, Ray ray, TraceContext ctx) {
-            return objects[i].occluded(ray, ctx);
+        @Override public boolean occluded(int i, Ray ray, TraversalScratch ctx) {
+            return objects[i].occluded(ray, (TraceContext) ctx);
         }
     }
 }

@@ -7,6 +7,7 @@ import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Placement;
 import lt.spindulys.math.Transform;
+import lt.spindulys.mesh.MeshData;
 import lt.spindulys.subdiv.CatmullClark;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.RefinedMesh;

@@ -1,13 +1,15 @@
 package lt.spindulys.scene;
 
+import lt.spindulys.accel.TraversalScratch;
 import lt.spindulys.math.Affine;
 import lt.spindulys.math.Ray;
 
 /**
  * Per-thread scratch passed down explicitly through intersection and shading, so the inner loops
- * allocate nothing and share nothing. One instance per render thread; never shared.
+ * allocate nothing and share nothing: the acceleration structures' traversal scratch (inherited)
+ * and the scene's own. One instance per render thread; never shared.
  */
-public final class TraceContext {
+public final class TraceContext extends TraversalScratch {
     /** Scratch ray for mapping a world ray into an object's space. */
     public final Ray localRay = new Ray();
     /** Scratch for a moving object's transform at the ray's time (see GObject#toLocal). */
@@ -17,61 +19,12 @@ public final class TraceContext {
     /** Range output of bounds tests. */
     public final double[] range = new double[2];
 
-    /**
-     * Entries of {@link #stack(int)} below this index belong to traversals further up the call
-     * chain (a scene BVH whose primitive is a mesh with its own BVH): a traversal uses the entries
-     * from here on and raises it while it calls its primitives.
-     */
-    public int stackTop;
-
-    /**
-     * Per-direction constants, valid while the ray direction equals (dirX, dirY, dirZ) (see
-     * {@link #direction(Ray)}): the inverse direction of the box tests, and the axis permutation
-     * and shear of the watertight triangle test. A scene structure and the meshes it holds see
-     * the same direction (unless an object is transformed), so they are computed once per ray.
-     */
-    public double dirX = Double.NaN, dirY = Double.NaN, dirZ = Double.NaN;
-    public double invX, invY, invZ;
-    public double shearSx, shearSy, shearSz;
-    public int shearKx, shearKy, shearKz;
-
     /** Grow-once scratch for the crossings of a line with a mesh (TriangleMesh spans), and how many are in it. */
     public double[] crossings = new double[64];
     public int crossingCount;
 
-    /** Per-lane scratch of the wide BVH's vector box test, and its per-ray constants. */
-    public final float[] lanes = new float[8], wideRay = new float[9];
-
-    private int[] stack = new int[64];
     private SpanBuffer[] spanPool = new SpanBuffer[8];
     private int spanDepth;
-
-    /** Makes the per-direction constants those of {@code ray}'s direction. */
-    public void direction(Ray ray) {
-        double dx = ray.dx, dy = ray.dy, dz = ray.dz;
-        if (dx == dirX && dy == dirY && dz == dirZ) return;
-        invX = 1 / dx; invY = 1 / dy; invZ = 1 / dz;
-        // kz is the dominant axis; kx, ky are swapped when the ray runs along -kz so that the
-        // winding (and with it the sign of the edge functions) is preserved.
-        double ax = Math.abs(dx), ay = Math.abs(dy), az = Math.abs(dz);
-        int kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
-        int kx = kz == 2 ? 0 : kz + 1, ky = kx == 2 ? 0 : kx + 1;
-        double dkz = kz == 0 ? dx : kz == 1 ? dy : dz;
-        if (dkz < 0) { int t = kx; kx = ky; ky = t; }
-        double dkx = kx == 0 ? dx : kx == 1 ? dy : dz;
-        double dky = ky == 0 ? dx : ky == 1 ? dy : dz;
-        shearKx = kx; shearKy = ky; shearKz = kz;
-        shearSx = dkx / dkz;
-        shearSy = dky / dkz;
-        shearSz = 1 / dkz;
-        dirX = dx; dirY = dy; dirZ = dz;
-    }
-
-    /** A traversal stack of at least {@code size} entries (grown once, then reused). */
-    public int[] stack(int size) {
-        if (stack.length < size) stack = new int[Math.max(size, stack.length * 2)];
-        return stack;
-    }
 
     /** Borrows a cleared span buffer; give it back with {@link #releaseSpans()} in LIFO order. */
     public SpanBuffer acquireSpans() {

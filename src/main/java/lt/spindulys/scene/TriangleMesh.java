@@ -6,11 +6,15 @@ import lt.spindulys.accel.Accelerator;
 import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.accel.BruteForce;
 import lt.spindulys.accel.Bvh;
+import lt.spindulys.accel.PrimitiveHit;
 import lt.spindulys.accel.PrimitiveSet;
+import lt.spindulys.accel.PrimitiveVisitor;
+import lt.spindulys.accel.TraversalScratch;
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Placement;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
+import lt.spindulys.mesh.MeshData;
 
 /**
  * A triangle mesh held in flat arrays (no object per triangle) with its own acceleration
@@ -62,7 +66,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
      */
     private final java.util.EnumMap<AcceleratorKind, Accelerator> structures;
     /** Made once so that collecting crossings allocates nothing per ray. */
-    private final Bvh.Visitor crossingCollector = this::collectCrossing;
+    private final PrimitiveVisitor crossingCollector = this::collectCrossing;
 
     private boolean smooth;
     /** Area-weighted normal per position, for smooth shading of triangles without file normals. */
@@ -506,7 +510,9 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
      * line through an edge or vertex gets a t that depends only on that edge or vertex, so the
      * duplicates from the triangles sharing it compare exactly equal.
      */
-    private void collectCrossing(int i, Ray ray, TraceContext ctx) {
+    private void collectCrossing(int i, Ray ray, TraversalScratch traversal) {
+        // The structure hands back the context spansLocal gave it; the crossing list is the scene's scratch.
+        TraceContext ctx = (TraceContext) traversal;
         ctx.direction(ray);
         final int kx = ctx.shearKx, ky = ctx.shearKy, kz = ctx.shearKz;
         final double sx = ctx.shearSx, sy = ctx.shearSy, sz = ctx.shearSz;
@@ -662,22 +668,22 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     }
 
     @Override
-    public boolean intersect(int i, Ray ray, Hit hit, TraceContext ctx) {
+    public boolean intersect(int i, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
         return test(i, i + 1, null, ray, hit, ctx);
     }
 
     @Override
-    public boolean occluded(int i, Ray ray, TraceContext ctx) {
+    public boolean occluded(int i, Ray ray, TraversalScratch ctx) {
         return test(i, i + 1, null, ray, null, ctx);
     }
 
     @Override
-    public boolean intersectRange(int[] prims, int from, int to, Ray ray, Hit hit, TraceContext ctx) {
+    public boolean intersectRange(int[] prims, int from, int to, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
         return test(from, to, prims, ray, hit, ctx);
     }
 
     @Override
-    public boolean occludedRange(int[] prims, int from, int to, Ray ray, TraceContext ctx) {
+    public boolean occludedRange(int[] prims, int from, int to, Ray ray, TraversalScratch ctx) {
         return test(from, to, prims, ray, null, ctx);
     }
 
@@ -692,7 +698,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
      * the edge. With {@code hit} null this is an any-hit query and returns at the first hit;
      * otherwise every hit nearer than ray.tMax is recorded and shrinks ray.tMax.
      */
-    private boolean test(int from, int to, int[] prims, Ray ray, Hit hit, TraceContext ctx) {
+    private boolean test(int from, int to, int[] prims, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
         ctx.direction(ray);
         final int kx = ctx.shearKx, ky = ctx.shearKy, kz = ctx.shearKz;
         final double sx = ctx.shearSx, sy = ctx.shearSy, sz = ctx.shearSz;

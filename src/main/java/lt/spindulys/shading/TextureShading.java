@@ -69,7 +69,7 @@ final class TextureShading {
         if (tex == null) return false;
         TexturePoint tp = s.texPoint;
         tp.footprint = objectFootprint;
-        m.mapping(c).map(sd, p, tp);
+        m.mapping(c).map(sd.u, sd.v, sd.dpduObject, sd.dpdvObject, p, tp);
         tex.evaluate(tp, rgb);
         return true;
     }
@@ -104,21 +104,21 @@ final class TextureShading {
         double du = step / lu, dv = step / lv;
 
         tp.footprint = objectFootprint;
-        map.map(sd, po, tp);
+        map.map(sd.u, sd.v, sd.dpduObject, sd.dpdvObject, po, tp);
         double h0 = tex.scalar(tp, sc);
 
         double u0 = sd.u, v0 = sd.v;
         for (int i = 0; i < 3; i++) q[i] = po[i] + sd.dpduObject[i] * du;
         sd.u = u0 + du;
         tp.footprint = objectFootprint;
-        map.map(sd, q, tp);
+        map.map(sd.u, sd.v, sd.dpduObject, sd.dpdvObject, q, tp);
         double h1 = tex.scalar(tp, sc);
         sd.u = u0;
 
         for (int i = 0; i < 3; i++) q[i] = po[i] + sd.dpdvObject[i] * dv;
         sd.v = v0 + dv;
         tp.footprint = objectFootprint;
-        map.map(sd, q, tp);
+        map.map(sd.u, sd.v, sd.dpduObject, sd.dpdvObject, q, tp);
         double h2 = tex.scalar(tp, sc);
         sd.v = v0;
 

@@ -5,7 +5,7 @@ import java.util.HashMap;
 import java.util.Map;
 import java.util.Objects;
 
-import lt.spindulys.scene.MeshData;
+import lt.spindulys.mesh.MeshData;
 
 /**
  * A control mesh as read from a file, before it is frozen into a {@link ControlMesh}: the polygons

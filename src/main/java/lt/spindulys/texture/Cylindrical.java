@@ -1,7 +1,6 @@
 package lt.spindulys.texture;
 
 import lt.spindulys.math.Vec3;
-import lt.spindulys.scene.ShadingData;
 
 /**
  * Cylindrical mapping about an axis through a centre: with d = p - c split into a = d . r,
@@ -23,7 +22,7 @@ public final class Cylindrical implements Mapping {
     }
 
     @Override
-    public void map(ShadingData sd, double[] p, TexturePoint out) {
+    public void map(double u, double v, double[] dpdu, double[] dpdv, double[] p, TexturePoint out) {
         double dx = p[0] - f.cx, dy = p[1] - f.cy, dz = p[2] - f.cz;
         double a = dx * f.rx + dy * f.ry + dz * f.rz;
         double b = dx * f.bx + dy * f.by + dz * f.bz;

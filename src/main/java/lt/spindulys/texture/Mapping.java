@@ -1,7 +1,5 @@
 package lt.spindulys.texture;
 
-import lt.spindulys.scene.ShadingData;
-
 /**
  * Turns a shading point into texture coordinates. Immutable and thread-safe; {@link #map} must not
  * allocate (it runs once per textured hit).
@@ -21,10 +19,16 @@ public interface Mapping {
      * Fills out.u, out.v (before wrapping), out.x, out.y, out.z (the object-space point, for solid
      * textures) and converts out.footprint from object-space to (u, v) units.
      *
-     * @param sd          the shading data of the hit (uv, derivatives)
+     * <p>The surface's own parameters come as plain values rather than the scene's shading record,
+     * so textures stay below the scene in the package graph.
+     *
+     * @param u           the surface's own u parameter at the hit
+     * @param v           the surface's own v parameter at the hit
+     * @param dpdu        dp/du in the object's own space (not normalised; zero where undefined)
+     * @param dpdv        dp/dv in the object's own space
      * @param objectPoint the hit point in the object's own space
      */
-    void map(ShadingData sd, double[] objectPoint, TexturePoint out);
+    void map(double u, double v, double[] dpdu, double[] dpdv, double[] objectPoint, TexturePoint out);
 
     /**
      * The isotropic (u, v) footprint from the footprints along u and v: the larger, limited to

@@ -1,7 +1,6 @@
 package lt.spindulys.texture;
 
 import lt.spindulys.math.Vec3;
-import lt.spindulys.scene.ShadingData;
 
 /**
  * Planar projection along the axis n: with d = p - c, u = (d . r) / su and v = (d . (n x r)) / sv,
@@ -23,7 +22,7 @@ public final class Planar implements Mapping {
     }
 
     @Override
-    public void map(ShadingData sd, double[] p, TexturePoint out) {
+    public void map(double u, double v, double[] dpdu, double[] dpdv, double[] p, TexturePoint out) {
         double dx = p[0] - f.cx, dy = p[1] - f.cy, dz = p[2] - f.cz;
         out.u = (dx * f.rx + dy * f.ry + dz * f.rz) / f.su;
         out.v = (dx * f.bx + dy * f.by + dz * f.bz) / f.sv;

@@ -1,9 +1,7 @@
 package lt.spindulys.texture;
 
-import lt.spindulys.scene.ShadingData;
-
 /**
- * The surface's own coordinates: u = sd.u / su, v = sd.v / sv. These are the OBJ {@code vt}
+ * The surface's own coordinates, divided by the scales: (u / su, v / sv). These are the OBJ {@code vt}
  * coordinates on meshes, the face-varying UVs refined with a subdivision surface (a .tex unwrap
  * included), and each primitive's parametrisation otherwise (a sphere's longitude/colatitude, a
  * plane's tangent coordinates). The footprint is converted with the object-space lengths of
@@ -22,12 +20,11 @@ public final class Uv implements Mapping {
     }
 
     @Override
-    public void map(ShadingData sd, double[] p, TexturePoint out) {
-        out.u = sd.u / su;
-        out.v = sd.v / sv;
+    public void map(double u, double v, double[] du, double[] dv, double[] p, TexturePoint out) {
+        out.u = u / su;
+        out.v = v / sv;
         MappingFrame.solid(p, out);
         double w = out.footprint;
-        double[] du = sd.dpduObject, dv = sd.dpdvObject;
         double lu = Math.sqrt(du[0] * du[0] + du[1] * du[1] + du[2] * du[2]);
         double lv = Math.sqrt(dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2]);
         out.footprint = Mapping.combine(w, w / (lu * su), w / (lv * sv));

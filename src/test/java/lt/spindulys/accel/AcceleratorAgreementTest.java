@@ -15,7 +15,7 @@ import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
 import lt.spindulys.scene.GObject;
 import lt.spindulys.scene.Hit;
-import lt.spindulys.scene.MeshData;
+import lt.spindulys.mesh.MeshData;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.SceneBuilder;

@@ -109,7 +109,7 @@ class BoxListTest {
         PrimitiveSet counting = new PrimitiveSet() {
             @Override public int size() { return m.size(); }
             @Override public void bounds(int i, double[] out) { m.bounds(i, out); }
-            @Override public boolean intersect(int i, Ray ray, Hit hit, TraceContext ctx) {
+            @Override public boolean intersect(int i, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
                 tested[i]++;
                 return m.intersect(i, ray, hit, ctx);
             }

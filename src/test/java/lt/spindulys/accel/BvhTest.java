@@ -16,7 +16,7 @@ import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
 import lt.spindulys.scene.GObject;
 import lt.spindulys.scene.Hit;
-import lt.spindulys.scene.MeshData;
+import lt.spindulys.mesh.MeshData;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.SceneBuilder;
 import lt.spindulys.scene.TestMeshes;
@@ -182,7 +182,7 @@ class BvhTest {
             }
         }
 
-        @Override public boolean intersect(int i, Ray ray, Hit hit, TraceContext ctx) {
+        @Override public boolean intersect(int i, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
             double px = ray.ox - c[4 * i], py = ray.oy - c[4 * i + 1], pz = ray.oz - c[4 * i + 2];
             double a = ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz;
             double b = px * ray.dx + py * ray.dy + pz * ray.dz;

@@ -127,7 +127,7 @@ class WideBvhTest {
             @Override public void bounds(int i, double[] out) {
                 java.util.Arrays.fill(out, 0, 6, 0.5);
             }
-            @Override public boolean intersect(int i, Ray ray, lt.spindulys.scene.Hit hit, TraceContext ctx) { return false; }
+            @Override public boolean intersect(int i, Ray ray, PrimitiveHit hit, TraversalScratch ctx) { return false; }
         };
         Bvh binary = new Bvh(points);
         assertTrue(WideBvh.canCollapse(binary), "a tree with inner nodes: " + binary.nodeCount());

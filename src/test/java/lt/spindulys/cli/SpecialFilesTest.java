@@ -20,12 +20,12 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 
-import lt.spindulys.io.AtomicFile;
+import lt.spindulys.files.AtomicFile;
 import lt.spindulys.io.ObjReader;
 import lt.spindulys.io.SceneException;
 import lt.spindulys.io.SceneParser;
 import lt.spindulys.io.WorkframeReader;
-import lt.spindulys.scene.MeshData;
+import lt.spindulys.mesh.MeshData;
 import lt.spindulys.texture.TextureCache;
 import lt.spindulys.texture.TgaReader;
 

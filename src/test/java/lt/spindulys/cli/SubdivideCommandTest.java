@@ -12,7 +12,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 import lt.spindulys.io.ObjReader;
 import lt.spindulys.io.WorkframeReader;
-import lt.spindulys.scene.MeshData;
+import lt.spindulys.mesh.MeshData;
 import lt.spindulys.subdiv.CatmullClark;
 import lt.spindulys.subdiv.RefinedMesh;
 import lt.spindulys.subdiv.SubdivInput;

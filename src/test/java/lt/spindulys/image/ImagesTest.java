@@ -69,10 +69,10 @@ class ImagesTest {
 
     @Test
     void tgaUnsupportedOrBrokenFilesAreReported() throws IOException {
-        byte[] rle = tga(24, 0, 0, PATTERN);
-        rle[2] = 10;
-        IOException e = assertThrows(IOException.class, () -> readTga(rle));
-        assertTrue(e.getMessage().contains("image type 10"), e.getMessage());
+        byte[] mapped = tga(24, 0, 0, PATTERN);
+        mapped[2] = 1;  // colour-mapped: not read
+        IOException e = assertThrows(IOException.class, () -> readTga(mapped));
+        assertTrue(e.getMessage().contains("image type 1 "), e.getMessage());
         byte[] sixteen = tga(24, 0, 0, PATTERN);
         sixteen[16] = 16;
         e = assertThrows(IOException.class, () -> readTga(sixteen));

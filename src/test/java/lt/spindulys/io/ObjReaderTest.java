@@ -15,7 +15,7 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-import lt.spindulys.scene.MeshData;
+import lt.spindulys.mesh.MeshData;
 
 class ObjReaderTest {
     private static final String QUAD = """

@@ -8,7 +8,7 @@ import java.nio.charset.StandardCharsets;
 
 import org.junit.jupiter.api.Test;
 
-import lt.spindulys.scene.MeshData;
+import lt.spindulys.mesh.MeshData;
 import lt.spindulys.subdiv.CatmullClark;
 import lt.spindulys.subdiv.RefinedMesh;
 import lt.spindulys.subdiv.SubdivInput;

@@ -14,7 +14,6 @@ import org.junit.jupiter.api.Test;
 
 import lt.spindulys.scene.Material;
 import lt.spindulys.scene.SceneBuilder;
-import lt.spindulys.scene.ShadingData;
 import lt.spindulys.texture.Channel;
 import lt.spindulys.texture.Cylindrical;
 import lt.spindulys.texture.ImageTexture;
@@ -57,7 +56,7 @@ class SceneParserTextureTest {
 
         // The planar mapping got its scale per axis: one repeat over 2 units along x, 0.5 along -z.
         TexturePoint tp = new TexturePoint();
-        m.mapping(Channel.BUMP).map(new ShadingData(), new double[] {1, 7, -0.25}, tp);
+        m.mapping(Channel.BUMP).map(0, 0, new double[3], new double[3], new double[] {1, 7, -0.25}, tp);
         assertEquals(0.5, tp.u, 1e-12);
         assertEquals(0.5, tp.v, 1e-12);
     }

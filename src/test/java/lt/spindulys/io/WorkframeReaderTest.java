@@ -12,7 +12,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 
-import lt.spindulys.scene.MeshData;
+import lt.spindulys.mesh.MeshData;
 
 /** The Workframe .dat mesh and .tex unwrap formats of docs/mesh-formats.md. */
 class WorkframeReaderTest {

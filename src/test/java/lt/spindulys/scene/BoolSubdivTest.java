@@ -13,6 +13,7 @@ import org.junit.jupiter.api.Test;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
 import lt.spindulys.math.Vec3;
+import lt.spindulys.mesh.MeshData;
 import lt.spindulys.subdiv.ControlMesh;
 
 /** CSG of subdivision surfaces: watertight differences and the refusal of open surfaces. */

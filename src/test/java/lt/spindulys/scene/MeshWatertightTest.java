@@ -11,6 +11,7 @@ import org.junit.jupiter.params.provider.EnumSource;
 import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
+import lt.spindulys.mesh.MeshData;
 
 /**
  * Rays from inside a closed mesh must hit it, whatever they pass through: shared edges and

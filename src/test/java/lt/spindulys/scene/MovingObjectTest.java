@@ -17,6 +17,7 @@ import lt.spindulys.math.Placement;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
 import lt.spindulys.math.Vec3;
+import lt.spindulys.mesh.MeshData;
 import lt.spindulys.subdiv.ControlMesh;
 
 /**

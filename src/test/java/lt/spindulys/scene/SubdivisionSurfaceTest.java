@@ -14,6 +14,7 @@ import lt.spindulys.io.WorkframeReader;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
 import lt.spindulys.math.Vec3;
+import lt.spindulys.mesh.MeshData;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.SubdivInput;
 

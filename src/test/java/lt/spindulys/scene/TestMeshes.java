@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import lt.spindulys.mesh.MeshData;
 
 /** Meshes generated for tests: closed solids with shared vertices, and triangle soups. */
 public final class TestMeshes {

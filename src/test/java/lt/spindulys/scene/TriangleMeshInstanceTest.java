@@ -20,6 +20,7 @@ import lt.spindulys.io.SceneParser;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
 import lt.spindulys.math.Vec3;
+import lt.spindulys.mesh.MeshData;
 
 /** Mesh instances: several placements of one geometry, sharing its arrays and structure. */
 class TriangleMeshInstanceTest {

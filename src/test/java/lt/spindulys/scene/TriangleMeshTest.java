@@ -13,6 +13,7 @@ import lt.spindulys.io.ObjReader;
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
+import lt.spindulys.mesh.MeshData;
 import lt.spindulys.texture.Channel;
 import lt.spindulys.texture.Uv;
 

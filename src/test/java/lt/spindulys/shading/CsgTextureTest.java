@@ -67,7 +67,7 @@ class CsgTextureTest {
     /** The recorded texture's colour for block-space point p: the mapping evaluated there. */
     private static double[] expected(Texture t, Vec3 p) {
         TexturePoint tp = new TexturePoint();
-        PLANAR.map(new ShadingData(), new double[] {p.x(), p.y(), p.z()}, tp);
+        PLANAR.map(0, 0, new double[3], new double[3], new double[] {p.x(), p.y(), p.z()}, tp);
         double[] rgb = new double[3];
         t.evaluate(tp, rgb);
         return rgb;

@@ -20,7 +20,7 @@ import java.util.stream.Stream;
 import java.util.zip.GZIPInputStream;
 
 import lt.spindulys.io.ObjReader;
-import lt.spindulys.scene.MeshData;
+import lt.spindulys.mesh.MeshData;
 
 /**
  * The OpenSubdiv regression shapes and Far's refinements of them, gzipped under

@@ -8,7 +8,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 
 import lt.spindulys.io.ObjReader;
-import lt.spindulys.scene.MeshData;
+import lt.spindulys.mesh.MeshData;
 
 /** Control meshes from file data: corner UVs welded into face-varying UVs, tags applied, sizes foreseen. */
 class SubdivInputTest {

@@ -7,17 +7,18 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import org.junit.jupiter.api.Test;
 
 import lt.spindulys.math.Vec3;
-import lt.spindulys.scene.ShadingData;
 
 /** Known points map to known (u, v), including seams and poles, and footprints stay bounded there. */
 class MappingTest {
     private static final double EPS = 1e-12;
-    private final ShadingData sd = new ShadingData();
+    /** The surface parameters handed to the mapping. */
+    private double u, v;
+    private final double[] dpdu = new double[3], dpdv = new double[3];
     private final TexturePoint tp = new TexturePoint();
 
     private TexturePoint map(Mapping m, double x, double y, double z, double footprint) {
         tp.footprint = footprint;
-        m.map(sd, new double[] {x, y, z}, tp);
+        m.map(u, v, dpdu, dpdv, new double[] {x, y, z}, tp);
         return tp;
     }
 
@@ -129,17 +130,17 @@ class MappingTest {
     @Test
     void uvUsesTheSurfaceCoordinates() {
         Uv m = new Uv(0.5, 2);
-        sd.u = 0.3;
-        sd.v = 0.8;
-        sd.dpduObject[0] = 2; sd.dpduObject[1] = sd.dpduObject[2] = 0;
-        sd.dpdvObject[1] = 4; sd.dpdvObject[0] = sd.dpdvObject[2] = 0;
+        u = 0.3;
+        v = 0.8;
+        dpdu[0] = 2; dpdu[1] = dpdu[2] = 0;
+        dpdv[1] = 4; dpdv[0] = dpdv[2] = 0;
         map(m, 7, 8, 9, 0.4);
         assertEquals(0.6, tp.u, EPS);
         assertEquals(0.4, tp.v, EPS);
         assertEquals(9.0, tp.z);
         // along u: 0.4 / (2 * 0.5) = 0.4; along v: 0.4 / (4 * 2) = 0.05; capped at 4x the smaller
         assertEquals(0.2, tp.footprint, 1e-12);
-        sd.dpduObject[0] = 0; // a degenerate direction (a sphere's pole) does not blow up
+        dpdu[0] = 0; // a degenerate direction (a sphere's pole) does not blow up
         map(m, 0, 0, 0, 0.4);
         assertEquals(0.2, tp.footprint, 1e-12);
     }

@@ -1,4 +1,4 @@
-package lt.spindulys.scene;
+package lt.spindulys.mesh;
 
 /**
  * A polygon mesh as flat arrays, as read from a file: positions, optional normals and texture

@@ -1,4 +1,4 @@
-package lt.spindulys.io;
+package lt.spindulys.files;
 
 import static org.junit.jupiter.api.Assertions.*;
 

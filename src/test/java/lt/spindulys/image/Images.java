@@ -14,13 +14,14 @@ import javax.imageio.ImageIO;
 import javax.imageio.ImageReader;
 import javax.imageio.stream.FileImageInputStream;
 import javax.imageio.stream.ImageInputStream;
+import lt.spindulys.texture.TgaReader;
 
 /**
  * Reads images back into {@link FrameBuffer}s, for tests and golden-image comparison. The format
  * is chosen by extension, as for {@link ImageWriter}:
  * <ul>
- *   <li>{@code .tga}: uncompressed true colour (type 2), 24 or 32 bits (alpha ignored), either
- *       vertical origin, either horizontal direction;</li>
+ *   <li>{@code .tga}: what the textures' {@link TgaReader} reads (true colour or greyscale,
+ *       uncompressed or run-length encoded, any origin);</li>
  *   <li>{@code .png}, {@code .jpg}, {@code .jpeg}: whatever javax.imageio decodes (grey images are
  *       read from their raw samples, not through Java's linear-grey colour conversion);</li>
  *   <li>{@code .pfm}: "PF" (colour) and "Pf" (grey, copied to all channels), either byte
@@ -49,33 +50,15 @@ public final class Images {
         }
     }
 
+    /** Through the renderer's one TGA decoder, the textures' (which also reads RLE and greyscale files). */
     private static FrameBuffer readTga(Path path, boolean srgb) throws IOException {
-        byte[] b = Files.readAllBytes(path);
-        if (b.length < 18) throw bad(path, "TGA", "truncated header");
-        int idLength = b[0] & 0xFF, colorMapType = b[1] & 0xFF, imageType = b[2] & 0xFF;
-        int mapLength = u16(b, 5), mapEntryBits = b[7] & 0xFF;
-        int w = u16(b, 12), h = u16(b, 14), depth = b[16] & 0xFF, descriptor = b[17] & 0xFF;
-        if (imageType != 2) {
-            throw bad(path, "TGA", "image type " + imageType + " (only uncompressed true colour, type 2, is supported)");
+        TgaReader.Image im;
+        try {
+            im = TgaReader.read(path);
+        } catch (IOException e) {
+            throw bad(path, "TGA", e.getMessage());
         }
-        if (depth != 24 && depth != 32) throw bad(path, "TGA", depth + " bits per pixel (expected 24 or 32)");
-        if (w == 0 || h == 0) throw bad(path, "TGA", "empty image " + w + "x" + h);
-        // A colour map may be present even in a true-colour file; it is unused, so skip it.
-        long offset = 18L + idLength + (colorMapType == 1 ? (long) mapLength * ((mapEntryBits + 7) / 8) : 0);
-        int bpp = depth / 8;
-        if (offset + (long) w * h * bpp > b.length) throw bad(path, "TGA", "truncated pixel data");
-
-        boolean topDown = (descriptor & 0x20) != 0, rightToLeft = (descriptor & 0x10) != 0;
-        int[] rgb = new int[w * h];
-        int p = (int) offset;
-        for (int row = 0; row < h; row++) {
-            int y = topDown ? row : h - 1 - row;
-            for (int col = 0; col < w; col++, p += bpp) {
-                int x = rightToLeft ? w - 1 - col : col;
-                rgb[y * w + x] = (b[p + 2] & 0xFF) << 16 | (b[p + 1] & 0xFF) << 8 | (b[p] & 0xFF);
-            }
-        }
-        return FrameBuffer.fromRgb8(w, h, rgb, srgb);
+        return FrameBuffer.fromRgb8(im.width(), im.height(), im.rgb(), srgb);
     }
 
     private static FrameBuffer readImageIo(Path path, boolean srgb) throws IOException {
@@ -177,10 +160,6 @@ public final class Images {
             // reported below
         }
         throw bad(path, "PFM", what + " '" + s + "' is not a positive integer");
-    }
-
-    private static int u16(byte[] b, int i) {
-        return (b[i] & 0xFF) | (b[i + 1] & 0xFF) << 8;
     }
 
     private static IOException bad(Path path, String format, String why) {

@@ -1,4 +1,4 @@
-package lt.spindulys.io;
+package lt.spindulys.files;
 
 import java.io.BufferedOutputStream;
 import java.io.FilterOutputStream;
