@@ -1,7 +1,6 @@
 package lt.spindulys.cli;
 
 import java.io.IOException;
-import java.io.InputStream;
 import java.io.PrintStream;
 import java.lang.management.ManagementFactory;
 import java.lang.management.MemoryPoolMXBean;
@@ -134,10 +133,9 @@ final class RenderCommand {
         // Refused before anything is opened: a pipe would block, a device never end.
         String problem = InputFiles.problem(scene);
         if (problem != null) throw new NoSuchFileException(scene, problem);
-        MeshGiven mesh = meshGiven(scene);
-        if (mesh != null) {
+        if (isObjMesh(scene)) {
             String name = MessageText.quote(scene.getFileName().toString(), "\"");
-            throw new SceneException(scene.toString(), mesh.line, mesh.column, "this is " + mesh.kind + ", not a scene: to render it, name it in a scene's mesh { file "
+            throw new SceneException(scene.toString(), 0, 0, "this is an OBJ mesh, not a scene: to render it, name it in a scene's mesh { file "
                     + name + " } or subdiv { file " + name + " } block, or refine it with render subdivide");
         }
         try {
@@ -226,56 +224,13 @@ final class RenderCommand {
         return line.append(String.format(Locale.ROOT, " (%dx%d, %d spp) in %.1f s", s.width(), s.height(), s.samplesPerPixel(), seconds)).toString();
     }
 
-    /** How much of a file {@link #meshGiven} reads: far more than any comment heading a mesh. */
-    private static final int HEAD_BYTES = 4096;
-
     /**
-     * A mesh given where a scene is expected: its kind, and where its first token is when that
-     * told (line 0 when the extension did).
+     * An OBJ mesh given where a scene is expected, known by its extension; else false. (A Workframe
+     * mesh is a .dat like a scene: the scene parser knows it by its first token, a point count.)
      */
-    record MeshGiven(String kind, int line, int column) {}
-
-    /**
-     * The mesh {@code file} is, when a mesh was given where a scene is expected; else null. An
-     * OBJ is known by its extension; a Workframe mesh is a {@code .dat} like a scene, so it is
-     * known by its content: its first token (after comments) is an integer, the point count,
-     * where a scene's is the name of a statement. Only the start of the file is read; lines and
-     * columns are counted as the scene lexer counts them.
-     */
-    static MeshGiven meshGiven(Path file) throws IOException {
+    static boolean isObjMesh(Path file) {
         Path fileName = file.getFileName();
-        String name = fileName == null ? "" : fileName.toString().toLowerCase(Locale.ROOT);
-        if (name.endsWith(".obj")) return new MeshGiven("an OBJ mesh", 0, 0);
-        if (!name.endsWith(".dat")) return null;
-        byte[] head;
-        try (InputStream in = Files.newInputStream(file)) {
-            head = in.readNBytes(HEAD_BYTES);
-        }
-        int n = head.length, i = n >= 3 && (head[0] & 0xFF) == 0xEF && (head[1] & 0xFF) == 0xBB && (head[2] & 0xFF) == 0xBF ? 3 : 0;
-        int line = 1, column = 1;
-        while (i < n) {
-            byte c = head[i];
-            if (c == '#') {
-                while (i < n && head[i] != '\n' && head[i] != '\r') i++;
-            } else if (c == '\n' || (c == '\r' && (i + 1 >= n || head[i + 1] != '\n'))) {
-                line++;
-                column = 1;
-                i++;
-            } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f') {
-                if (c != '\r') column++;
-                i++;
-            } else {
-                break;
-            }
-        }
-        int start = i;
-        if (i < n && (head[i] == '+' || head[i] == '-')) i++;
-        int digits = i;
-        while (i < n && head[i] >= '0' && head[i] <= '9') i++;
-        if (i == digits) return null;
-        // The integer must end the token (as the scene lexer cuts tokens): "2.5" or "3x" are no counts.
-        boolean ends = i == n || " \t\n\r\f{}#\"".indexOf(head[i]) >= 0;
-        return ends && start < n ? new MeshGiven("a Workframe mesh", line, column) : null;
+        return fileName != null && fileName.toString().toLowerCase(Locale.ROOT).endsWith(".obj");
     }
 
     /**

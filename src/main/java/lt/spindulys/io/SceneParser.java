@@ -141,8 +141,12 @@ public final class SceneParser {
     // ---- statements ----
 
     private void statements() {
+        boolean first = true;
         while (true) {
             Token t = lex.next();
+            // A Workframe mesh is a .dat file like a scene; its first token is its point count.
+            if (first && t.kind() == Kind.NUMBER && SceneLexer.isIntegerLiteral(t.text())) throw meshGiven(t, "a Workframe mesh");
+            first = false;
             switch (t.kind()) {
                 case EOF -> { return; }
                 case WORD -> statement(t);
@@ -151,6 +155,14 @@ public final class SceneParser {
                         + "), found " + t.describe());
             }
         }
+    }
+
+    /** A mesh file given where a scene is expected: what it is and how to render it. */
+    private SceneException meshGiven(Token at, String kind) {
+        String name = file == null ? "MESH.dat" : Path.of(file).getFileName().toString();
+        String quoted = MessageText.quote(name, "\"");
+        return error(at, "this is " + kind + ", not a scene: to render it, name it in a scene's mesh { file " + quoted
+                + " } or subdiv { file " + quoted + " } block, or refine it with render subdivide");
     }
 
     private void statement(Token kw) {

@@ -140,7 +140,7 @@ public final class Bool extends GObject {
                         + (n >= 0 ? "it has " + n + " boundary edges" : "it has no inside"));
             }
             if (o instanceof Bool b && b.nesting >= MAX_NESTING) {
-                throw new IllegalArgumentException("CSG nesting deeper than " + MAX_NESTING + " levels: " + which + " (" + o.name()
+                throw new IllegalArgumentException("CSG nesting deeper than " + MAX_NESTING + " levels: " + which + " (" + MessageText.cut(o.name())
                         + ") is " + b.nesting + " levels deep (union and intersection take any number of operands, so a long chain can be one node)");
             }
             if (o instanceof Bool b) deepest = Math.max(deepest, b.nesting);

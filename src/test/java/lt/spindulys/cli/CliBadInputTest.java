@@ -79,7 +79,8 @@ class CliBadInputTest {
                 new MeshCase("word.dat", "sphere { radius 1e }\n", null),
                 new MeshCase("digits-then-letters.dat", "3x 1\n", null),
                 new MeshCase("empty.dat", "", null),
-                new MeshCase("numbers.txt", "3 1\n", null));
+                // Known by content, whatever the extension.
+                new MeshCase("numbers.txt", "3 1\n", "a Workframe mesh"));
     }
 
     @ParameterizedTest(name = "{0}")
@@ -87,18 +88,23 @@ class CliBadInputTest {
     void aMeshGivenAsTheSceneIsNamedAsOne(MeshCase c) throws IOException {
         Path file = dir.resolve(c.file());
         Files.writeString(file, c.content());
-        RenderCommand.MeshGiven m = RenderCommand.meshGiven(file);
-        assertEquals(c.kind(), m == null ? null : m.kind());
-        if (c.kind() == null) return;
+        assertEquals(c.kind() != null && c.kind().contains("OBJ"), RenderCommand.isObjMesh(file));
+        if (c.kind() == null) {
+            CliTest.Run r = CliTest.run(file.toString(), "-o", dir.resolve("out.png").toString(), "--quiet");
+            assertFalse(r.err().contains("not a scene"), r.err());
+            return;
+        }
         assertFailsCleanly(file, file + c.at() + ": this is " + c.kind() + ", not a scene: to render it, name it in a scene's mesh { file \""
                 + c.file() + "\" } or subdiv { file \"" + c.file() + "\" } block, or refine it with render subdivide");
     }
 
     @Test
     void theRepositorysOwnMeshesAreNamedAsMeshes() throws IOException {
-        assertEquals("an OBJ mesh", RenderCommand.meshGiven(Path.of("scenes/models/knot.obj")).kind());
-        assertEquals("a Workframe mesh", RenderCommand.meshGiven(Path.of("scenes/models/cube.dat")).kind());
-        assertNull(RenderCommand.meshGiven(Path.of("scenes/spheres.dat")));
+        assertTrue(RenderCommand.isObjMesh(Path.of("scenes/models/knot.obj")));
+        CliTest.Run r = CliTest.run("scenes/models/cube.dat", "-o", dir.resolve("out.png").toString(), "--quiet");
+        assertEquals(2, r.status(), r.err());
+        assertTrue(r.err().contains("this is a Workframe mesh, not a scene"), r.err());
+        assertFalse(RenderCommand.isObjMesh(Path.of("scenes/spheres.dat")));
     }
 
     /** Scenes whose error echoes hostile input: huge tokens, control characters, line separators. */

@@ -119,7 +119,7 @@ public final class BadInputCases {
                 // ---- structure ----
                 c("unknown statement", "shpere { radius 1 }", "1:1: unknown statement 'shpere' (did you mean 'sphere'?)"),
                 c("property outside a block", "sphere { } radius 2", "1:12: unknown statement 'radius' ('radius' is a property of sphere or cylinder: was a block closed too early?)"),
-                // A decimal: a .dat starting with an integer is taken by the command line for a Workframe mesh.
+                // A decimal: a scene whose first token is an integer is taken for a Workframe mesh (see CliBadInputTest).
                 c("number as statement", "4.2", "1:1: expected a statement (settings, camera, light, texture, material, sphere, plane, box, cylinder, triangle, mesh, subdiv, "
                         + "union, intersection, difference), found '4.2'"),
                 c("stray closing brace", cam + "}", "2:1: unexpected '}': no block is open"),
