@@ -67,7 +67,7 @@ public final class WorkframeReader {
         int pointRoom = (int) Math.min(points, (rest + 1) / MIN_POINT_LINE);
         int faceRoom = (int) Math.min(faces, (rest + 1) / MIN_FACE_LINE);
         try {
-            HeapBudget.require(HeapBudget.product(pointRoom, 3 * 8) + HeapBudget.product(faceRoom, 4),
+            HeapBudget.require(HeapBudget.sum(HeapBudget.product(pointRoom, 3 * 8), HeapBudget.product(faceRoom, 4)),
                     "the mesh's " + plural(points, "point") + " and " + plural(faces, "face"));
         } catch (IllegalArgumentException e) {
             throw in.error(header.at(0), e.getMessage());

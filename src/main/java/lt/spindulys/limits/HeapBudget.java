@@ -94,6 +94,16 @@ public final class HeapBudget {
         return p;
     }
 
+    /** Sum of non-negative sizes, saturating at Long.MAX_VALUE instead of overflowing (as {@link #product}). */
+    public static long sum(long... terms) {
+        long s = 0;
+        for (long t : terms) {
+            if (t < 0) throw new IllegalArgumentException("negative size " + t);
+            s = t > Long.MAX_VALUE - s ? Long.MAX_VALUE : s + t;
+        }
+        return s;
+    }
+
     /** "512 bytes", "3.2 MiB", "1.5 GiB": a size for a message. */
     public static String format(long bytes) {
         if (bytes == Long.MAX_VALUE) return "more than 8 EiB";

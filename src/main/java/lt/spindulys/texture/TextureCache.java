@@ -120,14 +120,8 @@ public final class TextureCache {
      */
     static void checkHeap(long w, long h, long decodeBytes, int texelBytes) {
         long texels = HeapBudget.product(w, h);
-        long bytes = sum(decodeBytes, HeapBudget.product(texels, texelBytes), TextureImage.mipBytes((int) w, (int) h));
+        long bytes = HeapBudget.sum(decodeBytes, HeapBudget.product(texels, texelBytes), TextureImage.mipBytes((int) w, (int) h));
         HeapBudget.require(bytes, "the " + w + "x" + h + " image");
-    }
-
-    private static long sum(long... terms) {
-        long s = 0;
-        for (long t : terms) s = t > Long.MAX_VALUE - s ? Long.MAX_VALUE : s + t;
-        return s;
     }
 
     /**
