@@ -64,6 +64,8 @@ public final class SceneParser {
      * Parses a scene file, which must be UTF-8. Relative mesh paths are resolved against the file's
      * folder, and messages name the file as given.
      *
+     * @param file the scene file
+     * @return a builder holding the scene, not yet built, so that settings can still be changed
      * @throws IOException    if the file cannot be read
      * @throws SceneException if its content is not a valid scene
      */
@@ -86,8 +88,10 @@ public final class SceneParser {
     /**
      * Parses scene text.
      *
+     * @param text     the scene
      * @param fileName name used in error messages (null: "&lt;input&gt;")
      * @param baseDir  folder against which relative mesh paths are resolved (null: the working directory)
+     * @return a builder holding the scene, not yet built
      * @throws SceneException if the text is not a valid scene
      */
     public static SceneBuilder parse(String text, String fileName, Path baseDir) {
