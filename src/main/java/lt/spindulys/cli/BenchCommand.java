@@ -241,19 +241,19 @@ final class BenchCommand {
         Path scene = benchDir.resolve("motion-blur.dat");
         if (!Files.isRegularFile(scene)) throw new IOException("bench scene not found: " + scene.toAbsolutePath());
         int n = TIME_STEPS.length;
-        for (int i = 0; i < WARMUPS; i++) for (int steps : TIME_STEPS) renderOnce(scene, accel, s -> s.withTimeSteps(steps));
+        for (int i = 0; i < WARMUPS; i++) for (int steps : TIME_STEPS) renderOnce(scene, accel, s -> s.toBuilder().timeSteps(steps).build());
         double[][] seconds = new double[n][runs], cpu = new double[n][runs];
         Measured[] last = new Measured[n];
         for (int i = 0; i < runs; i++) {
             for (int k = 0; k < n; k++) {
                 int steps = TIME_STEPS[k];
-                last[k] = renderOnce(scene, accel, s -> s.withTimeSteps(steps));
+                last[k] = renderOnce(scene, accel, s -> s.toBuilder().timeSteps(steps).build());
                 seconds[k][i] = last[k].stats.seconds();
                 cpu[k][i] = last[k].cpuSeconds;
             }
         }
         // What the samples buy: the distance of each image from a one-pass reference at REFERENCE_SPP.
-        Measured ref = renderOnce(scene, accel, s -> s.withTimeSteps(1).withSamplesPerPixel(REFERENCE_SPP));
+        Measured ref = renderOnce(scene, accel, s -> s.toBuilder().timeSteps(1).samplesPerPixel(REFERENCE_SPP).build());
         BenchTable t = new BenchTable("method", "render s", "vs one pass", "CPU s", "vs one pass", "camera rays", "shadow rays", "refl. rays", "Mrays/s", "RMS error");
         for (int k = 0; k < n; k++) {
             RenderStats st = last[k].stats;
@@ -305,7 +305,7 @@ final class BenchCommand {
         RenderCommand.resetPeakHeap();
         long t0 = System.nanoTime();
         SceneBuilder builder = SceneParser.parse(file);
-        if (accel != null) builder.settings(builder.settings().withAccelerator(accel));
+        if (accel != null) builder.settings(builder.settings().toBuilder().accelerator(accel).build());
         builder.settings(settings.apply(builder.settings()));
         long t1 = System.nanoTime();
         Scene scene = builder.build();

@@ -154,19 +154,21 @@ final class RenderCommand {
             warmed = System.nanoTime();
         }
         RenderSettings s = builder.settings();
+        RenderSettings.Builder o = s.toBuilder();
         if (width != null || height != null) {
             // One side alone keeps the scene's aspect ratio: 800x450 with --width 400 becomes 400x225.
             int w = width != null ? width : scaledSide(height, s.height(), s.width());
             int h = height != null ? height : scaledSide(width, s.width(), s.height());
-            s = s.withSize(w, h);
+            o.size(w, h);
         }
-        if (spp != null) s = s.withSamplesPerPixel(spp);
-        if (seed != null) s = s.withSeed(seed);
-        if (accel != null) s = s.withAccelerator(accel);
-        if (aovs != null) s = s.withAovs(aovs);
+        if (spp != null) o.samplesPerPixel(spp);
+        if (seed != null) o.seed(seed);
+        if (accel != null) o.accelerator(accel);
+        if (aovs != null) o.aovs(aovs);
         else if (!s.aovs().isEmpty()) checkAovOutputs(s.aovs()); // asked for by the scene: known only now
-        if (shutter != null) s = s.withShutter(shutter[0], shutter[1]);
-        if (timeSteps != null) s = s.withTimeSteps(timeSteps);
+        if (shutter != null) o.shutter(shutter[0], shutter[1]);
+        if (timeSteps != null) o.timeSteps(timeSteps);
+        s = o.build();
         if (spp != null || timeSteps != null) {
             try {
                 s.checkTimeSteps();

@@ -76,29 +76,31 @@ final class SceneObjectFactory {
      * key if refused; samples and timesteps are checked together once all keys are in.
      */
     RenderSettings settings(Props p, RenderSettings s) {
+        RenderSettings.Builder sb = s.toBuilder();
         for (Prop pr : p.all) {
             Object v = pr.value();
             try {
-                s = switch (pr.key().name()) {
-                    case "width" -> s.withSize((Integer) v, s.height());
-                    case "height" -> s.withSize(s.width(), (Integer) v);
-                    case "samples" -> s.withSamplesPerPixel((Integer) v);
-                    case "maxdepth" -> s.withMaxDepth((Integer) v);
-                    case "mincontribution" -> s.withMinContribution((Double) v);
-                    case "background" -> s.withBackground((Color) v);
-                    case "ambient" -> s.withAmbient((Color) v);
-                    case "encoding" -> s.withSrgb("srgb".equals(v));
-                    case "seed" -> s.withSeed((Long) v);
-                    case "accelerator" -> s.withAccelerator(AcceleratorKind.fromKeyword((String) v));
-                    case "aov" -> s.withAovs(aovs((List<?>) v));
-                    case "shutter" -> s.withShutter(((double[]) v)[0], ((double[]) v)[1]);
-                    case "timesteps" -> s.withTimeSteps((Integer) v);
+                switch (pr.key().name()) {
+                    case "width" -> sb.width((Integer) v);
+                    case "height" -> sb.height((Integer) v);
+                    case "samples" -> sb.samplesPerPixel((Integer) v);
+                    case "maxdepth" -> sb.maxDepth((Integer) v);
+                    case "mincontribution" -> sb.minContribution((Double) v);
+                    case "background" -> sb.background((Color) v);
+                    case "ambient" -> sb.ambient((Color) v);
+                    case "encoding" -> sb.srgb("srgb".equals(v));
+                    case "seed" -> sb.seed((Long) v);
+                    case "accelerator" -> sb.accelerator(AcceleratorKind.fromKeyword((String) v));
+                    case "aov" -> sb.aovs(aovs((List<?>) v));
+                    case "shutter" -> sb.shutter(((double[]) v)[0], ((double[]) v)[1]);
+                    case "timesteps" -> sb.timeSteps((Integer) v);
                     default -> throw unhandled(pr);
-                };
+                }
             } catch (IllegalArgumentException e) {
                 throw err.wrap(pr.at(), e);
             }
         }
+        s = sb.build();
         Prop steps = p.prop("timesteps");
         if (steps != null) {
             try {

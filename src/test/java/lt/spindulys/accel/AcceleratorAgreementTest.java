@@ -52,7 +52,7 @@ class AcceleratorAgreementTest {
     /** A scene of transformed meshes: the object level and the triangle level both of one kind. */
     private static Scene scene(AcceleratorKind kind, long seed) {
         Random r = new Random(seed);
-        SceneBuilder b = new SceneBuilder().settings(RenderSettings.DEFAULT.withAccelerator(kind));
+        SceneBuilder b = new SceneBuilder().settings(RenderSettings.builder().accelerator(kind).build());
         MeshData sphere = TestMeshes.icosphere(2, 1);
         for (int i = 0; i < 30; i++) {
             TriangleMesh m = new TriangleMesh(sphere);
@@ -134,7 +134,7 @@ class AcceleratorAgreementTest {
     /** Spheres and meshes that travel several times their size, turn and grow during the shutter. */
     private static Scene movingScene(AcceleratorKind kind, long seed) {
         Random r = new Random(seed);
-        SceneBuilder b = new SceneBuilder().settings(RenderSettings.DEFAULT.withAccelerator(kind));
+        SceneBuilder b = new SceneBuilder().settings(RenderSettings.builder().accelerator(kind).build());
         MeshData sphere = TestMeshes.icosphere(1, 1);
         for (int i = 0; i < 30; i++) {
             GObject o = i % 2 == 0 ? new lt.spindulys.scene.Sphere(lt.spindulys.math.Vec3.ZERO, 1) : new TriangleMesh(sphere);

@@ -41,7 +41,7 @@ class AovRenderTest {
 
     private static Scene scene(int spp, Set<Aov> aovs) {
         SceneBuilder b = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(W, H).withSamplesPerPixel(spp).withSeed(3).withAovs(aovs))
+                .settings(RenderSettings.builder().size(W, H).samplesPerPixel(spp).seed(3).aovs(aovs).build())
                 .camera(new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, FOV))
                 .light(new PointLight(new Vec3(2, 5, -3), Color.WHITE));
         // A mirror sphere: the passes must show the sphere itself, not what it reflects.
@@ -115,7 +115,7 @@ class AovRenderTest {
     @Test
     void theFloorSeenFromBelowHasItsNormalTurnedToTheCamera() throws InterruptedException {
         SceneBuilder b = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(3, 3).withAovs(EnumSet.of(Aov.NORMAL, Aov.DEPTH)))
+                .settings(RenderSettings.builder().size(3, 3).aovs(EnumSet.of(Aov.NORMAL, Aov.DEPTH)).build())
                 .camera(new PinholeCamera(new Vec3(0, -4, 0), new Vec3(0, 0, 0), Vec3.Z, 30));
         b.add(new Plane(Vec3.Y, 0));
         AovFrame f = Renderer.render(b.build(), 1, ProgressListener.NONE).aovs();

@@ -33,7 +33,7 @@ class DepthOfFieldRenderTest {
     /** The edge x = 0 at depth d: the white side x > 0 is the image's left (right is forward x up = -x). */
     private static FrameBuffer render(Camera camera, double d, int spp, int threads) throws InterruptedException {
         SceneBuilder b = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(W, H).withSamplesPerPixel(spp).withSeed(17).withAmbient(Color.WHITE))
+                .settings(RenderSettings.builder().size(W, H).samplesPerPixel(spp).seed(17).ambient(Color.WHITE).build())
                 .camera(camera);
         b.add(new Triangle(new Vec3(0, -1000, d), new Vec3(0, 1000, d), new Vec3(1000, 0, d))
                 .material(Material.builder().color(Color.WHITE).ka(1).kd(0).build()));
@@ -167,7 +167,7 @@ class DepthOfFieldRenderTest {
 
     private static AovFrame passes(Camera camera) throws InterruptedException {
         SceneBuilder b = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(W, H).withSamplesPerPixel(4).withAovs(EnumSet.of(Aov.DEPTH, Aov.OBJECT)))
+                .settings(RenderSettings.builder().size(W, H).samplesPerPixel(4).aovs(EnumSet.of(Aov.DEPTH, Aov.OBJECT)).build())
                 .camera(camera);
         b.add(new Triangle(new Vec3(0, -1000, 5), new Vec3(0, 1000, 5), new Vec3(1000, 0, 5)));
         return Renderer.render(b.build(), 2, ProgressListener.NONE).aovs();

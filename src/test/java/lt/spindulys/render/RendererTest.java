@@ -20,7 +20,7 @@ import lt.spindulys.scene.Sphere;
 class RendererTest {
     private static Scene scene(int spp) {
         SceneBuilder b = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(37, 23).withSamplesPerPixel(spp).withSeed(5))
+                .settings(RenderSettings.builder().size(37, 23).samplesPerPixel(spp).seed(5).build())
                 .camera(new PinholeCamera(new Vec3(0, 1, -4), new Vec3(0, 0.5, 0), Vec3.Y, 50))
                 .light(new PointLight(new Vec3(2, 5, -3), Color.WHITE));
         b.add(new Plane(Vec3.Y, 0).material(Material.builder().kr(0.3).build()));
@@ -56,7 +56,7 @@ class RendererTest {
     void nearerHitKeepsItsOwnMaterialWhateverTheTestOrder() throws InterruptedException {
         for (int far = 0; far < 8; far++) { // enough objects for a BVH too; the far one comes first
             SceneBuilder b = new SceneBuilder()
-                    .settings(RenderSettings.DEFAULT.withSize(1, 1).withAmbient(Color.WHITE))
+                    .settings(RenderSettings.builder().size(1, 1).ambient(Color.WHITE).build())
                     .camera(new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, 10));
             Material blue = Material.builder().color(new Color(0, 0, 1)).ka(1).kd(0).build();
             Material red = Material.builder().color(new Color(1, 0, 0)).ka(1).kd(0).build();
