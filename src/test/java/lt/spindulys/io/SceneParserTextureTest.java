@@ -12,7 +12,7 @@ import java.nio.file.Path;
 
 import org.junit.jupiter.api.Test;
 
-import lt.spindulys.scene.Material;
+import lt.spindulys.material.Material;
 import lt.spindulys.scene.SceneBuilder;
 import lt.spindulys.texture.Channel;
 import lt.spindulys.texture.Cylindrical;

@@ -20,7 +20,7 @@ import lt.spindulys.image.ImageWriter;
 import lt.spindulys.image.Images;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
-import lt.spindulys.scene.Material;
+import lt.spindulys.material.Material;
 import lt.spindulys.scene.Plane;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;

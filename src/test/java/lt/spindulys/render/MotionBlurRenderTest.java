@@ -11,7 +11,7 @@ import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Motion;
 import lt.spindulys.math.Vec3;
-import lt.spindulys.scene.Material;
+import lt.spindulys.material.Material;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.SceneBuilder;
 import lt.spindulys.scene.Sphere;

@@ -9,7 +9,7 @@ import org.junit.jupiter.api.Test;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
-import lt.spindulys.scene.Material;
+import lt.spindulys.material.Material;
 import lt.spindulys.scene.Plane;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;

@@ -16,16 +16,16 @@ import lt.spindulys.render.Renderer;
 import lt.spindulys.scene.Bool;
 import lt.spindulys.scene.Box;
 import lt.spindulys.scene.GObject;
-import lt.spindulys.scene.Hit;
-import lt.spindulys.scene.Material;
+import lt.spindulys.trace.Hit;
+import lt.spindulys.material.Material;
 import lt.spindulys.scene.Plane;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.SceneBuilder;
-import lt.spindulys.scene.ShadingData;
+import lt.spindulys.trace.ShadingData;
 import lt.spindulys.scene.Sphere;
-import lt.spindulys.scene.TraceContext;
+import lt.spindulys.trace.TraceContext;
 
 /**
  * The integrator through CSG solids, on 1x1 images whose one camera ray is worked out by hand:
