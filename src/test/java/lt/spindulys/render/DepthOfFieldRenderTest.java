@@ -37,7 +37,7 @@ class DepthOfFieldRenderTest {
                 .camera(camera);
         b.add(new Triangle(new Vec3(0, -1000, d), new Vec3(0, 1000, d), new Vec3(1000, 0, d))
                 .material(Material.builder().color(Color.WHITE).ka(1).kd(0).build()));
-        return Renderer.render(b.build(), threads, ProgressListener.NONE).image();
+        return Renderer.render(b.build(), threads, ProgressListener.NONE).frame();
     }
 
     private static double[] profile(Camera camera, double d, int spp) throws InterruptedException {
@@ -170,6 +170,6 @@ class DepthOfFieldRenderTest {
                 .settings(RenderSettings.DEFAULT.withSize(W, H).withSamplesPerPixel(4).withAovs(EnumSet.of(Aov.DEPTH, Aov.OBJECT)))
                 .camera(camera);
         b.add(new Triangle(new Vec3(0, -1000, 5), new Vec3(0, 1000, 5), new Vec3(1000, 0, 5)));
-        return Renderer.render(b.build(), 2, ProgressListener.NONE).aovs();
+        return Renderer.render(b.build(), 2, ProgressListener.NONE).passes().orElse(null);
     }
 }

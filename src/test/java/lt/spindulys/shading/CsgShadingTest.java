@@ -37,7 +37,7 @@ class CsgShadingTest {
     private static final Color C = new Color(0.8, 0.6, 0.4);
 
     private static double[] render(SceneBuilder b) throws InterruptedException {
-        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).image();
+        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).frame();
         return new double[] {image.get(0, 0, 0), image.get(0, 0, 1), image.get(0, 0, 2)};
     }
 
@@ -176,7 +176,7 @@ class CsgShadingTest {
             marble.material(Material.builder().ka(0).kd(0).kt(1).beta(0.1).ior(marbleIor).build());
             s.add(marble);
         }
-        return Renderer.render(s.build(), 1, ProgressListener.NONE).image().data().clone();
+        return Renderer.render(s.build(), 1, ProgressListener.NONE).frame().data().clone();
     }
 
     @Test
@@ -207,7 +207,7 @@ class CsgShadingTest {
                 .settings(RenderSettings.DEFAULT.withSize(24, 24).withAmbient(Color.WHITE).withBackground(new Color(0.1, 0.2, 0.3)))
                 .camera(new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, 30))
                 .add(union(a, b)).add(wall);
-        return Renderer.render(s.build(), 1, ProgressListener.NONE).image().data().clone();
+        return Renderer.render(s.build(), 1, ProgressListener.NONE).frame().data().clone();
     }
 
     @Test

@@ -44,7 +44,7 @@ class TextureShadingTest {
     }
 
     private static double[] render(SceneBuilder b) throws InterruptedException {
-        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).image();
+        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).frame();
         return new double[] {image.get(0, 0, 0), image.get(0, 0, 1), image.get(0, 0, 2)};
     }
 
@@ -152,7 +152,7 @@ class TextureShadingTest {
                 .settings(RenderSettings.DEFAULT.withSize(64, 64).withBackground(Color.BLACK))
                 .camera(new PinholeCamera(new Vec3(0, 1, 0), new Vec3(0, 0.7, 10), Vec3.Y, 40));
         b.add(new Plane(Vec3.Y, 0).material(m));
-        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).image();
+        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).frame();
         double sum = 0, sum2 = 0;
         int count = 0;
         for (int y = 0; y < image.height(); y++) {
