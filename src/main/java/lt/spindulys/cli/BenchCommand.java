@@ -311,7 +311,7 @@ final class BenchCommand {
         Scene scene = builder.build();
         long t2 = System.nanoTime();
         long cpu0 = processCpuNanos();
-        Renderer.Result result;
+        lt.spindulys.render.RenderResult result;
         try {
             result = Renderer.render(scene, THREADS, ProgressListener.NONE);
         } catch (InterruptedException e) {
@@ -327,7 +327,7 @@ final class BenchCommand {
                 bytes += m.memoryBytes();
             }
         }
-        return new Measured((t1 - t0) / 1e9, (t2 - t1) / 1e9, result.stats(), peak, triangles, bytes, result.image(), (cpu1 - cpu0) / 1e9);
+        return new Measured((t1 - t0) / 1e9, (t2 - t1) / 1e9, result.stats(), peak, triangles, bytes, result.frame(), (cpu1 - cpu0) / 1e9);
     }
 
     /**

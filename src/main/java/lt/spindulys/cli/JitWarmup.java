@@ -12,7 +12,7 @@ import lt.spindulys.render.ProgressListener;
 import lt.spindulys.render.Renderer;
 import lt.spindulys.scene.Bool;
 import lt.spindulys.scene.GObject;
-import lt.spindulys.scene.Material;
+import lt.spindulys.material.Material;
 import lt.spindulys.mesh.MeshData;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;

@@ -1,5 +1,7 @@
 package lt.spindulys.image;
 
+import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferInt;
 import java.util.Objects;
 import java.util.Set;
 import java.util.stream.Collectors;
@@ -95,6 +97,23 @@ public final class FrameBuffer {
      * clamped to [0, 1] (NaN counts as 0), encoded with the sRGB transfer function if {@code srgb}
      * (otherwise left linear), then scaled by 255 and rounded to nearest.
      */
+    /**
+     * The image as an 8-bit {@link BufferedImage#TYPE_INT_RGB} image, converted as {@link #toRgb8}
+     * does (so it holds exactly the pixels a PNG of this buffer would), for display or for
+     * further processing with Java's imaging classes. A new image each call.
+     */
+    public BufferedImage toBufferedImage(boolean srgb) {
+        return rgbImage(width, height, toRgb8(srgb));
+    }
+
+    /** A {@code TYPE_INT_RGB} image of packed {@code 0xRRGGBB} pixels (row-major, top row first), as they are. */
+    static BufferedImage rgbImage(int w, int h, int[] rgb) {
+        BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        int[] pixels = ((DataBufferInt) img.getRaster().getDataBuffer()).getData();
+        System.arraycopy(rgb, 0, pixels, 0, pixels.length);
+        return img;
+    }
+
     public int[] toRgb8(boolean srgb) {
         int n = width * height;
         int[] out = new int[n];

@@ -1,7 +1,6 @@
 package lt.spindulys.image;
 
 import java.awt.image.BufferedImage;
-import java.awt.image.DataBufferInt;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.ByteBuffer;
@@ -204,9 +203,7 @@ public final class ImageWriter {
     /** Encodes packed 0xRRGGBB pixels (row-major, top row first) as they are. */
     private static void writeImageIo(int w, int h, int[] rgb, ImageOptions opts, String formatName, OutputStream out)
             throws IOException {
-        BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
-        int[] pixels = ((DataBufferInt) img.getRaster().getDataBuffer()).getData();
-        System.arraycopy(rgb, 0, pixels, 0, pixels.length);
+        BufferedImage img = FrameBuffer.rgbImage(w, h, rgb);
 
         Iterator<javax.imageio.ImageWriter> writers = ImageIO.getImageWritersByFormatName(formatName);
         if (!writers.hasNext()) throw new IOException("this Java runtime has no " + formatName + " encoder");

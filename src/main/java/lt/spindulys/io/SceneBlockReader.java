@@ -17,7 +17,7 @@ import lt.spindulys.math.Transform;
 import lt.spindulys.math.Vec3;
 import lt.spindulys.scene.Bool;
 import lt.spindulys.scene.GObject;
-import lt.spindulys.scene.Material;
+import lt.spindulys.material.Material;
 import lt.spindulys.texture.Texture;
 
 /**

@@ -28,7 +28,7 @@ import lt.spindulys.scene.Bool;
 import lt.spindulys.scene.Box;
 import lt.spindulys.scene.Cylinder;
 import lt.spindulys.scene.GObject;
-import lt.spindulys.scene.Material;
+import lt.spindulys.material.Material;
 import lt.spindulys.scene.Plane;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;

@@ -18,7 +18,7 @@ import lt.spindulys.limits.InputFiles;
 import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Motion;
 import lt.spindulys.scene.GObject;
-import lt.spindulys.scene.Material;
+import lt.spindulys.material.Material;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.SceneBuilder;

@@ -1,5 +1,11 @@
 package lt.spindulys.scene;
 
+import lt.spindulys.material.Material;
+import lt.spindulys.trace.Hit;
+import lt.spindulys.trace.TraceContext;
+import lt.spindulys.trace.ShadingData;
+import lt.spindulys.trace.SpanBuffer;
+
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.IdentityHashMap;

@@ -1,5 +1,11 @@
 package lt.spindulys.scene;
 
+import lt.spindulys.material.Material;
+import lt.spindulys.trace.Hit;
+import lt.spindulys.trace.TraceContext;
+import lt.spindulys.trace.ShadingData;
+import lt.spindulys.trace.SpanBuffer;
+
 import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Bounds;
@@ -8,6 +14,7 @@ import lt.spindulys.math.ObjectMapping;
 import lt.spindulys.math.Placement;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
+import lt.spindulys.trace.TracedObject;
 
 /**
  * Base of every scene object (the thesis's name). An object is built in its own space, placed by
@@ -29,7 +36,7 @@ import lt.spindulys.math.Transform;
  * answered at its {@link Ray#time}, and shading uses the same time. Objects with no motion
  * anywhere in their chain keep one composed transform and pay nothing per ray for the feature.
  */
-public abstract class GObject {
+public abstract class GObject implements TracedObject {
     private Transform transform = Transform.IDENTITY;
     private Motion motion;
     private Material material;
@@ -320,7 +327,7 @@ public abstract class GObject {
         if (same) System.arraycopy(ng, 0, ns, 0, 3);
         else map.normalInPlace(ns, 0);
         if (hit.flipNormal) sd.flipNormals();
-        if (hit.materialSpace != null && sd.needsParameters) hit.materialSpace.mappingInputsInto(ray.time, sd);
+        if (hit.materialSpace != null && sd.needsParameters) ((GObject) hit.materialSpace).mappingInputsInto(ray.time, sd);
     }
 
     /**

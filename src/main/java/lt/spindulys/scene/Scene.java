@@ -1,5 +1,9 @@
 package lt.spindulys.scene;
 
+import lt.spindulys.material.Material;
+import lt.spindulys.trace.Hit;
+import lt.spindulys.trace.TraceContext;
+
 import java.util.ArrayList;
 import java.util.List;
 

@@ -1,5 +1,7 @@
 package lt.spindulys.scene;
 
+import lt.spindulys.material.Material;
+
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.LinkedHashMap;

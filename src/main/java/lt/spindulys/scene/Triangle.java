@@ -1,5 +1,9 @@
 package lt.spindulys.scene;
 
+import lt.spindulys.trace.Hit;
+import lt.spindulys.trace.TraceContext;
+import lt.spindulys.trace.ShadingData;
+
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;

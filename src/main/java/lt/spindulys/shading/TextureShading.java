@@ -1,7 +1,7 @@
 package lt.spindulys.shading;
 
-import lt.spindulys.scene.Material;
-import lt.spindulys.scene.ShadingData;
+import lt.spindulys.material.Material;
+import lt.spindulys.trace.ShadingData;
 import lt.spindulys.texture.Channel;
 import lt.spindulys.texture.Mapping;
 import lt.spindulys.texture.Texture;

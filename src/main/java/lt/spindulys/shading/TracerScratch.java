@@ -1,11 +1,11 @@
 package lt.spindulys.shading;
 
 import lt.spindulys.math.Ray;
-import lt.spindulys.scene.GObject;
-import lt.spindulys.scene.Hit;
-import lt.spindulys.scene.Material;
-import lt.spindulys.scene.ShadingData;
-import lt.spindulys.scene.TraceContext;
+import lt.spindulys.trace.TracedObject;
+import lt.spindulys.trace.Hit;
+import lt.spindulys.material.Material;
+import lt.spindulys.trace.ShadingData;
+import lt.spindulys.trace.TraceContext;
 import lt.spindulys.texture.TexturePoint;
 
 /**
@@ -36,10 +36,10 @@ public final class TracerScratch {
     final double[] terms = new double[9];
 
     // Media the ray is inside, innermost last: the material it entered by and the solid
-    // (GObject.solid()) it entered, so leaving through another surface of the same CSG solid
+    // (TracedObject.solid()) it entered, so leaving through another surface of the same CSG solid
     // leaves the same medium.
     Material[] media = new Material[8];
-    GObject[] solids = new GObject[8];
+    TracedObject[] solids = new TracedObject[8];
     int mediaCount;
 
     /** Rays traced, by kind (counted per thread and summed by the renderer). */
@@ -59,7 +59,7 @@ public final class TracerScratch {
         }
     }
 
-    void pushMedium(Material m, GObject solid) {
+    void pushMedium(Material m, TracedObject solid) {
         if (mediaCount == media.length) {
             media = java.util.Arrays.copyOf(media, media.length * 2);
             solids = java.util.Arrays.copyOf(solids, solids.length * 2);
@@ -71,7 +71,7 @@ public final class TracerScratch {
     Material innermost() { return mediaCount == 0 ? null : media[mediaCount - 1]; }
 
     /** The solid of the innermost medium, or null outside every medium. */
-    GObject innermostSolid() { return mediaCount == 0 ? null : solids[mediaCount - 1]; }
+    TracedObject innermostSolid() { return mediaCount == 0 ? null : solids[mediaCount - 1]; }
 
     /** The medium enclosing the innermost one (what a ray leaving the innermost enters). */
     Material outer() { return mediaCount < 2 ? null : media[mediaCount - 2]; }

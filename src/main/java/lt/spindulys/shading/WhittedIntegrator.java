@@ -3,13 +3,13 @@ package lt.spindulys.shading;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
-import lt.spindulys.scene.GObject;
-import lt.spindulys.scene.Hit;
-import lt.spindulys.scene.Material;
+import lt.spindulys.trace.TracedObject;
+import lt.spindulys.trace.Hit;
+import lt.spindulys.material.Material;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
-import lt.spindulys.scene.ShadingData;
+import lt.spindulys.trace.ShadingData;
 import lt.spindulys.texture.Channel;
 
 /**
@@ -231,7 +231,7 @@ public final class WhittedIntegrator {
         // medium is left through any surface of the solid it was entered by (a CSG result's exit
         // may be another leaf, with another material); the entry's material attenuates.
         Material inside = null;
-        GObject insideSolid = null;
+        TracedObject insideSolid = null;
         double enteredAt = 0;
         for (int crossing = 0; crossing < MAX_SHADOW_CROSSINGS; crossing++) {
             if (!scene.intersect(ray, hit, s.ctx)) {
@@ -252,7 +252,7 @@ public final class WhittedIntegrator {
             if (m.attenuates() || inside != null) {
                 if (!shaded) hit.object.shade(ray, hit, sd);
                 boolean entering = sd.ng[0] * lx + sd.ng[1] * ly + sd.ng[2] * lz < 0;
-                GObject solid = hit.object.solid();
+                TracedObject solid = hit.object.solid();
                 if (entering) {
                     if (m.attenuates()) {
                         inside = m;
@@ -275,7 +275,7 @@ public final class WhittedIntegrator {
         return false;
     }
 
-    private void secondary(Material m, double kr, double kt, GObject solid, boolean entering, double px, double py, double pz,
+    private void secondary(Material m, double kr, double kt, TracedObject solid, boolean entering, double px, double py, double pz,
                            double nfx, double nfy, double nfz, double snx, double sny, double snz,
                            double dx, double dy, double dz, double eps, double time, int depth, double weight,
                            TracerScratch s, double[] out) {
@@ -336,7 +336,7 @@ public final class WhittedIntegrator {
                 s.mediaCount--;
             } else if (leavesInnermost) {
                 Material left = s.innermost();
-                GObject leftSolid = s.innermostSolid();
+                TracedObject leftSolid = s.innermostSolid();
                 s.mediaCount--;
                 trace(next, depth + 1, weight * refrW * f.max(), s, c);
                 s.pushMedium(left, leftSolid);

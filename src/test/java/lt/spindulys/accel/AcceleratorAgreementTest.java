@@ -14,13 +14,14 @@ import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
 import lt.spindulys.scene.GObject;
-import lt.spindulys.scene.Hit;
+import lt.spindulys.trace.TracedObject;
+import lt.spindulys.trace.Hit;
 import lt.spindulys.mesh.MeshData;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.SceneBuilder;
 import lt.spindulys.scene.TestMeshes;
-import lt.spindulys.scene.TraceContext;
+import lt.spindulys.trace.TraceContext;
 import lt.spindulys.scene.TriangleMesh;
 
 /**
@@ -92,7 +93,7 @@ class AcceleratorAgreementTest {
             if (s) {
                 hits++;
                 assertEquals(hs.t, hf.t, 1e-12 * hs.t, () -> "ray " + n + " " + ray);
-                GObject os = hs.object, of = hf.object;
+                TracedObject os = hs.object, of = hf.object;
                 if (os.id() != of.id() || hs.prim != hf.prim) assertEquals(hs.t, hf.t, () -> "a different hit must be a tie, ray " + n);
             }
             assertEquals(s, fast.occluded(ray, ctx), () -> "occluded, ray " + n + " " + ray);

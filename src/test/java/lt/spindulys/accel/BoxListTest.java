@@ -17,9 +17,9 @@ import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.SceneBuilder;
-import lt.spindulys.scene.Hit;
+import lt.spindulys.trace.Hit;
 import lt.spindulys.scene.TestMeshes;
-import lt.spindulys.scene.TraceContext;
+import lt.spindulys.trace.TraceContext;
 import lt.spindulys.scene.TriangleMesh;
 
 /** The box list (a scene's few objects) against brute force, as every structure is. */

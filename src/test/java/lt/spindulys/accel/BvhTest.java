@@ -15,12 +15,12 @@ import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
 import lt.spindulys.scene.GObject;
-import lt.spindulys.scene.Hit;
+import lt.spindulys.trace.Hit;
 import lt.spindulys.mesh.MeshData;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.SceneBuilder;
 import lt.spindulys.scene.TestMeshes;
-import lt.spindulys.scene.TraceContext;
+import lt.spindulys.trace.TraceContext;
 import lt.spindulys.scene.TriangleMesh;
 
 class BvhTest {

@@ -14,9 +14,9 @@ import org.junit.jupiter.api.Test;
 
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
-import lt.spindulys.scene.Hit;
+import lt.spindulys.trace.Hit;
 import lt.spindulys.scene.TestMeshes;
-import lt.spindulys.scene.TraceContext;
+import lt.spindulys.trace.TraceContext;
 import lt.spindulys.scene.TriangleMesh;
 
 /** What is particular to the octree: rays on its cell planes, bounded memory, reachability. */

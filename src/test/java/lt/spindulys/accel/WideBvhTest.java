@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Test;
 
 import lt.spindulys.math.Ray;
 import lt.spindulys.scene.TestMeshes;
-import lt.spindulys.scene.TraceContext;
+import lt.spindulys.trace.TraceContext;
 import lt.spindulys.scene.TriangleMesh;
 
 /**
@@ -138,7 +138,7 @@ class WideBvhTest {
         for (int i = 0; i < 1000; i++) {
             double dx = r.nextGaussian(), dy = r.nextGaussian(), dz = r.nextGaussian();
             ray.set(0.5 - dx, 0.5 - dy, 0.5 - dz, dx, dy, dz, 0, Double.POSITIVE_INFINITY);
-            assertFalse(w.intersect(ray, new lt.spindulys.scene.Hit().reset(ray.tMax), ctx));
+            assertFalse(w.intersect(ray, new lt.spindulys.trace.Hit().reset(ray.tMax), ctx));
             assertFalse(w.occluded(ray, ctx));
             int[] seen = new int[points.size()];
             w.visit(ray, ctx, (prim, rr, cc) -> seen[prim]++);
@@ -153,7 +153,7 @@ class WideBvhTest {
         TraceContext ctx = new TraceContext();
         Random r = new Random(322);
         Ray line = new Ray();
-        lt.spindulys.scene.Hit h = new lt.spindulys.scene.Hit();
+        lt.spindulys.trace.Hit h = new lt.spindulys.trace.Hit();
         int crossed = 0;
         for (int i = 0; i < 2000; i++) {
             line.set(r.nextDouble(), r.nextDouble(), r.nextDouble(), r.nextGaussian(), r.nextGaussian(), r.nextGaussian(),

@@ -15,7 +15,7 @@ class JitWarmupTest {
     void theWarmupSceneExercisesHitsMissesAndShadows() throws InterruptedException {
         // Its failures are swallowed at run time, so check here that it really renders a lit
         // torus, its shadow on the ground, and background above the horizon.
-        FrameBuffer fb = Renderer.render(JitWarmup.scene(), 1, ProgressListener.NONE).image();
+        FrameBuffer fb = Renderer.render(JitWarmup.scene(), 1, ProgressListener.NONE).frame();
         int lit = 0, dark = 0;
         for (int y = 0; y < 54; y++) {
             for (int x = 0; x < 96; x++) {

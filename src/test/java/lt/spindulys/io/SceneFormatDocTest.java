@@ -23,7 +23,7 @@ import lt.spindulys.math.Transform;
 import lt.spindulys.math.Vec3;
 import lt.spindulys.scene.Box;
 import lt.spindulys.scene.GObject;
-import lt.spindulys.scene.Material;
+import lt.spindulys.material.Material;
 import lt.spindulys.scene.Plane;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;

@@ -19,12 +19,12 @@ import lt.spindulys.scene.Bool;
 import lt.spindulys.scene.Box;
 import lt.spindulys.scene.Cylinder;
 import lt.spindulys.scene.GObject;
-import lt.spindulys.scene.Hit;
+import lt.spindulys.trace.Hit;
 import lt.spindulys.scene.Plane;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.SceneBuilder;
 import lt.spindulys.scene.Sphere;
-import lt.spindulys.scene.TraceContext;
+import lt.spindulys.trace.TraceContext;
 import lt.spindulys.scene.TriangleMesh;
 
 /** The union, intersection and difference statements: operands, nesting, common keys, and the grammar's link to Bool. */

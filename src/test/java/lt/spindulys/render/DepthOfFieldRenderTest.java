@@ -15,7 +15,7 @@ import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
 import lt.spindulys.sampling.LensPattern;
-import lt.spindulys.scene.Material;
+import lt.spindulys.material.Material;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.SceneBuilder;
 import lt.spindulys.scene.Triangle;
@@ -37,7 +37,7 @@ class DepthOfFieldRenderTest {
                 .camera(camera);
         b.add(new Triangle(new Vec3(0, -1000, d), new Vec3(0, 1000, d), new Vec3(1000, 0, d))
                 .material(Material.builder().color(Color.WHITE).ka(1).kd(0).build()));
-        return Renderer.render(b.build(), threads, ProgressListener.NONE).image();
+        return Renderer.render(b.build(), threads, ProgressListener.NONE).frame();
     }
 
     private static double[] profile(Camera camera, double d, int spp) throws InterruptedException {
@@ -170,6 +170,6 @@ class DepthOfFieldRenderTest {
                 .settings(RenderSettings.builder().size(W, H).samplesPerPixel(4).aovs(EnumSet.of(Aov.DEPTH, Aov.OBJECT)).build())
                 .camera(camera);
         b.add(new Triangle(new Vec3(0, -1000, 5), new Vec3(0, 1000, 5), new Vec3(1000, 0, 5)));
-        return Renderer.render(b.build(), 2, ProgressListener.NONE).aovs();
+        return Renderer.render(b.build(), 2, ProgressListener.NONE).passes().orElse(null);
     }
 }

@@ -11,7 +11,7 @@ import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Motion;
 import lt.spindulys.math.Vec3;
-import lt.spindulys.scene.Material;
+import lt.spindulys.material.Material;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.SceneBuilder;
 import lt.spindulys.scene.Sphere;
@@ -36,7 +36,7 @@ class MotionBlurRenderTest {
                 .camera(new PinholeCamera(new Vec3(0, 0, -EYE), Vec3.ZERO, Vec3.Y, FOV));
         b.add(new Sphere(new Vec3(c0, 0, 0), R).material(Material.builder().color(Color.WHITE).ka(1).kd(0).build())
                 .motion(Motion.translation(new Vec3(dx, 0, 0), start, finish)));
-        FrameBuffer fb = Renderer.render(b.build(), 2, ProgressListener.NONE).image();
+        FrameBuffer fb = Renderer.render(b.build(), 2, ProgressListener.NONE).frame();
         double[] out = new double[W];
         for (int x = 0; x < W; x++) out[x] = fb.get(x, H / 2, 0);
         return out;
@@ -121,10 +121,10 @@ class MotionBlurRenderTest {
         SceneBuilder b = new SceneBuilder().settings(settings(8, 4).toBuilder().size(37, 23).build())
                 .camera(new PinholeCamera(new Vec3(0, 0, -EYE), Vec3.ZERO, Vec3.Y, FOV));
         b.add(new Sphere(Vec3.ZERO, R).motion(Motion.translation(Vec3.X, 0.2, 0.8)));
-        double[] one = Renderer.render(b.build(), 1, ProgressListener.NONE).image().data();
+        double[] one = Renderer.render(b.build(), 1, ProgressListener.NONE).frame().data();
         b = new SceneBuilder().settings(settings(8, 4).toBuilder().size(37, 23).build()).camera(new PinholeCamera(new Vec3(0, 0, -EYE), Vec3.ZERO, Vec3.Y, FOV));
         b.add(new Sphere(Vec3.ZERO, R).motion(Motion.translation(Vec3.X, 0.2, 0.8)));
-        double[] three = Renderer.render(b.build(), 3, ProgressListener.NONE).image().data();
+        double[] three = Renderer.render(b.build(), 3, ProgressListener.NONE).frame().data();
         assertArrayEquals(one, three, 0.0);
     }
 
@@ -153,16 +153,16 @@ class MotionBlurRenderTest {
     @Test
     void shadowsAndReflectionsAreTracedAtTheSameTime() throws InterruptedException {
         RenderSettings st = RenderSettings.builder().size(41, 27).samplesPerPixel(2).shutter(0.7, 0.7).build();
-        double[] still = Renderer.render(litScene(st, false, 0, 1).build(), 2, ProgressListener.NONE).image().data();
-        double[] instant = Renderer.render(litScene(st, true, 0, 1).build(), 2, ProgressListener.NONE).image().data();
+        double[] still = Renderer.render(litScene(st, false, 0, 1).build(), 2, ProgressListener.NONE).frame().data();
+        double[] instant = Renderer.render(litScene(st, true, 0, 1).build(), 2, ProgressListener.NONE).frame().data();
         assertArrayEquals(still, instant, 1e-9);
     }
 
     @Test
     void singlePassIsIdenticalForAnyThreadCount() throws InterruptedException {
         RenderSettings st = RenderSettings.builder().size(41, 27).samplesPerPixel(5).shutter(0.2, 0.9).build();
-        double[] one = Renderer.render(litScene(st, true, Double.NaN, Double.NaN).build(), 1, ProgressListener.NONE).image().data();
-        double[] four = Renderer.render(litScene(st, true, Double.NaN, Double.NaN).build(), 4, ProgressListener.NONE).image().data();
+        double[] one = Renderer.render(litScene(st, true, Double.NaN, Double.NaN).build(), 1, ProgressListener.NONE).frame().data();
+        double[] four = Renderer.render(litScene(st, true, Double.NaN, Double.NaN).build(), 4, ProgressListener.NONE).frame().data();
         assertArrayEquals(one, four, 0.0);
     }
 }

@@ -9,7 +9,7 @@ import org.junit.jupiter.api.Test;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
-import lt.spindulys.scene.Material;
+import lt.spindulys.material.Material;
 import lt.spindulys.scene.Plane;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
@@ -31,15 +31,15 @@ class RendererTest {
 
     @Test
     void imageIsIdenticalForAnyThreadCount() throws InterruptedException {
-        double[] one = Renderer.render(scene(5), 1, ProgressListener.NONE).image().data();
-        double[] three = Renderer.render(scene(5), 3, ProgressListener.NONE).image().data();
+        double[] one = Renderer.render(scene(5), 1, ProgressListener.NONE).frame().data();
+        double[] three = Renderer.render(scene(5), 3, ProgressListener.NONE).frame().data();
         assertArrayEquals(one, three, 0.0, "bit-identical output for 1 and 3 threads");
     }
 
     @Test
     void countsRaysAndReportsProgressToTheEnd() throws InterruptedException {
         AtomicLong last = new AtomicLong();
-        Renderer.Result r = Renderer.render(scene(4), 2, (done, total) -> last.accumulateAndGet(done, Math::max));
+        RenderResult r = Renderer.render(scene(4), 2, (done, total) -> last.accumulateAndGet(done, Math::max));
         assertEquals(37L * 23, last.get());
         RenderStats s = r.stats();
         assertEquals(37L * 23 * 4, s.cameraRays());
@@ -63,7 +63,7 @@ class RendererTest {
             b.add(new Sphere(new Vec3(0, 0, 3), 1).material(blue));
             for (int i = 0; i < far; i++) b.add(new Sphere(new Vec3(10 + 3 * i, 0, 0), 1).material(blue));
             b.add(new Sphere(new Vec3(0, 0, 0), 1).material(red));
-            var img = Renderer.render(b.build(), 1, ProgressListener.NONE).image();
+            var img = Renderer.render(b.build(), 1, ProgressListener.NONE).frame();
             assertEquals(1, img.get(0, 0, 0), 1e-12, "red sphere in front");
             assertEquals(0, img.get(0, 0, 2), 1e-12);
         }

@@ -1,5 +1,11 @@
 package lt.spindulys.scene;
 
+import lt.spindulys.material.Material;
+import lt.spindulys.trace.Hit;
+import lt.spindulys.trace.TraceContext;
+import lt.spindulys.trace.ShadingData;
+import lt.spindulys.trace.SpanBuffer;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;

@@ -1,5 +1,9 @@
 package lt.spindulys.scene;
 
+import lt.spindulys.trace.Hit;
+import lt.spindulys.trace.ShadingData;
+import lt.spindulys.trace.SpanBuffer;
+
 import static lt.spindulys.scene.ShapeTestSupport.*;
 import static org.junit.jupiter.api.Assertions.*;
 

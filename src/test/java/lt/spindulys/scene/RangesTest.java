@@ -1,5 +1,7 @@
 package lt.spindulys.scene;
 
+import lt.spindulys.material.Material;
+
 import static org.junit.jupiter.api.Assertions.*;
 
 import org.junit.jupiter.api.Test;

@@ -1,5 +1,11 @@
 package lt.spindulys.scene;
 
+import lt.spindulys.material.Material;
+import lt.spindulys.trace.Hit;
+import lt.spindulys.trace.TraceContext;
+import lt.spindulys.trace.ShadingData;
+import lt.spindulys.trace.SpanBuffer;
+
 import static lt.spindulys.scene.ShapeTestSupport.*;
 import static org.junit.jupiter.api.Assertions.*;
 

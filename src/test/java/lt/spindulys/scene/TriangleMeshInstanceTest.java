@@ -1,5 +1,9 @@
 package lt.spindulys.scene;
 
+import lt.spindulys.trace.Hit;
+import lt.spindulys.trace.TraceContext;
+import lt.spindulys.trace.ShadingData;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;

@@ -1,5 +1,8 @@
 package lt.spindulys.scene;
 
+import lt.spindulys.trace.Hit;
+import lt.spindulys.trace.ShadingData;
+
 import static lt.spindulys.scene.ShapeTestSupport.*;
 import static org.junit.jupiter.api.Assertions.*;
 

@@ -16,16 +16,16 @@ import lt.spindulys.render.Renderer;
 import lt.spindulys.scene.Bool;
 import lt.spindulys.scene.Box;
 import lt.spindulys.scene.GObject;
-import lt.spindulys.scene.Hit;
-import lt.spindulys.scene.Material;
+import lt.spindulys.trace.Hit;
+import lt.spindulys.material.Material;
 import lt.spindulys.scene.Plane;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.SceneBuilder;
-import lt.spindulys.scene.ShadingData;
+import lt.spindulys.trace.ShadingData;
 import lt.spindulys.scene.Sphere;
-import lt.spindulys.scene.TraceContext;
+import lt.spindulys.trace.TraceContext;
 
 /**
  * The integrator through CSG solids, on 1x1 images whose one camera ray is worked out by hand:
@@ -37,7 +37,7 @@ class CsgShadingTest {
     private static final Color C = new Color(0.8, 0.6, 0.4);
 
     private static double[] render(SceneBuilder b) throws InterruptedException {
-        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).image();
+        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).frame();
         return new double[] {image.get(0, 0, 0), image.get(0, 0, 1), image.get(0, 0, 2)};
     }
 
@@ -176,7 +176,7 @@ class CsgShadingTest {
             marble.material(Material.builder().ka(0).kd(0).kt(1).beta(0.1).ior(marbleIor).build());
             s.add(marble);
         }
-        return Renderer.render(s.build(), 1, ProgressListener.NONE).image().data().clone();
+        return Renderer.render(s.build(), 1, ProgressListener.NONE).frame().data().clone();
     }
 
     @Test
@@ -207,7 +207,7 @@ class CsgShadingTest {
                 .settings(RenderSettings.builder().size(24, 24).ambient(Color.WHITE).background(new Color(0.1, 0.2, 0.3)).build())
                 .camera(new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, 30))
                 .add(union(a, b)).add(wall);
-        return Renderer.render(s.build(), 1, ProgressListener.NONE).image().data().clone();
+        return Renderer.render(s.build(), 1, ProgressListener.NONE).frame().data().clone();
     }
 
     @Test

@@ -16,11 +16,11 @@ import lt.spindulys.math.Vec3;
 import lt.spindulys.scene.Bool;
 import lt.spindulys.scene.Box;
 import lt.spindulys.scene.GObject;
-import lt.spindulys.scene.Hit;
-import lt.spindulys.scene.Material;
+import lt.spindulys.trace.Hit;
+import lt.spindulys.material.Material;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.SceneBuilder;
-import lt.spindulys.scene.ShadingData;
+import lt.spindulys.trace.ShadingData;
 import lt.spindulys.scene.Sphere;
 import lt.spindulys.texture.Channel;
 import lt.spindulys.texture.Mapping;
@@ -61,7 +61,7 @@ class CsgTextureTest {
         ShadingData sd = new ShadingData();
         hit.object.shade(ray, hit, sd);
         TextureShading.evaluate(sd.material, sd, 0, s);
-        return new Shaded(hit.object, new double[] {s.terms[0], s.terms[1], s.terms[2]}, sd);
+        return new Shaded((GObject) hit.object, new double[] {s.terms[0], s.terms[1], s.terms[2]}, sd);
     }
 
     /** The recorded texture's colour for block-space point p: the mapping evaluated there. */

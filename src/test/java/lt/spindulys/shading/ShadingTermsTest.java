@@ -9,7 +9,7 @@ import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
 import lt.spindulys.render.ProgressListener;
 import lt.spindulys.render.Renderer;
-import lt.spindulys.scene.Material;
+import lt.spindulys.material.Material;
 import lt.spindulys.scene.Plane;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
@@ -34,7 +34,7 @@ class ShadingTermsTest {
     }
 
     private static double[] render(SceneBuilder b) throws InterruptedException {
-        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).image();
+        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).frame();
         return new double[] {image.get(0, 0, 0), image.get(0, 0, 1), image.get(0, 0, 2)};
     }
 

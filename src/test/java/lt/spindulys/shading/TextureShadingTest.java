@@ -11,12 +11,12 @@ import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
 import lt.spindulys.render.ProgressListener;
 import lt.spindulys.render.Renderer;
-import lt.spindulys.scene.Material;
+import lt.spindulys.material.Material;
 import lt.spindulys.scene.Plane;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.SceneBuilder;
-import lt.spindulys.scene.ShadingData;
+import lt.spindulys.trace.ShadingData;
 import lt.spindulys.scene.Sphere;
 import lt.spindulys.texture.Channel;
 import lt.spindulys.texture.Planar;
@@ -44,7 +44,7 @@ class TextureShadingTest {
     }
 
     private static double[] render(SceneBuilder b) throws InterruptedException {
-        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).image();
+        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).frame();
         return new double[] {image.get(0, 0, 0), image.get(0, 0, 1), image.get(0, 0, 2)};
     }
 
@@ -152,7 +152,7 @@ class TextureShadingTest {
                 .settings(RenderSettings.builder().size(64, 64).background(Color.BLACK).build())
                 .camera(new PinholeCamera(new Vec3(0, 1, 0), new Vec3(0, 0.7, 10), Vec3.Y, 40));
         b.add(new Plane(Vec3.Y, 0).material(m));
-        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).image();
+        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).frame();
         double sum = 0, sum2 = 0;
         int count = 0;
         for (int y = 0; y < image.height(); y++) {

@@ -1,4 +1,6 @@
-package lt.spindulys.scene;
+package lt.spindulys.trace;
+
+import lt.spindulys.material.Material;
 
 /**
  * The intervals along a ray that lie inside a closed solid: sorted, disjoint [entry, exit] pairs,
@@ -9,13 +11,13 @@ package lt.spindulys.scene;
 public final class SpanBuffer {
     private int count;
     private double[] t = new double[8];
-    private GObject[] object = new GObject[8];
+    private TracedObject[] object = new TracedObject[8];
     private int[] prim = new int[8];
     private double[] u = new double[8], v = new double[8];
     private boolean[] flip = new boolean[8];
     private Material[] material = new Material[8];
     /** The CSG node whose material overrides the endpoint's, else null (see {@link Hit#materialSpace}). */
-    private GObject[] space = new GObject[8];
+    private TracedObject[] space = new TracedObject[8];
 
     public void clear() { count = 0; }
 
@@ -23,8 +25,8 @@ public final class SpanBuffer {
     public int size() { return count; }
 
     /** Appends a span; spans must be appended in increasing, non-overlapping order. */
-    public void add(double tIn, GObject oIn, int pIn, double uIn, double vIn,
-                    double tOut, GObject oOut, int pOut, double uOut, double vOut) {
+    public void add(double tIn, TracedObject oIn, int pIn, double uIn, double vIn,
+                    double tOut, TracedObject oOut, int pOut, double uOut, double vOut) {
         int i = 2 * count;
         ensure(i + 2);
         setEndpoint(i, tIn, oIn, pIn, uIn, vIn, false, oIn == null ? null : oIn.material(), null);
@@ -43,7 +45,7 @@ public final class SpanBuffer {
 
     private int pending;
 
-    private void setEndpoint(int i, double tt, GObject o, int p, double uu, double vv, boolean f, Material m, GObject s) {
+    private void setEndpoint(int i, double tt, TracedObject o, int p, double uu, double vv, boolean f, Material m, TracedObject s) {
         t[i] = tt; object[i] = o; prim[i] = p; u[i] = uu; v[i] = vv; flip[i] = f; material[i] = m; space[i] = s;
     }
 
@@ -52,7 +54,7 @@ public final class SpanBuffer {
      * spans from {@code fromSpan} on: for an object that reports the spans of an inner object it
      * owns, so that they are shaded through the outer one.
      */
-    public void relabel(int fromSpan, GObject o) {
+    public void relabel(int fromSpan, TracedObject o) {
         Material m = o.material();
         for (int i = 2 * fromSpan; i < 2 * count; i++) {
             object[i] = o;
@@ -65,7 +67,7 @@ public final class SpanBuffer {
      * Overrides the material of every endpoint: {@code owner}, an enclosing CSG node, has its own
      * material {@code m}, which maps textures in the owner's space.
      */
-    public void overrideMaterial(Material m, GObject owner) {
+    public void overrideMaterial(Material m, TracedObject owner) {
         for (int i = 0; i < 2 * count; i++) {
             material[i] = m;
             space[i] = owner;

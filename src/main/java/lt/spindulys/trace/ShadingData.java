@@ -1,4 +1,6 @@
-package lt.spindulys.scene;
+package lt.spindulys.trace;
+
+import lt.spindulys.material.Material;
 
 import lt.spindulys.math.Affine;
 
@@ -29,17 +31,17 @@ public final class ShadingData {
     public double u, v;
     /**
      * Whether uv, dpdu and dpdv (and their object-space copies) are needed: the material is
-     * textured, or the caller asked for them ({@link GObject#shade(lt.spindulys.math.Ray, Hit,
+     * textured, or the caller asked for them ({@link TracedObject#shade(lt.spindulys.math.Ray, Hit,
      * ShadingData, boolean)}). When false a shape may skip computing them and they hold no
      * meaning: an untextured mesh hit then reads none of the mesh's texture-coordinate arrays,
      * which at 2M triangles are cache misses (1.07x the speed on the 1m peer scene).
      */
     public boolean needsParameters;
     public Material material;
-    public GObject object;
+    public TracedObject object;
     public int prim;
     /** Scratch for a moving object's transform at the shaded ray's time. */
-    final Affine placementAtTime = new Affine();
+    public final Affine placementAtTime = new Affine();
 
     /** Sets both normals to (x, y, z) normalised. */
     public void setNormal(double x, double y, double z) {

@@ -1,4 +1,4 @@
-package lt.spindulys.scene;
+package lt.spindulys.trace;
 
 import lt.spindulys.accel.TraversalScratch;
 import lt.spindulys.math.Affine;

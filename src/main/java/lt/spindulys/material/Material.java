@@ -1,4 +1,4 @@
-package lt.spindulys.scene;
+package lt.spindulys.material;
 
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Ranges;

@@ -1,4 +1,6 @@
-package lt.spindulys.scene;
+package lt.spindulys.trace;
+
+import lt.spindulys.material.Material;
 
 import lt.spindulys.accel.PrimitiveHit;
 
@@ -6,11 +8,11 @@ import lt.spindulys.accel.PrimitiveHit;
  * The nearest-hit record of the first intersection phase: the acceleration structures' record
  * (distance, primitive within the leaf object, two primitive-local parameters) extended with the
  * leaf object hit and its material and CSG state. Shading data is derived from it once, for the
- * nearest hit only, by {@link GObject#shade}. Mutable per-thread scratch.
+ * nearest hit only, by {@link TracedObject#shade}. Mutable per-thread scratch.
  */
 public final class Hit extends PrimitiveHit {
     /** The leaf object hit; null while nothing is hit. */
-    public GObject object;
+    public TracedObject object;
     /** True where the visible surface faces the other way from its object's outward normal (a CSG cut). */
     public boolean flipNormal;
     /** The material to shade with; set by the leaf, overridden by an enclosing object that has one. */
@@ -20,7 +22,7 @@ public final class Hit extends PrimitiveHit {
      * its space, so the block is textured as one solid), or null: the leaf's material, mapped in
      * the leaf's space.
      */
-    public GObject materialSpace;
+    public TracedObject materialSpace;
 
     public Hit reset(double tMax) {
         t = tMax;

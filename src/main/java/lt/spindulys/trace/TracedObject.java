@@ -1,0 +1,24 @@
+package lt.spindulys.trace;
+
+import lt.spindulys.material.Material;
+import lt.spindulys.math.Ray;
+
+/**
+ * What the per-ray records ({@link Hit}, {@link SpanBuffer}, {@link ShadingData}) and the integrator
+ * need of a scene object: the scene's objects ({@code lt.spindulys.scene.GObject}) implement it.
+ * It lets this package sit below the scene package, so that the records stay internal to the
+ * renderer while the objects are public API.
+ */
+public interface TracedObject {
+    /** Fills {@code sd} for {@code hit}, found on {@code ray} by this object (phase two: shading data once). */
+    void shade(Ray ray, Hit hit, ShadingData sd);
+
+    /** The object's id in its frozen scene. */
+    int id();
+
+    /** The solid this object bounds as seen from outside (a CSG result is one solid), for the medium stack. */
+    TracedObject solid();
+
+    /** The object's material after freezing (inherited if it had none of its own). */
+    Material material();
+}
