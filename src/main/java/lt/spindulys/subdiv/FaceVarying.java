@@ -23,7 +23,7 @@ final class FaceVarying {
     record Channel(Level level, double[] values, boolean linear, boolean linearBoundaries) {
         Channel refine(Level geomChild, SubdivOptions opt) {
             boolean chaikin = opt.creasing() == SubdivOptions.Creasing.CHAIKIN;
-            Level c = linear ? level.refineCornersAndEdges() : level.refine(chaikin, geomChild);
+            Level c = linear ? Refinement.refineCornersAndEdges(level) : Refinement.refine(level, chaikin, geomChild);
             if (linearBoundaries && !linear) pinBoundaries(c);
             double[] cv = new double[2 * c.nV];
             PrimvarRefiner.interpolate(level, c, opt, 2, values, cv, linear);
