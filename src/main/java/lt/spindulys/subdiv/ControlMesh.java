@@ -204,7 +204,8 @@ public final class ControlMesh {
             }
             double[] pos = positions.clone();
             int[] sizes = faceSizes.clone(), verts = faceVertices.clone();
-            Level base = Level.fromPolygons(nV, sizes, verts);
+            BaseLevelBuilder levelBuilder = new BaseLevelBuilder(nV, sizes, verts);
+            Level base = levelBuilder.level;
             float[] eSharp = null;
             for (int i = 0; i < creaseCount; i++) {
                 int a = creases[2 * i], b = creases[2 * i + 1];
@@ -215,7 +216,7 @@ public final class ControlMesh {
                     }
                 }
                 if (Float.isNaN(s)) throw new IllegalArgumentException(at + "crease " + i + " (vertices " + a + " and " + b + ") has sharpness NaN");
-                int e = base.findBaseEdge(a, b);
+                int e = levelBuilder.findEdge(a, b);
                 if (e < 0) throw new IllegalArgumentException(at + "crease " + i + ": vertices " + a + " and " + b + " share no edge");
                 if (eSharp == null) eSharp = new float[base.nE];
                 eSharp[e] = s;
@@ -235,7 +236,7 @@ public final class ControlMesh {
                 if (hole == null) hole = new boolean[nF];
                 hole[f] = true;
             }
-            base.tagBase(options.boundary(), eSharp, vSharp, null, hole);
+            levelBuilder.tag(options.boundary(), eSharp, vSharp, null, hole);
             Builder frozen = new Builder(pos, sizes, verts);
             frozen.options = options;
             frozen.source = source;

@@ -49,7 +49,7 @@ public final class RefinedMesh {
     /** The next level: this mesh refined once. */
     public RefinedMesh refine() {
         SubdivOptions opt = control.options();
-        Level c = topo.refine(opt.creasing() == SubdivOptions.Creasing.CHAIKIN, null);
+        Level c = Refinement.refine(topo, opt.creasing() == SubdivOptions.Creasing.CHAIKIN, null);
         double[] p = new double[3 * c.nV];
         PrimvarRefiner.interpolate(topo, c, opt, 3, positions, p, false);
         FaceVarying.Channel cuv = uv == null ? null : uv.refine(c, opt);
