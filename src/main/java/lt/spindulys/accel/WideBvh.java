@@ -52,6 +52,14 @@ public final class WideBvh implements Accelerator {
         }
     }
 
+    /**
+     * {@code bvh} collapsed to a wide tree when the vector test can run here and the tree allows
+     * it ({@link #AVAILABLE}, {@link #canCollapse}); otherwise {@code bvh} itself.
+     */
+    public static Accelerator widen(Bvh bvh) {
+        return AVAILABLE && canCollapse(bvh) ? new WideBvh(bvh) : bvh;
+    }
+
     /** Whether {@code bvh} can be collapsed: an inner root and leaves of at most 15 primitives. */
     static boolean canCollapse(Bvh bvh) {
         return bvh.nodeCount() > 1 && bvh.maxLeafCount() <= 15 && bvh.primitiveCount() < (1 << 26);

@@ -1,7 +1,6 @@
 package lt.spindulys.camera;
 
 import lt.spindulys.math.Ray;
-import lt.spindulys.sampling.LensPattern;
 
 /** Turns a point on the film (and a lens sample and a time) into a primary ray. Immutable. */
 public interface Camera {

@@ -4,7 +4,6 @@ import java.util.Objects;
 
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
-import lt.spindulys.sampling.LensPattern;
 
 /**
  * A thin-lens camera for depth of field: the view (eye, look-at, up, field of view) of a

@@ -4,7 +4,6 @@ import java.util.Collections;
 import java.util.EnumSet;
 import java.util.Set;
 
-import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.image.Aov;
 import lt.spindulys.math.Color;
 

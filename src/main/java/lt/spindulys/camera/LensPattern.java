@@ -1,11 +1,11 @@
-package lt.spindulys.sampling;
+package lt.spindulys.camera;
 
 import java.util.ArrayList;
 import java.util.List;
 
 /**
  * Where a pixel's lens samples lie on the unit disk (the camera scales them by its aperture). The
- * {@link PixelSampler} places them; a pinhole camera ignores them.
+ * renderer's pixel sampler places them; a pinhole camera ignores them.
  */
 public enum LensPattern {
     /**
