@@ -22,7 +22,9 @@ module lt.spindulys {
     exports lt.spindulys.io;
     exports lt.spindulys.material;
     exports lt.spindulys.math;
+    exports lt.spindulys.mesh;
     exports lt.spindulys.render;
     exports lt.spindulys.scene;
+    exports lt.spindulys.subdiv;
     exports lt.spindulys.texture;
 }

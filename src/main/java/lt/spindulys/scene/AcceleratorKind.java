@@ -53,6 +53,8 @@ public enum AcceleratorKind {
     /**
      * What this kind builds in this JVM, for statistics: for {@link #BVH}, whether the wide vector
      * form or the binary fallback (the module missing, or vectors under 256 bits).
+     *
+     * @return one line for the statistics
      */
     public String description() {
         return switch (this) {
@@ -64,10 +66,18 @@ public enum AcceleratorKind {
         };
     }
 
-    /** The name used in scene files and on the command line, for example "bruteforce". */
+    /**
+     * The name used in scene files and on the command line, for example "bruteforce".
+     *
+     * @return the keyword
+     */
     public String keyword() { return keyword; }
 
-    /** The keywords of all kinds, in declaration order. */
+    /**
+     * The keywords of all kinds, in declaration order.
+     *
+     * @return the keywords
+     */
     public static List<String> keywords() {
         List<String> k = new ArrayList<>();
         for (AcceleratorKind a : values()) k.add(a.keyword);
@@ -77,6 +87,8 @@ public enum AcceleratorKind {
     /**
      * The kind named {@code keyword}.
      *
+     * @param keyword the keyword
+     * @return the kind
      * @throws IllegalArgumentException "unknown accelerator 'kd' (expected one of bvh, bvh2, octree, bruteforce)"
      */
     public static AcceleratorKind fromKeyword(String keyword) {
