@@ -9,7 +9,7 @@ import java.util.List;
 import java.util.Locale;
 
 import lt.spindulys.io.ObjReader;
-import lt.spindulys.accel.AcceleratorKind;
+import lt.spindulys.scene.AcceleratorKind;
 import lt.spindulys.io.SceneParser;
 import lt.spindulys.render.ProgressListener;
 import lt.spindulys.render.RenderStats;

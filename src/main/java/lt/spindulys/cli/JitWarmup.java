@@ -3,7 +3,7 @@ package lt.spindulys.cli;
 import java.util.ArrayDeque;
 import java.util.concurrent.atomic.AtomicBoolean;
 
-import lt.spindulys.accel.AcceleratorKind;
+import lt.spindulys.scene.AcceleratorKind;
 import lt.spindulys.accel.WideBvh;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.math.Color;

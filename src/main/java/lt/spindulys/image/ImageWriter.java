@@ -46,6 +46,12 @@ public final class ImageWriter {
     /** Like {@link java.util.function.Consumer}, but may throw {@link IOException}. */
     @FunctionalInterface
     public interface IoConsumer<T> {
+        /**
+         * Takes the value.
+         *
+         * @param value the value
+         * @throws IOException if writing fails
+         */
         void accept(T value) throws IOException;
     }
 
@@ -53,6 +59,8 @@ public final class ImageWriter {
      * The output format named by the extension of {@code out}; call it before rendering so that a
      * bad file name fails at once.
      *
+     * @param out the output path
+     * @return the format
      * @throws IllegalArgumentException e.g. "unsupported output format '.bmp' (expected .tga,
      *         .png, .jpg, .jpeg or .pfm)"
      */
@@ -64,6 +72,10 @@ public final class ImageWriter {
      * {@link #checkFormat} plus the checks {@link #writeAtomically} makes before writing: the
      * parent directory exists, {@code out} is not a directory, and a file can be created there
      * ({@link AtomicFile#checkWritable}: a trial file is created and deleted). Leaves nothing.
+     *
+     * @param out the output path
+     * @return the format
+     * @throws IOException if the file could not be written there
      */
     public static ImageFormat checkOutput(Path out) throws IOException {
         ImageFormat format = checkFormat(out);
@@ -71,7 +83,14 @@ public final class ImageWriter {
         return format;
     }
 
-    /** Encodes {@code fb} in the format named by the extension of {@code out} and writes it atomically. */
+    /**
+     * Encodes {@code fb} in the format named by the extension of {@code out} and writes it atomically.
+     *
+     * @param fb the image
+     * @param out the output path; its extension names the format
+     * @param opts the encoding options
+     * @throws IOException if writing fails; {@code out} is then unchanged
+     */
     public static void write(FrameBuffer fb, Path out, ImageOptions opts) throws IOException {
         write(fb, out, opts, null);
     }
@@ -91,6 +110,11 @@ public final class ImageWriter {
      *       background; never sRGB-encoded, whatever {@code opts} says.</li>
      * </ul>
      *
+     * @param fb the image
+     * @param out the output path; its extension names the format
+     * @param opts the encoding options
+     * @param aovs the passes, or null
+     * @throws IOException if writing fails; no file is then changed
      * @throws IllegalStateException if an object id does not fit 24 bits (nothing is written)
      * @throws NonFinitePixelException if a pixel of the image or of the normal pass is NaN or
      *         infinite as a float (an internal error: nothing is written)
@@ -150,6 +174,10 @@ public final class ImageWriter {
     /**
      * {@link #checkOutput} for {@code out} and for the file of each pass in {@code aovs} beside
      * it. Leaves nothing.
+     *
+     * @param out the main output path
+     * @param aovs the passes to be written beside it
+     * @throws IOException if one of the files could not be written
      */
     public static void checkOutputs(Path out, Set<Aov> aovs) throws IOException {
         checkOutput(out);
@@ -165,6 +193,8 @@ public final class ImageWriter {
      * <p>{@code body} gets a buffered stream; closing it only flushes, so the body may use
      * try-with-resources on wrappers around it.
      *
+     * @param out the file to write
+     * @param body writes the content
      * @throws IOException if the parent directory is missing (the message names it), {@code out}
      *         is a directory, or writing or renaming fails
      */

@@ -13,7 +13,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
 
-import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;

@@ -11,7 +11,7 @@ import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
 
 /**
- * The infinite plane n.p = offset. As a solid it is the half-space n.p <= offset (the normal
+ * The infinite plane n.p = offset. As a solid it is the half-space n.p &lt;= offset (the normal
  * points out), so it can take part in CSG; its bounds are infinite.
  *
  * <p>Texture coordinates are distances (object-space units) along two fixed orthonormal

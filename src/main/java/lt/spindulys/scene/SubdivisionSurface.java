@@ -6,7 +6,6 @@ import lt.spindulys.trace.TraceContext;
 import lt.spindulys.trace.ShadingData;
 import lt.spindulys.trace.SpanBuffer;
 
-import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.limits.HeapBudget;
 import lt.spindulys.limits.InsufficientMemoryException;
 import lt.spindulys.math.Bounds;

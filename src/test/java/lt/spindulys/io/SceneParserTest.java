@@ -183,8 +183,8 @@ class SceneParserTest {
     void settingsKeysOverrideOnlyWhatTheyName() {
         SceneBuilder b = parse("settings { height 100  encoding linear }");
         assertEquals(RenderSettings.builder().height(100).build(), b.settings());
-        assertEquals(lt.spindulys.accel.AcceleratorKind.BVH, b.settings().accelerator());
-        for (var kind : lt.spindulys.accel.AcceleratorKind.values()) {
+        assertEquals(lt.spindulys.scene.AcceleratorKind.BVH, b.settings().accelerator());
+        for (var kind : lt.spindulys.scene.AcceleratorKind.values()) {
             assertEquals(kind, parse("settings { accelerator " + kind.keyword() + " }").settings().accelerator());
         }
     }

@@ -14,7 +14,7 @@ import lt.spindulys.image.AovFrame;
 import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
-import lt.spindulys.sampling.LensPattern;
+import lt.spindulys.camera.LensPattern;
 import lt.spindulys.material.Material;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.SceneBuilder;

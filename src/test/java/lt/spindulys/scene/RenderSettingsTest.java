@@ -11,7 +11,7 @@ import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.function.Executable;
 
-import lt.spindulys.accel.AcceleratorKind;
+import lt.spindulys.scene.AcceleratorKind;
 import lt.spindulys.image.Aov;
 import lt.spindulys.math.Color;
 

@@ -18,7 +18,6 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.io.SceneParser;
 import lt.spindulys.math.Ray;

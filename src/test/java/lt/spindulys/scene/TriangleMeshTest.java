@@ -495,8 +495,8 @@ class TriangleMeshTest {
     void bvhLeafOrderKeepsEveryTriangleAndEveryHit() {
         MeshData d = TestMeshes.icosphere(3, 1);
         TriangleMesh reordered = new TriangleMesh(d), plain = new TriangleMesh(d);
-        reordered.freeze(Transform.IDENTITY, Material.DEFAULT, 0, lt.spindulys.accel.AcceleratorKind.BVH);
-        plain.freeze(Transform.IDENTITY, Material.DEFAULT, 0, lt.spindulys.accel.AcceleratorKind.BRUTE_FORCE);
+        reordered.freeze(Transform.IDENTITY, Material.DEFAULT, 0, lt.spindulys.scene.AcceleratorKind.BVH);
+        plain.freeze(Transform.IDENTITY, Material.DEFAULT, 0, lt.spindulys.scene.AcceleratorKind.BRUTE_FORCE);
         java.util.List<String> a = new java.util.ArrayList<>(), b = new java.util.ArrayList<>();
         for (int t = 0; t < plain.triangleCount(); t++) {
             a.add(corners(reordered, t));
