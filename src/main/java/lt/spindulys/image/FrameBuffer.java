@@ -127,17 +127,12 @@ public final class FrameBuffer {
     }
 
     /**
-     * Converts to packed 8-bit {@code 0xRRGGBB} values, row-major, top row first. Each channel is
-     * clamped to [0, 1] (NaN counts as 0), encoded with the sRGB transfer function if {@code srgb}
-     * (otherwise left linear), then scaled by 255 and rounded to nearest.
-     *
-     * @param srgb whether to encode with the sRGB curve (else linear)
-     * @return one int per pixel
-     */
-    /**
      * The image as an 8-bit {@link BufferedImage#TYPE_INT_RGB} image, converted as {@link #toRgb8}
      * does (so it holds exactly the pixels a PNG of this buffer would), for display or for
      * further processing with Java's imaging classes. A new image each call.
+     *
+     * @param srgb whether to encode with the sRGB curve (else linear), as for a PNG
+     * @return a new image of this buffer's size
      */
     public BufferedImage toBufferedImage(boolean srgb) {
         return rgbImage(width, height, toRgb8(srgb));
@@ -151,6 +146,14 @@ public final class FrameBuffer {
         return img;
     }
 
+    /**
+     * Converts to packed 8-bit {@code 0xRRGGBB} values, row-major, top row first. Each channel is
+     * clamped to [0, 1] (NaN counts as 0), encoded with the sRGB transfer function if {@code srgb}
+     * (otherwise left linear), then scaled by 255 and rounded to nearest.
+     *
+     * @param srgb whether to encode with the sRGB curve (else linear)
+     * @return one int per pixel
+     */
     public int[] toRgb8(boolean srgb) {
         int n = width * height;
         int[] out = new int[n];

@@ -80,18 +80,38 @@ public final class RenderJob {
         this.scene = scene;
     }
 
-    /** A job that reads the scene file {@code file} (the scene format of docs/scene-format.md) when run. */
+    /**
+     * A job that reads a scene file (the scene format of docs/scene-format.md) when run.
+     *
+     * @param file the scene file
+     * @return a job to configure and run
+     */
     public static RenderJob of(Path file) { return new RenderJob(Objects.requireNonNull(file, "file"), null, null); }
 
-    /** A job that builds the scene {@code builder} describes when run; the builder is not changed. */
+    /**
+     * A job that builds the scene a builder describes when run; the builder is not changed.
+     *
+     * @param builder the scene description, made in code or read by {@link SceneParser}
+     * @return a job to configure and run
+     */
     public static RenderJob of(SceneBuilder builder) { return new RenderJob(null, Objects.requireNonNull(builder, "builder"), null); }
 
-    /** A job that renders an already built scene; it takes no setting or camera overrides. */
+    /**
+     * A job that renders an already built scene; it takes no setting or camera overrides.
+     *
+     * @param scene the frozen scene
+     * @return a job to configure and run
+     */
     public static RenderJob of(Scene scene) { return new RenderJob(null, null, Objects.requireNonNull(scene, "scene")); }
 
     /**
      * Changes the scene's settings before it is built, for example
-     * {@code s -> s.toBuilder().size(400, 225).build()}; applied to the settings the scene file or builder gives.
+     * {@code s -> s.toBuilder().size(400, 225).build()}; applied to the settings the scene file or
+     * builder gives.
+     *
+     * @param override maps the scene's settings to the ones to render with
+     * @return this job
+     * @throws IllegalStateException if the job has started or was given a built scene
      */
     public RenderJob settings(UnaryOperator<RenderSettings> override) {
         configurable(true);
@@ -99,7 +119,13 @@ public final class RenderJob {
         return this;
     }
 
-    /** Replaces the scene's camera before it is built: {@code change} gets the scene's camera (or the default one). */
+    /**
+     * Replaces the scene's camera before it is built.
+     *
+     * @param change gets the scene's camera (or the default one) and returns the one to render with
+     * @return this job
+     * @throws IllegalStateException if the job has started or was given a built scene
+     */
     public RenderJob camera(UnaryOperator<Camera> change) {
         configurable(true);
         cameraOverride = Objects.requireNonNull(change, "change");
@@ -109,6 +135,10 @@ public final class RenderJob {
     /**
      * Called with the scene as read (or as given), before the overrides: to look at it, or to run
      * work that should overlap with nothing else. Must not keep the builder.
+     *
+     * @param action called once, on the thread that runs the job
+     * @return this job
+     * @throws IllegalStateException if the job has started or was given a built scene
      */
     public RenderJob onLoaded(Consumer<SceneBuilder> action) {
         configurable(true);
@@ -120,6 +150,10 @@ public final class RenderJob {
      * Writes the image to {@code out} when the render is done (format by extension, with the
      * passes the settings ask for beside it; see {@link RenderResult#write(Path)}). Checked before
      * any work, so an unwritable path fails at once. Without an output nothing is written.
+     *
+     * @param out the image file; its extension names the format
+     * @return this job
+     * @throws IllegalArgumentException if the extension names no supported format
      */
     public RenderJob output(Path out) {
         configurable(false);
@@ -128,7 +162,12 @@ public final class RenderJob {
         return this;
     }
 
-    /** JPEG quality in [0, 1] for a .jpg output (default 0.92). */
+    /**
+     * Sets the JPEG quality of a .jpg output (default 0.92; other formats ignore it).
+     *
+     * @param quality in [0, 1], 1 best
+     * @return this job
+     */
     public RenderJob jpegQuality(double quality) {
         configurable(false);
         new ImageOptions(true, quality); // validates
@@ -136,7 +175,13 @@ public final class RenderJob {
         return this;
     }
 
-    /** Render threads, at least 1 (default: every core the JVM reports). The image does not depend on it. */
+    /**
+     * Sets the number of render threads (default: every core the JVM reports). The image does not
+     * depend on it.
+     *
+     * @param n at least 1
+     * @return this job
+     */
     public RenderJob threads(int n) {
         configurable(false);
         if (n < 1) throw new IllegalArgumentException("threads must be at least 1, found " + n);
@@ -144,7 +189,12 @@ public final class RenderJob {
         return this;
     }
 
-    /** Where to report progress (called from render threads); null: nowhere. */
+    /**
+     * Sets where to report progress.
+     *
+     * @param listener called from render threads as tiles finish; null: nowhere
+     * @return this job
+     */
     public RenderJob progress(ProgressListener listener) {
         configurable(false);
         progress = listener;
@@ -154,15 +204,24 @@ public final class RenderJob {
     /** Asks the job to stop: a running render stops between tiles, and the run throws {@link CancellationException}. */
     public void cancel() { cancelled.set(true); }
 
-    /** True once {@link #cancel} was called. */
+    /**
+     * Tells whether {@link #cancel} was called.
+     *
+     * @return true once cancelled
+     */
     public boolean isCancelled() { return cancelled.get(); }
 
-    /** The step the job is in, or the one it failed in after a failure. */
+    /**
+     * The step the job is in, or the one it failed in after a failure.
+     *
+     * @return the current or last step
+     */
     public Stage stage() { return stage; }
 
     /**
      * Runs the job on a new thread; the future's {@code cancel} cancels the job.
      *
+     * @return the result to come; {@code get} throws an ExecutionException wrapping what {@link #run} would throw
      * @throws IllegalStateException if the job was already run or started
      */
     public Future<RenderResult> start() {
@@ -183,6 +242,7 @@ public final class RenderJob {
      * Runs the job on the calling thread and returns the result, after writing it if an output was
      * given. Interrupting the thread stops the render.
      *
+     * @return the finished render
      * @throws IOException                 if the scene file cannot be read or the image cannot be written
      * @throws IllegalArgumentException    for bad input: a scene file error ({@link lt.spindulys.io.SceneException}),
      *                                     bad settings, a scene that cannot be built, or a frame the heap cannot hold

@@ -44,34 +44,68 @@ public final class RenderResult {
         return new RenderResult(settings, frame, passes, stats, load, build);
     }
 
-    /** The frame: linear RGB doubles, unclamped (what a PFM file holds). */
+    /**
+     * The frame: linear RGB doubles, unclamped (what a PFM file holds).
+     *
+     * @return the frame buffer, shared
+     */
     public FrameBuffer frame() { return frame; }
 
     /**
      * The frame as an 8-bit RGB image, encoded as the scene's settings say ({@link RenderSettings#srgb()}):
      * the pixels a PNG written by {@link #write(Path)} holds. A new image each call.
+     *
+     * @return a {@code TYPE_INT_RGB} image of the frame
      */
     public BufferedImage image() { return frame.toBufferedImage(settings.srgb()); }
 
-    /** The render passes the settings asked for ({@link RenderSettings#aovs()}), or empty when they asked for none. */
+    /**
+     * The render passes the settings asked for ({@link RenderSettings#aovs()}), or empty when they asked for none.
+     *
+     * @return the passes, or empty
+     */
     public Optional<AovFrame> passes() { return Optional.ofNullable(passes); }
 
-    /** Rays traced by kind and the wall time of the render itself. */
+    /**
+     * Rays traced by kind and the wall time of the render itself.
+     *
+     * @return the render's statistics
+     */
     public RenderStats stats() { return stats; }
 
-    /** Seconds a {@link RenderJob} spent reading the scene file (0 when it was given a scene). */
+    /**
+     * Seconds a {@link RenderJob} spent reading the scene file (0 when it was given a scene).
+     *
+     * @return seconds, at least 0
+     */
     public double loadSeconds() { return loadSeconds; }
 
-    /** Seconds a {@link RenderJob} spent building the scene (0 when it was given a built scene). */
+    /**
+     * Seconds a {@link RenderJob} spent building the scene (0 when it was given a built scene).
+     *
+     * @return seconds, at least 0
+     */
     public double buildSeconds() { return buildSeconds; }
 
-    /** The settings the frame was rendered with (size, samples, sRGB, passes, ...). */
+    /**
+     * The settings the frame was rendered with (size, samples, sRGB, passes, ...).
+     *
+     * @return the settings
+     */
     public RenderSettings settings() { return settings; }
 
-    /** Image width in pixels. */
+    /**
+     * Image width in pixels.
+     *
+     * @return the width, at least 1
+     */
     public int width() { return frame.width(); }
 
-    /** Image height in pixels. */
+    /**
+     * Image height in pixels.
+     *
+     * @return the height, at least 1
+     */
     public int height() { return frame.height(); }
 
     /**
@@ -80,6 +114,7 @@ public final class RenderResult {
      * ({@link lt.spindulys.image.Aov#fileBeside}); all files are written atomically as one group,
      * so a failure leaves none of the new files and every old one.
      *
+     * @param out the image file
      * @throws IllegalArgumentException if the extension names no supported format
      * @throws IOException if a file cannot be written (the message names it)
      */
@@ -88,8 +123,10 @@ public final class RenderResult {
     }
 
     /**
-     * {@link #write(Path)} with a JPEG quality in [0, 1] (1 best; other formats ignore it).
+     * {@link #write(Path)} with a JPEG quality.
      *
+     * @param out         the image file
+     * @param jpegQuality in [0, 1], 1 best; other formats ignore it
      * @throws IllegalArgumentException if the quality is outside [0, 1] or the extension names no format
      * @throws IOException if a file cannot be written
      */

@@ -3,11 +3,24 @@ package lt.spindulys.render;
 /**
  * What a render did: rays traced by kind and the wall time of the render phase.
  *
- * @param seconds wall-clock seconds spent tracing (camera rays to finished frame)
+ * @param cameraRays     rays from the camera, one per sample (plus one per pixel for render passes)
+ * @param shadowRays     rays towards lights
+ * @param reflectionRays mirror rays
+ * @param refractionRays rays through transparent surfaces
+ * @param seconds        wall-clock seconds spent tracing (camera rays to finished frame)
  */
 public record RenderStats(long cameraRays, long shadowRays, long reflectionRays, long refractionRays, double seconds) {
+    /**
+     * All rays traced.
+     *
+     * @return the sum of the four kinds
+     */
     public long totalRays() { return cameraRays + shadowRays + reflectionRays + refractionRays; }
 
-    /** Millions of rays per second of the render phase. */
+    /**
+     * Millions of rays per second of the render phase.
+     *
+     * @return the rate, or 0 when no time was measured
+     */
     public double mraysPerSecond() { return seconds > 0 ? totalRays() / seconds / 1e6 : 0; }
 }

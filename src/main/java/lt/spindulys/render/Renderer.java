@@ -79,6 +79,8 @@ public final class Renderer {
      * from a built scene to an image. Use a {@link RenderJob} for progress, cancellation, fewer
      * threads, or the whole route from a scene file to written files.
      *
+     * @param scene the frozen scene, with its settings and camera
+     * @return the finished frame, its passes and statistics
      * @throws lt.spindulys.limits.InsufficientMemoryException (an IllegalArgumentException) if
      *         the heap cannot hold the frame and its passes
      * @throws InterruptedException if the calling thread is interrupted (the workers are stopped)
@@ -92,8 +94,13 @@ public final class Renderer {
      * {@code progress} (null: no reports). The image is the same for any thread count.
      * Interrupting the calling thread stops the workers and throws InterruptedException.
      *
+     * @param scene    the frozen scene, with its settings and camera
+     * @param threads  render threads, at least 1
+     * @param progress told of the pixels done as tiles finish, from render threads; null: nobody
+     * @return the finished frame, its passes and statistics
      * @throws lt.spindulys.limits.InsufficientMemoryException (an IllegalArgumentException) if
      *         the heap cannot hold the frame and its passes ({@link FrameBuffer#checkHeap})
+     * @throws InterruptedException if the calling thread is interrupted (the workers are stopped)
      */
     public static RenderResult render(Scene scene, int threads, ProgressListener progress) throws InterruptedException {
         return render(scene, threads, progress, null);

@@ -13,6 +13,11 @@ public final class TerminalProgress implements ProgressListener {
     private long lastDraw;
     private int lastLength;
 
+    /**
+     * A bar drawn on {@code out}, which should be a terminal (the command line's standard error).
+     *
+     * @param out where to draw
+     */
     public TerminalProgress(PrintStream out) { this.out = out; }
 
     @Override
