@@ -16,6 +16,7 @@ import lt.spindulys.accel.PrimitiveHit;
 import lt.spindulys.accel.PrimitiveSet;
 import lt.spindulys.accel.PrimitiveVisitor;
 import lt.spindulys.accel.TraversalScratch;
+import lt.spindulys.accel.WatertightTriangles;
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Placement;
 import lt.spindulys.math.Ranges;
@@ -675,69 +676,21 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
 
     @Override
     public boolean intersect(int i, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
-        return test(i, i + 1, null, ray, hit, ctx);
+        return WatertightTriangles.test(tri, pos, null, i, i + 1, ray, hit, ctx);
     }
 
     @Override
     public boolean occluded(int i, Ray ray, TraversalScratch ctx) {
-        return test(i, i + 1, null, ray, null, ctx);
+        return WatertightTriangles.test(tri, pos, null, i, i + 1, ray, null, ctx);
     }
 
     @Override
     public boolean intersectRange(int[] prims, int from, int to, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
-        return test(from, to, prims, ray, hit, ctx);
+        return WatertightTriangles.test(tri, pos, prims, from, to, ray, hit, ctx);
     }
 
     @Override
     public boolean occludedRange(int[] prims, int from, int to, Ray ray, TraversalScratch ctx) {
-        return test(from, to, prims, ray, null, ctx);
-    }
-
-    /**
-     * The watertight test of triangles prims[from..to) (or from..to themselves when prims is
-     * null), with the per-ray constants read once. Vertices are translated to the ray origin,
-     * permuted so the ray runs along the (new) z axis and sheared so it becomes the z axis
-     * itself; the 2D edge functions of the vertices then decide the hit. Each vertex is
-     * transformed the same way whichever triangle it is used by, and an edge's function in one
-     * triangle is exactly the negation of its function in the neighbour (products commute, IEEE
-     * subtraction is antisymmetric), so a ray can never pass between two triangles that share
-     * the edge. With {@code hit} null this is an any-hit query and returns at the first hit;
-     * otherwise every hit nearer than ray.tMax is recorded and shrinks ray.tMax.
-     */
-    private boolean test(int from, int to, int[] prims, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
-        ctx.direction(ray);
-        final int kx = ctx.shearKx, ky = ctx.shearKy, kz = ctx.shearKz;
-        final double sx = ctx.shearSx, sy = ctx.shearSy, sz = ctx.shearSz;
-        final double okx = kx == 0 ? ray.ox : kx == 1 ? ray.oy : ray.oz;
-        final double oky = ky == 0 ? ray.ox : ky == 1 ? ray.oy : ray.oz;
-        final double okz = kz == 0 ? ray.ox : kz == 1 ? ray.oy : ray.oz;
-        final double tMin = ray.tMin;
-        final int[] tri = this.tri;
-        final double[] pos = this.pos;
-        boolean any = false;
-        for (int k = from; k < to; k++) {
-            final int i = prims == null ? k : prims[k];
-            final int i3 = 3 * i;
-            final int a = 3 * tri[i3], b = 3 * tri[i3 + 1], c = 3 * tri[i3 + 2];
-            final double az = pos[a + kz] - okz, bz = pos[b + kz] - okz, cz = pos[c + kz] - okz;
-            final double ax = pos[a + kx] - okx - sx * az, ay = pos[a + ky] - oky - sy * az;
-            final double bx = pos[b + kx] - okx - sx * bz, by = pos[b + ky] - oky - sy * bz;
-            final double cx = pos[c + kx] - okx - sx * cz, cy = pos[c + ky] - oky - sy * cz;
-            final double u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
-            if (Math.min(u, Math.min(v, w)) < 0 && Math.max(u, Math.max(v, w)) > 0) continue; // signs differ: outside
-            final double det = u + v + w;
-            if (det == 0) continue;
-            final double t = (u * (sz * az) + v * (sz * bz) + w * (sz * cz)) / det;
-            if (!(t > tMin && t < ray.tMax)) continue;
-            if (hit == null) return true;
-            double inv = 1 / det;
-            hit.t = t;
-            hit.prim = i;
-            hit.u = v * inv;
-            hit.v = w * inv;
-            ray.tMax = t;
-            any = true;
-        }
-        return any;
+        return WatertightTriangles.test(tri, pos, prims, from, to, ray, null, ctx);
     }
 }
