@@ -15,9 +15,9 @@ import lt.spindulys.accel.PrimitiveHit;
 import lt.spindulys.accel.PrimitiveSet;
 import lt.spindulys.accel.PrimitiveVisitor;
 import lt.spindulys.accel.TraversalScratch;
+import lt.spindulys.accel.WatertightTriangles;
 import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Placement;
-import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.mesh.MeshData;
 
@@ -35,7 +35,10 @@ import lt.spindulys.mesh.MeshData;
  * Counter-clockwise winding seen from outside gives the outward normal.
  *
  * <p>The mesh is also the {@link PrimitiveSet} of its triangles (in object space), which is what
- * its acceleration structure indexes.
+ * its acceleration structure indexes. The parts that work on index arrays alone live beside it:
+ * the ray test in {@link WatertightTriangles}, the data checks and the closedness census in
+ * {@code MeshTopology}, the crossings CSG pairs into spans in {@code TriangleSpans}; this class
+ * triangulates, owns the arrays and their structures, and shades.
  */
 public final class TriangleMesh extends GObject implements PrimitiveSet {
     /**
@@ -87,7 +90,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         this.prototype = null;
         this.structures = new java.util.EnumMap<>(AcceleratorKind.class);
         this.source = data.source();
-        validate(data);
+        MeshTopology.validate(data);
         pos = data.positions();
         normals = data.normals();
         uvs = data.uvs();
@@ -140,7 +143,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         triUv = anyUv ? (k == total ? tu : Arrays.copyOf(tu, 3 * k)) : null;
         needsVertexNormals = anyWithout;
         bounds = k == 0 ? Bounds.EMPTY : new Bounds(x0, y0, z0, x1, y1, z1);
-        closed = k > 0 && everyEdgeTwice();
+        closed = k > 0 && MeshTopology.everyEdgeTwice(tri, triangleCount, pos);
         smooth(data.normalIndex() != null);
     }
 
@@ -199,40 +202,6 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
 
     private String where() {
         return source == null ? "" : source + ": ";
-    }
-
-    private static void validate(MeshData d) {
-        String w = d.source() == null ? "mesh: " : d.source() + ": ";
-        double[] p = d.positions();
-        if (p == null || p.length % 3 != 0) throw new IllegalArgumentException(w + "positions must hold three numbers per vertex");
-        for (double v : p) if (!Ranges.isModest(v)) throw new IllegalArgumentException(w + "vertex positions must be finite and at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude, found " + v);
-        int[] sizes = d.faceSizes(), vi = d.vertexIndex();
-        long corners = 0;
-        for (int f = 0; f < sizes.length; f++) {
-            if (sizes[f] < 3) throw new IllegalArgumentException(w + "face " + (f + 1) + " has " + sizes[f] + " vertices, expected at least 3");
-            corners += sizes[f];
-        }
-        if (corners != vi.length) throw new IllegalArgumentException(w + "face sizes add up to " + corners + " corners but there are " + vi.length + " vertex indices");
-        checkIndices(w, "vertex", vi, p.length / 3, false);
-        checkOptional(w, "normal", d.normalIndex(), d.normals(), vi.length);
-        checkOptional(w, "texture coordinate", d.uvIndex(), d.uvs(), vi.length);
-        if (d.uvs() != null && d.uvs().length % 2 != 0) throw new IllegalArgumentException(w + "texture coordinates must hold two numbers each");
-    }
-
-    private static void checkOptional(String w, String what, int[] index, double[] values, int corners) {
-        if (index == null) return;
-        if (index.length != corners) throw new IllegalArgumentException(w + what + " indices: " + index.length + " for " + corners + " corners");
-        int stride = what.equals("normal") ? 3 : 2;
-        checkIndices(w, what, index, values == null ? 0 : values.length / stride, true);
-    }
-
-    private static void checkIndices(String w, String what, int[] index, int count, boolean optional) {
-        for (int i = 0; i < index.length; i++) {
-            int v = index[i];
-            if (v >= count || v < (optional ? -1 : 0)) {
-                throw new IllegalArgumentException(w + what + " index " + v + " at corner " + i + " is out of range (there are " + count + ")");
-            }
-        }
     }
 
     private boolean zeroArea(int a, int b, int c) {
@@ -305,81 +274,12 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     }
 
     /**
-     * Every undirected edge in exactly two triangles. Vertices are first merged by position, so
-     * a mesh whose file repeats a position (split at a texture seam, say) still counts as closed;
-     * the watertight test sees such copies as the same point.
-     */
-    private boolean everyEdgeTwice() {
-        return edgeUse(true) == 0;
-    }
-
-    /**
      * Edges used by exactly one triangle, vertices merged by position as for {@link #isClosed()}:
      * the edges along the holes of an open mesh (0 for a closed one; an edge shared by three or
      * more triangles also keeps a mesh from being closed but is not a boundary edge).
      */
     public int boundaryEdgeCount() {
-        return edgeUse(false);
-    }
-
-    /**
-     * The one edge census behind {@link #everyEdgeTwice()} and {@link #boundaryEdgeCount()}:
-     * undirected edges between welded vertices, sorted, counted by use. Returns the number of
-     * edges used once; with {@code stopAtFirstBad} it returns 1 as soon as any edge is used other
-     * than twice, 0 if none is.
-     */
-    private int edgeUse(boolean stopAtFirstBad) {
-        int[] id = weld(pos);
-        long[] keys = new long[3 * triangleCount];
-        for (int t = 0; t < triangleCount; t++) {
-            for (int e = 0; e < 3; e++) {
-                int a = id[tri[3 * t + e]], b = id[tri[3 * t + (e + 1) % 3]];
-                keys[3 * t + e] = ((long) Math.min(a, b) << 32) | Math.max(a, b);
-            }
-        }
-        Arrays.parallelSort(keys); // millions of edges on large meshes; the sorted result is the same
-        int once = 0;
-        for (int i = 0; i < keys.length; ) {
-            int j = i + 1;
-            while (j < keys.length && keys[j] == keys[i]) j++;
-            if (j - i != 2 && stopAtFirstBad) return 1;
-            if (j - i == 1) once++;
-            i = j;
-        }
-        return once;
-    }
-
-    /** For each vertex, the lowest index of a vertex at the same position (open-addressing hash). */
-    private static int[] weld(double[] p) {
-        int n = p.length / 3;
-        int cap = 16;
-        while (cap < 2 * n) cap <<= 1;
-        int mask = cap - 1;
-        int[] table = new int[cap];
-        Arrays.fill(table, -1);
-        int[] id = new int[n];
-        for (int v = 0; v < n; v++) {
-            double x = p[3 * v], y = p[3 * v + 1], z = p[3 * v + 2];
-            // + 0.0 turns -0.0 into 0.0, which compare equal and must hash alike.
-            long h = Double.doubleToLongBits(x + 0.0) * 0x9E3779B97F4A7C15L
-                    ^ Double.doubleToLongBits(y + 0.0) * 0xC2B2AE3D27D4EB4FL
-                    ^ Double.doubleToLongBits(z + 0.0) * 0x165667B19E3779F9L;
-            int slot = (int) (h ^ (h >>> 29) ^ (h >>> 47)) & mask;
-            while (true) {
-                int u = table[slot];
-                if (u < 0) {
-                    table[slot] = v;
-                    id[v] = v;
-                    break;
-                }
-                if (p[3 * u] == x && p[3 * u + 1] == y && p[3 * u + 2] == z) {
-                    id[v] = u;
-                    break;
-                }
-                slot = (slot + 1) & mask;
-            }
-        }
-        return id;
+        return MeshTopology.boundaryEdgeCount(tri, triangleCount, pos);
     }
 
     // ---- GObject ----
@@ -470,152 +370,15 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         sd.setDerivatives(e1x, e1y, e1z, e2x, e2y, e2z);
     }
 
-    /**
-     * Collects every crossing of the whole line (ignoring tMin/tMax, so the inside state at any t
-     * is known), sorts them, merges the duplicates a line through a shared edge or vertex produces,
-     * and pairs entering (against the outward normal) with leaving crossings by a running count.
-     */
+    /** The crossings of the whole line, paired into spans: see {@code TriangleSpans.spans}. */
     @Override
     protected void spansLocal(Ray ray, SpanBuffer out, TraceContext ctx) {
-        double tMin = ray.tMin, tMax = ray.tMax;
-        ctx.crossingCount = 0;
-        ray.tMin = Double.NEGATIVE_INFINITY;
-        ray.tMax = Double.POSITIVE_INFINITY;
-        try {
-            accel.visit(ray, ctx, crossingCollector);
-        } finally {
-            ray.tMin = tMin;
-            ray.tMax = tMax;
-        }
-        int n = ctx.crossingCount;
-        double[] c = ctx.crossings;
-        sortCrossings(c, n);
-        int inside = 0, start = -1;
-        for (int k = 0; k < n; k++) {
-            int o = 4 * k;
-            boolean entering = c[o + 1] >= 0;
-            if (k > 0 && c[o] == c[o - 4] && entering == (c[o - 3] >= 0)) continue; // same point, same facing
-            if (entering) {
-                if (inside++ == 0) start = o;
-            } else if (inside > 0 && --inside == 0) {
-                // Zero-length spans (a line grazing an edge or vertex from outside) enclose nothing.
-                double tIn = c[start], tOut = c[o];
-                if (tOut > tIn && tOut > tMin && tIn < tMax) {
-                    out.add(tIn, this, (int) c[start + 1], c[start + 2], c[start + 3],
-                            tOut, this, (int) (-1 - c[o + 1]), c[o + 2], c[o + 3]);
-                }
-            }
-            // A leaving crossing while outside can only come from an inconsistently wound mesh; ignored.
-        }
+        TriangleSpans.spans(accel, crossingCollector, this, ray, out, ctx);
     }
 
-    /**
-     * Appends the crossing of the line with triangle {@code i}, if any, to the context's
-     * crossing list as (t, code, u, v) with code = i when entering and -1 - i when leaving. A
-     * line through an edge or vertex gets a t that depends only on that edge or vertex, so the
-     * duplicates from the triangles sharing it compare exactly equal.
-     */
     private void collectCrossing(int i, Ray ray, TraversalScratch traversal) {
         // The structure hands back the context spansLocal gave it; the crossing list is the scene's scratch.
-        TraceContext ctx = (TraceContext) traversal;
-        ctx.direction(ray);
-        final int kx = ctx.shearKx, ky = ctx.shearKy, kz = ctx.shearKz;
-        final double sx = ctx.shearSx, sy = ctx.shearSy, sz = ctx.shearSz;
-        final double okx = kx == 0 ? ray.ox : kx == 1 ? ray.oy : ray.oz;
-        final double oky = ky == 0 ? ray.ox : ky == 1 ? ray.oy : ray.oz;
-        final double okz = kz == 0 ? ray.ox : kz == 1 ? ray.oy : ray.oz;
-        final int i3 = 3 * i;
-        final int a = 3 * tri[i3], b = 3 * tri[i3 + 1], c = 3 * tri[i3 + 2];
-        final double az = pos[a + kz] - okz, bz = pos[b + kz] - okz, cz = pos[c + kz] - okz;
-        final double ax = pos[a + kx] - okx - sx * az, ay = pos[a + ky] - oky - sy * az;
-        final double bx = pos[b + kx] - okx - sx * bz, by = pos[b + ky] - oky - sy * bz;
-        final double cx = pos[c + kx] - okx - sx * cz, cy = pos[c + ky] - oky - sy * cz;
-        final double u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
-        if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return;
-        final double det = u + v + w;
-        if (det == 0) return;
-        final double saz = sz * az, sbz = sz * bz, scz = sz * cz;
-        double t;
-        if (u != 0 && v != 0 && w != 0) {
-            t = (u * saz + v * sbz + w * scz) / det;
-        } else if (v == 0 && w == 0) {
-            t = saz;
-        } else if (u == 0 && w == 0) {
-            t = sbz;
-        } else if (u == 0 && v == 0) {
-            t = scz;
-        } else if (u == 0) {
-            t = edgeT(bx, by, sbz, cx, cy, scz);
-        } else if (v == 0) {
-            t = edgeT(ax, ay, saz, cx, cy, scz);
-        } else {
-            t = edgeT(ax, ay, saz, bx, by, sbz);
-        }
-        int k = ctx.crossingCount, o = 4 * k;
-        double[] list = ctx.crossings;
-        if (o + 4 > list.length) list = ctx.crossings = Arrays.copyOf(list, Math.max(2 * list.length, 64));
-        double inv = 1 / det;
-        list[o] = t;
-        // The signed projected area det is positive exactly when dot(ng, d) < 0: the line enters.
-        list[o + 1] = det > 0 ? i : -1 - i;
-        list[o + 2] = v * inv;
-        list[o + 3] = w * inv;
-        ctx.crossingCount = k + 1;
-    }
-
-    /**
-     * Where the line (the sheared origin, (0, 0)) crosses edge pq, computed from the two ends in a
-     * fixed order so that both triangles sharing the edge get the identical value.
-     */
-    private static double edgeT(double px, double py, double pz, double qx, double qy, double qz) {
-        if (px > qx || px == qx && (py > qy || py == qy && pz > qz)) {
-            double s = px; px = qx; qx = s;
-            s = py; py = qy; qy = s;
-            s = pz; pz = qz; qz = s;
-        }
-        double dx = qx - px, dy = qy - py;
-        double f = Math.abs(dx) >= Math.abs(dy) ? -px / dx : -py / dy;
-        return pz + f * (qz - pz);
-    }
-
-    /** Sorts (t, code, u, v) records by t, entering before leaving at equal t. */
-    private static void sortCrossings(double[] c, int n) {
-        if (n <= 32) {
-            for (int i = 1; i < n; i++) {
-                for (int j = i; j > 0 && before(c, j, j - 1); j--) swap(c, j, j - 1);
-            }
-            return;
-        }
-        // Heapsort: in place and O(n log n) for the rare line that crosses a dense mesh many times.
-        for (int i = n / 2 - 1; i >= 0; i--) siftDown(c, i, n);
-        for (int end = n - 1; end > 0; end--) {
-            swap(c, 0, end);
-            siftDown(c, 0, end);
-        }
-    }
-
-    private static void siftDown(double[] c, int i, int n) {
-        while (true) {
-            int l = 2 * i + 1;
-            if (l >= n) return;
-            int m = l + 1 < n && before(c, l, l + 1) ? l + 1 : l;
-            if (!before(c, i, m)) return;
-            swap(c, i, m);
-            i = m;
-        }
-    }
-
-    private static boolean before(double[] c, int i, int j) {
-        double ti = c[4 * i], tj = c[4 * j];
-        return ti < tj || ti == tj && c[4 * i + 1] >= 0 && c[4 * j + 1] < 0;
-    }
-
-    private static void swap(double[] c, int i, int j) {
-        for (int k = 0; k < 4; k++) {
-            double s = c[4 * i + k];
-            c[4 * i + k] = c[4 * j + k];
-            c[4 * j + k] = s;
-        }
+        TriangleSpans.addCrossing(tri, pos, i, ray, (TraceContext) traversal);
     }
 
     // ---- PrimitiveSet: the triangles, in object space ----
@@ -674,69 +437,21 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
 
     @Override
     public boolean intersect(int i, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
-        return test(i, i + 1, null, ray, hit, ctx);
+        return WatertightTriangles.test(tri, pos, null, i, i + 1, ray, hit, ctx);
     }
 
     @Override
     public boolean occluded(int i, Ray ray, TraversalScratch ctx) {
-        return test(i, i + 1, null, ray, null, ctx);
+        return WatertightTriangles.test(tri, pos, null, i, i + 1, ray, null, ctx);
     }
 
     @Override
     public boolean intersectRange(int[] prims, int from, int to, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
-        return test(from, to, prims, ray, hit, ctx);
+        return WatertightTriangles.test(tri, pos, prims, from, to, ray, hit, ctx);
     }
 
     @Override
     public boolean occludedRange(int[] prims, int from, int to, Ray ray, TraversalScratch ctx) {
-        return test(from, to, prims, ray, null, ctx);
-    }
-
-    /**
-     * The watertight test of triangles prims[from..to) (or from..to themselves when prims is
-     * null), with the per-ray constants read once. Vertices are translated to the ray origin,
-     * permuted so the ray runs along the (new) z axis and sheared so it becomes the z axis
-     * itself; the 2D edge functions of the vertices then decide the hit. Each vertex is
-     * transformed the same way whichever triangle it is used by, and an edge's function in one
-     * triangle is exactly the negation of its function in the neighbour (products commute, IEEE
-     * subtraction is antisymmetric), so a ray can never pass between two triangles that share
-     * the edge. With {@code hit} null this is an any-hit query and returns at the first hit;
-     * otherwise every hit nearer than ray.tMax is recorded and shrinks ray.tMax.
-     */
-    private boolean test(int from, int to, int[] prims, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
-        ctx.direction(ray);
-        final int kx = ctx.shearKx, ky = ctx.shearKy, kz = ctx.shearKz;
-        final double sx = ctx.shearSx, sy = ctx.shearSy, sz = ctx.shearSz;
-        final double okx = kx == 0 ? ray.ox : kx == 1 ? ray.oy : ray.oz;
-        final double oky = ky == 0 ? ray.ox : ky == 1 ? ray.oy : ray.oz;
-        final double okz = kz == 0 ? ray.ox : kz == 1 ? ray.oy : ray.oz;
-        final double tMin = ray.tMin;
-        final int[] tri = this.tri;
-        final double[] pos = this.pos;
-        boolean any = false;
-        for (int k = from; k < to; k++) {
-            final int i = prims == null ? k : prims[k];
-            final int i3 = 3 * i;
-            final int a = 3 * tri[i3], b = 3 * tri[i3 + 1], c = 3 * tri[i3 + 2];
-            final double az = pos[a + kz] - okz, bz = pos[b + kz] - okz, cz = pos[c + kz] - okz;
-            final double ax = pos[a + kx] - okx - sx * az, ay = pos[a + ky] - oky - sy * az;
-            final double bx = pos[b + kx] - okx - sx * bz, by = pos[b + ky] - oky - sy * bz;
-            final double cx = pos[c + kx] - okx - sx * cz, cy = pos[c + ky] - oky - sy * cz;
-            final double u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
-            if (Math.min(u, Math.min(v, w)) < 0 && Math.max(u, Math.max(v, w)) > 0) continue; // signs differ: outside
-            final double det = u + v + w;
-            if (det == 0) continue;
-            final double t = (u * (sz * az) + v * (sz * bz) + w * (sz * cz)) / det;
-            if (!(t > tMin && t < ray.tMax)) continue;
-            if (hit == null) return true;
-            double inv = 1 / det;
-            hit.t = t;
-            hit.prim = i;
-            hit.u = v * inv;
-            hit.v = w * inv;
-            ray.tMax = t;
-            any = true;
-        }
-        return any;
+        return WatertightTriangles.test(tri, pos, prims, from, to, ray, null, ctx);
     }
 }
