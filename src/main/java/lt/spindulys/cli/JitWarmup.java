@@ -2,6 +2,7 @@ package lt.spindulys.cli;
 
 import java.util.ArrayDeque;
 import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
 
 import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.accel.WideBvh;
@@ -36,14 +37,23 @@ import lt.spindulys.scene.TriangleMesh;
  */
 final class JitWarmup implements AutoCloseable {
     /** Enough renders to compile the hot paths (measured on the 1m torus: 6 left the render slower, 40 slowed the parse). */
-    private static final int MAX_RENDERS = 15;
+    static final int MAX_RENDERS = 15;
     /** Meshes this large are walked with the wide tree (smaller ones are a few leaves). */
     private static final int MESH_TRIANGLES = 64;
 
+    /** One warm-up render; a seam so that tests can see what the warm-up does without timing it. */
+    @FunctionalInterface
+    interface Work {
+        void render() throws InterruptedException;
+    }
+
     private final AtomicBoolean stop = new AtomicBoolean();
+    private final AtomicInteger renders = new AtomicInteger();
+    private final Work work;
     private final Thread thread;
 
-    private JitWarmup() {
+    private JitWarmup(Work work) {
+        this.work = work;
         thread = new Thread(this::run, "spindulys-warmup");
         thread.setDaemon(true);
         thread.setPriority(Thread.MIN_PRIORITY);
@@ -51,19 +61,37 @@ final class JitWarmup implements AutoCloseable {
 
     /** Starts warming up on a new background thread. */
     static JitWarmup start() {
-        JitWarmup w = new JitWarmup();
+        return start(new SceneRenders());
+    }
+
+    /** Starts {@code work}, at most {@link #MAX_RENDERS} times, on a new background thread (tests give their own). */
+    static JitWarmup start(Work work) {
+        JitWarmup w = new JitWarmup(work);
         w.thread.start();
         return w;
     }
 
     private void run() {
         try {
-            Scene scene = scene();
-            for (int i = 0; i < MAX_RENDERS && !stop.get(); i++) Renderer.render(scene, 1, ProgressListener.NONE);
+            for (int i = 0; i < MAX_RENDERS && !stop.get(); i++) {
+                work.render();
+                renders.incrementAndGet();
+            }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         } catch (RuntimeException e) {
             // Only speed depends on the warm-up; a failure here must not fail the real render.
+        }
+    }
+
+    /** The real work: the built-in scene, built on the warm-up thread at the first render, rendered on one thread. */
+    private static final class SceneRenders implements Work {
+        private Scene scene;
+
+        @Override
+        public void render() throws InterruptedException {
+            if (scene == null) scene = scene();
+            Renderer.render(scene, 1, ProgressListener.NONE);
         }
     }
 
@@ -88,18 +116,28 @@ final class JitWarmup implements AutoCloseable {
      * up to 0.25 s for nothing.
      */
     void finishFor(SceneBuilder scene, AcceleratorKind accel) throws InterruptedException {
-        if (scene.objects().stream().noneMatch(JitWarmup::hasMesh) || accel != AcceleratorKind.BVH || !WideBvh.AVAILABLE) {
-            close();
-            return;
-        }
-        thread.join();
+        if (waitsFor(scene, accel)) thread.join();
         close();
     }
 
-    /** Whether the warm-up thread has ended within {@code millis}, 0 for now (for tests). */
-    boolean ended(long millis) throws InterruptedException {
-        if (millis > 0) thread.join(millis);
+    /** Whether {@link #finishFor} waits for the warm-up: the scene has a mesh walked with the wide vector tree. */
+    static boolean waitsFor(SceneBuilder scene, AcceleratorKind accel) {
+        return accel == AcceleratorKind.BVH && WideBvh.AVAILABLE && scene.objects().stream().anyMatch(JitWarmup::hasMesh);
+    }
+
+    /** Whether the warm-up thread has ended (for tests). */
+    boolean ended() {
         return !thread.isAlive();
+    }
+
+    /** Waits until the warm-up thread has ended (for tests). */
+    void join() throws InterruptedException {
+        thread.join();
+    }
+
+    /** Renders finished so far (for tests). */
+    int renders() {
+        return renders.get();
     }
 
     private static boolean hasMesh(GObject top) {
