@@ -30,13 +30,17 @@ import lt.spindulys.scene.TriangleMesh;
  *
  * <p>Why: parsing is single-threaded, so one core is idle, and a new JVM runs the first part of
  * a render in interpreted and provisionally compiled code. The vector box test suffers most: its
- * vectors are real objects until the JIT compiles the traversal, and a 2M-triangle render on a
- * cold JVM took 0.74-0.78 s instead of 0.54 s for the scalar tree (0.22 s warm). Warming up on
- * this scene's rays compiles the traversal, the triangle test, shading and shadow rays first.
+ * vectors are real objects until the JIT compiles the traversal, so on a cold JVM a large mesh
+ * renders slower with the wide tree than with the scalar one, and several times slower than warm
+ * (docs/performance.md, the wide vector BVH). Warming up on this scene's rays compiles the
+ * traversal, the triangle test, shading and shadow rays first.
  * The warm-up shares nothing with the real scene; the image is the same with or without it.
  */
 final class JitWarmup implements AutoCloseable {
-    /** Enough renders to compile the hot paths (measured on the 1m torus: 6 left the render slower, 40 slowed the parse). */
+    /**
+     * Enough renders to compile the hot paths, few enough to end within a large scene's parse
+     * (fewer left the render slower, many more slowed the parse; see docs/performance.md).
+     */
     static final int MAX_RENDERS = 15;
     /** Meshes this large are walked with the wide tree (smaller ones are a few leaves). */
     private static final int MESH_TRIANGLES = 64;
@@ -97,8 +101,8 @@ final class JitWarmup implements AutoCloseable {
 
     /**
      * Stops the warm-up without waiting for it: a render in progress is abandoned (its worker
-     * finishes the tile it is on and exits), but building the small scene cannot be cut short
-     * (about 0.1 s on a cold JVM), and the command need not wait for that. Idempotent.
+     * finishes the tile it is on and exits), but building the small scene cannot be cut short,
+     * and the command need not wait for that. Idempotent.
      */
     @Override
     public void close() {
@@ -107,13 +111,12 @@ final class JitWarmup implements AutoCloseable {
     }
 
     /**
-     * Waits for the warm-up to finish its renders (at most a few tenths of a second) when the
-     * scene's meshes will be walked with the wide vector tree, the code it compiles, and stops it
-     * otherwise. A short parse ends long before the warm-up, and a small mesh scene then rendered
-     * on a cold JVM: the 2k-triangle benchmark frame in 0.72-0.78 s instead of 0.17-0.21 s after a
-     * finished warm-up (whole process 1.0-1.1 s against 0.64-0.85 s); a scene of spheres, or one
-     * whose structure is another ({@code accel}, the scene's or the command line's), would pay
-     * up to 0.25 s for nothing.
+     * Waits for the warm-up to finish its renders when the scene's meshes will be walked with the
+     * wide vector tree, the code it compiles, and stops it otherwise. A short parse ends long
+     * before the warm-up, and a small mesh scene then rendered on a cold JVM took several times
+     * as long as after a finished warm-up, more than the wait; a scene of spheres, or one whose
+     * structure is another ({@code accel}, the scene's or the command line's), would wait for
+     * nothing (figures in docs/performance.md, the wide vector BVH).
      */
     void finishFor(SceneBuilder scene, AcceleratorKind accel) throws InterruptedException {
         if (waitsFor(scene, accel)) thread.join();
@@ -154,7 +157,7 @@ final class JitWarmup implements AutoCloseable {
         return false;
     }
 
-    /** The benchmark's view of a small torus; 96 x 54 pixels, so one render takes a few milliseconds. */
+    /** The benchmark's view of a small torus; 96 x 54 pixels, so that the renders are short beside a large parse. */
     static Scene scene() {
         SceneBuilder b = new SceneBuilder()
                 .settings(RenderSettings.DEFAULT.withSize(96, 54).withAmbient(Color.BLACK).withSrgb(true))
