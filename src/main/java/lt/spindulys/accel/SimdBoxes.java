@@ -49,7 +49,8 @@ final class SimdBoxes {
         t1 = t1.abs().mul(GAMMA).add(t1);
         VectorMask<Float> m = t0.compare(VectorOperators.LE, t1);
         // The lanes hit are read back from the stored distances, not with VectorMask.toLong():
-        // JDK 17 does not compile that to an instruction (the render took 1.3x as long).
+        // JDK 17 does not compile that to an instruction, which made the whole render slower
+        // (docs/performance.md, the wide vector BVH).
         if (!m.anyTrue()) return 0;
         t0.blend(Float.POSITIVE_INFINITY, m.not()).intoArray(dist, 0);
         int bits = 0;

@@ -24,8 +24,8 @@ public final class WideBvh implements Accelerator {
      * Per node 48 signed bytes: the children's planes on the node's grid ({@link #decode}), in
      * rows of eight (min x, max x, min y, max y, min z, max z), each rounded outward so the
      * decoded box holds the child's; an empty lane has min 127 and max -128, a box no ray enters.
-     * A quarter of the memory of float planes (measured: 1.01x the speed at 2M triangles and
-     * 1.07x at 2k, 56.4 instead of 70.6 bytes per triangle with the mesh).
+     * A quarter of the memory of float planes, at no cost in speed (figures in
+     * docs/performance.md, the wide vector BVH).
      */
     private final byte[] q;
     /** Per node six floats: the base and the scale of its planes' grid on x, y and z. */

@@ -2,6 +2,7 @@ package lt.spindulys.cli;
 
 import java.util.ArrayDeque;
 import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
 
 import lt.spindulys.scene.AcceleratorKind;
 import lt.spindulys.accel.WideBvh;
@@ -29,21 +30,34 @@ import lt.spindulys.scene.TriangleMesh;
  *
  * <p>Why: parsing is single-threaded, so one core is idle, and a new JVM runs the first part of
  * a render in interpreted and provisionally compiled code. The vector box test suffers most: its
- * vectors are real objects until the JIT compiles the traversal, and a 2M-triangle render on a
- * cold JVM took 0.74-0.78 s instead of 0.54 s for the scalar tree (0.22 s warm). Warming up on
- * this scene's rays compiles the traversal, the triangle test, shading and shadow rays first.
+ * vectors are real objects until the JIT compiles the traversal, so on a cold JVM a large mesh
+ * renders slower with the wide tree than with the scalar one, and several times slower than warm
+ * (docs/performance.md, the wide vector BVH). Warming up on this scene's rays compiles the
+ * traversal, the triangle test, shading and shadow rays first.
  * The warm-up shares nothing with the real scene; the image is the same with or without it.
  */
 final class JitWarmup implements AutoCloseable {
-    /** Enough renders to compile the hot paths (measured on the 1m torus: 6 left the render slower, 40 slowed the parse). */
-    private static final int MAX_RENDERS = 15;
+    /**
+     * Enough renders to compile the hot paths, few enough to end within a large scene's parse
+     * (fewer left the render slower, many more slowed the parse; see docs/performance.md).
+     */
+    static final int MAX_RENDERS = 15;
     /** Meshes this large are walked with the wide tree (smaller ones are a few leaves). */
     private static final int MESH_TRIANGLES = 64;
 
+    /** One warm-up render; a seam so that tests can see what the warm-up does without timing it. */
+    @FunctionalInterface
+    interface Work {
+        void render() throws InterruptedException;
+    }
+
     private final AtomicBoolean stop = new AtomicBoolean();
+    private final AtomicInteger renders = new AtomicInteger();
+    private final Work work;
     private final Thread thread;
 
-    private JitWarmup() {
+    private JitWarmup(Work work) {
+        this.work = work;
         thread = new Thread(this::run, "spindulys-warmup");
         thread.setDaemon(true);
         thread.setPriority(Thread.MIN_PRIORITY);
@@ -51,15 +65,22 @@ final class JitWarmup implements AutoCloseable {
 
     /** Starts warming up on a new background thread. */
     static JitWarmup start() {
-        JitWarmup w = new JitWarmup();
+        return start(new SceneRenders());
+    }
+
+    /** Starts {@code work}, at most {@link #MAX_RENDERS} times, on a new background thread (tests give their own). */
+    static JitWarmup start(Work work) {
+        JitWarmup w = new JitWarmup(work);
         w.thread.start();
         return w;
     }
 
     private void run() {
         try {
-            Scene scene = scene();
-            for (int i = 0; i < MAX_RENDERS && !stop.get(); i++) Renderer.render(scene, 1, ProgressListener.NONE);
+            for (int i = 0; i < MAX_RENDERS && !stop.get(); i++) {
+                work.render();
+                renders.incrementAndGet();
+            }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         } catch (RuntimeException e) {
@@ -67,10 +88,21 @@ final class JitWarmup implements AutoCloseable {
         }
     }
 
+    /** The real work: the built-in scene, built on the warm-up thread at the first render, rendered on one thread. */
+    private static final class SceneRenders implements Work {
+        private Scene scene;
+
+        @Override
+        public void render() throws InterruptedException {
+            if (scene == null) scene = scene();
+            Renderer.render(scene, 1, ProgressListener.NONE);
+        }
+    }
+
     /**
      * Stops the warm-up without waiting for it: a render in progress is abandoned (its worker
-     * finishes the tile it is on and exits), but building the small scene cannot be cut short
-     * (about 0.1 s on a cold JVM), and the command need not wait for that. Idempotent.
+     * finishes the tile it is on and exits), but building the small scene cannot be cut short,
+     * and the command need not wait for that. Idempotent.
      */
     @Override
     public void close() {
@@ -79,27 +111,36 @@ final class JitWarmup implements AutoCloseable {
     }
 
     /**
-     * Waits for the warm-up to finish its renders (at most a few tenths of a second) when the
-     * scene's meshes will be walked with the wide vector tree, the code it compiles, and stops it
-     * otherwise. A short parse ends long before the warm-up, and a small mesh scene then rendered
-     * on a cold JVM: the 2k-triangle benchmark frame in 0.72-0.78 s instead of 0.17-0.21 s after a
-     * finished warm-up (whole process 1.0-1.1 s against 0.64-0.85 s); a scene of spheres, or one
-     * whose structure is another ({@code accel}, the scene's or the command line's), would pay
-     * up to 0.25 s for nothing.
+     * Waits for the warm-up to finish its renders when the scene's meshes will be walked with the
+     * wide vector tree, the code it compiles, and stops it otherwise. A short parse ends long
+     * before the warm-up, and a small mesh scene then rendered on a cold JVM took several times
+     * as long as after a finished warm-up, more than the wait; a scene of spheres, or one whose
+     * structure is another ({@code accel}, the scene's or the command line's), would wait for
+     * nothing (figures in docs/performance.md, the wide vector BVH).
      */
     void finishFor(SceneBuilder scene, AcceleratorKind accel) throws InterruptedException {
-        if (scene.objects().stream().noneMatch(JitWarmup::hasMesh) || accel != AcceleratorKind.BVH || !WideBvh.AVAILABLE) {
-            close();
-            return;
-        }
-        thread.join();
+        if (waitsFor(scene, accel)) thread.join();
         close();
     }
 
-    /** Whether the warm-up thread has ended within {@code millis}, 0 for now (for tests). */
-    boolean ended(long millis) throws InterruptedException {
-        if (millis > 0) thread.join(millis);
+    /** Whether {@link #finishFor} waits for the warm-up: the scene has a mesh walked with the wide vector tree. */
+    static boolean waitsFor(SceneBuilder scene, AcceleratorKind accel) {
+        return accel == AcceleratorKind.BVH && WideBvh.AVAILABLE && scene.objects().stream().anyMatch(JitWarmup::hasMesh);
+    }
+
+    /** Whether the warm-up thread has ended (for tests). */
+    boolean ended() {
         return !thread.isAlive();
+    }
+
+    /** Waits until the warm-up thread has ended (for tests). */
+    void join() throws InterruptedException {
+        thread.join();
+    }
+
+    /** Renders finished so far (for tests). */
+    int renders() {
+        return renders.get();
     }
 
     private static boolean hasMesh(GObject top) {
@@ -116,7 +157,7 @@ final class JitWarmup implements AutoCloseable {
         return false;
     }
 
-    /** The benchmark's view of a small torus; 96 x 54 pixels, so one render takes a few milliseconds. */
+    /** The benchmark's view of a small torus; 96 x 54 pixels, so that the renders are short beside a large parse. */
     static Scene scene() {
         SceneBuilder b = new SceneBuilder()
                 .settings(RenderSettings.builder().size(96, 54).ambient(Color.BLACK).srgb(true).build())

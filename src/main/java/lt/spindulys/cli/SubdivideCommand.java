@@ -39,9 +39,9 @@ final class SubdivideCommand {
 
     /**
      * Heap refinement needs per refined face at its peak (the levels' meshes, the last one kept),
-     * for the refined mesh alone: no triangles or acceleration structure are built here. Measured:
-     * a 24-quad cube to level 8 (1,572,864 faces) fails at -Xmx175m and passes at -Xmx200m, 110
-     * to 130 bytes a face. docs/performance.md has the figures.
+     * for the refined mesh alone: no triangles or acceleration structure are built here. The
+     * measured peak with a margin above it; the measurement is in docs/performance.md (heap per
+     * refined face).
      */
     static final long BYTES_PER_FACE = 176;
 

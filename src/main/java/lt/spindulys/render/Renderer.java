@@ -66,9 +66,10 @@ public final class Renderer {
 
     /**
      * Stack size of a render thread. A ray recurses through each level of CSG nesting and each
-     * bounce; at {@link lt.spindulys.scene.Bool#MAX_NESTING} levels under maxdepth 64 mirror
-     * bounces it needs about 0.55 MB, interpreted or compiled (measured), so 16 MB leaves a wide
-     * margin. Only the pages a thread touches are committed.
+     * bounce; at {@link lt.spindulys.scene.Bool#MAX_NESTING} levels under as many mirror bounces
+     * as maxdepth allows it needs a small fraction of this, interpreted or compiled (measured: see
+     * docs/performance.md, bounded resources), so the margin is wide. Only the pages a thread
+     * touches are committed.
      */
     static final long WORKER_STACK_BYTES = 16L << 20;
 

@@ -92,11 +92,11 @@ public final class Bool extends GObject {
     /**
      * The deepest CSG nesting allowed: a Bool whose operands are not Bools is 1 level, a Bool with
      * a Bool operand one more than that operand. Building, bounds, materials and every ray recurse
-     * once (or twice) per level; the limit keeps that within a known stack (measured, compiled and
-     * interpreted alike): at it, freezing uses about 0.2 to 0.27 MB of the caller's stack (the 1 MB
-     * default holds about 5,000 levels) and a ray, under 64 mirror bounces, about 0.55 MB of a
-     * render thread's, which the renderer makes 16 MB. The parser reads nested blocks without
-     * recursion and refuses a deeper one at its keyword. Union and intersection take
+     * once (or twice) per level; the limit keeps that within a known stack, measured compiled and
+     * interpreted alike (docs/performance.md, bounded resources): freezing stays well within a
+     * thread's default stack, and a ray, under the deepest mirror bounces, within a fraction of
+     * the render thread's, which the renderer makes large ({@code Renderer}). The parser reads
+     * nested blocks without recursion and refuses a deeper one at its keyword. Union and intersection take
      * any number of operands, so a long chain of them never needs to nest.
      */
     public static final int MAX_NESTING = 1000;

@@ -65,8 +65,7 @@ public final class Scene {
         unbounded = u.toArray(new GObject[0]);
         // A handful of objects are each tested behind their own box, so that a ray enters only
         // the objects whose box it crosses (a mesh's own structure costs more to enter than a
-        // box test; measured on the 1m peer scene: one tree leaf over both objects 1.00x, one
-        // object per leaf 1.02x, this list of boxes 1.04-1.05x).
+        // box test, and a flat list of boxes less than a tree over them; docs/performance.md).
         ObjectSet set = new ObjectSet(bounded);
         accel = bounded.length > Bvh.DEFAULT_LEAF_SIZE ? settings.accelerator().build(set) : new BoxList(set);
     }

@@ -125,9 +125,9 @@ public final class SubdivisionSurface extends GObject {
     /**
      * Heap a surface needs per refined face while it is built, at its peak: the refined mesh, its
      * limit normals, the triangles and the acceleration structure, with the garbage of the
-     * earlier levels. Measured: a 24-quad cube refined to level 8 (1,572,864 faces) and frozen
-     * needs a heap of 750 to 800 MB (it fails at -Xmx750m and passes at -Xmx800m), 480 to 510
-     * bytes a face; about 220 a face stay once it is built. See docs/performance.md.
+     * earlier levels. The measured peak with a margin above it, so that a level the check lets
+     * through does not end in OutOfMemoryError; the measurement is in docs/performance.md (heap
+     * per refined face).
      */
     public static final long BYTES_PER_FACE = 560;
 

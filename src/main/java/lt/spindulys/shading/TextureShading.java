@@ -25,28 +25,27 @@ final class TextureShading {
     private static final double MIN_BUMP_STEP = 1e-4;
 
     /**
-     * Fills s.terms with the surface terms after the material's textures (colour, ks, kr, kt,
+     * Fills v's surface terms with those after the material's textures (colour, ks, kr, kt,
      * emission) and, if a bump texture is bound, tilts sd.ns.
      *
      * @param worldFootprint footprint width in world units (0: sharpest)
      */
-    static void evaluate(Material m, ShadingData sd, double worldFootprint, TracerScratch s) {
-        double[] t = s.terms;
-        t[0] = m.color().r(); t[1] = m.color().g(); t[2] = m.color().b();
-        t[3] = m.ks(); t[4] = m.kr(); t[5] = m.kt();
-        t[6] = t[7] = t[8] = 0;
+    static void evaluate(Material m, ShadingData sd, double worldFootprint, TracerScratch s, TracerScratch.PathVertex v) {
+        v.colourR = m.color().r(); v.colourG = m.color().g(); v.colourB = m.color().b();
+        v.ks = m.ks(); v.kr = m.kr(); v.kt = m.kt();
+        v.emissionR = v.emissionG = v.emissionB = 0;
         if (!m.isTextured()) return;
         double objectFootprint = worldFootprint * objectPerWorld(sd);
         double[] rgb = s.texRgb;
         if (sample(m, Channel.DIFFUSE, sd, sd.pObject, objectFootprint, s, rgb)) {
-            t[0] *= rgb[0]; t[1] *= rgb[1]; t[2] *= rgb[2];
+            v.colourR *= rgb[0]; v.colourG *= rgb[1]; v.colourB *= rgb[2];
         }
-        if (sample(m, Channel.SPECULAR, sd, sd.pObject, objectFootprint, s, rgb)) t[3] *= mean(rgb);
+        if (sample(m, Channel.SPECULAR, sd, sd.pObject, objectFootprint, s, rgb)) v.ks *= mean(rgb);
         // kr and kt textures are fractions: clamped to [0, 1], so a path never gains (see Ranges).
-        if (sample(m, Channel.REFLECTION, sd, sd.pObject, objectFootprint, s, rgb)) t[4] *= fraction(mean(rgb));
-        if (sample(m, Channel.TRANSPARENCY, sd, sd.pObject, objectFootprint, s, rgb)) t[5] *= fraction(mean(rgb));
+        if (sample(m, Channel.REFLECTION, sd, sd.pObject, objectFootprint, s, rgb)) v.kr *= fraction(mean(rgb));
+        if (sample(m, Channel.TRANSPARENCY, sd, sd.pObject, objectFootprint, s, rgb)) v.kt *= fraction(mean(rgb));
         if (sample(m, Channel.EMISSION, sd, sd.pObject, objectFootprint, s, rgb)) {
-            t[6] = rgb[0]; t[7] = rgb[1]; t[8] = rgb[2];
+            v.emissionR = rgb[0]; v.emissionG = rgb[1]; v.emissionB = rgb[2];
         }
         if (m.texture(Channel.BUMP) != null) bump(m, sd, objectFootprint, s);
     }

@@ -9,31 +9,26 @@ import lt.spindulys.trace.TraceContext;
 import lt.spindulys.texture.TexturePoint;
 
 /**
- * Per-thread scratch of the integrator: one ray, hit, shading record and colour per recursion
- * depth (the recursion is depth-first, so a level's scratch is free again when it returns), the
- * stack of media the current ray is inside, and ray counters. Never shared between threads.
+ * Per-thread scratch of the integrator: one {@link PathVertex} per recursion depth (the recursion
+ * is depth-first, so a depth's vertex is free again when it returns), the stack of media the
+ * current ray is inside, and ray counters. Never shared between threads.
  */
 public final class TracerScratch {
     public final TraceContext ctx = new TraceContext();
-    final Ray[] rays;
-    final Hit[] hits;
-    final ShadingData[] shading;
-    final double[][] colour;
+    /** The vertex of each recursion depth, 0 for the camera ray's hit. */
+    final PathVertex[] path;
+    /** Output of {@link Optics#reflect} and {@link Optics#refract}, read at once. */
     final double[] dir = new double[3];
     final Ray shadowRay = new Ray();
     final Hit shadowHit = new Hit();
     final ShadingData shadowShading = new ShadingData();
     final double[] transmission = new double[3];
-    /** Distance travelled from the camera to the origin of the ray at each depth (for texture footprints). */
-    final double[] travelled;
     // Texture evaluation (TextureShading): the point handed to textures, colour and scalar
-    // scratch, a shifted object point for bump differences, and the textured surface terms.
+    // scratch, and a shifted object point for bump differences.
     final TexturePoint texPoint = new TexturePoint();
     final double[] texRgb = new double[3];
     final double[] texScratch = new double[3];
     final double[] texObject = new double[3];
-    /** Surface terms after textures: colour r g b, ks, kr, kt, emission r g b. */
-    final double[] terms = new double[9];
 
     // Media the ray is inside, innermost last: the material it entered by and the solid
     // (TracedObject.solid()) it entered, so leaving through another surface of the same CSG solid
@@ -46,17 +41,8 @@ public final class TracerScratch {
     public long cameraRays, shadowRays, reflectionRays, refractionRays;
 
     public TracerScratch(int maxDepth) {
-        int levels = maxDepth + 2;
-        rays = new Ray[levels];
-        hits = new Hit[levels];
-        shading = new ShadingData[levels];
-        colour = new double[levels][3];
-        travelled = new double[levels];
-        for (int i = 0; i < levels; i++) {
-            rays[i] = new Ray();
-            hits[i] = new Hit();
-            shading[i] = new ShadingData();
-        }
+        path = new PathVertex[maxDepth + 2];
+        for (int i = 0; i < path.length; i++) path[i] = new PathVertex();
     }
 
     void pushMedium(Material m, TracedObject solid) {
@@ -75,4 +61,48 @@ public final class TracerScratch {
 
     /** The medium enclosing the innermost one (what a ray leaving the innermost enters). */
     Material outer() { return mediaCount < 2 ? null : media[mediaCount - 2]; }
+
+    /**
+     * What the integrator keeps for one recursion depth: the ray traced there, its nearest hit
+     * and shading record, the surface there after textures, the frame that lighting and the
+     * secondary rays start from, and the colour seen along the ray. Named fields instead of
+     * arguments: a depth's trace fills them once, and its lighting and secondary rays read them,
+     * while deeper levels use their own vertices. Preallocated, so nothing is allocated per ray.
+     */
+    static final class PathVertex {
+        /** The ray traced at this depth (at depth 0 the caller's camera ray is traced instead). */
+        final Ray ray = new Ray();
+        final Hit hit = new Hit();
+        final ShadingData shading = new ShadingData();
+        /** Colour seen along this depth's ray: what tracing it returns. */
+        final double[] seen = new double[3];
+        /** Path length from the camera to this depth's ray origin (texture footprints). */
+        double travelled;
+        /** The product of the reflected and transmitted shares that lead here (minimum contribution). */
+        double weight;
+        /** The ray's time in the shutter interval; shadow and secondary rays keep it. */
+        double time;
+
+        // The surface after the material's textures (TextureShading.evaluate).
+        /** Colour, scaling ambient and diffuse light. */
+        double colourR, colourG, colourB;
+        /** Specular, reflected and transmitted fractions. */
+        double ks, kr, kt;
+        /** Light the surface emits. */
+        double emissionR, emissionG, emissionB;
+
+        // The frame at the hit, all in world space.
+        /** The hit point (shading uses it as it is; new rays start eps off it). */
+        double px, py, pz;
+        /** Unit direction of the incoming ray. */
+        double dx, dy, dz;
+        /** Unit geometric normal turned to face the incoming ray. */
+        double nfx, nfy, nfz;
+        /** Unit shading normal (bumped), on the side of nf. */
+        double snx, sny, snz;
+        /** How far along nf new rays start, so that they do not hit the surface they leave. */
+        double eps;
+        /** Whether the ray arrives from the outside of its surface (against the outward normal). */
+        boolean entering;
+    }
 }

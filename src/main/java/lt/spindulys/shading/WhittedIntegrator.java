@@ -87,7 +87,7 @@ public final class WhittedIntegrator {
     public void traceCamera(Ray ray, TracerScratch s, double[] out) {
         s.cameraRays++;
         s.mediaCount = 0;
-        s.travelled[0] = 0;
+        s.path[0].travelled = 0;
         trace(ray, 0, 1, s, out);
     }
 
@@ -101,18 +101,19 @@ public final class WhittedIntegrator {
      */
     public int traceFirstHit(Ray ray, TracerScratch s, double[] out) {
         s.cameraRays++;
-        Hit hit = s.hits[0];
+        TracerScratch.PathVertex v = s.path[0];
+        Hit hit = v.hit;
         if (!scene.intersect(ray, hit, s.ctx)) {
             out[0] = Double.POSITIVE_INFINITY;
             out[1] = out[2] = out[3] = 0;
             return -1;
         }
-        ShadingData sd = s.shading[0];
+        ShadingData sd = v.shading;
         hit.object.shade(ray, hit, sd);
         double dlen = Math.sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
         double dx = ray.dx / dlen, dy = ray.dy / dlen, dz = ray.dz / dlen;
         // The normal pass shows the bumped normal that shading uses.
-        if (sd.material.texture(Channel.BUMP) != null) TextureShading.evaluate(sd.material, sd, footprint(sd, hit.t * dlen, dx, dy, dz), s);
+        if (sd.material.texture(Channel.BUMP) != null) TextureShading.evaluate(sd.material, sd, footprint(sd, hit.t * dlen, dx, dy, dz), s, v);
         // As in trace: flip both normals towards the ray by the geometric one, and fall back to
         // the geometric normal where the interpolated one still faces away.
         double sign = sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz < 0 ? 1 : -1;
@@ -129,8 +130,10 @@ public final class WhittedIntegrator {
         return travelled * pixelAngle / Math.max(cos, MIN_FOOTPRINT_COSINE);
     }
 
+    /** Colour seen along {@code ray}, traced at recursion depth {@code depth}, written to out[0..2]. */
     private void trace(Ray ray, int depth, double weight, TracerScratch s, double[] out) {
-        Hit hit = s.hits[depth];
+        TracerScratch.PathVertex v = s.path[depth];
+        Hit hit = v.hit;
         Material medium = s.innermost();
         double dlen = Math.sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
         if (!scene.intersect(ray, hit, s.ctx)) {
@@ -139,47 +142,49 @@ public final class WhittedIntegrator {
             if (medium != null) attenuate(medium, Double.POSITIVE_INFINITY, out);
             return;
         }
-        ShadingData sd = s.shading[depth];
+        ShadingData sd = v.shading;
         hit.object.shade(ray, hit, sd);
         Material m = sd.material;
+        v.weight = weight;
+        v.time = ray.time;
         double dx = ray.dx / dlen, dy = ray.dy / dlen, dz = ray.dz / dlen;
-        double travelled = s.travelled[depth] + hit.t * dlen;
+        v.dx = dx; v.dy = dy; v.dz = dz;
+        double travelled = v.travelled + hit.t * dlen;
 
         // Textured surface terms (colour, ks, kr, kt, emission) and the bumped shading normal.
-        TextureShading.evaluate(m, sd, m.isTextured() ? footprint(sd, travelled, dx, dy, dz) : 0, s);
-        double[] terms = s.terms;
-        double cr = terms[0], cg = terms[1], cb = terms[2], ks = terms[3], kr = terms[4], kt = terms[5];
-        double er = terms[6], eg = terms[7], eb = terms[8];
+        TextureShading.evaluate(m, sd, m.isTextured() ? footprint(sd, travelled, dx, dy, dz) : 0, s, v);
 
         // Normals facing the incoming ray: nf geometric, sn shading (kept on nf's side).
-        boolean entering = sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz < 0;
-        double sign = entering ? 1 : -1;
-        double nfx = sign * sd.ng[0], nfy = sign * sd.ng[1], nfz = sign * sd.ng[2];
-        double snx = sign * sd.ns[0], sny = sign * sd.ns[1], snz = sign * sd.ns[2];
-        if (snx * dx + sny * dy + snz * dz >= 0) { snx = nfx; sny = nfy; snz = nfz; }
+        v.entering = sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz < 0;
+        double sign = v.entering ? 1 : -1;
+        v.nfx = sign * sd.ng[0]; v.nfy = sign * sd.ng[1]; v.nfz = sign * sd.ng[2];
+        v.snx = sign * sd.ns[0]; v.sny = sign * sd.ns[1]; v.snz = sign * sd.ns[2];
+        if (v.snx * dx + v.sny * dy + v.snz * dz >= 0) { v.snx = v.nfx; v.sny = v.nfy; v.snz = v.nfz; }
         double px = sd.p[0], py = sd.p[1], pz = sd.p[2];
-        double eps = 1e-9 * Math.max(1, Math.max(Math.abs(px), Math.max(Math.abs(py), Math.abs(pz)))) + 1e-9 * hit.t * dlen;
+        v.px = px; v.py = py; v.pz = pz;
+        v.eps = 1e-9 * Math.max(1, Math.max(Math.abs(px), Math.max(Math.abs(py), Math.abs(pz)))) + 1e-9 * hit.t * dlen;
 
-        localIllumination(m, cr, cg, cb, ks, px, py, pz, nfx, nfy, nfz, snx, sny, snz, dx, dy, dz, eps, ray.time, s, out);
-        out[0] += er; out[1] += eg; out[2] += eb;
+        localIllumination(m, v, s, out);
+        out[0] += v.emissionR; out[1] += v.emissionG; out[2] += v.emissionB;
 
-        if (depth < settings.maxDepth() && (kr > 0 || kt > 0)) {
-            s.travelled[depth + 1] = travelled;
-            secondary(m, kr, kt, hit.object.solid(), entering, px, py, pz, nfx, nfy, nfz, snx, sny, snz, dx, dy, dz, eps, ray.time, depth, weight, s, out);
+        if (depth < settings.maxDepth() && (v.kr > 0 || v.kt > 0)) {
+            s.path[depth + 1].travelled = travelled;
+            secondary(m, hit.object.solid(), depth, s, out);
         }
         if (medium != null) attenuate(medium, hit.t * dlen, out);
     }
 
-    /** Ambient, diffuse and specular light at a point with (textured) colour (cr, cg, cb) and specular ks. */
-    private void localIllumination(Material m, double cr, double cg, double cb, double ks, double px, double py, double pz,
-                                   double nfx, double nfy, double nfz, double snx, double sny, double snz,
-                                   double dx, double dy, double dz, double eps, double time, TracerScratch s, double[] out) {
+    /** Ambient, diffuse and specular light at vertex v, whose surface has material m. */
+    private void localIllumination(Material m, TracerScratch.PathVertex v, TracerScratch s, double[] out) {
         Color ia = settings.ambient();
         double ka = m.ka();
+        double cr = v.colourR, cg = v.colourG, cb = v.colourB, ks = v.ks;
         double r = ka * ia.r() * cr, g = ka * ia.g() * cg, b = ka * ia.b() * cb;
         double kd = m.kd();
         if (kd > 0 || ks > 0) {
-            double ox = px + nfx * eps, oy = py + nfy * eps, oz = pz + nfz * eps;
+            double px = v.px, py = v.py, pz = v.pz;
+            double nfx = v.nfx, nfy = v.nfy, nfz = v.nfz, snx = v.snx, sny = v.sny, snz = v.snz;
+            double ox = px + nfx * v.eps, oy = py + nfy * v.eps, oz = pz + nfz * v.eps;
             for (PointLight light : lights) {
                 // Shading uses the true point; only the shadow ray starts off the surface.
                 double lx = light.position().x() - px, ly = light.position().y() - py, lz = light.position().z() - pz;
@@ -189,8 +194,9 @@ public final class WhittedIntegrator {
                 if (ux * nfx + uy * nfy + uz * nfz <= 0) continue; // light behind the surface
                 double ndotl = ux * snx + uy * sny + uz * snz;
                 if (ndotl <= 0) continue;
-                double sx = light.position().x() - ox, sy = light.position().y() - oy, sz = light.position().z() - oz;
-                if (!shadowTransmission(ox, oy, oz, sx, sy, sz, dist, time, s)) continue;
+                Ray shadow = s.shadowRay.set(ox, oy, oz, light.position().x() - ox, light.position().y() - oy, light.position().z() - oz, 0, 1);
+                shadow.time = v.time; // a moving object casts its shadow where it is at the shaded ray's time
+                if (!shadowTransmission(shadow, dist, s)) continue;
                 double[] t = s.transmission;
                 double scale = light.intensity();
                 if (light.falloff() == PointLight.Falloff.INVERSE_SQUARE) scale /= Math.max(dist2, minDistance2);
@@ -199,7 +205,7 @@ public final class WhittedIntegrator {
                 double diff = kd * ndotl;
                 r += diff * cr * ir; g += diff * cg * ig; b += diff * cb * ib;
                 if (ks > 0) {
-                    double hx = ux - dx, hy = uy - dy, hz = uz - dz;
+                    double hx = ux - v.dx, hy = uy - v.dy, hz = uz - v.dz;
                     double hl = Math.sqrt(hx * hx + hy * hy + hz * hz);
                     double nh = hl > 0 ? (hx * snx + hy * sny + hz * snz) / hl : 0;
                     if (nh > 0) {
@@ -213,14 +219,12 @@ public final class WhittedIntegrator {
     }
 
     /**
-     * Fraction of a light's colour that reaches the origin along (lx, ly, lz) (t = 1 at the light),
-     * written to s.transmission; false if nothing arrives.
+     * Fraction of a light's colour that reaches the origin of {@code ray}, the scratch's shadow
+     * ray (t = 1 at the light, which is {@code dist} away), written to s.transmission; false if
+     * nothing arrives.
      */
-    private boolean shadowTransmission(double ox, double oy, double oz, double lx, double ly, double lz,
-                                       double dist, double time, TracerScratch s) {
+    private boolean shadowTransmission(Ray ray, double dist, TracerScratch s) {
         s.shadowRays++;
-        Ray ray = s.shadowRay.set(ox, oy, oz, lx, ly, lz, 0, 1);
-        ray.time = time; // a moving object casts its shadow where it is at the shaded ray's time
         double[] t = s.transmission;
         t[0] = t[1] = t[2] = 1;
         if (!transparentShadows) return !scene.occluded(ray, s.ctx);
@@ -251,7 +255,7 @@ public final class WhittedIntegrator {
             t[0] *= kt * f.r(); t[1] *= kt * f.g(); t[2] *= kt * f.b();
             if (m.attenuates() || inside != null) {
                 if (!shaded) hit.object.shade(ray, hit, sd);
-                boolean entering = sd.ng[0] * lx + sd.ng[1] * ly + sd.ng[2] * lz < 0;
+                boolean entering = sd.ng[0] * ray.dx + sd.ng[1] * ray.dy + sd.ng[2] * ray.dz < 0;
                 TracedObject solid = hit.object.solid();
                 if (entering) {
                     if (m.attenuates()) {
@@ -275,22 +279,28 @@ public final class WhittedIntegrator {
         return false;
     }
 
-    private void secondary(Material m, double kr, double kt, TracedObject solid, boolean entering, double px, double py, double pz,
-                           double nfx, double nfy, double nfz, double snx, double sny, double snz,
-                           double dx, double dy, double dz, double eps, double time, int depth, double weight,
-                           TracerScratch s, double[] out) {
+    /**
+     * Adds to out the reflected and refracted light at vertex {@code depth}, whose surface (of
+     * material m, part of {@code solid}) reflects or transmits, traced one depth deeper.
+     */
+    private void secondary(Material m, TracedObject solid, int depth, TracerScratch s, double[] out) {
+        TracerScratch.PathVertex v = s.path[depth];
+        double dx = v.dx, dy = v.dy, dz = v.dz;
+        double nfx = v.nfx, nfy = v.nfy, nfz = v.nfz, snx = v.snx, sny = v.sny, snz = v.snz;
+        double kr = v.kr, kt = v.kt;
         double reflW = kr, refrW = kt;
         double[] dir = s.dir;
+        double tx = 0, ty = 0, tz = 0; // the refracted direction, kept for after the reflection
         boolean canRefract = false;
         double n1 = 1, n2 = 1;
         // Leaving the medium the ray is in: the innermost one was entered through a surface of
         // this solid (for a CSG result possibly another leaf with another material) or is the
         // same material. Its material is then the inside's index, not the exit surface's.
-        boolean leavesInnermost = !entering && (s.innermostSolid() == solid || s.innermost() == m);
+        boolean leavesInnermost = !v.entering && (s.innermostSolid() == solid || s.innermost() == m);
         if (kt > 0) {
             // Indices on both sides: entering goes from the current medium into m; leaving goes
             // from the medium left into whatever encloses it on the medium stack.
-            if (entering) {
+            if (v.entering) {
                 n1 = ior(s.innermost());
                 n2 = m.ior();
             } else {
@@ -301,6 +311,7 @@ public final class WhittedIntegrator {
             if (canRefract && dir[0] * nfx + dir[1] * nfy + dir[2] * nfz >= 0) {
                 canRefract = Optics.refract(dx, dy, dz, nfx, nfy, nfz, n1, n2, dir);
             }
+            tx = dir[0]; ty = dir[1]; tz = dir[2];
             if (m.fresnel()) {
                 double fr = Optics.schlick(-(dx * snx + dy * sny + dz * snz), n1, n2);
                 reflW = kr + kt * fr;
@@ -311,37 +322,35 @@ public final class WhittedIntegrator {
                 refrW = 0;
             }
         }
-        double[] c = s.colour[depth + 1];
-        Ray next = s.rays[depth + 1];
-        next.time = time;
+        TracerScratch.PathVertex next = s.path[depth + 1];
+        double[] c = next.seen;
+        Ray ray = next.ray;
+        ray.time = v.time;
+        double px = v.px, py = v.py, pz = v.pz, eps = v.eps, weight = v.weight;
         if (reflW > 0 && reflW * weight >= settings.minContribution()) {
             Optics.reflect(dx, dy, dz, snx, sny, snz, dir);
             if (dir[0] * nfx + dir[1] * nfy + dir[2] * nfz <= 0) Optics.reflect(dx, dy, dz, nfx, nfy, nfz, dir);
-            next.set(px + nfx * eps, py + nfy * eps, pz + nfz * eps, dir[0], dir[1], dir[2], 0, Double.POSITIVE_INFINITY);
+            ray.set(px + nfx * eps, py + nfy * eps, pz + nfz * eps, dir[0], dir[1], dir[2], 0, Double.POSITIVE_INFINITY);
             s.reflectionRays++;
-            trace(next, depth + 1, weight * reflW, s, c);
+            trace(ray, depth + 1, weight * reflW, s, c);
             out[0] += reflW * c[0]; out[1] += reflW * c[1]; out[2] += reflW * c[2];
         }
         Color f = m.filter();
         if (refrW > 0 && refrW * f.max() * weight >= settings.minContribution()) {
-            // dir may have been overwritten by the reflection: recompute the refracted direction.
-            if (!Optics.refract(dx, dy, dz, snx, sny, snz, n1, n2, dir) || dir[0] * nfx + dir[1] * nfy + dir[2] * nfz >= 0) {
-                Optics.refract(dx, dy, dz, nfx, nfy, nfz, n1, n2, dir);
-            }
-            next.set(px - nfx * eps, py - nfy * eps, pz - nfz * eps, dir[0], dir[1], dir[2], 0, Double.POSITIVE_INFINITY);
+            ray.set(px - nfx * eps, py - nfy * eps, pz - nfz * eps, tx, ty, tz, 0, Double.POSITIVE_INFINITY);
             s.refractionRays++;
-            if (entering) {
+            if (v.entering) {
                 s.pushMedium(m, solid);
-                trace(next, depth + 1, weight * refrW * f.max(), s, c);
+                trace(ray, depth + 1, weight * refrW * f.max(), s, c);
                 s.mediaCount--;
             } else if (leavesInnermost) {
                 Material left = s.innermost();
                 TracedObject leftSolid = s.innermostSolid();
                 s.mediaCount--;
-                trace(next, depth + 1, weight * refrW * f.max(), s, c);
+                trace(ray, depth + 1, weight * refrW * f.max(), s, c);
                 s.pushMedium(left, leftSolid);
             } else {
-                trace(next, depth + 1, weight * refrW * f.max(), s, c);
+                trace(ray, depth + 1, weight * refrW * f.max(), s, c);
             }
             out[0] += refrW * f.r() * c[0]; out[1] += refrW * f.g() * c[1]; out[2] += refrW * f.b() * c[2];
         }

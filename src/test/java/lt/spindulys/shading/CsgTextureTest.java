@@ -60,8 +60,9 @@ class CsgTextureTest {
         assertTrue(scene.intersect(ray, hit, s.ctx));
         ShadingData sd = new ShadingData();
         hit.object.shade(ray, hit, sd);
-        TextureShading.evaluate(sd.material, sd, 0, s);
-        return new Shaded((GObject) hit.object, new double[] {s.terms[0], s.terms[1], s.terms[2]}, sd);
+        TracerScratch.PathVertex v = s.path[0];
+        TextureShading.evaluate(sd.material, sd, 0, s, v);
+        return new Shaded((GObject) hit.object, new double[] {v.colourR, v.colourG, v.colourB}, sd);
     }
 
     /** The recorded texture's colour for block-space point p: the mapping evaluated there. */
@@ -148,8 +149,9 @@ class CsgTextureTest {
         assertTrue(scene.intersect(ray, hit, s.ctx));
         ShadingData sd = new ShadingData();
         hit.object.shade(ray, hit, sd);
-        TextureShading.evaluate(sd.material, sd, 0, s);
+        TracerScratch.PathVertex v = s.path[0];
+        TextureShading.evaluate(sd.material, sd, 0, s, v);
         assertSame(right, hit.object);
-        assertRgb(new double[] {p.x(), p.y(), p.z()}, new double[] {s.terms[0], s.terms[1], s.terms[2]}, "moving block");
+        assertRgb(new double[] {p.x(), p.y(), p.z()}, new double[] {v.colourR, v.colourG, v.colourB}, "moving block");
     }
 }

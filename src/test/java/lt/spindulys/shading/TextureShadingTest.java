@@ -188,7 +188,7 @@ class TextureShadingTest {
         System.arraycopy(sd.dpdu, 0, sd.dpduObject, 0, 3);
         System.arraycopy(sd.dpdv, 0, sd.dpdvObject, 0, 3);
         sd.pObject[0] = 0.3; sd.pObject[2] = 0.7;
-        TextureShading.evaluate(m, sd, 0.01, scratch);
+        TextureShading.evaluate(m, sd, 0.01, scratch, scratch.path[0]);
         double len = Math.hypot(s, 1);
         assertEquals(-s / len, sd.ns[0], 1e-9);
         assertEquals(1 / len, sd.ns[1], 1e-9);
@@ -200,7 +200,7 @@ class TextureShadingTest {
         sd.setDerivatives(0, 0, -1, 1, 0, 0);
         System.arraycopy(sd.dpdu, 0, sd.dpduObject, 0, 3);
         System.arraycopy(sd.dpdv, 0, sd.dpdvObject, 0, 3);
-        TextureShading.evaluate(m, sd, 0.01, scratch);
+        TextureShading.evaluate(m, sd, 0.01, scratch, scratch.path[0]);
         assertEquals(-s / len, sd.ns[0], 1e-9);
         assertEquals(1 / len, sd.ns[1], 1e-9);
     }
