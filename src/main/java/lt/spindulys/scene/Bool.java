@@ -19,6 +19,7 @@ import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Motion;
 import lt.spindulys.math.Placement;
+import lt.spindulys.math.Transform;
 
 /**
  * Constructive solid geometry node (the thesis's name): the union, intersection or difference
@@ -173,6 +174,26 @@ public final class Bool extends GObject {
 
     /** The operands in the order given (read-only). */
     public List<GObject> operands() { return operandList; }
+
+    // ---- builder methods, returning this type (see GObject for what each does) ----
+
+    /** {@inheritDoc} */
+    @Override public Bool transform(Transform t) { super.transform(t); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Bool motion(Motion m) { super.motion(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Bool material(Material m) { super.material(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Bool name(String n) { super.name(n); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Bool source(String where) { super.source(where); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Bool source(String file, int line, int column) { super.source(file, line, column); return this; }
 
     @Override public String kind() { return op.keyword(); }
 

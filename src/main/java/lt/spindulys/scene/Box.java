@@ -9,6 +9,9 @@ import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
+import lt.spindulys.math.Transform;
+import lt.spindulys.math.Motion;
+import lt.spindulys.material.Material;
 
 /**
  * An axis-aligned box between two corners in its own space (rotate it with a transform). Closed.
@@ -41,6 +44,26 @@ public final class Box extends GObject {
 
     public Vec3 min() { return min; }
     public Vec3 max() { return max; }
+
+    // ---- builder methods, returning this type (see GObject for what each does) ----
+
+    /** {@inheritDoc} */
+    @Override public Box transform(Transform t) { super.transform(t); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Box motion(Motion m) { super.motion(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Box material(Material m) { super.material(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Box name(String n) { super.name(n); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Box source(String where) { super.source(where); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Box source(String file, int line, int column) { super.source(file, line, column); return this; }
 
     @Override public String kind() { return "box"; }
     @Override public Bounds localBounds() { return Bounds.of(min, max); }

@@ -9,6 +9,9 @@ import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
+import lt.spindulys.math.Transform;
+import lt.spindulys.math.Motion;
+import lt.spindulys.material.Material;
 
 /**
  * A cylinder with flat caps, from the centre of its base cap to the centre of its top cap. Closed.
@@ -77,6 +80,26 @@ public final class Cylinder extends GObject {
     public Vec3 axisU() { return axisU; }
     /** The third frame direction, V = W x U (u = 1/4 on the side). */
     public Vec3 axisV() { return axisV; }
+
+    // ---- builder methods, returning this type (see GObject for what each does) ----
+
+    /** {@inheritDoc} */
+    @Override public Cylinder transform(Transform t) { super.transform(t); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Cylinder motion(Motion m) { super.motion(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Cylinder material(Material m) { super.material(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Cylinder name(String n) { super.name(n); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Cylinder source(String where) { super.source(where); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Cylinder source(String file, int line, int column) { super.source(file, line, column); return this; }
 
     @Override public String kind() { return "cylinder"; }
 

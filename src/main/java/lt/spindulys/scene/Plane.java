@@ -9,6 +9,9 @@ import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
+import lt.spindulys.math.Transform;
+import lt.spindulys.math.Motion;
+import lt.spindulys.material.Material;
 
 /**
  * The infinite plane n.p = offset. As a solid it is the half-space n.p <= offset (the normal
@@ -51,6 +54,26 @@ public final class Plane extends GObject {
     public Vec3 tangentU() { return tangentU; }
     /** Unit direction of increasing v (dpdv); normal() = tangentU() x tangentV(). */
     public Vec3 tangentV() { return tangentV; }
+
+    // ---- builder methods, returning this type (see GObject for what each does) ----
+
+    /** {@inheritDoc} */
+    @Override public Plane transform(Transform t) { super.transform(t); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Plane motion(Motion m) { super.motion(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Plane material(Material m) { super.material(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Plane name(String n) { super.name(n); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Plane source(String where) { super.source(where); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Plane source(String file, int line, int column) { super.source(file, line, column); return this; }
 
     @Override public String kind() { return "plane"; }
     @Override public Bounds localBounds() { return Bounds.INFINITE; }

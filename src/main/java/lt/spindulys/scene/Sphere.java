@@ -9,6 +9,9 @@ import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
+import lt.spindulys.math.Transform;
+import lt.spindulys.math.Motion;
+import lt.spindulys.material.Material;
 
 /**
  * A sphere given by centre and radius. Closed: its inside is the solid ball.
@@ -42,6 +45,26 @@ public final class Sphere extends GObject {
 
     public Vec3 center() { return center; }
     public double radius() { return radius; }
+
+    // ---- builder methods, returning this type (see GObject for what each does) ----
+
+    /** {@inheritDoc} */
+    @Override public Sphere transform(Transform t) { super.transform(t); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Sphere motion(Motion m) { super.motion(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Sphere material(Material m) { super.material(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Sphere name(String n) { super.name(n); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Sphere source(String where) { super.source(where); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Sphere source(String file, int line, int column) { super.source(file, line, column); return this; }
 
     @Override public String kind() { return "sphere"; }
 

@@ -17,6 +17,7 @@ import lt.spindulys.mesh.MeshData;
 import lt.spindulys.subdiv.CatmullClark;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.RefinedMesh;
+import lt.spindulys.math.Motion;
 
 /**
  * A Catmull-Clark subdivision surface: a control mesh refined uniformly to a fixed level once, at
@@ -346,6 +347,26 @@ public final class SubdivisionSurface extends GObject {
     public int triangleCount() { return mesh.triangleCount(); }
 
     // ---- GObject: everything through the triangle mesh ----
+
+    // ---- builder methods, returning this type (see GObject for what each does) ----
+
+    /** {@inheritDoc} */
+    @Override public SubdivisionSurface transform(Transform t) { super.transform(t); return this; }
+
+    /** {@inheritDoc} */
+    @Override public SubdivisionSurface motion(Motion m) { super.motion(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public SubdivisionSurface material(Material m) { super.material(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public SubdivisionSurface name(String n) { super.name(n); return this; }
+
+    /** {@inheritDoc} */
+    @Override public SubdivisionSurface source(String where) { super.source(where); return this; }
+
+    /** {@inheritDoc} */
+    @Override public SubdivisionSurface source(String file, int line, int column) { super.source(file, line, column); return this; }
 
     @Override public String kind() { return "subdiv"; }
     @Override public Bounds localBounds() { return mesh.localBounds(); }

@@ -8,6 +8,9 @@ import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
+import lt.spindulys.math.Transform;
+import lt.spindulys.math.Motion;
+import lt.spindulys.material.Material;
 
 /**
  * A single triangle, optionally with per-vertex normals and texture coordinates. Open (no inside).
@@ -74,6 +77,26 @@ public final class Triangle extends GObject {
     public boolean hasNormals() { return normals != null; }
     /** True if vertex texture coordinates were given. */
     public boolean hasUvs() { return uvs != null; }
+
+    // ---- builder methods, returning this type (see GObject for what each does) ----
+
+    /** {@inheritDoc} */
+    @Override public Triangle transform(Transform t) { super.transform(t); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Triangle motion(Motion m) { super.motion(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Triangle material(Material m) { super.material(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Triangle name(String n) { super.name(n); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Triangle source(String where) { super.source(where); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Triangle source(String file, int line, int column) { super.source(file, line, column); return this; }
 
     @Override public String kind() { return "triangle"; }
     @Override public Bounds localBounds() { return Bounds.of(a, b).union(c.x(), c.y(), c.z()); }

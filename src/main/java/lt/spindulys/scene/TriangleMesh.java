@@ -21,6 +21,8 @@ import lt.spindulys.math.Placement;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.mesh.MeshData;
+import lt.spindulys.math.Transform;
+import lt.spindulys.math.Motion;
 
 /**
  * A triangle mesh held in flat arrays (no object per triangle) with its own acceleration
@@ -384,6 +386,26 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     }
 
     // ---- GObject ----
+
+    // ---- builder methods, returning this type (see GObject for what each does) ----
+
+    /** {@inheritDoc} */
+    @Override public TriangleMesh transform(Transform t) { super.transform(t); return this; }
+
+    /** {@inheritDoc} */
+    @Override public TriangleMesh motion(Motion m) { super.motion(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public TriangleMesh material(Material m) { super.material(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public TriangleMesh name(String n) { super.name(n); return this; }
+
+    /** {@inheritDoc} */
+    @Override public TriangleMesh source(String where) { super.source(where); return this; }
+
+    /** {@inheritDoc} */
+    @Override public TriangleMesh source(String file, int line, int column) { super.source(file, line, column); return this; }
 
     @Override public String kind() { return "mesh"; }
     @Override public Bounds localBounds() { return bounds; }
