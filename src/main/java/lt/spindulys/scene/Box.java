@@ -29,6 +29,11 @@ public final class Box extends GObject {
     private final Vec3 min, max;
     private final double[] lo, hi;
 
+    /**
+     * The box between two opposite corners, in either order.
+     *
+     * @throws IllegalArgumentException if a coordinate is not finite and modest
+     */
     public Box(Vec3 corner1, Vec3 corner2) {
         if (!Ranges.isModest(corner1) || !Ranges.isModest(corner2)) throw new IllegalArgumentException("box corners must be finite and at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude, found " + corner1 + " and " + corner2);
         Vec3 lo = new Vec3(Math.min(corner1.x(), corner2.x()), Math.min(corner1.y(), corner2.y()), Math.min(corner1.z(), corner2.z()));
@@ -42,7 +47,9 @@ public final class Box extends GObject {
         this.hi = new double[] {hi.x(), hi.y(), hi.z()};
     }
 
+    /** The corner with the smallest coordinates (object space). */
     public Vec3 min() { return min; }
+    /** The corner with the largest coordinates (object space). */
     public Vec3 max() { return max; }
 
     // ---- builder methods, returning this type (see GObject for what each does) ----

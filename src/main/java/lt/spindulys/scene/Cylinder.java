@@ -47,6 +47,11 @@ public final class Cylinder extends GObject {
     // Unpacked frame for the per-ray path.
     private final double bx, by, bz, ux, uy, uz, vx, vy, vz, wx, wy, wz, height, r2;
 
+    /**
+     * The cylinder from the centre of its base cap to the centre of its top cap.
+     *
+     * @throws IllegalArgumentException if the ends coincide, the radius is not positive, or a number is not finite and modest
+     */
     public Cylinder(Vec3 base, Vec3 top, double radius) {
         if (!Ranges.isModest(base) || !Ranges.isModest(top)) throw new IllegalArgumentException("cylinder end points must be finite and at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude, found " + base + " and " + top);
         if (!(top.minus(base).length() > 0)) throw new IllegalArgumentException("cylinder base and top are the same point " + base);
@@ -69,8 +74,11 @@ public final class Cylinder extends GObject {
         r2 = radius * radius;
     }
 
+    /** Centre of the base cap (object space). */
     public Vec3 base() { return base; }
+    /** Centre of the top cap (object space). */
     public Vec3 top() { return top; }
+    /** Radius (object-space units). */
     public double radius() { return radius; }
     /** Distance from base to top. */
     public double height() { return height; }

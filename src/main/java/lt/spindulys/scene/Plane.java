@@ -14,7 +14,7 @@ import lt.spindulys.math.Motion;
 import lt.spindulys.material.Material;
 
 /**
- * The infinite plane n.p = offset. As a solid it is the half-space n.p <= offset (the normal
+ * The infinite plane n.p = offset. As a solid it is the half-space n.p &lt;= offset (the normal
  * points out), so it can take part in CSG; its bounds are infinite.
  *
  * <p>Texture coordinates are distances (object-space units) along two fixed orthonormal
@@ -32,6 +32,11 @@ public final class Plane extends GObject {
     private final Vec3 tangentU, tangentV;
     private final double nx, ny, nz;
 
+    /**
+     * The plane of points p with normal.p = offset (normal and offset scaled together to a unit normal).
+     *
+     * @throws IllegalArgumentException if the normal is zero or a number is not finite and modest
+     */
     public Plane(Vec3 normal, double offset) {
         if (!Ranges.isModest(normal) || !(normal.length() > 0)) throw new IllegalArgumentException("plane normal must be a non-zero vector with components at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude, found " + normal);
         Ranges.modest("plane offset", offset);

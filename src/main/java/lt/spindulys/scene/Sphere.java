@@ -32,6 +32,11 @@ public final class Sphere extends GObject {
     // Unpacked for the per-ray path.
     private final double cx, cy, cz, r2;
 
+    /**
+     * The sphere of {@code radius} about {@code center} (object space).
+     *
+     * @throws IllegalArgumentException if the radius is not positive or a number is not finite and modest
+     */
     public Sphere(Vec3 center, double radius) {
         Ranges.modest("sphere center", center);
         if (!(radius > 0) || !Ranges.isModest(radius)) throw new IllegalArgumentException("sphere radius must be a positive number at most " + Ranges.show(Ranges.MAX_NUMBER) + ", found " + radius);
@@ -43,7 +48,9 @@ public final class Sphere extends GObject {
         this.r2 = radius * radius;
     }
 
+    /** Centre (object space). */
     public Vec3 center() { return center; }
+    /** Radius (object-space units). */
     public double radius() { return radius; }
 
     // ---- builder methods, returning this type (see GObject for what each does) ----

@@ -32,6 +32,11 @@ public final class Triangle extends GObject {
     /** Vertex texture coordinates u0, v0, u1, v1, u2, v2, or null. */
     private double[] uvs;
 
+    /**
+     * The triangle abc; counter-clockwise seen from the side its normal points to.
+     *
+     * @throws IllegalArgumentException if it has zero area or a coordinate is not finite and modest
+     */
     public Triangle(Vec3 a, Vec3 b, Vec3 c) {
         if (!Ranges.isModest(a) || !Ranges.isModest(b) || !Ranges.isModest(c)) throw new IllegalArgumentException("triangle vertices must be finite and at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude, found " + a + " " + b + " " + c);
         if (!(b.minus(a).cross(c.minus(a)).length() > 0)) throw new IllegalArgumentException("triangle " + a + " " + b + " " + c + " is degenerate (zero area)");
@@ -41,8 +46,11 @@ public final class Triangle extends GObject {
         e2x = c.x() - ax; e2y = c.y() - ay; e2z = c.z() - az;
     }
 
+    /** First vertex (object space). */
     public Vec3 a() { return a; }
+    /** Second vertex (object space). */
     public Vec3 b() { return b; }
+    /** Third vertex (object space). */
     public Vec3 c() { return c; }
 
     /** Sets per-vertex shading normals (normalised here); each must be finite and non-zero. */
