@@ -35,7 +35,10 @@ public final class WideBvh implements Accelerator {
     private final int nodeCount, depth;
 
     private static boolean probe() {
-        if (ModuleLayer.boot().findModule("jdk.incubator.vector").isEmpty()) return false;
+        // From the module path this module requires the vector module only statically, so it reads
+        // it only when the JVM resolved it (--add-modules); from the class path it reads every module.
+        java.util.Optional<Module> vector = ModuleLayer.boot().findModule("jdk.incubator.vector");
+        if (vector.isEmpty() || !WideBvh.class.getModule().canRead(vector.get())) return false;
         try {
             // One real test of an empty node, so that a JDK whose incubating API differs from
             // the one compiled against falls back here rather than failing in the render.
@@ -47,6 +50,14 @@ public final class WideBvh implements Accelerator {
         } catch (LinkageError | RuntimeException e) {
             return false;
         }
+    }
+
+    /**
+     * {@code bvh} collapsed to a wide tree when the vector test can run here and the tree allows
+     * it ({@link #AVAILABLE}, {@link #canCollapse}); otherwise {@code bvh} itself.
+     */
+    public static Accelerator widen(Bvh bvh) {
+        return AVAILABLE && canCollapse(bvh) ? new WideBvh(bvh) : bvh;
     }
 
     /** Whether {@code bvh} can be collapsed: an inner root and leaves of at most 15 primitives. */

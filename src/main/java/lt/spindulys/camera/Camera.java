@@ -1,13 +1,13 @@
 package lt.spindulys.camera;
 
 import lt.spindulys.math.Ray;
-import lt.spindulys.sampling.LensPattern;
 
 /** Turns a point on the film (and a lens sample and a time) into a primary ray. Immutable. */
 public interface Camera {
     /**
      * Writes the world-space ray through film position (fx, fy) into {@code out}.
      *
+     * @param out receives the ray (its time set to {@code time})
      * @param fx     0 at the left edge of the image, 1 at the right
      * @param fy     0 at the top edge, 1 at the bottom
      * @param aspect image width / height
@@ -18,13 +18,19 @@ public interface Camera {
      */
     void generateRay(double fx, double fy, double aspect, double lensU, double lensV, double time, Ray out);
 
-    /** How the renderer should place this camera's lens samples on the unit disk. */
+    /**
+     * How the renderer should place this camera's lens samples on the unit disk.
+     *
+     * @return the pattern
+     */
     default LensPattern lensPattern() { return LensPattern.CONCENTRIC; }
 
     /**
      * False if this camera's rays do not depend on the lens sample (a pinhole, or a lens of
      * aperture 0): the renderer then hands it the lens centre and spares mapping samples onto
      * the disk.
+     *
+     * @return whether the lens sample moves the ray
      */
     default boolean usesLens() { return false; }
 }

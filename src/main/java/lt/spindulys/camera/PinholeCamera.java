@@ -16,6 +16,15 @@ public final class PinholeCamera implements Camera {
     // Package-private: a ThinLensCamera places its lens in this frame.
     final double rx, ry, rz, ux, uy, uz, fx, fy, fz, tanHalf;
 
+    /**
+     * A camera at {@code eye} looking at {@code lookAt}.
+     *
+     * @param eye where the camera is
+     * @param lookAt the point at the centre of the image
+     * @param up which way is up (need not be perpendicular to the view; not parallel to it)
+     * @param fovDegrees the vertical field of view in degrees, between 0 and 180
+     * @throws IllegalArgumentException if a vector is not finite, the view is degenerate or the angle out of range
+     */
     public PinholeCamera(Vec3 eye, Vec3 lookAt, Vec3 up, double fovDegrees) {
         if (!Ranges.isModest(eye) || !Ranges.isModest(lookAt) || !Ranges.isModest(up)) throw new IllegalArgumentException("camera vectors must be finite and at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude");
         if (!(fovDegrees > 0 && fovDegrees < 180)) throw new IllegalArgumentException("fov must be between 0 and 180 degrees, found " + fovDegrees);
@@ -34,9 +43,13 @@ public final class PinholeCamera implements Camera {
         tanHalf = Math.tan(Math.toRadians(fovDegrees) / 2);
     }
 
+    /** {@return where the camera is} */
     public Vec3 eye() { return eye; }
+    /** {@return the point at the centre of the image} */
     public Vec3 lookAt() { return lookAt; }
+    /** {@return the up direction as given} */
     public Vec3 up() { return up; }
+    /** {@return the vertical field of view, degrees} */
     public double fovDegrees() { return fovDegrees; }
 
     @Override

@@ -4,7 +4,6 @@ import java.util.Objects;
 
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
-import lt.spindulys.sampling.LensPattern;
 
 /**
  * A thin-lens camera for depth of field: the view (eye, look-at, up, field of view) of a
@@ -42,12 +41,22 @@ public final class ThinLensCamera implements Camera {
         this.focusDistance = focusDistance;
     }
 
-    /** A camera focused on the view's look-at point, with the default lens pattern. */
+    /**
+     * A camera focused on the view's look-at point, with the default lens pattern.
+     *
+     * @param view where the camera is and what it sees
+     * @param aperture lens radius in scene units, at least 0 (0: a pinhole)
+     */
     public ThinLensCamera(PinholeCamera view, double aperture) {
         this(view, aperture, lookAtDistance(view), LensPattern.CONCENTRIC);
     }
 
-    /** The distance from the eye to the look-at point: the default focus. */
+    /**
+     * The distance from the eye to the look-at point: the default focus.
+     *
+     * @param view the view
+     * @return the distance, scene units
+     */
     public static double lookAtDistance(PinholeCamera view) {
         return view.lookAt().minus(view.eye()).length();
     }
@@ -56,6 +65,9 @@ public final class ThinLensCamera implements Camera {
      * The focus distance that puts {@code point} on the focal plane: its distance from the eye
      * along the view direction.
      *
+     * @param view the view
+     * @param point a point in front of the eye
+     * @return the distance along the view direction
      * @throws IllegalArgumentException if the point is not in front of the eye
      */
     public static double focusDistanceTo(PinholeCamera view, Vec3 point) {
@@ -69,13 +81,28 @@ public final class ThinLensCamera implements Camera {
         return along;
     }
 
+    /** {@return where the camera is and what it sees} */
     public PinholeCamera view() { return view; }
+    /** {@return the lens radius, scene units} */
     public double aperture() { return aperture; }
+    /** {@return the distance to the focal plane along the view direction} */
     public double focusDistance() { return focusDistance; }
     @Override public LensPattern lensPattern() { return lens; }
     @Override public boolean usesLens() { return aperture > 0; }
 
+    /**
+     * A copy with another lens radius.
+     *
+     * @param a lens radius in scene units, at least 0
+     * @return the camera
+     */
     public ThinLensCamera withAperture(double a) { return new ThinLensCamera(view, a, focusDistance, lens); }
+    /**
+     * A copy focused elsewhere.
+     *
+     * @param f the distance to the focal plane, positive
+     * @return the camera
+     */
     public ThinLensCamera withFocusDistance(double f) { return new ThinLensCamera(view, aperture, f, lens); }
 
     @Override

@@ -9,7 +9,7 @@ import java.util.List;
 import java.util.Locale;
 
 import lt.spindulys.io.ObjReader;
-import lt.spindulys.accel.AcceleratorKind;
+import lt.spindulys.scene.AcceleratorKind;
 import lt.spindulys.io.SceneParser;
 import lt.spindulys.render.ProgressListener;
 import lt.spindulys.render.RenderStats;
@@ -241,19 +241,19 @@ final class BenchCommand {
         Path scene = benchDir.resolve("motion-blur.dat");
         if (!Files.isRegularFile(scene)) throw new IOException("bench scene not found: " + scene.toAbsolutePath());
         int n = TIME_STEPS.length;
-        for (int i = 0; i < WARMUPS; i++) for (int steps : TIME_STEPS) renderOnce(scene, accel, s -> s.withTimeSteps(steps));
+        for (int i = 0; i < WARMUPS; i++) for (int steps : TIME_STEPS) renderOnce(scene, accel, s -> s.toBuilder().timeSteps(steps).build());
         double[][] seconds = new double[n][runs], cpu = new double[n][runs];
         Measured[] last = new Measured[n];
         for (int i = 0; i < runs; i++) {
             for (int k = 0; k < n; k++) {
                 int steps = TIME_STEPS[k];
-                last[k] = renderOnce(scene, accel, s -> s.withTimeSteps(steps));
+                last[k] = renderOnce(scene, accel, s -> s.toBuilder().timeSteps(steps).build());
                 seconds[k][i] = last[k].stats.seconds();
                 cpu[k][i] = last[k].cpuSeconds;
             }
         }
         // What the samples buy: the distance of each image from a one-pass reference at REFERENCE_SPP.
-        Measured ref = renderOnce(scene, accel, s -> s.withTimeSteps(1).withSamplesPerPixel(REFERENCE_SPP));
+        Measured ref = renderOnce(scene, accel, s -> s.toBuilder().timeSteps(1).samplesPerPixel(REFERENCE_SPP).build());
         BenchTable t = new BenchTable("method", "render s", "vs one pass", "CPU s", "vs one pass", "camera rays", "shadow rays", "refl. rays", "Mrays/s", "RMS error");
         for (int k = 0; k < n; k++) {
             RenderStats st = last[k].stats;
@@ -305,13 +305,13 @@ final class BenchCommand {
         RenderCommand.resetPeakHeap();
         long t0 = System.nanoTime();
         SceneBuilder builder = SceneParser.parse(file);
-        if (accel != null) builder.settings(builder.settings().withAccelerator(accel));
+        if (accel != null) builder.settings(builder.settings().toBuilder().accelerator(accel).build());
         builder.settings(settings.apply(builder.settings()));
         long t1 = System.nanoTime();
         Scene scene = builder.build();
         long t2 = System.nanoTime();
         long cpu0 = processCpuNanos();
-        Renderer.Result result;
+        lt.spindulys.render.RenderResult result;
         try {
             result = Renderer.render(scene, THREADS, ProgressListener.NONE);
         } catch (InterruptedException e) {
@@ -327,7 +327,7 @@ final class BenchCommand {
                 bytes += m.memoryBytes();
             }
         }
-        return new Measured((t1 - t0) / 1e9, (t2 - t1) / 1e9, result.stats(), peak, triangles, bytes, result.image(), (cpu1 - cpu0) / 1e9);
+        return new Measured((t1 - t0) / 1e9, (t2 - t1) / 1e9, result.stats(), peak, triangles, bytes, result.frame(), (cpu1 - cpu0) / 1e9);
     }
 
     /**

@@ -3,7 +3,7 @@ package lt.spindulys.cli;
 import java.util.ArrayDeque;
 import java.util.concurrent.atomic.AtomicBoolean;
 
-import lt.spindulys.accel.AcceleratorKind;
+import lt.spindulys.scene.AcceleratorKind;
 import lt.spindulys.accel.WideBvh;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.math.Color;
@@ -119,7 +119,7 @@ final class JitWarmup implements AutoCloseable {
     /** The benchmark's view of a small torus; 96 x 54 pixels, so one render takes a few milliseconds. */
     static Scene scene() {
         SceneBuilder b = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(96, 54).withAmbient(Color.BLACK).withSrgb(true))
+                .settings(RenderSettings.builder().size(96, 54).ambient(Color.BLACK).srgb(true).build())
                 .camera(new PinholeCamera(new Vec3(0, 2.5, 3.5), new Vec3(0, -0.2, 0), Vec3.Y, 40))
                 .light(new PointLight(new Vec3(3, 5, 2), Color.WHITE, 25, PointLight.Falloff.INVERSE_SQUARE));
         Material grey = Material.builder().name("warmup").color(new Color(0.8, 0.8, 0.8)).ka(0).kd(1).ks(0).build();

@@ -96,6 +96,11 @@ public final class Main {
 
     static String version() {
         String v = Main.class.getPackage().getImplementationVersion();
+        // A jar's manifest gives the version on the class path; on the module path the
+        // descriptor carries it (the compiler records the project's version there).
+        if (v == null && Main.class.getModule().getDescriptor() != null) {
+            v = Main.class.getModule().getDescriptor().rawVersion().orElse(null);
+        }
         return v != null ? v : "development build";
     }
 }

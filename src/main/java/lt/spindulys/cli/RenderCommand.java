@@ -10,7 +10,7 @@ import java.nio.file.Path;
 import java.util.Locale;
 import java.util.Set;
 
-import lt.spindulys.accel.AcceleratorKind;
+import lt.spindulys.scene.AcceleratorKind;
 import lt.spindulys.camera.Camera;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.camera.ThinLensCamera;
@@ -24,9 +24,9 @@ import lt.spindulys.limits.InputFiles;
 import lt.spindulys.limits.InsufficientMemoryException;
 import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Ranges;
-import lt.spindulys.render.ProgressListener;
 import lt.spindulys.render.RenderStats;
-import lt.spindulys.render.Renderer;
+import lt.spindulys.render.RenderJob;
+import lt.spindulys.render.RenderResult;
 import lt.spindulys.render.TerminalProgress;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
@@ -138,80 +138,95 @@ final class RenderCommand {
             throw new SceneException(scene.toString(), 0, 0, "this is an OBJ mesh, not a scene: to render it, name it in a scene's mesh { file "
                     + name + " } or subdiv { file " + name + " } block, or refine it with render subdivide");
         }
-        try {
-            ImageWriter.checkOutput(output); // fail before rendering, not after
-        } catch (IOException e) {
-            throw new UsageException(e.getMessage());
-        }
         if (aovs != null) checkAovOutputs(aovs);
         long t0 = System.nanoTime();
-        SceneBuilder builder;
-        long parsed, warmed;
-        try (JitWarmup warmup = JitWarmup.start()) {
-            builder = SceneParser.parse(scene);
-            parsed = System.nanoTime();
-            warmup.finishFor(builder, accel != null ? accel : builder.settings().accelerator());
-            warmed = System.nanoTime();
-        }
-        RenderSettings s = builder.settings();
-        if (width != null || height != null) {
-            // One side alone keeps the scene's aspect ratio: 800x450 with --width 400 becomes 400x225.
-            int w = width != null ? width : scaledSide(height, s.height(), s.width());
-            int h = height != null ? height : scaledSide(width, s.width(), s.height());
-            s = s.withSize(w, h);
-        }
-        if (spp != null) s = s.withSamplesPerPixel(spp);
-        if (seed != null) s = s.withSeed(seed);
-        if (accel != null) s = s.withAccelerator(accel);
-        if (aovs != null) s = s.withAovs(aovs);
-        else if (!s.aovs().isEmpty()) checkAovOutputs(s.aovs()); // asked for by the scene: known only now
-        if (shutter != null) s = s.withShutter(shutter[0], shutter[1]);
-        if (timeSteps != null) s = s.withTimeSteps(timeSteps);
-        if (spp != null || timeSteps != null) {
-            try {
-                s.checkTimeSteps();
-            } catch (IllegalArgumentException e) {
-                throw new UsageException((spp != null ? "--spp " + spp : "samples " + s.samplesPerPixel()) + " is not a multiple of "
-                        + (timeSteps != null ? "--timesteps " : "the scene's timesteps ") + s.timeSteps() + " (each time step renders spp / timesteps per pixel)");
-            }
-        }
-        try {
-            FrameBuffer.checkHeap(s.width(), s.height(), s.aovs());
+        int n = threads != null ? threads : Runtime.getRuntime().availableProcessors();
+        TerminalProgress bar = !quiet && System.console() != null ? new TerminalProgress(err) : null;
+        SceneBuilder[] loaded = new SceneBuilder[1];
+        double[] warmup = new double[1];
+        RenderJob job = RenderJob.of(scene).output(output).jpegQuality(quality).threads(n).progress(bar)
+                .settings(this::override);
+        if (aperture != null || focus != null) job.camera(c -> withLens(c, aperture, focus));
+        RenderResult result;
+        try (JitWarmup warm = JitWarmup.start()) {
+            job.onLoaded(b -> {
+                loaded[0] = b;
+                long w0 = System.nanoTime();
+                try {
+                    warm.finishFor(b, accel != null ? accel : b.settings().accelerator());
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    job.cancel();
+                }
+                warmup[0] = (System.nanoTime() - w0) / 1e9;
+            });
+            result = job.run();
+        } catch (UncheckedUsage e) {
+            throw e.usage;
+        } catch (java.util.concurrent.CancellationException e) {
+            throw new InterruptedException("interrupted");
+        } catch (IOException e) {
+            // The output was refused before any work (a missing directory, a directory, no permission).
+            if (job.stage() == RenderJob.Stage.CHECK || job.stage() == RenderJob.Stage.SETTINGS) throw new UsageException(e.getMessage());
+            throw e;
         } catch (InsufficientMemoryException e) {
-            throw frameTooLarge(builder, e);
-        }
-        builder.settings(s);
-        if (aperture != null || focus != null) builder.camera(withLens(builder.camera(), aperture, focus));
-        long t1 = System.nanoTime();
-        Scene built;
-        try {
-            built = builder.build();
+            // The frame, or (while rendering) the scene's meshes and textures took what the frame would have needed.
+            if (job.stage() == RenderJob.Stage.SETTINGS || job.stage() == RenderJob.Stage.RENDER) throw frameTooLarge(loaded[0], e);
+            throw e;
         } catch (IllegalArgumentException e) {
             // A motion's own times may not fit a shutter given here (an open start or finish is the shutter's).
-            if (shutter == null) throw e;
+            if (job.stage() != RenderJob.Stage.BUILD || shutter == null) throw e;
             String given = "--shutter " + shutter[0] + "," + shutter[1];
             // The object's statement comes first when there is one, as in every other input error.
             if (e instanceof SceneBuildException b && b.source() != null) throw new IllegalArgumentException(e.getMessage() + " (with " + given + ")", e);
             throw new UsageException(given + ": " + e.getMessage());
-        }
-        long t2 = System.nanoTime();
-
-        int n = threads != null ? threads : Runtime.getRuntime().availableProcessors();
-        TerminalProgress bar = !quiet && System.console() != null ? new TerminalProgress(err) : null;
-        Renderer.Result result;
-        try {
-            result = Renderer.render(built, n, bar != null ? bar : ProgressListener.NONE);
-        } catch (InsufficientMemoryException e) {
-            // The scene's meshes and textures took what the frame would have needed.
-            throw frameTooLarge(builder, e);
         } finally {
             if (bar != null) bar.finish();
         }
-        ImageWriter.write(result.image(), output, new ImageOptions(s.srgb(), quality), result.aovs());
         // On stderr with the progress bar it replaces: stdout carries only what was asked for (--stats).
-        if (!quiet) err.println(MessageText.escape(doneLine(output, s, (System.nanoTime() - t0) / 1e9)));
-        if (stats) printStats(out, (parsed - t0 + t1 - warmed) / 1e9, (warmed - parsed) / 1e9, (t2 - t1) / 1e9, s.accelerator(), result.stats(), n);
+        if (!quiet) err.println(MessageText.escape(doneLine(output, result.settings(), (System.nanoTime() - t0) / 1e9)));
+        if (stats) printStats(out, result.loadSeconds() - warmup[0], warmup[0], result.buildSeconds(), result.settings().accelerator(), result.stats(), n);
         return 0;
+    }
+
+    /**
+     * The scene's settings with the command line's overrides. Refusals name the options, so they
+     * travel out of the job as {@link UncheckedUsage}.
+     */
+    private RenderSettings override(RenderSettings s) {
+        RenderSettings.Builder o = s.toBuilder();
+        if (width != null || height != null) {
+            // One side alone keeps the scene's aspect ratio: 800x450 with --width 400 becomes 400x225.
+            int w = width != null ? width : scaledSide(height, s.height(), s.width());
+            int h = height != null ? height : scaledSide(width, s.width(), s.height());
+            o.size(w, h);
+        }
+        if (spp != null) o.samplesPerPixel(spp);
+        if (seed != null) o.seed(seed);
+        if (accel != null) o.accelerator(accel);
+        if (aovs != null) o.aovs(aovs);
+        if (shutter != null) o.shutter(shutter[0], shutter[1]);
+        if (timeSteps != null) o.timeSteps(timeSteps);
+        s = o.build();
+        if (spp != null || timeSteps != null) {
+            try {
+                s.checkTimeSteps();
+            } catch (IllegalArgumentException e) {
+                throw new UncheckedUsage(new UsageException((spp != null ? "--spp " + spp : "samples " + s.samplesPerPixel()) + " is not a multiple of "
+                        + (timeSteps != null ? "--timesteps " : "the scene's timesteps ") + s.timeSteps() + " (each time step renders spp / timesteps per pixel)"));
+            }
+        }
+        return s;
+    }
+
+    /** A {@link UsageException} carried out of a settings override, which may not throw checked exceptions. */
+    private static final class UncheckedUsage extends RuntimeException {
+        final UsageException usage;
+
+        UncheckedUsage(UsageException usage) {
+            super(usage.getMessage(), null, false, false);
+            this.usage = usage;
+        }
     }
 
     /**
@@ -248,6 +263,7 @@ final class RenderCommand {
      * it, else the scene's settings key.
      */
     private RuntimeException frameTooLarge(SceneBuilder builder, InsufficientMemoryException e) throws UsageException {
+        if (builder == null) return e;
         if (width != null || height != null || aovs != null) {
             String options = (width != null ? " --width " + width : "") + (height != null ? " --height " + height : "")
                     + (aovs != null ? " --aov " + aovs.stream().map(Aov::keyword).collect(java.util.stream.Collectors.joining(",")) : "");

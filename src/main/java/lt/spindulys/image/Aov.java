@@ -27,13 +27,25 @@ public enum Aov {
         this.suffix = suffix;
     }
 
-    /** The name in the scene language and on the command line. */
+    /**
+     * The name in the scene language and on the command line.
+     *
+     * @return the keyword, for example {@code depth}
+     */
     public String keyword() { return keyword; }
 
-    /** What replaces the main output's extension: {@code .depth.pfm}, {@code .normal.pfm}, {@code .object.png}. */
+    /**
+     * What replaces the main output's extension: {@code .depth.pfm}, {@code .normal.pfm}, {@code .object.png}.
+     *
+     * @return the suffix
+     */
     public String suffix() { return suffix; }
 
-    /** The keywords, in declaration order. */
+    /**
+     * The keywords, in declaration order.
+     *
+     * @return the keywords
+     */
     public static List<String> keywords() {
         List<String> k = new ArrayList<>();
         for (Aov a : values()) k.add(a.keyword);
@@ -43,6 +55,8 @@ public enum Aov {
     /**
      * The pass named {@code keyword}.
      *
+     * @param keyword the keyword
+     * @return the pass
      * @throws IllegalArgumentException "unknown AOV 'x' (expected depth, normal or object)"
      */
     public static Aov fromKeyword(String keyword) {
@@ -53,6 +67,8 @@ public enum Aov {
     /**
      * The passes of a comma-separated list such as {@code depth,normal}; at least one, none twice.
      *
+     * @param list the list
+     * @return the passes, in {@link Aov} order
      * @throws IllegalArgumentException naming the unknown, repeated or empty entry
      */
     public static Set<Aov> parseList(String list) {
@@ -74,6 +90,9 @@ public enum Aov {
     /**
      * The file of this pass beside {@code mainOutput}: its extension (the last dot and after) is
      * replaced by {@link #suffix()}, so {@code out.png} gives {@code out.depth.pfm}.
+     *
+     * @param mainOutput the image's path
+     * @return the pass's path
      */
     public Path fileBeside(Path mainOutput) {
         String name = mainOutput.getFileName().toString();

@@ -20,7 +20,13 @@ public final class AovFrame {
     private final double[] depth, normal;
     private final int[] object;
 
-    /** A frame with every pixel at the background values (infinite depth, zero normal, no object). */
+    /**
+     * A frame with every pixel at the background values (infinite depth, zero normal, no object).
+     *
+     * @param width pixels across
+     * @param height pixels down
+     * @param passes the passes to keep; memory is allocated for these only
+     */
     public AovFrame(int width, int height, Set<Aov> passes) {
         if (width < 1 || height < 1) {
             throw new IllegalArgumentException("image size must be at least 1x1, got " + width + "x" + height);
@@ -41,14 +47,30 @@ public final class AovFrame {
         if (object != null) Arrays.fill(object, -1);
     }
 
+    /** {@return the width in pixels} */
     public int width() { return width; }
 
+    /** {@return the height in pixels} */
     public int height() { return height; }
 
-    /** The passes this frame holds (unmodifiable, in {@link Aov} order). */
+    /**
+     * The passes this frame holds (unmodifiable, in {@link Aov} order).
+     *
+     * @return the passes
+     */
     public Set<Aov> passes() { return passes; }
 
-    /** Records a hit at pixel (x, y): distance, unit normal, object id (GObject.id()). */
+    /**
+     * Records a hit at pixel (x, y): distance, unit normal, object id (GObject.id()).
+     *
+     * @param x column, 0 at the left
+     * @param y row, 0 at the top
+     * @param distance distance along the ray, world units
+     * @param nx normal x
+     * @param ny normal y
+     * @param nz normal z
+     * @param objectId the object's id, at least 0
+     */
     public void setHit(int x, int y, double distance, double nx, double ny, double nz, int objectId) {
         int p = index(x, y);
         if (depth != null) depth[p] = distance;
@@ -60,7 +82,12 @@ public final class AovFrame {
         if (object != null) object[p] = objectId;
     }
 
-    /** Records that the pixel-centre ray of (x, y) hit nothing. */
+    /**
+     * Records that the pixel-centre ray of (x, y) hit nothing.
+     *
+     * @param x column, 0 at the left
+     * @param y row, 0 at the top
+     */
     public void setBackground(int x, int y) {
         int p = index(x, y);
         if (depth != null) depth[p] = Double.POSITIVE_INFINITY;
@@ -68,16 +95,35 @@ public final class AovFrame {
         if (object != null) object[p] = -1;
     }
 
-    /** Distance to the first hit, +Infinity for the background. */
+    /**
+     * Distance to the first hit, +Infinity for the background.
+     *
+     * @param x column, 0 at the left
+     * @param y row, 0 at the top
+     * @return the depth, world units
+     */
     public double depth(int x, int y) { return require(depth, Aov.DEPTH)[index(x, y)]; }
 
-    /** One component (0 = x, 1 = y, 2 = z) of the normal; 0 for the background. */
+    /**
+     * One component (0 = x, 1 = y, 2 = z) of the normal; 0 for the background.
+     *
+     * @param x column, 0 at the left
+     * @param y row, 0 at the top
+     * @param component 0, 1 or 2
+     * @return the component, in [-1, 1]
+     */
     public double normal(int x, int y, int component) {
         Objects.checkIndex(component, 3);
         return require(normal, Aov.NORMAL)[3 * index(x, y) + component];
     }
 
-    /** The id of the object hit, -1 for the background. */
+    /**
+     * The id of the object hit, -1 for the background.
+     *
+     * @param x column, 0 at the left
+     * @param y row, 0 at the top
+     * @return the id, or -1
+     */
     public int objectId(int x, int y) { return require(object, Aov.OBJECT)[index(x, y)]; }
 
     /** The single depth channel, row-major, top row first (the backing array, not a copy). */
@@ -96,6 +142,7 @@ public final class AovFrame {
     /**
      * The object pass as packed 0xRRGGBB values: id + 1, 0 for the background.
      *
+     * @return one int per pixel, row-major, top row first
      * @throws IllegalStateException if an id + 1 does not fit 24 bits
      */
     public int[] objectCodes() {

@@ -1,5 +1,7 @@
 package lt.spindulys.image;
 
+import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferInt;
 import java.util.Objects;
 import java.util.Set;
 import java.util.stream.Collectors;
@@ -23,7 +25,12 @@ public final class FrameBuffer {
     private final int width, height;
     private final double[] data;
 
-    /** A black image; both dimensions must be at least 1. */
+    /**
+     * A black image; both dimensions must be at least 1.
+     *
+     * @param width pixels across
+     * @param height pixels down
+     */
     public FrameBuffer(int width, int height) {
         if (width < 1 || height < 1) {
             throw new IllegalArgumentException("image size must be at least 1x1, got " + width + "x" + height);
@@ -42,6 +49,11 @@ public final class FrameBuffer {
      * (three doubles), the 8-bit copy and the encoder's image made when it is written, and for
      * each pass asked: depth (a double), normal (three doubles, and a frame's worth again when it
      * is written), object (an int, and the codes and the encoder's image when written).
+     *
+     * @param width pixels across
+     * @param height pixels down
+     * @param aovs the passes rendered beside the image
+     * @return the bytes needed
      */
     public static long bytesToRender(int width, int height, Set<Aov> aovs) {
         long perPixel = 3 * 8 + 4 + 8;
@@ -54,6 +66,9 @@ public final class FrameBuffer {
     /**
      * Refuses a frame whose {@link #bytesToRender} the heap cannot give now.
      *
+     * @param width pixels across
+     * @param height pixels down
+     * @param aovs the passes rendered beside the image
      * @throws InsufficientMemoryException "the 32768x16384 frame needs 17 GiB of heap, but only ..."
      */
     public static void checkHeap(int width, int height, Set<Aov> aovs) {
@@ -62,11 +77,21 @@ public final class FrameBuffer {
         HeapBudget.require(bytesToRender(width, height, aovs), "the " + width + "x" + height + " frame" + passes);
     }
 
+    /** {@return the width in pixels} */
     public int width() { return width; }
 
+    /** {@return the height in pixels} */
     public int height() { return height; }
 
-    /** Stores the linear colour of pixel (x, y). */
+    /**
+     * Stores the linear colour of pixel (x, y).
+     *
+     * @param x column, 0 at the left
+     * @param y row, 0 at the top
+     * @param r linear red
+     * @param g linear green
+     * @param b linear blue
+     */
     public void set(int x, int y, double r, double g, double b) {
         int i = index(x, y);
         data[i] = r;
@@ -74,13 +99,24 @@ public final class FrameBuffer {
         data[i + 2] = b;
     }
 
-    /** One linear channel (0 = red, 1 = green, 2 = blue) of pixel (x, y). */
+    /**
+     * One linear channel (0 = red, 1 = green, 2 = blue) of pixel (x, y).
+     *
+     * @param x column, 0 at the left
+     * @param y row, 0 at the top
+     * @param channel 0, 1 or 2
+     * @return the linear value
+     */
     public double get(int x, int y, int channel) {
         Objects.checkIndex(channel, 3);
         return data[index(x, y) + channel];
     }
 
-    /** The backing array itself (not a copy): 3 values per pixel, row-major, top row first. */
+    /**
+     * The backing array itself (not a copy): 3 values per pixel, row-major, top row first.
+     *
+     * @return the pixel values
+     */
     public double[] data() { return data; }
 
     private int index(int x, int y) {
@@ -94,7 +130,27 @@ public final class FrameBuffer {
      * Converts to packed 8-bit {@code 0xRRGGBB} values, row-major, top row first. Each channel is
      * clamped to [0, 1] (NaN counts as 0), encoded with the sRGB transfer function if {@code srgb}
      * (otherwise left linear), then scaled by 255 and rounded to nearest.
+     *
+     * @param srgb whether to encode with the sRGB curve (else linear)
+     * @return one int per pixel
      */
+    /**
+     * The image as an 8-bit {@link BufferedImage#TYPE_INT_RGB} image, converted as {@link #toRgb8}
+     * does (so it holds exactly the pixels a PNG of this buffer would), for display or for
+     * further processing with Java's imaging classes. A new image each call.
+     */
+    public BufferedImage toBufferedImage(boolean srgb) {
+        return rgbImage(width, height, toRgb8(srgb));
+    }
+
+    /** A {@code TYPE_INT_RGB} image of packed {@code 0xRRGGBB} pixels (row-major, top row first), as they are. */
+    static BufferedImage rgbImage(int w, int h, int[] rgb) {
+        BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        int[] pixels = ((DataBufferInt) img.getRaster().getDataBuffer()).getData();
+        System.arraycopy(rgb, 0, pixels, 0, pixels.length);
+        return img;
+    }
+
     public int[] toRgb8(boolean srgb) {
         int n = width * height;
         int[] out = new int[n];
@@ -108,6 +164,12 @@ public final class FrameBuffer {
      * The inverse of {@link #toRgb8}: builds a buffer from packed {@code 0xRRGGBB} values (the top
      * byte is ignored), decoding sRGB to linear if {@code srgb}. {@code fromRgb8(...).toRgb8(srgb)}
      * gives the same packed values back.
+     *
+     * @param width pixels across
+     * @param height pixels down
+     * @param packed one int per pixel, at least width * height
+     * @param srgb whether the values are sRGB-encoded
+     * @return the buffer
      */
     public static FrameBuffer fromRgb8(int width, int height, int[] packed, boolean srgb) {
         FrameBuffer fb = new FrameBuffer(width, height);
@@ -134,12 +196,22 @@ public final class FrameBuffer {
         return (int) Math.round((srgb ? linearToSrgb(v) : v) * 255.0);
     }
 
-    /** The sRGB opto-electronic transfer function (IEC 61966-2-1) for a linear value in [0, 1]. */
+    /**
+     * The sRGB opto-electronic transfer function (IEC 61966-2-1) for a linear value in [0, 1].
+     *
+     * @param linear a linear value in [0, 1]
+     * @return the encoded value, in [0, 1]
+     */
     public static double linearToSrgb(double linear) {
         return linear <= 0.0031308 ? 12.92 * linear : 1.055 * Math.pow(linear, 1 / 2.4) - 0.055;
     }
 
-    /** The inverse of {@link #linearToSrgb}, for an encoded value in [0, 1]. */
+    /**
+     * The inverse of {@link #linearToSrgb}, for an encoded value in [0, 1].
+     *
+     * @param encoded an encoded value in [0, 1]
+     * @return the linear value, in [0, 1]
+     */
     public static double srgbToLinear(double encoded) {
         return encoded <= 0.04045 ? encoded / 12.92 : Math.pow((encoded + 0.055) / 1.055, 2.4);
     }

@@ -11,6 +11,13 @@ public record ImageOptions(boolean srgb, double jpegQuality) {
     /** sRGB-encoded 8-bit output, JPEG quality 0.92. */
     public static final ImageOptions DEFAULT = new ImageOptions(true, 0.92);
 
+    /**
+     * Checks the quality.
+     *
+     * @param srgb whether 8-bit formats are sRGB-encoded
+     * @param jpegQuality JPEG quality in [0, 1]
+     * @throws IllegalArgumentException if the JPEG quality is not in [0, 1]
+     */
     public ImageOptions {
         // The negated range test also rejects NaN.
         if (!(jpegQuality >= 0 && jpegQuality <= 1)) {
@@ -18,7 +25,19 @@ public record ImageOptions(boolean srgb, double jpegQuality) {
         }
     }
 
+    /**
+     * A copy with another encoding.
+     *
+     * @param srgb whether 8-bit formats are sRGB-encoded
+     * @return the options
+     */
     public ImageOptions withSrgb(boolean srgb) { return new ImageOptions(srgb, jpegQuality); }
 
+    /**
+     * A copy with another JPEG quality.
+     *
+     * @param quality in [0, 1], 1 the best
+     * @return the options
+     */
     public ImageOptions withJpegQuality(double quality) { return new ImageOptions(srgb, quality); }
 }

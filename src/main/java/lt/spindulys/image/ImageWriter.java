@@ -1,7 +1,6 @@
 package lt.spindulys.image;
 
 import java.awt.image.BufferedImage;
-import java.awt.image.DataBufferInt;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.ByteBuffer;
@@ -47,6 +46,12 @@ public final class ImageWriter {
     /** Like {@link java.util.function.Consumer}, but may throw {@link IOException}. */
     @FunctionalInterface
     public interface IoConsumer<T> {
+        /**
+         * Takes the value.
+         *
+         * @param value the value
+         * @throws IOException if writing fails
+         */
         void accept(T value) throws IOException;
     }
 
@@ -54,6 +59,8 @@ public final class ImageWriter {
      * The output format named by the extension of {@code out}; call it before rendering so that a
      * bad file name fails at once.
      *
+     * @param out the output path
+     * @return the format
      * @throws IllegalArgumentException e.g. "unsupported output format '.bmp' (expected .tga,
      *         .png, .jpg, .jpeg or .pfm)"
      */
@@ -65,6 +72,10 @@ public final class ImageWriter {
      * {@link #checkFormat} plus the checks {@link #writeAtomically} makes before writing: the
      * parent directory exists, {@code out} is not a directory, and a file can be created there
      * ({@link AtomicFile#checkWritable}: a trial file is created and deleted). Leaves nothing.
+     *
+     * @param out the output path
+     * @return the format
+     * @throws IOException if the file could not be written there
      */
     public static ImageFormat checkOutput(Path out) throws IOException {
         ImageFormat format = checkFormat(out);
@@ -72,7 +83,14 @@ public final class ImageWriter {
         return format;
     }
 
-    /** Encodes {@code fb} in the format named by the extension of {@code out} and writes it atomically. */
+    /**
+     * Encodes {@code fb} in the format named by the extension of {@code out} and writes it atomically.
+     *
+     * @param fb the image
+     * @param out the output path; its extension names the format
+     * @param opts the encoding options
+     * @throws IOException if writing fails; {@code out} is then unchanged
+     */
     public static void write(FrameBuffer fb, Path out, ImageOptions opts) throws IOException {
         write(fb, out, opts, null);
     }
@@ -92,6 +110,11 @@ public final class ImageWriter {
      *       background; never sRGB-encoded, whatever {@code opts} says.</li>
      * </ul>
      *
+     * @param fb the image
+     * @param out the output path; its extension names the format
+     * @param opts the encoding options
+     * @param aovs the passes, or null
+     * @throws IOException if writing fails; no file is then changed
      * @throws IllegalStateException if an object id does not fit 24 bits (nothing is written)
      * @throws NonFinitePixelException if a pixel of the image or of the normal pass is NaN or
      *         infinite as a float (an internal error: nothing is written)
@@ -151,6 +174,10 @@ public final class ImageWriter {
     /**
      * {@link #checkOutput} for {@code out} and for the file of each pass in {@code aovs} beside
      * it. Leaves nothing.
+     *
+     * @param out the main output path
+     * @param aovs the passes to be written beside it
+     * @throws IOException if one of the files could not be written
      */
     public static void checkOutputs(Path out, Set<Aov> aovs) throws IOException {
         checkOutput(out);
@@ -166,6 +193,8 @@ public final class ImageWriter {
      * <p>{@code body} gets a buffered stream; closing it only flushes, so the body may use
      * try-with-resources on wrappers around it.
      *
+     * @param out the file to write
+     * @param body writes the content
      * @throws IOException if the parent directory is missing (the message names it), {@code out}
      *         is a directory, or writing or renaming fails
      */
@@ -204,9 +233,7 @@ public final class ImageWriter {
     /** Encodes packed 0xRRGGBB pixels (row-major, top row first) as they are. */
     private static void writeImageIo(int w, int h, int[] rgb, ImageOptions opts, String formatName, OutputStream out)
             throws IOException {
-        BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
-        int[] pixels = ((DataBufferInt) img.getRaster().getDataBuffer()).getData();
-        System.arraycopy(rgb, 0, pixels, 0, pixels.length);
+        BufferedImage img = FrameBuffer.rgbImage(w, h, rgb);
 
         Iterator<javax.imageio.ImageWriter> writers = ImageIO.getImageWritersByFormatName(formatName);
         if (!writers.hasNext()) throw new IOException("this Java runtime has no " + formatName + " encoder");

@@ -6,17 +6,32 @@ package lt.spindulys.image;
  * error, refused by {@link ImageWriter} before anything is written rather than written silently.
  */
 public final class NonFinitePixelException extends IllegalStateException {
+    /** The pixel's column and row. */
     private final int x, y;
 
+    /**
+     * The pixel at column x, row y.
+     *
+     * @param x column, from the left
+     * @param y row, from the top
+     */
     public NonFinitePixelException(int x, int y) {
         super("non-finite pixel at " + x + "," + y);
         this.x = x;
         this.y = y;
     }
 
-    /** Column of the pixel, from the left. */
+    /**
+     * Column of the pixel, from the left.
+     *
+     * @return the column
+     */
     public int x() { return x; }
 
-    /** Row of the pixel, from the top. */
+    /**
+     * Row of the pixel, from the top.
+     *
+     * @return the row
+     */
     public int y() { return y; }
 }

@@ -40,12 +40,24 @@ import lt.spindulys.subdiv.SubdivTags;
 public final class ObjReader {
     private ObjReader() {}
 
-    /** Reads the file; malformed input throws {@link SceneException} naming file:line:column. */
+    /**
+     * Reads the file; malformed input throws {@link SceneException} naming file:line:column.
+     *
+     * @param file the file
+     * @return the mesh
+     * @throws IOException if the file cannot be read
+     */
     public static MeshData read(Path file) throws IOException {
         return new Parser(readBytes(file), file.toString(), false).parse();
     }
 
-    /** Parses OBJ text; {@code fileName} is used in messages and as the mesh's source. */
+    /**
+     * Parses OBJ text; {@code fileName} is used in messages and as the mesh's source.
+     *
+     * @param text the file's content
+     * @param fileName the name for messages
+     * @return the mesh
+     */
     public static MeshData parse(String text, String fileName) {
         return new Parser(text.getBytes(StandardCharsets.UTF_8), fileName, false).parse();
     }
@@ -54,12 +66,22 @@ public final class ObjReader {
      * Reads the file as a subdivision control mesh with its {@code t} tags; malformed input,
      * unknown tags and tag indices that do not fit the mesh throw {@link SceneException} naming
      * file:line:column.
+     *
+     * @param file the file
+     * @return the control mesh and its tags
+     * @throws IOException if the file cannot be read
      */
     public static SubdivInput readSubdiv(Path file) throws IOException {
         return new Parser(readBytes(file), file.toString(), true).parseSubdiv();
     }
 
-    /** Parses OBJ text as a subdivision control mesh; see {@link #readSubdiv}. */
+    /**
+     * Parses OBJ text as a subdivision control mesh; see {@link #readSubdiv}.
+     *
+     * @param text the file's content
+     * @param fileName the name for messages
+     * @return the control mesh and its tags
+     */
     public static SubdivInput parseSubdiv(String text, String fileName) {
         return new Parser(text.getBytes(StandardCharsets.UTF_8), fileName, true).parseSubdiv();
     }

@@ -21,6 +21,9 @@ public final class ObjWriter {
     /**
      * Writes {@code mesh} to {@code out} (which is flushed, not closed).
      *
+     * @param mesh the refined mesh
+     * @param out the stream
+     * @throws IOException if writing fails
      * @param limit   write the limit-surface positions and the limit normals ({@code vn}) instead of
      *                the refined positions
      * @param comment a comment for the first lines (may hold several lines), or null

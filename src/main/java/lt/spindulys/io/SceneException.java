@@ -9,9 +9,19 @@ import lt.spindulys.limits.MessageText;
  * ({@link MessageText#escape}), so the message is one line whatever the input held.
  */
 public final class SceneException extends RuntimeException {
+    /** The input's name, or null. */
     private final String file;
+    /** The place in it, from 1; 0 when not known. */
     private final int line, column;
 
+    /**
+     * An error at a place in the input.
+     *
+     * @param file the input's name, or null
+     * @param line the line, from 1; 0 if not known
+     * @param column the column, from 1; 0 if not known
+     * @param message what was found and what was expected
+     */
     public SceneException(String file, int line, int column, String message) {
         super(format(file, line, column, message));
         this.file = file;
@@ -19,6 +29,15 @@ public final class SceneException extends RuntimeException {
         this.column = column;
     }
 
+    /**
+     * An error at a place in the input, caused by another.
+     *
+     * @param file the input's name, or null
+     * @param line the line, from 1; 0 if not known
+     * @param column the column, from 1; 0 if not known
+     * @param message what was found and what was expected
+     * @param cause the error underneath
+     */
     public SceneException(String file, int line, int column, String message, Throwable cause) {
         super(format(file, line, column, message), cause);
         this.file = file;
@@ -33,6 +52,11 @@ public final class SceneException extends RuntimeException {
     /**
      * "file:line:column" as messages name a place ("file" alone when the line is 0, "&lt;input&gt;"
      * for a null file); also what the scene parser gives objects as their source.
+     *
+     * @param file the input's name, or null
+     * @param line the line, from 1; 0 if not known
+     * @param column the column, from 1; 0 if not known
+     * @return the location text
      */
     public static String location(String file, int line, int column) {
         StringBuilder s = new StringBuilder(file == null ? "<input>" : file);
@@ -43,7 +67,10 @@ public final class SceneException extends RuntimeException {
         return s.toString();
     }
 
+    /** {@return the input's name, or null} */
     public String file() { return file; }
+    /** {@return the line, from 1; 0 if not known} */
     public int line() { return line; }
+    /** {@return the column, from 1; 0 if not known} */
     public int column() { return column; }
 }

@@ -7,7 +7,7 @@ import java.util.List;
 import lt.spindulys.image.Aov;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
-import lt.spindulys.sampling.LensPattern;
+import lt.spindulys.camera.LensPattern;
 
 /**
  * The statements of the scene language and the keys each block accepts, with their value kinds,

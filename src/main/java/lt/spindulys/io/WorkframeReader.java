@@ -38,12 +38,24 @@ public final class WorkframeReader {
     private static final Pattern INTEGER = Pattern.compile("[+-]?[0-9]+");
     private static final Pattern NUMBER = Pattern.compile("[+-]?([0-9]+\\.?[0-9]*|\\.[0-9]+)([eE][+-]?[0-9]+)?");
 
-    /** Reads a {@code .dat} mesh file. */
+    /**
+     * Reads a {@code .dat} mesh file.
+     *
+     * @param file the file
+     * @return the mesh
+     * @throws IOException if the file cannot be read
+     */
     public static MeshData readMesh(Path file) throws IOException {
         return parseMesh(readText(file, "mesh"), file.toString());
     }
 
-    /** Parses {@code .dat} mesh text; {@code fileName} names it in messages and is the mesh's source. */
+    /**
+     * Parses {@code .dat} mesh text; {@code fileName} names it in messages and is the mesh's source.
+     *
+     * @param text the file's content
+     * @param fileName the name for messages
+     * @return the mesh
+     */
     public static MeshData parseMesh(String text, String fileName) {
         Lines in = new Lines(text, fileName);
         Line header = in.next();
@@ -126,12 +138,26 @@ public final class WorkframeReader {
         return new MeshData(positions, null, null, sizes, vi, null, null, fileName);
     }
 
-    /** Reads a {@code .tex} unwrap for {@code mesh}: (u, v) for every face corner of it, face after face. */
+    /**
+     * Reads a {@code .tex} unwrap for {@code mesh}: (u, v) for every face corner of it, face after face.
+     *
+     * @param file the file
+     * @param mesh the mesh it unwraps
+     * @return (u, v) pairs, two doubles per face corner
+     * @throws IOException if the file cannot be read
+     */
     public static double[] readUnwrap(Path file, MeshData mesh) throws IOException {
         return parseUnwrap(readText(file, "unwrap"), file.toString(), mesh);
     }
 
-    /** Parses {@code .tex} unwrap text for {@code mesh}; see {@link #readUnwrap}. */
+    /**
+     * Parses {@code .tex} unwrap text for {@code mesh}; see {@link #readUnwrap}.
+     *
+     * @param text the file's content
+     * @param fileName the name for messages
+     * @param mesh the mesh it unwraps
+     * @return (u, v) pairs, two doubles per face corner
+     */
     public static double[] parseUnwrap(String text, String fileName, MeshData mesh) {
         Lines in = new Lines(text, fileName);
         int expected = mesh.vertexIndex().length;

@@ -42,9 +42,14 @@ public final class Material {
         textured = any;
     }
 
+    /** {@return a builder with the defaults: grey 0.8, ka 0.1, kd 0.9, no specular, reflection or transmission, ior 1} */
     public static Builder builder() { return new Builder(); }
 
-    /** A builder initialised from this material, to derive a variant. */
+    /**
+     * A builder initialised from this material, to derive a variant.
+     *
+     * @return the builder; changing it leaves this material as it is
+     */
     public Builder toBuilder() {
         Builder b = new Builder();
         b.name = name; b.color = color; b.filter = filter; b.beta = beta;
@@ -53,30 +58,71 @@ public final class Material {
         return b;
     }
 
+    /** {@return the name given in the scene, or null} */
     public String name() { return name; }
-    /** Surface colour C. */
+    /**
+     * Surface colour C.
+     *
+     * @return the colour, linear RGB
+     */
     public Color color() { return color; }
-    /** Colour that tints transmitted light (refraction and shadows through the object). */
+    /**
+     * Colour that tints transmitted light (refraction and shadows through the object).
+     *
+     * @return the transmission filter, components in [0, 1]
+     */
     public Color filter() { return filter; }
-    /** Attenuation coefficient per unit distance inside the medium, per channel. */
+    /**
+     * Attenuation coefficient per unit distance inside the medium, per channel.
+     *
+     * @return the coefficients, per unit of scene distance
+     */
     public Color beta() { return beta; }
+    /** {@return the ambient coefficient} */
     public double ka() { return ka; }
+    /** {@return the diffuse coefficient} */
     public double kd() { return kd; }
+    /** {@return the specular coefficient} */
     public double ks() { return ks; }
+    /** {@return the Blinn-Phong exponent of the specular highlight} */
     public double shininess() { return shininess; }
+    /** {@return the share of light reflected, in [0, 1]} */
     public double kr() { return kr; }
+    /** {@return the share of light transmitted, in [0, 1]} */
     public double kt() { return kt; }
+    /** {@return the index of refraction of the medium inside} */
     public double ior() { return ior; }
+    /** {@return whether Schlick's Fresnel term shifts transmitted light into reflection} */
     public boolean fresnel() { return fresnel; }
+    /** {@return whether light passes through the surface (kt above 0)} */
     public boolean isTransparent() { return kt > 0; }
-    /** The texture bound to a channel, or null. */
+    /**
+     * The texture bound to a channel, or null.
+     *
+     * @param c the channel
+     * @return the texture, or null
+     */
     public Texture texture(Channel c) { return textures[c.ordinal()]; }
-    /** The mapping of the texture bound to a channel, or null. */
+    /**
+     * The mapping of the texture bound to a channel, or null.
+     *
+     * @param c the channel
+     * @return the mapping, or null
+     */
     public Mapping mapping(Channel c) { return mappings[c.ordinal()]; }
-    /** True if any channel has a texture. */
+    /**
+     * True if any channel has a texture.
+     *
+     * @return whether any channel has a texture
+     */
     public boolean isTextured() { return textured; }
-    /** Object-space height of a bump texture's value 1 (the bump channel's texture is scaled by it). */
+    /**
+     * Object-space height of a bump texture's value 1 (the bump channel's texture is scaled by it).
+     *
+     * @return the height, object-space units
+     */
     public double bumpStrength() { return bumpStrength; }
+    /** {@return whether light is attenuated inside the medium (beta not black)} */
     public boolean attenuates() { return !beta.isBlack(); }
 
     @Override public String toString() { return "Material[" + (name == null ? "unnamed" : name) + "]"; }
@@ -91,24 +137,104 @@ public final class Material {
         private Mapping[] mappings = new Mapping[Channel.values().length];
         private double bumpStrength = 1;
 
+        /** Only through {@link Material#builder()} and {@link Material#toBuilder()}. */
+        Builder() {}
+
+        /**
+         * Names the material, for messages.
+         *
+         * @param v the name, or null
+         * @return this builder
+         */
         public Builder name(String v) { name = v; return this; }
         // The ranges keep every pixel finite (see Ranges): colours and ka, kd, ks bounded; kr, kt
         // and filter fractions, so that secondary rays never carry more than arrives.
+        /**
+         * Sets the surface colour C.
+         *
+         * @param v linear RGB, components 0..100
+         * @return this builder
+         */
         public Builder color(Color v) { color = Ranges.colour("color", v, Ranges.MAX_COLOUR); return this; }
+        /**
+         * Sets the colour that tints transmitted light.
+         *
+         * @param v components 0..1
+         * @return this builder
+         */
         public Builder filter(Color v) { filter = Ranges.colour("filter", v, 1); return this; }
+        /**
+         * Sets the attenuation inside the medium, per channel.
+         *
+         * @param v coefficients per unit of distance, 0..1e15
+         * @return this builder
+         */
         public Builder beta(Color v) { beta = Ranges.colour("beta", v, Ranges.MAX_NUMBER); return this; }
+        /**
+         * Sets the same attenuation on every channel.
+         *
+         * @param v coefficient per unit of distance, 0..1e15
+         * @return this builder
+         */
         public Builder beta(double v) { return beta(Color.grey(v)); }
+        /**
+         * Sets the ambient coefficient.
+         *
+         * @param v 0..10
+         * @return this builder
+         */
         public Builder ka(double v) { ka = Ranges.inRange("ka", v, Ranges.MAX_COEFFICIENT); return this; }
+        /**
+         * Sets the diffuse coefficient.
+         *
+         * @param v 0..10
+         * @return this builder
+         */
         public Builder kd(double v) { kd = Ranges.inRange("kd", v, Ranges.MAX_COEFFICIENT); return this; }
+        /**
+         * Sets the specular coefficient.
+         *
+         * @param v 0..10
+         * @return this builder
+         */
         public Builder ks(double v) { ks = Ranges.inRange("ks", v, Ranges.MAX_COEFFICIENT); return this; }
+        /**
+         * Sets the Blinn-Phong exponent.
+         *
+         * @param v 0..1e6; larger is a smaller, sharper highlight
+         * @return this builder
+         */
         public Builder shininess(double v) { shininess = Ranges.inRange("shininess", v, Ranges.MAX_SHININESS); return this; }
+        /**
+         * Sets the share reflected.
+         *
+         * @param v 0..1, with kr + kt at most 1
+         * @return this builder
+         */
         public Builder kr(double v) { kr = Ranges.inRange("kr", v, 1); return this; }
+        /**
+         * Sets the share transmitted.
+         *
+         * @param v 0..1, with kr + kt at most 1
+         * @return this builder
+         */
         public Builder kt(double v) { kt = Ranges.inRange("kt", v, 1); return this; }
+        /**
+         * Turns Schlick's Fresnel term on or off (default off).
+         *
+         * @param v whether to use it
+         * @return this builder
+         */
         public Builder fresnel(boolean v) { fresnel = v; return this; }
 
         /**
          * Binds a texture, evaluated through a mapping, to a channel; each channel takes at most
          * one texture.
+         *
+         * @param channel the channel it drives
+         * @param texture the texture
+         * @param mapping how a surface point becomes texture coordinates
+         * @return this builder
          */
         public Builder texture(Channel channel, Texture texture, Mapping mapping) {
             if (channel == null || texture == null || mapping == null) throw new IllegalArgumentException("texture channel, texture and mapping must all be given");
@@ -118,13 +244,24 @@ public final class Material {
             return this;
         }
 
-        /** Scales the bump channel's height (object-space units per texture value 1); default 1. */
+        /**
+         * Scales the bump channel's height (object-space units per texture value 1); default 1.
+         *
+         * @param v the height per texture value 1; finite, at most 1e15 in magnitude, negative inverts
+         * @return this builder
+         */
         public Builder bumpStrength(double v) {
             if (!Ranges.isModest(v)) throw new IllegalArgumentException("bump strength must be a finite number at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude, found " + v);
             bumpStrength = v;
             return this;
         }
 
+        /**
+         * Sets the index of refraction of the medium inside (default 1, air).
+         *
+         * @param v above 0, at most 1e15
+         * @return this builder
+         */
         public Builder ior(double v) {
             if (!(v > 0) || !Ranges.isModest(v)) throw new IllegalArgumentException("ior must be a positive number at most " + Ranges.show(Ranges.MAX_NUMBER) + ", found " + v);
             ior = v;
@@ -134,6 +271,7 @@ public final class Material {
         /**
          * The material.
          *
+         * @return the material
          * @throws IllegalArgumentException if kr + kt exceeds 1: what a surface reflects and
          *         transmits together cannot exceed what arrives (it would also let a path of
          *         many surfaces grow without bound)

@@ -10,7 +10,15 @@ public final class Affine implements ObjectMapping {
     // Intermediate products while a placement is evaluated.
     final double[] factor = new double[12], factorInv = new double[12], tmp = new double[12];
 
-    /** Writes {@code world} mapped into object space (the inverse) into {@code local}. */
+    /** Scratch with no transform in it yet: {@link Placement#evaluate} fills it before any use. */
+    public Affine() {}
+
+    /**
+     * Writes {@code world} mapped into object space (the inverse) into {@code local}.
+     *
+     * @param world a ray in world space
+     * @param local receives the ray in object space (same t parameter)
+     */
     public void toLocal(Ray world, Ray local) { Transform.toLocal(inv, world, local); }
 
     /** Writes the point {@code world[0..2]} mapped into object space to {@code local[0..2]}. */
@@ -27,6 +35,10 @@ public final class Affine implements ObjectMapping {
     /** False: an evaluated motion is treated as a general transform. */
     @Override public boolean isIdentity() { return false; }
 
-    /** A copy as an immutable transform (allocates; for tests and tools). */
+    /**
+     * A copy as an immutable transform (allocates; for tests and tools).
+     *
+     * @return the transform held now
+     */
     public Transform toTransform() { return Transform.ofMatrix(m.clone()); }
 }

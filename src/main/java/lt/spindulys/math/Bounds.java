@@ -5,41 +5,82 @@ package lt.spindulys.math;
  * (an infinite plane) has infinite extents. Acceleration structures copy bounds into flat arrays.
  */
 public record Bounds(double minX, double minY, double minZ, double maxX, double maxY, double maxZ) {
+    /** The box that holds nothing: min +infinity, max -infinity; the identity of {@link #union(Bounds)}. */
     public static final Bounds EMPTY = new Bounds(Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
             Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY);
+    /** The box that holds everything, the bounds of an unbounded object (a plane). */
     public static final Bounds INFINITE = new Bounds(Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY,
             Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY);
 
+    /**
+     * The box spanned by two corners in any order.
+     *
+     * @param a one corner
+     * @param b the opposite corner
+     * @return the box
+     */
     public static Bounds of(Vec3 a, Vec3 b) {
         return new Bounds(Math.min(a.x(), b.x()), Math.min(a.y(), b.y()), Math.min(a.z(), b.z()),
                 Math.max(a.x(), b.x()), Math.max(a.y(), b.y()), Math.max(a.z(), b.z()));
     }
 
+    /** {@return whether the box holds no point} */
     public boolean isEmpty() { return minX > maxX || minY > maxY || minZ > maxZ; }
 
+    /** {@return whether every extent is finite} */
     public boolean isFinite() {
         return Double.isFinite(minX) && Double.isFinite(minY) && Double.isFinite(minZ)
                 && Double.isFinite(maxX) && Double.isFinite(maxY) && Double.isFinite(maxZ);
     }
 
+    /**
+     * The smallest box holding both.
+     *
+     * @param o another box
+     * @return the union
+     */
     public Bounds union(Bounds o) {
         return new Bounds(Math.min(minX, o.minX), Math.min(minY, o.minY), Math.min(minZ, o.minZ),
                 Math.max(maxX, o.maxX), Math.max(maxY, o.maxY), Math.max(maxZ, o.maxZ));
     }
 
+    /**
+     * The smallest box holding this one and a point.
+     *
+     * @param x the point's x
+     * @param y the point's y
+     * @param z the point's z
+     * @return the union
+     */
     public Bounds union(double x, double y, double z) {
         return new Bounds(Math.min(minX, x), Math.min(minY, y), Math.min(minZ, z),
                 Math.max(maxX, x), Math.max(maxY, y), Math.max(maxZ, z));
     }
 
+    /**
+     * The common part of both boxes.
+     *
+     * @param o another box
+     * @return the intersection (empty if they do not overlap)
+     */
     public Bounds intersection(Bounds o) {
         return new Bounds(Math.max(minX, o.minX), Math.max(minY, o.minY), Math.max(minZ, o.minZ),
                 Math.min(maxX, o.maxX), Math.min(maxY, o.maxY), Math.min(maxZ, o.maxZ));
     }
 
+    /** {@return the low corner} */
     public Vec3 min() { return new Vec3(minX, minY, minZ); }
+    /** {@return the high corner} */
     public Vec3 max() { return new Vec3(maxX, maxY, maxZ); }
 
+    /**
+     * Whether a point lies in the box, boundary included.
+     *
+     * @param x the point's x
+     * @param y the point's y
+     * @param z the point's z
+     * @return whether it is inside
+     */
     public boolean contains(double x, double y, double z) {
         return x >= minX && x <= maxX && y >= minY && y <= maxY && z >= minZ && z <= maxZ;
     }
@@ -49,6 +90,10 @@ public record Bounds(double minX, double minY, double minZ, double maxX, double 
      * false if the ray misses (always for an empty box). Infinite box extents work because IEEE
      * arithmetic gives +-inf; a ray parallel to a slab is inside it exactly when its origin is
      * (boundary included), whatever the sign of the zero direction component.
+     *
+     * @param r the ray
+     * @param outRange receives the entry and exit t, {@code outRange[0..1]}
+     * @return whether the ray passes through the box within its range
      */
     public boolean hitRange(Ray r, double[] outRange) {
         // An inverted slab would otherwise be reordered by the swap below and look non-empty.
@@ -76,7 +121,12 @@ public record Bounds(double minX, double minY, double minZ, double maxX, double 
         return true;
     }
 
-    /** The bounds of this box after an affine transform (all eight corners transformed). */
+    /**
+     * The bounds of this box after an affine transform (all eight corners transformed).
+     *
+     * @param m the transform
+     * @return the bounds of the transformed box
+     */
     public Bounds transformed(Transform m) {
         if (isEmpty()) return this;
         if (!isFinite()) return m.isIdentity() ? this : INFINITE;

@@ -52,6 +52,14 @@ public final class Motion {
      * {@code axis}, both about {@code pivot}, then {@code translation}) between {@code start} and
      * {@code finish} (NaN: the shutter's open or close time).
      *
+     * @param scale end scale factors on x, y and z (1 1 1: none)
+     * @param axis rotation axis (any length but zero)
+     * @param degrees end rotation angle, degrees
+     * @param translation end translation
+     * @param pivot centre of the scale and the rotation
+     * @param start time the motion starts; NaN: the shutter's open time
+     * @param finish time the motion ends; NaN: the shutter's close time
+     * @return the motion
      * @throws IllegalArgumentException if a value is not finite, a scale is not positive, the
      *         axis of a non-zero rotation is zero, or finish is not after start
      */
@@ -60,7 +68,14 @@ public final class Motion {
         return new Motion(scale, axis, degrees, translation, pivot, start, finish, null);
     }
 
-    /** A translation by {@code translation} between {@code start} and {@code finish} (NaN: the shutter's). */
+    /**
+     * A translation by {@code translation} between {@code start} and {@code finish} (NaN: the shutter's).
+     *
+     * @param translation end translation
+     * @param start time the motion starts; NaN: the shutter's open time
+     * @param finish time the motion ends; NaN: the shutter's close time
+     * @return the motion
+     */
     public static Motion translation(Vec3 translation, double start, double finish) {
         return of(new Vec3(1, 1, 1), Vec3.Y, 0, translation, Vec3.ZERO, start, finish);
     }
@@ -70,6 +85,11 @@ public final class Motion {
      * from {@code start} to {@code finish} (NaN: the shutter's), so it travels
      * speed * (finish - start).
      *
+     * @param direction direction of travel (normalised here)
+     * @param speed distance per unit of time
+     * @param start time the motion starts; NaN: the shutter's open time
+     * @param finish time the motion ends; NaN: the shutter's close time
+     * @return the motion
      * @throws IllegalArgumentException if the direction is zero or a value is not finite
      */
     public static Motion linear(Vec3 direction, double speed, double start, double finish) {
@@ -90,6 +110,9 @@ public final class Motion {
      * A shutter of no length (open == close) may make them equal: the object is then where it
      * starts at that instant, and the motion never shows.
      *
+     * @param open the shutter's open time
+     * @param close the shutter's close time
+     * @return the resolved motion
      * @throws IllegalArgumentException if the resulting finish is not after the start
      */
     public Motion resolve(double open, double close) {
@@ -103,19 +126,38 @@ public final class Motion {
         return new Motion(new Vec3(sx, sy, sz), new Vec3(ax, ay, az), Math.toDegrees(radians), move, new Vec3(px, py, pz), s, f, null);
     }
 
-    /** True when start and finish are known (not left to the shutter). */
+    /**
+     * True when start and finish are known (not left to the shutter).
+     *
+     * @return whether both times are set
+     */
     public boolean isResolved() { return !Double.isNaN(start) && !Double.isNaN(finish); }
 
+    /** {@return the time the motion starts; NaN until resolved against a shutter} */
     public double start() { return start; }
+    /** {@return the time the motion ends; NaN until resolved against a shutter} */
     public double finish() { return finish; }
+    /** {@return the end scale factors on x, y and z} */
     public Vec3 scale() { return new Vec3(sx, sy, sz); }
+    /** {@return the rotation axis, unit length} */
     public Vec3 axis() { return new Vec3(ax, ay, az); }
+    /** {@return the end rotation angle in degrees} */
     public double degrees() { return Math.toDegrees(radians); }
-    /** The end translation (zero for an unresolved linear motion, whose distance is not known yet). */
+    /**
+     * The end translation (zero for an unresolved linear motion, whose distance is not known yet).
+     *
+     * @return the translation at the finish
+     */
     public Vec3 translation() { return new Vec3(tx, ty, tz); }
+    /** {@return the centre of the scale and the rotation} */
     public Vec3 pivot() { return new Vec3(px, py, pz); }
 
-    /** The fraction of the motion done at {@code time}: 0 before the start, 1 after the finish. */
+    /**
+     * The fraction of the motion done at {@code time}: 0 before the start, 1 after the finish.
+     *
+     * @param time a time in the shutter's units
+     * @return the fraction done, in [0, 1]
+     */
     public double fraction(double time) {
         requireResolved();
         if (!(time > start)) return 0;
@@ -123,7 +165,12 @@ public final class Motion {
         return (time - start) / (finish - start);
     }
 
-    /** The transform at {@code time} (allocates; for building and tests, not the per-ray path). */
+    /**
+     * The transform at {@code time} (allocates; for building and tests, not the per-ray path).
+     *
+     * @param time a time in the shutter's units
+     * @return the transform at that time
+     */
     public Transform at(double time) {
         double[] m = new double[12];
         matrices(time, m, null);
@@ -134,6 +181,10 @@ public final class Motion {
      * Writes the row-major 3x4 matrix of the transform at {@code time} to {@code m} and, if
      * {@code inv} is not null, its inverse, computed analytically (transposed rotation, reciprocal
      * scale) rather than by a general inversion. No allocation.
+     *
+     * @param time a time in the shutter's units
+     * @param m receives 12 doubles
+     * @param inv receives 12 doubles, or null to skip the inverse
      */
     public void matrices(double time, double[] m, double[] inv) {
         double f = fraction(time);
@@ -178,6 +229,9 @@ public final class Motion {
      * p = R q + ..., |p''| &lt;= w^2 |q| + 2 w |q'|, so the union is padded by that much. A box
      * contains the moved box at t because the transform at t is affine: the image of the box is
      * the hull of its moved corners.
+     *
+     * @param b object-space bounds
+     * @return bounds that hold {@code b} at every time of the motion
      */
     public Bounds sweep(Bounds b) {
         requireResolved();

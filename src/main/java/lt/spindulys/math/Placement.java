@@ -28,12 +28,21 @@ public final class Placement {
         this.close = close;
     }
 
-    /** A static placement with the default shutter. */
+    /**
+     * A static placement with the default shutter.
+     *
+     * @param t the transform
+     * @return the placement
+     */
     public static Placement of(Transform t) { return of(t, OPEN, CLOSE); }
 
     /**
      * A static placement within the shutter interval [open, close].
      *
+     * @param t the transform
+     * @param open the shutter's open time
+     * @param close the shutter's close time, at least {@code open}
+     * @return the placement
      * @throws IllegalArgumentException if the times are not finite or close is before open
      */
     public static Placement of(Transform t, double open, double close) {
@@ -41,32 +50,57 @@ public final class Placement {
         return new Placement(new Transform[] {t}, new Motion[0], open, close);
     }
 
-    /** Refuses a shutter interval that is not finite or closes before it opens. */
+    /**
+     * Refuses a shutter interval that is not finite or closes before it opens.
+     *
+     * @param open the shutter's open time
+     * @param close the shutter's close time
+     */
     public static void checkShutter(double open, double close) {
         if (!Double.isFinite(open) || !Double.isFinite(close)) throw new IllegalArgumentException("shutter times must be finite, found " + open + " " + close);
         if (close < open) throw new IllegalArgumentException("shutter must close after it opens, found open " + open + " and close " + close);
     }
 
+    /** {@return the time the shutter opens} */
     public double open() { return open; }
+    /** {@return the time the shutter closes (equal to the open time: no motion blur)} */
     public double close() { return close; }
 
-    /** True if nothing in it moves: {@link #staticTransform()} is the whole placement. */
+    /**
+     * True if nothing in it moves: {@link #staticTransform()} is the whole placement.
+     *
+     * @return whether nothing moves
+     */
     public boolean isStatic() { return motions.length == 0; }
 
-    /** The transform of a static placement. */
+    /**
+     * The transform of a static placement.
+     *
+     * @return the one transform of a static placement
+     */
     public Transform staticTransform() {
         if (!isStatic()) throw new IllegalStateException("a moving placement has no single transform");
         return statics[0];
     }
 
-    /** This placement followed by {@code t}. */
+    /**
+     * This placement followed by {@code t}.
+     *
+     * @param t the transform applied after this placement
+     * @return the combined placement (this one is unchanged)
+     */
     public Placement then(Transform t) {
         Transform[] s = statics.clone();
         s[s.length - 1] = s[s.length - 1].then(t);
         return new Placement(s, motions, open, close);
     }
 
-    /** This placement followed by {@code m}, its open times filled in from this shutter. */
+    /**
+     * This placement followed by {@code m}, its open times filled in from this shutter.
+     *
+     * @param m the motion applied after this placement
+     * @return the combined placement (this one is unchanged)
+     */
     public Placement then(Motion m) {
         Transform[] s = Arrays.copyOf(statics, statics.length + 1);
         s[s.length - 1] = Transform.IDENTITY;
@@ -75,7 +109,12 @@ public final class Placement {
         return new Placement(s, ms, open, close);
     }
 
-    /** This placement followed by {@code next} (with next's shutter). */
+    /**
+     * This placement followed by {@code next} (with next's shutter).
+     *
+     * @param next the placement applied after this one
+     * @return the combined placement (this one is unchanged)
+     */
     public Placement then(Placement next) {
         Transform[] s = new Transform[statics.length + next.statics.length - 1];
         System.arraycopy(statics, 0, s, 0, statics.length);
@@ -90,6 +129,9 @@ public final class Placement {
      * Writes the transform at {@code time} and its inverse into {@code out}. The inverse is
      * composed from the factors' own (precomputed for static ones, analytic for motions), never
      * by a general inversion.
+     *
+     * @param time a time in the shutter interval
+     * @param out receives the transform and its inverse
      */
     public void evaluate(double time, Affine out) {
         double[] m = out.m, inv = out.inv, f = out.factor, fi = out.factorInv, tmp = out.tmp;
@@ -111,7 +153,12 @@ public final class Placement {
         System.arraycopy(out.tmp, 0, out.inv, 0, 12);
     }
 
-    /** The transform at {@code time} (allocates; for tests and tools). */
+    /**
+     * The transform at {@code time} (allocates; for tests and tools).
+     *
+     * @param time a time in the shutter interval
+     * @return the transform at that time
+     */
     public Transform at(double time) {
         Affine a = new Affine();
         evaluate(time, a);
@@ -123,6 +170,9 @@ public final class Placement {
      * motion's {@link Motion#sweep} of the box carried so far, static factors by their corners.
      * Rigorous (never misses the object at any time), slightly loose for nested motions. A static
      * placement gives exactly {@code local.transformed(staticTransform())}.
+     *
+     * @param local object-space bounds
+     * @return world bounds over the whole shutter interval
      */
     public Bounds bounds(Bounds local) {
         Bounds b = local.transformed(statics[0]);

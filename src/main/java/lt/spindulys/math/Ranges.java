@@ -50,19 +50,39 @@ public final class Ranges {
      */
     public static final double MAX_IRRADIANCE = 1e27;
 
-    /** True if {@code v} is a number (not NaN) of magnitude at most {@link #MAX_NUMBER}. */
+    /**
+     * True if {@code v} is a number (not NaN) of magnitude at most {@link #MAX_NUMBER}.
+     *
+     * @param v the value
+     * @return whether it is a number of modest magnitude
+     */
     public static boolean isModest(double v) { return Math.abs(v) <= MAX_NUMBER; }
 
-    /** True if every component is {@link #isModest}. */
+    /**
+     * True if every component is {@link #isModest}.
+     *
+     * @param v the vector
+     * @return whether every component is modest
+     */
     public static boolean isModest(Vec3 v) { return isModest(v.x()) && isModest(v.y()) && isModest(v.z()); }
 
-    /** "1e15": a bound for a message. */
+    /**
+     * "1e15": a bound for a message.
+     *
+     * @param bound a limit
+     * @return its short text, as messages show it
+     */
     public static String show(double bound) {
         if (bound >= 1e4) return String.format(Locale.ROOT, "%.0e", bound).replace("e+", "e").replace("e0", "e");
         return bound == Math.rint(bound) ? Long.toString((long) bound) : Double.toString(bound);
     }
 
-    /** "1e20", "1.5e16", "-3e-7", "250": a magnitude for a message, to three significant digits. */
+    /**
+     * "1e20", "1.5e16", "-3e-7", "250": a magnitude for a message, to three significant digits.
+     *
+     * @param v a value
+     * @return its text with three significant digits
+     */
     public static String approx(double v) {
         if (v == Math.rint(v) && Math.abs(v) < 1e6) return Long.toString((long) v);
         String s = String.format(Locale.ROOT, "%.3g", v);
@@ -74,13 +94,27 @@ public final class Ranges {
         return mantissa + "e" + exponent;
     }
 
-    /** {@code v}, if it is in [0, max]; else "WHAT must be between 0 and MAX, found V". */
+    /**
+     * {@code v}, if it is in [0, max]; else "WHAT must be between 0 and MAX, found V".
+     *
+     * @param what what the value is, for the message
+     * @param v the value
+     * @param max the largest value accepted
+     * @return {@code v}
+     */
     public static double inRange(String what, double v, double max) {
         if (!(v >= 0 && v <= max)) throw new IllegalArgumentException(what + " must be between 0 and " + show(max) + ", found " + v);
         return v;
     }
 
-    /** {@code c}, if every component is in [0, max]; else "WHAT must have components between 0 and MAX, found C". */
+    /**
+     * {@code c}, if every component is in [0, max]; else "WHAT must have components between 0 and MAX, found C".
+     *
+     * @param what what the colour is, for the message
+     * @param c the colour
+     * @param max the largest component accepted
+     * @return {@code c}
+     */
     public static Color colour(String what, Color c, double max) {
         if (c == null) throw new IllegalArgumentException(what + " is missing");
         if (!(c.r() >= 0 && c.r() <= max && c.g() >= 0 && c.g() <= max && c.b() >= 0 && c.b() <= max)) {
@@ -89,13 +123,25 @@ public final class Ranges {
         return c;
     }
 
-    /** {@code v} if {@link #isModest}; else "WHAT must be finite and at most 1e15 in magnitude, found V". */
+    /**
+     * {@code v} if {@link #isModest}; else "WHAT must be finite and at most 1e15 in magnitude, found V".
+     *
+     * @param what what the value is, for the message
+     * @param v the value
+     * @return {@code v}
+     */
     public static double modest(String what, double v) {
         if (!isModest(v)) throw new IllegalArgumentException(what + " must be finite and at most " + show(MAX_NUMBER) + " in magnitude, found " + v);
         return v;
     }
 
-    /** {@code v} if every component {@link #isModest}; else as {@link #modest(String, double)}. */
+    /**
+     * {@code v} if every component {@link #isModest}; else as {@link #modest(String, double)}.
+     *
+     * @param what what the vector is, for the message
+     * @param v the vector
+     * @return {@code v}
+     */
     public static Vec3 modest(String what, Vec3 v) {
         if (v == null || !isModest(v)) throw new IllegalArgumentException(what + " must be finite and at most " + show(MAX_NUMBER) + " in magnitude, found " + v);
         return v;

@@ -6,6 +6,7 @@ package lt.spindulys.math;
  * order they are written. The in-place methods serve the per-ray paths without allocation.
  */
 public final class Transform implements ObjectMapping {
+    /** The transform that changes nothing. */
     public static final Transform IDENTITY = new Transform(new double[] {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0});
 
     /** Row-major 3x4: m[0..3] is the first row (x' = m0 x + m1 y + m2 z + m3). */
@@ -22,23 +23,56 @@ public final class Transform implements ObjectMapping {
         this.identity = id;
     }
 
-    /** A transform from a row-major 3x4 matrix; throws if it is singular or not finite. */
+    /**
+     * A transform from a row-major 3x4 matrix; throws if it is singular or not finite.
+     *
+     * @param rowMajor3x4 12 numbers: three rows of four, the last column the translation
+     * @return the transform
+     */
     public static Transform ofMatrix(double... rowMajor3x4) {
         if (rowMajor3x4.length != 12) throw new IllegalArgumentException("expected 12 matrix entries, found " + rowMajor3x4.length);
         return new Transform(rowMajor3x4.clone());
     }
 
+    /**
+     * A translation.
+     *
+     * @param x distance along x
+     * @param y distance along y
+     * @param z distance along z
+     * @return the transform
+     */
     public static Transform translate(double x, double y, double z) {
         return new Transform(new double[] {1, 0, 0, x, 0, 1, 0, y, 0, 0, 1, z});
     }
 
+    /**
+     * A translation by {@code v}.
+     *
+     * @param v the offset
+     * @return the transform
+     */
     public static Transform translate(Vec3 v) { return translate(v.x(), v.y(), v.z()); }
 
+    /**
+     * A scale about the origin; a negative factor mirrors.
+     *
+     * @param x factor on x
+     * @param y factor on y
+     * @param z factor on z
+     * @return the transform
+     */
     public static Transform scale(double x, double y, double z) {
         return new Transform(new double[] {x, 0, 0, 0, 0, y, 0, 0, 0, 0, z, 0});
     }
 
-    /** Rotation by {@code degrees} about {@code axis} (right-handed, counter-clockwise looking down the axis). */
+    /**
+     * Rotation by {@code degrees} about {@code axis} (right-handed, counter-clockwise looking down the axis).
+     *
+     * @param axis the axis (any length but zero)
+     * @param degrees the angle, degrees
+     * @return the transform
+     */
     public static Transform rotate(Vec3 axis, double degrees) {
         Vec3 a = axis.normalized();
         double rad = Math.toRadians(degrees), c = Math.cos(rad), s = Math.sin(rad), t = 1 - c;
@@ -49,11 +83,34 @@ public final class Transform implements ObjectMapping {
                 t * x * z - s * y, t * y * z + s * x, t * z * z + c, 0});
     }
 
+    /**
+     * Rotation about the x axis.
+     *
+     * @param degrees the angle, degrees
+     * @return the transform
+     */
     public static Transform rotateX(double degrees) { return rotate(Vec3.X, degrees); }
+    /**
+     * Rotation about the y axis.
+     *
+     * @param degrees the angle, degrees
+     * @return the transform
+     */
     public static Transform rotateY(double degrees) { return rotate(Vec3.Y, degrees); }
+    /**
+     * Rotation about the z axis.
+     *
+     * @param degrees the angle, degrees
+     * @return the transform
+     */
     public static Transform rotateZ(double degrees) { return rotate(Vec3.Z, degrees); }
 
-    /** This transform followed by {@code next}. */
+    /**
+     * This transform followed by {@code next}.
+     *
+     * @param next the transform applied after this one
+     * @return the combined transform
+     */
     public Transform then(Transform next) {
         if (identity) return next;
         if (next.identity) return this;
@@ -62,29 +119,52 @@ public final class Transform implements ObjectMapping {
         return new Transform(r);
     }
 
+    /** {@return the inverse transform} */
     public Transform inverse() { return new Transform(inv.clone()); }
     @Override public boolean isIdentity() { return identity; }
 
+    /**
+     * Maps a point (translation applied).
+     *
+     * @param p a point in object space
+     * @return the point in world space
+     */
     public Vec3 point(Vec3 p) {
         return new Vec3(m[0] * p.x() + m[1] * p.y() + m[2] * p.z() + m[3],
                 m[4] * p.x() + m[5] * p.y() + m[6] * p.z() + m[7],
                 m[8] * p.x() + m[9] * p.y() + m[10] * p.z() + m[11]);
     }
 
+    /**
+     * Maps a direction (translation ignored, not normalised).
+     *
+     * @param v a vector in object space
+     * @return the vector in world space
+     */
     public Vec3 vector(Vec3 v) {
         return new Vec3(m[0] * v.x() + m[1] * v.y() + m[2] * v.z(),
                 m[4] * v.x() + m[5] * v.y() + m[6] * v.z(),
                 m[8] * v.x() + m[9] * v.y() + m[10] * v.z());
     }
 
-    /** A surface normal mapped by the inverse transpose (not normalised). */
+    /**
+     * A surface normal mapped by the inverse transpose (not normalised).
+     *
+     * @param n a normal in object space
+     * @return the normal in world space
+     */
     public Vec3 normal(Vec3 n) {
         return new Vec3(inv[0] * n.x() + inv[4] * n.y() + inv[8] * n.z(),
                 inv[1] * n.x() + inv[5] * n.y() + inv[9] * n.z(),
                 inv[2] * n.x() + inv[6] * n.y() + inv[10] * n.z());
     }
 
-    /** Writes {@code world} mapped into this transform's object space (the inverse) into {@code local}. */
+    /**
+     * Writes {@code world} mapped into this transform's object space (the inverse) into {@code local}.
+     *
+     * @param world a ray in world space
+     * @param local receives the ray in object space (same t parameter)
+     */
     public void toLocal(Ray world, Ray local) { toLocal(inv, world, local); }
 
     /** Writes the point {@code world[0..2]} mapped into object space (the inverse) to {@code local[0..2]}. */

@@ -17,6 +17,8 @@ package lt.spindulys.mesh;
  */
 public record MeshData(double[] positions, double[] normals, double[] uvs,
                        int[] faceSizes, int[] vertexIndex, int[] normalIndex, int[] uvIndex, String source) {
+    /** {@return the number of positions} */
     public int vertexCount() { return positions.length / 3; }
+    /** {@return the number of faces} */
     public int faceCount() { return faceSizes.length; }
 }

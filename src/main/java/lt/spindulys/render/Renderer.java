@@ -1,5 +1,7 @@
 package lt.spindulys.render;
 
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
@@ -73,20 +75,37 @@ public final class Renderer {
     private Renderer() {}
 
     /**
-     * The finished frame and what it cost.
+     * Renders {@code scene} on every core the JVM reports, without progress reports: the one call
+     * from a built scene to an image. Use a {@link RenderJob} for progress, cancellation, fewer
+     * threads, or the whole route from a scene file to written files.
      *
-     * @param aovs the render passes the scene's settings ask for, or null when they ask for none
+     * @throws lt.spindulys.limits.InsufficientMemoryException (an IllegalArgumentException) if
+     *         the heap cannot hold the frame and its passes
+     * @throws InterruptedException if the calling thread is interrupted (the workers are stopped)
      */
-    public record Result(FrameBuffer image, RenderStats stats, AovFrame aovs) {}
+    public static RenderResult render(Scene scene) throws InterruptedException {
+        return render(scene, Runtime.getRuntime().availableProcessors(), null);
+    }
 
     /**
-     * Renders {@code scene} with {@code threads} threads (at least 1), reporting progress.
+     * Renders {@code scene} with {@code threads} threads (at least 1), reporting progress to
+     * {@code progress} (null: no reports). The image is the same for any thread count.
      * Interrupting the calling thread stops the workers and throws InterruptedException.
      *
      * @throws lt.spindulys.limits.InsufficientMemoryException (an IllegalArgumentException) if
      *         the heap cannot hold the frame and its passes ({@link FrameBuffer#checkHeap})
      */
-    public static Result render(Scene scene, int threads, ProgressListener progress) throws InterruptedException {
+    public static RenderResult render(Scene scene, int threads, ProgressListener progress) throws InterruptedException {
+        return render(scene, threads, progress, null);
+    }
+
+    /**
+     * {@link #render(Scene, int, ProgressListener)}, stopping early with a
+     * {@link CancellationException} once {@code cancelled} is set (checked between tiles; null:
+     * never).
+     */
+    static RenderResult render(Scene scene, int threads, ProgressListener listener, AtomicBoolean cancelled) throws InterruptedException {
+        ProgressListener progress = listener != null ? listener : ProgressListener.NONE;
         if (threads < 1) throw new IllegalArgumentException("threads must be at least 1, found " + threads);
         RenderSettings st = scene.settings();
         int w = st.width(), h = st.height();
@@ -104,11 +123,11 @@ public final class Renderer {
                     : new Pass(st.samplesPerPixel() / steps, passSeed(st.seed(), k), st.shutterTime((k + 0.5) / steps), k > 0, k == steps - 1 ? steps : 1);
             long done = (long) k * w * h, total = (long) steps * w * h;
             ProgressListener p = (pixels, all) -> progress.progress(done + pixels, total);
-            long[] c = renderPass(scene, threads, p, integrator, fb, k == 0 ? aovs : null, pass, tilesX, tiles);
+            long[] c = renderPass(scene, threads, p, integrator, fb, k == 0 ? aovs : null, pass, tilesX, tiles, cancelled);
             for (int i = 0; i < 4; i++) sum[i] += c[i];
         }
         double seconds = (System.nanoTime() - start) / 1e9;
-        return new Result(fb, new RenderStats(sum[0], sum[1], sum[2], sum[3], seconds), aovs);
+        return new RenderResult(st, fb, aovs, new RenderStats(sum[0], sum[1], sum[2], sum[3], seconds));
     }
 
     /**
@@ -129,7 +148,7 @@ public final class Renderer {
 
     /** Renders one pass on {@code threads} threads; returns its ray counts (camera, shadow, reflection, refraction). */
     private static long[] renderPass(Scene scene, int threads, ProgressListener progress, WhittedIntegrator integrator, FrameBuffer fb,
-                                     AovFrame aovs, Pass pass, int tilesX, int tiles) throws InterruptedException {
+                                     AovFrame aovs, Pass pass, int tilesX, int tiles, AtomicBoolean cancelled) throws InterruptedException {
         RenderSettings st = scene.settings();
         int w = st.width(), h = st.height();
         int stride = spreadStride(tiles);
@@ -148,7 +167,7 @@ public final class Renderer {
                 double[] colour = new double[4];
                 try {
                     for (int next; (next = nextTile.getAndIncrement()) < tiles && failure.get() == null; ) {
-                        if (Thread.currentThread().isInterrupted()) return;
+                        if (Thread.currentThread().isInterrupted() || cancelled != null && cancelled.get()) return;
                         int t = tileAt(next, tiles, stride);
                         int x0 = (t % tilesX) * TILE, y0 = (t / tilesX) * TILE;
                         int x1 = Math.min(x0 + TILE, w), y1 = Math.min(y0 + TILE, h);
@@ -169,6 +188,7 @@ public final class Renderer {
             for (Thread worker : workers) worker.interrupt();
             throw e;
         }
+        if (cancelled != null && cancelled.get()) throw new CancellationException("the render was cancelled");
         Throwable f = failure.get();
         if (f instanceof RuntimeException re) throw re;
         if (f instanceof Error err) throw err;

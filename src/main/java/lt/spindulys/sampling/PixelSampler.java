@@ -2,6 +2,8 @@ package lt.spindulys.sampling;
 
 import java.util.Objects;
 
+import lt.spindulys.camera.LensPattern;
+
 /**
  * Stratified samples for one pixel: film position on a grid as square as the sample count
  * allows (n = cols x rows), jittered within each cell; lens and time samples are stratified too

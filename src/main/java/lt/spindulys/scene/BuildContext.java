@@ -2,7 +2,6 @@ package lt.spindulys.scene;
 
 import java.util.Objects;
 
-import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.camera.Camera;
 import lt.spindulys.material.Material;
 import lt.spindulys.math.Placement;

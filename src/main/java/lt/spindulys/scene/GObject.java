@@ -44,6 +44,11 @@ import lt.spindulys.trace.TracedObject;
  * transform, own motion at t, then the parent's mapping at t (a {@link Placement}). A ray is
  * answered at its {@link Ray#time}, and shading uses the same time. Objects with no motion
  * anywhere in their chain keep one composed transform and pay nothing per ray for the feature.
+ *
+ * <p><b>Not for subclassing outside this library.</b> The per-ray methods ({@link #intersect},
+ * {@link #shade}, {@link #spans} and the {@code *Local} ones) take the renderer's hit records,
+ * which the module {@code lt.spindulys} does not export: they are renderer machinery, not API.
+ * Build scenes from the shapes here and combine them with {@link Bool}.
  */
 public abstract class GObject implements TracedObject, Cloneable {
     private Transform transform = Transform.IDENTITY;

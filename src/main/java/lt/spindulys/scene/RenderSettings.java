@@ -2,15 +2,23 @@ package lt.spindulys.scene;
 
 import java.util.Collections;
 import java.util.EnumSet;
+import java.util.Objects;
 import java.util.Set;
 
-import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.image.Aov;
 import lt.spindulys.math.Color;
+import lt.spindulys.math.Placement;
+import lt.spindulys.math.Ranges;
 
 /**
- * Image and integrator settings of a scene, immutable; the {@code with*} methods validate and
- * return a changed copy (the command line overrides a scene file's values this way).
+ * Image and integrator settings of a scene, immutable. Make them with a {@link Builder}, which
+ * starts from {@link #DEFAULT} and checks each value as it is given; {@link #toBuilder()} gives a
+ * changed copy (the command line overrides a scene file's values this way):
+ *
+ * <pre>{@code
+ * RenderSettings s = RenderSettings.builder().size(800, 600).samplesPerPixel(16).build();
+ * RenderSettings hd = s.toBuilder().size(1920, 1080).build();
+ * }</pre>
  *
  * @param width           image width in pixels
  * @param height          image height in pixels
@@ -36,70 +44,315 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
     /** Largest accepted image side, so that a typo cannot ask for terabytes. */
     public static final int MAX_SIDE = 32768;
 
-    public static final RenderSettings DEFAULT = new RenderSettings(640, 480, 1, 8, 0.001, Color.BLACK, Color.WHITE, false, 0);
+    /**
+     * The settings of a scene that gives none, and where {@link #builder()} starts: 640x480, 1
+     * sample per pixel, depth 8, minimum contribution 0.001, black background, white ambient,
+     * linear encoding, seed 0, the default accelerator, no passes, shutter [0, 1] in one pass.
+     */
+    public static final RenderSettings DEFAULT = new RenderSettings(640, 480, 1, 8, 0.001, Color.BLACK, Color.WHITE, false, 0,
+            AcceleratorKind.DEFAULT, Set.of(), Placement.OPEN, Placement.CLOSE, 1);
 
-    /** Settings with the default acceleration structure. */
-    public RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, double minContribution,
-                          Color background, Color ambient, boolean srgb, long seed) {
-        this(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, AcceleratorKind.DEFAULT);
-    }
-
-    /** Settings with the default shutter [0, 1] in one pass. */
-    public RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, double minContribution,
-                          Color background, Color ambient, boolean srgb, long seed, AcceleratorKind accelerator, Set<Aov> aovs) {
-        this(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, aovs,
-                lt.spindulys.math.Placement.OPEN, lt.spindulys.math.Placement.CLOSE, 1);
-    }
-
-    /** Settings without render passes. */
-    public RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, double minContribution,
-                          Color background, Color ambient, boolean srgb, long seed, AcceleratorKind accelerator) {
-        this(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, Set.of());
-    }
-
+    /**
+     * Checks every value as the {@link Builder}'s methods do, with the same messages; the
+     * builder reads better than this positional form.
+     *
+     * @param width           image width in pixels
+     * @param height          image height in pixels
+     * @param samplesPerPixel antialiasing samples per pixel
+     * @param maxDepth        maximum number of reflection/refraction bounces
+     * @param minContribution secondary rays whose weight falls below this are not traced
+     * @param background      colour of rays that hit nothing
+     * @param ambient         ambient light intensity Ia
+     * @param srgb            encode 8-bit outputs as sRGB
+     * @param seed            global seed of every random number
+     * @param accelerator     the acceleration structure
+     * @param aovs            render passes to write beside the image (copied)
+     * @param shutterOpen     time the shutter opens
+     * @param shutterClose    time the shutter closes
+     * @param timeSteps       1: one pass; N &gt; 1: N passes each at one time
+     * @throws IllegalArgumentException if a value is out of its range
+     * @throws NullPointerException     if accelerator or aovs is null
+     */
     public RenderSettings {
-        if (width < 1 || width > MAX_SIDE) throw new IllegalArgumentException("width must be between 1 and " + MAX_SIDE + ", found " + width);
-        if (height < 1 || height > MAX_SIDE) throw new IllegalArgumentException("height must be between 1 and " + MAX_SIDE + ", found " + height);
-        if (samplesPerPixel < 1 || samplesPerPixel > 65536) throw new IllegalArgumentException("samples per pixel must be between 1 and 65536, found " + samplesPerPixel);
-        if (maxDepth < 0 || maxDepth > 64) throw new IllegalArgumentException("maxdepth must be between 0 and 64, found " + maxDepth);
-        if (!(minContribution >= 0 && minContribution < 1)) throw new IllegalArgumentException("mincontribution must be in [0, 1), found " + minContribution);
-        lt.spindulys.math.Ranges.colour("background", background, lt.spindulys.math.Ranges.MAX_COLOUR);
-        lt.spindulys.math.Ranges.colour("ambient", ambient, lt.spindulys.math.Ranges.MAX_COLOUR);
-        java.util.Objects.requireNonNull(accelerator, "accelerator");
-        java.util.Objects.requireNonNull(aovs, "aovs");
-        lt.spindulys.math.Placement.checkShutter(shutterOpen, shutterClose);
-        if (timeSteps < 1 || timeSteps > 65536) throw new IllegalArgumentException("timesteps must be between 1 and 65536, found " + timeSteps);
-        // An EnumSet copy: declaration order whatever the caller's set, and no later changes.
-        aovs = aovs.isEmpty() ? Set.of() : Collections.unmodifiableSet(EnumSet.copyOf(aovs));
+        side("width", width);
+        side("height", height);
+        samples(samplesPerPixel);
+        depth(maxDepth);
+        contribution(minContribution);
+        Ranges.colour("background", background, Ranges.MAX_COLOUR);
+        Ranges.colour("ambient", ambient, Ranges.MAX_COLOUR);
+        Objects.requireNonNull(accelerator, "accelerator");
+        aovs = passes(aovs);
+        Placement.checkShutter(shutterOpen, shutterClose);
+        steps(timeSteps);
     }
 
-    public RenderSettings withSize(int w, int h) { return new RenderSettings(w, h, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, aovs, shutterOpen, shutterClose, timeSteps); }
-    public RenderSettings withSamplesPerPixel(int n) { return new RenderSettings(width, height, n, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, aovs, shutterOpen, shutterClose, timeSteps); }
-    public RenderSettings withMaxDepth(int d) { return new RenderSettings(width, height, samplesPerPixel, d, minContribution, background, ambient, srgb, seed, accelerator, aovs, shutterOpen, shutterClose, timeSteps); }
-    public RenderSettings withMinContribution(double c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, c, background, ambient, srgb, seed, accelerator, aovs, shutterOpen, shutterClose, timeSteps); }
-    public RenderSettings withBackground(Color c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, c, ambient, srgb, seed, accelerator, aovs, shutterOpen, shutterClose, timeSteps); }
-    public RenderSettings withAmbient(Color c) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, c, srgb, seed, accelerator, aovs, shutterOpen, shutterClose, timeSteps); }
-    public RenderSettings withSrgb(boolean s) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, s, seed, accelerator, aovs, shutterOpen, shutterClose, timeSteps); }
-    public RenderSettings withSeed(long s) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, s, accelerator, aovs, shutterOpen, shutterClose, timeSteps); }
+    /**
+     * A builder holding {@link #DEFAULT}'s values.
+     *
+     * @return a new builder
+     */
+    public static Builder builder() { return DEFAULT.toBuilder(); }
 
-    public RenderSettings withAccelerator(AcceleratorKind a) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, a, aovs, shutterOpen, shutterClose, timeSteps); }
+    /**
+     * A builder holding these settings' values, to make a changed copy.
+     *
+     * @return a new builder; these settings do not change
+     */
+    public Builder toBuilder() { return new Builder(this); }
 
-    /** The same settings with these render passes (an empty set: none). */
-    public RenderSettings withAovs(Set<Aov> a) { return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, a, shutterOpen, shutterClose, timeSteps); }
+    /**
+     * Settings made one value at a time, each checked when given (an
+     * {@code IllegalArgumentException} at the call that gave it, worded as the scene file's
+     * errors are); unset values stay as the builder started.
+     */
+    public static final class Builder {
+        private int width, height, samplesPerPixel, maxDepth, timeSteps;
+        private double minContribution, shutterOpen, shutterClose;
+        private Color background, ambient;
+        private boolean srgb;
+        private long seed;
+        private AcceleratorKind accelerator;
+        private Set<Aov> aovs;
 
-    /** The same settings with the shutter open over [open, close]. */
-    public RenderSettings withShutter(double open, double close) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, aovs, open, close, timeSteps);
+        private Builder(RenderSettings s) {
+            width = s.width;
+            height = s.height;
+            samplesPerPixel = s.samplesPerPixel;
+            maxDepth = s.maxDepth;
+            minContribution = s.minContribution;
+            background = s.background;
+            ambient = s.ambient;
+            srgb = s.srgb;
+            seed = s.seed;
+            accelerator = s.accelerator;
+            aovs = s.aovs;
+            shutterOpen = s.shutterOpen;
+            shutterClose = s.shutterClose;
+            timeSteps = s.timeSteps;
+        }
+
+        /**
+         * The image size in pixels, each side from 1 to {@link #MAX_SIDE}.
+         *
+         * @param width  the image width
+         * @param height the image height
+         * @return this builder
+         * @throws IllegalArgumentException if a side is out of range
+         */
+        public Builder size(int width, int height) {
+            side("width", width);
+            this.height = side("height", height);
+            this.width = width;
+            return this;
+        }
+
+        /**
+         * The image width in pixels, from 1 to {@link #MAX_SIDE}; the height stays.
+         *
+         * @param width the image width
+         * @return this builder
+         * @throws IllegalArgumentException if out of range
+         */
+        public Builder width(int width) {
+            this.width = side("width", width);
+            return this;
+        }
+
+        /**
+         * The image height in pixels, from 1 to {@link #MAX_SIDE}; the width stays.
+         *
+         * @param height the image height
+         * @return this builder
+         * @throws IllegalArgumentException if out of range
+         */
+        public Builder height(int height) {
+            this.height = side("height", height);
+            return this;
+        }
+
+        /**
+         * Antialiasing samples per pixel, from 1 to 65536.
+         *
+         * @param n the samples per pixel
+         * @return this builder
+         * @throws IllegalArgumentException if out of range
+         */
+        public Builder samplesPerPixel(int n) {
+            samplesPerPixel = samples(n);
+            return this;
+        }
+
+        /**
+         * The most reflection/refraction bounces, from 0 to 64.
+         *
+         * @param depth the bounces
+         * @return this builder
+         * @throws IllegalArgumentException if out of range
+         */
+        public Builder maxDepth(int depth) {
+            maxDepth = depth(depth);
+            return this;
+        }
+
+        /**
+         * The weight in [0, 1) below which secondary rays are not traced.
+         *
+         * @param weight the smallest weight traced
+         * @return this builder
+         * @throws IllegalArgumentException if out of range
+         */
+        public Builder minContribution(double weight) {
+            minContribution = contribution(weight);
+            return this;
+        }
+
+        /**
+         * The colour of rays that hit nothing, components from 0 to {@link Ranges#MAX_COLOUR}.
+         *
+         * @param c the background colour
+         * @return this builder
+         * @throws IllegalArgumentException if null or out of range
+         */
+        public Builder background(Color c) {
+            background = Ranges.colour("background", c, Ranges.MAX_COLOUR);
+            return this;
+        }
+
+        /**
+         * The ambient light intensity Ia, components from 0 to {@link Ranges#MAX_COLOUR}.
+         *
+         * @param c the ambient intensity
+         * @return this builder
+         * @throws IllegalArgumentException if null or out of range
+         */
+        public Builder ambient(Color c) {
+            ambient = Ranges.colour("ambient", c, Ranges.MAX_COLOUR);
+            return this;
+        }
+
+        /**
+         * Whether 8-bit outputs are encoded as sRGB (true) or hold linear values (false).
+         *
+         * @param encode true for sRGB
+         * @return this builder
+         */
+        public Builder srgb(boolean encode) {
+            srgb = encode;
+            return this;
+        }
+
+        /**
+         * The global seed of every random number.
+         *
+         * @param seed the seed
+         * @return this builder
+         */
+        public Builder seed(long seed) {
+            this.seed = seed;
+            return this;
+        }
+
+        /**
+         * The acceleration structure over the scene's objects and each mesh's triangles.
+         *
+         * @param kind the structure
+         * @return this builder
+         * @throws NullPointerException if kind is null
+         */
+        public Builder accelerator(AcceleratorKind kind) {
+            accelerator = Objects.requireNonNull(kind, "accelerator");
+            return this;
+        }
+
+        /**
+         * The render passes written beside the image (an empty set: none); the set is copied.
+         *
+         * @param passes the passes
+         * @return this builder
+         * @throws NullPointerException if passes is null
+         */
+        public Builder aovs(Set<Aov> passes) {
+            aovs = passes(passes);
+            return this;
+        }
+
+        /**
+         * The shutter interval [open, close] that ray times lie in (open == close: no motion blur).
+         *
+         * @param open  the time the shutter opens
+         * @param close the time the shutter closes
+         * @return this builder
+         * @throws IllegalArgumentException if a time is not finite or close is before open
+         */
+        public Builder shutter(double open, double close) {
+            Placement.checkShutter(open, close);
+            shutterOpen = open;
+            shutterClose = close;
+            return this;
+        }
+
+        /**
+         * Render in {@code n} time steps, from 1 to 65536 (1: one pass, every sample at its own
+         * time); the samples per pixel must be a multiple of it ({@link RenderSettings#checkTimeSteps()}).
+         *
+         * @param n the time steps
+         * @return this builder
+         * @throws IllegalArgumentException if out of range
+         */
+        public Builder timeSteps(int n) {
+            timeSteps = steps(n);
+            return this;
+        }
+
+        /**
+         * The settings with the values given so far.
+         *
+         * @return new settings; the builder can go on to make more
+         */
+        public RenderSettings build() {
+            return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed,
+                    accelerator, aovs, shutterOpen, shutterClose, timeSteps);
+        }
     }
 
-    /** The same settings rendered in {@code n} time steps (1: one pass, every sample at its own time). */
-    public RenderSettings withTimeSteps(int n) {
-        return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed, accelerator, aovs, shutterOpen, shutterClose, n);
+    // The checks, shared by the builder and the constructor so that both word a refusal alike.
+
+    private static int side(String name, int v) {
+        if (v < 1 || v > MAX_SIDE) throw new IllegalArgumentException(name + " must be between 1 and " + MAX_SIDE + ", found " + v);
+        return v;
+    }
+
+    private static int samples(int n) {
+        if (n < 1 || n > 65536) throw new IllegalArgumentException("samples per pixel must be between 1 and 65536, found " + n);
+        return n;
+    }
+
+    private static int depth(int d) {
+        if (d < 0 || d > 64) throw new IllegalArgumentException("maxdepth must be between 0 and 64, found " + d);
+        return d;
+    }
+
+    private static double contribution(double c) {
+        if (!(c >= 0 && c < 1)) throw new IllegalArgumentException("mincontribution must be in [0, 1), found " + c);
+        return c;
+    }
+
+    private static int steps(int n) {
+        if (n < 1 || n > 65536) throw new IllegalArgumentException("timesteps must be between 1 and 65536, found " + n);
+        return n;
+    }
+
+    /** An unmodifiable copy in declaration order whatever the caller's set, unchanged by later changes to it. */
+    private static Set<Aov> passes(Set<Aov> aovs) {
+        Objects.requireNonNull(aovs, "aovs");
+        return aovs.isEmpty() ? Set.of() : Collections.unmodifiableSet(EnumSet.copyOf(aovs));
     }
 
     /**
      * Refuses samples per pixel that the time steps do not divide (each step takes an equal share).
      *
+     * @return these settings
      * @throws IllegalArgumentException "samples 6 is not a multiple of timesteps 4"
      */
     public RenderSettings checkTimeSteps() {
@@ -110,8 +363,18 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         return this;
     }
 
-    /** The time of a sample in [0, 1) mapped into the shutter interval. */
+    /**
+     * The time of a sample mapped into the shutter interval.
+     *
+     * @param u the sample's time in [0, 1)
+     * @return the time within [shutterOpen, shutterClose]
+     */
     public double shutterTime(double u) { return shutterOpen + u * (shutterClose - shutterOpen); }
 
+    /**
+     * The image's aspect ratio.
+     *
+     * @return width over height
+     */
     public double aspect() { return (double) width / height; }
 }

@@ -12,6 +12,7 @@ import lt.spindulys.limits.MessageText;
  * {@code SceneException}'s, the message is one line (unprintable characters escaped).
  */
 public final class SceneBuildException extends IllegalArgumentException {
+    /** The refusal without the object that caused it. */
     private final String problem;
     /** The source of the nearest object, from the one refused outwards, that has one; null until one does. */
     private String source;
@@ -46,10 +47,18 @@ public final class SceneBuildException extends IllegalArgumentException {
         return this;
     }
 
-    /** The refusal without the object: "transform is singular (a scale of zero?)". */
+    /**
+     * The refusal without the object: "transform is singular (a scale of zero?)".
+     *
+     * @return the refusal alone
+     */
     public String problem() { return problem; }
 
-    /** The source of the object that places the message (see {@link GObject#source()}), or null. */
+    /**
+     * The source of the object that places the message (see {@link GObject#source()}), or null.
+     *
+     * @return the source, or null
+     */
     public String source() { return source; }
 
     @Override public String getMessage() {

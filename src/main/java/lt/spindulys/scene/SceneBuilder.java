@@ -21,7 +21,7 @@ import lt.spindulys.math.Vec3;
  *
  * <pre>{@code
  * SceneBuilder b = new SceneBuilder()
- *     .settings(RenderSettings.DEFAULT.withSize(800, 600).withSamplesPerPixel(4))
+ *     .settings(RenderSettings.builder().size(800, 600).samplesPerPixel(4).build())
  *     .camera(new PinholeCamera(new Vec3(0, 2, -6), new Vec3(0, 1, 0), Vec3.Y, 45))
  *     .light(new PointLight(new Vec3(5, 10, -5), Color.WHITE));
  * Material glass = Material.builder().color(Color.WHITE).kd(0.1).ks(0.8).shininess(100)
@@ -145,5 +145,5 @@ public final class SceneBuilder {
     public String frameSource() { return frameSource; }
 
     /** Convenience for code: the ambient light intensity. */
-    public SceneBuilder ambient(Color c) { settings = settings.withAmbient(c); return this; }
+    public SceneBuilder ambient(Color c) { settings = settings.toBuilder().ambient(c).build(); return this; }
 }

@@ -8,7 +8,6 @@ import lt.spindulys.trace.SpanBuffer;
 import java.util.Arrays;
 
 import lt.spindulys.accel.Accelerator;
-import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.accel.BruteForce;
 import lt.spindulys.accel.Bvh;
 import lt.spindulys.accel.PrimitiveHit;

@@ -4,7 +4,13 @@ package lt.spindulys.subdiv;
 public final class CatmullClark {
     private CatmullClark() {}
 
-    /** The mesh refined {@code level} times (0 gives the control mesh itself as a RefinedMesh). */
+    /**
+     * The mesh refined {@code level} times (0 gives the control mesh itself as a RefinedMesh).
+     *
+     * @param mesh the control mesh
+     * @param level refinements, at least 0
+     * @return the refined mesh
+     */
     public static RefinedMesh refine(ControlMesh mesh, int level) {
         if (level < 0) throw new IllegalArgumentException("refinement level " + level + " is negative");
         RefinedMesh r = RefinedMesh.base(mesh);

@@ -48,33 +48,65 @@ public final class ControlMesh {
     /**
      * Starts a mesh from positions (x, y, z per vertex), face sizes and the vertex index of every
      * face corner (face after face). The arrays are copied when the mesh is built.
+     *
+     * @param positions x, y, z per vertex
+     * @param faceSizes corners per face, at least 3 each
+     * @param faceVertices vertex index per face corner
+     * @return the builder
      */
     public static Builder builder(double[] positions, int[] faceSizes, int[] faceVertices) {
         return new Builder(positions, faceSizes, faceVertices);
     }
 
+    /** {@return the number of vertices} */
     public int vertexCount() { return positions.length / 3; }
 
+    /** {@return the number of faces} */
     public int faceCount() { return faceSizes.length; }
 
-    /** x, y, z per vertex (the mesh's own array: do not modify). */
+    /**
+     * x, y, z per vertex (the mesh's own array: do not modify).
+     *
+     * @return the positions
+     */
     public double[] positions() { return positions; }
 
-    /** Corners per face (the mesh's own array: do not modify). */
+    /**
+     * Corners per face (the mesh's own array: do not modify).
+     *
+     * @return the face sizes
+     */
     public int[] faceSizes() { return faceSizes; }
 
-    /** Vertex index of every face corner, face after face (the mesh's own array). */
+    /**
+     * Vertex index of every face corner, face after face (the mesh's own array).
+     *
+     * @return the corner vertices
+     */
     public int[] faceVertices() { return faceVertices; }
 
-    /** (u, v) pairs, or null without UVs. */
+    /**
+     * (u, v) pairs, or null without UVs.
+     *
+     * @return the UVs, or null
+     */
     public double[] uvs() { return uvs; }
 
-    /** Index into {@link #uvs()} of every face corner, or null without UVs. */
+    /**
+     * Index into {@link #uvs()} of every face corner, or null without UVs.
+     *
+     * @return the indices, or null
+     */
     public int[] faceUvIndices() { return faceUvIndices; }
 
+    /** {@return the scheme options} */
     public SubdivOptions options() { return options; }
 
-    /** The name given with {@link Builder#source}, or null. */
+    /**
+     * The name given with {@link Builder#source}, or null.
+     *
+     * @return the name, or null
+     */
     public String source() { return source; }
 
     /** Collects UVs, tags and options; {@link #build()} validates and names the face or vertex at fault. */
@@ -100,14 +132,27 @@ public final class ControlMesh {
             this.faceVertices = Objects.requireNonNull(faceVertices, "faceVertices");
         }
 
-        /** Face-varying texture coordinates: (u, v) pairs and one index into them per face corner. */
+        /**
+         * Face-varying texture coordinates: (u, v) pairs and one index into them per face corner.
+         *
+         * @param uvs (u, v) pairs
+         * @param faceUvIndices index of a pair per face corner
+         * @return this builder
+         */
         public Builder uvs(double[] uvs, int[] faceUvIndices) {
             this.uvs = Objects.requireNonNull(uvs, "uvs");
             this.faceUvs = Objects.requireNonNull(faceUvIndices, "faceUvIndices");
             return this;
         }
 
-        /** A crease on the edge between vertices a and b; a later crease on the same edge replaces it. */
+        /**
+         * A crease on the edge between vertices a and b; a later crease on the same edge replaces it.
+         *
+         * @param a one vertex of the edge
+         * @param b the other vertex
+         * @param sharpness 0 smooth, up to {@link ControlMesh#INFINITELY_SHARP}
+         * @return this builder
+         */
         public Builder crease(int a, int b, float sharpness) {
             if (2 * creaseCount + 2 > creases.length) {
                 creases = Arrays.copyOf(creases, 2 * creases.length);
@@ -119,7 +164,13 @@ public final class ControlMesh {
             return this;
         }
 
-        /** Sharpness of a vertex (a corner when sharp); a later value for the same vertex replaces it. */
+        /**
+         * Sharpness of a vertex (a corner when sharp); a later value for the same vertex replaces it.
+         *
+         * @param vertex the vertex
+         * @param sharpness 0 smooth, up to {@link ControlMesh#INFINITELY_SHARP}
+         * @return this builder
+         */
         public Builder corner(int vertex, float sharpness) {
             if (cornerCount == corners.length) {
                 corners = Arrays.copyOf(corners, 2 * corners.length);
@@ -130,28 +181,52 @@ public final class ControlMesh {
             return this;
         }
 
-        /** Marks a face as a hole: it is refined like the others but not part of the surface. */
+        /**
+         * Marks a face as a hole: it is refined like the others but not part of the surface.
+         *
+         * @param face the face
+         * @return this builder
+         */
         public Builder hole(int face) {
             if (holeCount == holes.length) holes = Arrays.copyOf(holes, 2 * holes.length);
             holes[holeCount++] = face;
             return this;
         }
 
+        /**
+         * Sets the scheme options.
+         *
+         * @param options the options
+         * @return this builder
+         */
         public Builder options(SubdivOptions options) {
             this.options = Objects.requireNonNull(options, "options");
             return this;
         }
 
-        /** The options set so far ({@link SubdivOptions#DEFAULT} until set). */
+        /**
+         * The options set so far ({@link SubdivOptions#DEFAULT} until set).
+         *
+         * @return the options
+         */
         public SubdivOptions options() { return options; }
 
-        /** A name for error messages, such as the file the mesh came from. */
+        /**
+         * A name for error messages, such as the file the mesh came from.
+         *
+         * @param name the name, or null
+         * @return this builder
+         */
         public Builder source(String name) {
             this.source = name;
             return this;
         }
 
-        /** Validates and freezes; throws IllegalArgumentException naming the face or vertex at fault. */
+        /**
+         * Validates and freezes; throws IllegalArgumentException naming the face or vertex at fault.
+         *
+         * @return the mesh
+         */
         public ControlMesh build() {
             String at = source == null ? "" : source + ": ";
             if (positions.length % 3 != 0) {
@@ -204,7 +279,8 @@ public final class ControlMesh {
             }
             double[] pos = positions.clone();
             int[] sizes = faceSizes.clone(), verts = faceVertices.clone();
-            Level base = Level.fromPolygons(nV, sizes, verts);
+            BaseLevelBuilder levelBuilder = new BaseLevelBuilder(nV, sizes, verts);
+            Level base = levelBuilder.level;
             float[] eSharp = null;
             for (int i = 0; i < creaseCount; i++) {
                 int a = creases[2 * i], b = creases[2 * i + 1];
@@ -215,7 +291,7 @@ public final class ControlMesh {
                     }
                 }
                 if (Float.isNaN(s)) throw new IllegalArgumentException(at + "crease " + i + " (vertices " + a + " and " + b + ") has sharpness NaN");
-                int e = base.findBaseEdge(a, b);
+                int e = levelBuilder.findEdge(a, b);
                 if (e < 0) throw new IllegalArgumentException(at + "crease " + i + ": vertices " + a + " and " + b + " share no edge");
                 if (eSharp == null) eSharp = new float[base.nE];
                 eSharp[e] = s;
@@ -235,7 +311,7 @@ public final class ControlMesh {
                 if (hole == null) hole = new boolean[nF];
                 hole[f] = true;
             }
-            base.tagBase(options.boundary(), eSharp, vSharp, null, hole);
+            levelBuilder.tag(options.boundary(), eSharp, vSharp, null, hole);
             Builder frozen = new Builder(pos, sizes, verts);
             frozen.options = options;
             frozen.source = source;

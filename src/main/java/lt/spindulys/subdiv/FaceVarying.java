@@ -23,7 +23,7 @@ final class FaceVarying {
     record Channel(Level level, double[] values, boolean linear, boolean linearBoundaries) {
         Channel refine(Level geomChild, SubdivOptions opt) {
             boolean chaikin = opt.creasing() == SubdivOptions.Creasing.CHAIKIN;
-            Level c = linear ? level.refineCornersAndEdges() : level.refine(chaikin, geomChild);
+            Level c = linear ? Refinement.refineCornersAndEdges(level) : Refinement.refine(level, chaikin, geomChild);
             if (linearBoundaries && !linear) pinBoundaries(c);
             double[] cv = new double[2 * c.nV];
             PrimvarRefiner.interpolate(level, c, opt, 2, values, cv, linear);
@@ -68,12 +68,13 @@ final class FaceVarying {
             values[2 * id] = uv[2 * valueUv[id]];
             values[2 * id + 1] = uv[2 * valueUv[id] + 1];
         }
-        Level lv = Level.fromPolygons(nValues, faceSizes, valueOf);
+        BaseLevelBuilder levelBuilder = new BaseLevelBuilder(nValues, faceSizes, valueOf);
+        Level lv = levelBuilder.level;
         SubdivOptions.FaceVarying fv = opt.fvar();
         boolean linear = fv == SubdivOptions.FaceVarying.ALL;
         boolean linearBoundaries = linear || fv == SubdivOptions.FaceVarying.BOUNDARIES;
         if (linear) {
-            lv.tagBase(SubdivOptions.Boundary.EDGE_ONLY, null, null, null, null);
+            levelBuilder.tag(SubdivOptions.Boundary.EDGE_ONLY, null, null, null, null);
             return new Channel(lv, values, true, true);
         }
 
@@ -145,7 +146,7 @@ final class FaceVarying {
             }
             first = end;
         }
-        lv.tagBase(SubdivOptions.Boundary.EDGE_ONLY, anyE ? eSharp : null, vSharp, pin, null);
+        levelBuilder.tag(SubdivOptions.Boundary.EDGE_ONLY, anyE ? eSharp : null, vSharp, pin, null);
         return new Channel(lv, values, false, linearBoundaries);
     }
 

@@ -203,7 +203,7 @@ final class PrimvarRefiner {
                 for (int k = p.nmVertStart[i]; k < p.nmVertStart[i + 1]; k++, nEdges++) {
                     other[nEdges] = p.nmVertOther[k];
                     pSharp[nEdges] = p.edgeSharpness(p.nmVertHalf[k]);
-                    cSharp[nEdges] = c == null ? 0f : p.childEdgeSharpness(c, p.nmVertHalf[k], p.nmVertEnd[k]);
+                    cSharp[nEdges] = c == null ? 0f : SharpnessRefinement.childEdgeSharpness(p, c, p.nmVertHalf[k], p.nmVertEnd[k]);
                 }
                 nFaces = 0;
                 return;
@@ -219,7 +219,7 @@ final class PrimvarRefiner {
                 pSharp[j] = p.edgeSharpness(x);
                 if (c != null) {
                     int end = out ? (p.fwd(x) ? 0 : 1) : (p.fwd(x) ? 1 : 0);
-                    cSharp[j] = p.childEdgeSharpness(c, x, (p.hEdge[x] >>> 2) << 1 | end);
+                    cSharp[j] = SharpnessRefinement.childEdgeSharpness(p, c, x, (p.hEdge[x] >>> 2) << 1 | end);
                 }
                 if (out) face[j] = p.face(x);
             }

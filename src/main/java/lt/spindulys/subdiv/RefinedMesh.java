@@ -46,28 +46,44 @@ public final class RefinedMesh {
         if (uv != null) uv.level().dropEdgeCodes(parent.uv.level());
     }
 
-    /** The next level: this mesh refined once. */
+    /**
+     * The next level: this mesh refined once.
+     *
+     * @return the next level
+     */
     public RefinedMesh refine() {
         SubdivOptions opt = control.options();
-        Level c = topo.refine(opt.creasing() == SubdivOptions.Creasing.CHAIKIN, null);
+        Level c = Refinement.refine(topo, opt.creasing() == SubdivOptions.Creasing.CHAIKIN, null);
         double[] p = new double[3 * c.nV];
         PrimvarRefiner.interpolate(topo, c, opt, 3, positions, p, false);
         FaceVarying.Channel cuv = uv == null ? null : uv.refine(c, opt);
         return new RefinedMesh(control, level + 1, c, p, cuv);
     }
 
+    /** {@return the control mesh this level was refined from} */
     public ControlMesh controlMesh() { return control; }
 
+    /** {@return the level: 0 for the control mesh, then 1, 2, ...} */
     public int level() { return level; }
 
+    /** {@return the number of vertices} */
     public int vertexCount() { return topo.nV; }
 
-    /** x, y, z per vertex. */
+    /**
+     * x, y, z per vertex.
+     *
+     * @return the positions
+     */
     public double[] positions() { return positions; }
 
+    /** {@return the number of faces} */
     public int faceCount() { return topo.nF; }
 
-    /** Corners per face (all 4 after level 0). */
+    /**
+     * Corners per face (all 4 after level 0).
+     *
+     * @return the face sizes
+     */
     public synchronized int[] faceSizes() {
         if (faceSizes == null) {
             if (level == 0) {
@@ -80,26 +96,47 @@ public final class RefinedMesh {
         return faceSizes;
     }
 
-    /** Vertex index of every face corner, face after face. */
+    /**
+     * Vertex index of every face corner, face after face.
+     *
+     * @return the corner vertices
+     */
     public int[] faceVertices() { return topo.hOrig; }
 
-    /** True if face f is a hole (refined, but not rendered). */
+    /**
+     * True if face f is a hole (refined, but not rendered).
+     *
+     * @param face the face index
+     * @return whether it is a hole
+     */
     public boolean isHole(int face) { return topo.hole != null && topo.hole[face]; }
 
-    /** True if any face is a hole. */
+    /**
+     * True if any face is a hole.
+     *
+     * @return whether any face is a hole
+     */
     public boolean hasHoles() {
         if (topo.hole == null) return false;
         for (boolean b : topo.hole) if (b) return true;
         return false;
     }
 
-    /** (u, v) pairs, or null when the mesh has no UVs. */
+    /**
+     * (u, v) pairs, or null when the mesh has no UVs.
+     *
+     * @return the UVs, or null
+     */
     public double[] uvs() {
         if (uv == null) return null;
         return level == 0 ? control.uvs() : uv.values();
     }
 
-    /** Index into {@link #uvs()} of every face corner, parallel to {@link #faceVertices()}, or null. */
+    /**
+     * Index into {@link #uvs()} of every face corner, parallel to {@link #faceVertices()}, or null.
+     *
+     * @return the indices, or null
+     */
     public int[] faceUvs() {
         if (uv == null) return null;
         return level == 0 ? control.faceUvIndices() : uv.level().hOrig;
@@ -108,12 +145,18 @@ public final class RefinedMesh {
     /** The UV value mesh of this level, or null (for tests and benchmarks). */
     Level uvTopology() { return uv == null ? null : uv.level(); }
 
-    /** Number of edges (Far's edges: a non-manifold edge counts once per instance). */
+    /**
+     * Number of edges (Far's edges: a non-manifold edge counts once per instance).
+     *
+     * @return the edge count
+     */
     public int edgeCount() { return topo.nE; }
 
     /**
      * The two vertices of every edge, in Far's edge order and vertex order: the point of edge e
      * is vertex {@code vertexCount() + faceCount() + e} of the next level.
+     *
+     * @return two vertex indices per edge
      */
     public int[] edgeVertices() {
         topo.edgeCodes();
@@ -130,6 +173,8 @@ public final class RefinedMesh {
     /**
      * For every face corner (in {@link #faceVertices()} order), the corner of the neighbouring face
      * that starts the same edge from the other end, or -1 on a boundary or non-manifold edge.
+     *
+     * @return one index per corner
      */
     public int[] cornerTwins() { return topo.hTwin; }
 
@@ -137,6 +182,8 @@ public final class RefinedMesh {
      * For every face corner, whether the edge from it to the face's next corner is infinitely sharp
      * at this level: a boundary or non-manifold edge, or an infinitely sharp crease. The limit
      * surface has a tangent plane on each side of such an edge.
+     *
+     * @return one flag per corner
      */
     public boolean[] sharpEdges() {
         if (topo.eSharp != null) topo.edgeCodes();
@@ -149,6 +196,8 @@ public final class RefinedMesh {
      * Bytes of the refined surface as the renderer holds it: this level's topology, its positions
      * and one limit normal per vertex (counted whether or not normals were asked for yet). UVs
      * are not included.
+     *
+     * @return the bytes
      */
     public long memoryBytes() {
         return topo.memoryBytes() + 8L * positions.length + 24L * topo.nV;
@@ -158,6 +207,8 @@ public final class RefinedMesh {
      * Limit-surface position of every vertex (x, y, z each), from Sdc's limit masks: exact for
      * smooth, crease and corner vertices; where semi-sharp features have not yet decayed, Far's
      * value (the sharp rule applied as if infinitely sharp). Computed on first use.
+     *
+     * @return three doubles per vertex
      */
     public synchronized double[] limitPositions() {
         if (limitPositions == null) {
@@ -173,6 +224,8 @@ public final class RefinedMesh {
      * counter-clockwise: the cross product of Sdc's two limit tangents (exact for smooth vertices
      * and regular creases and boundaries; Far's tangent conventions at corners and irregular
      * crease spans). Computed on first use.
+     *
+     * @return three doubles per vertex
      */
     public synchronized double[] limitNormals() {
         if (limitNormals == null) {

@@ -17,23 +17,48 @@ import lt.spindulys.mesh.MeshData;
  * @param tags creases, corners, holes and options
  */
 public record SubdivInput(MeshData mesh, SubdivTags tags) {
+    /**
+     * Checks that both are given.
+     *
+     * @param mesh the polygons
+     * @param tags creases, corners, holes and options
+     * @throws NullPointerException if one is null
+     */
     public SubdivInput {
         Objects.requireNonNull(mesh, "mesh");
         Objects.requireNonNull(tags, "tags");
     }
 
-    /** The mesh without tags and with the default options. */
+    /**
+     * The mesh without tags and with the default options.
+     *
+     * @param mesh the polygons
+     * @return the input
+     */
     public static SubdivInput of(MeshData mesh) {
         return new SubdivInput(mesh, SubdivTags.NONE);
     }
 
+    /** {@return the scheme options of the tags} */
     public SubdivOptions options() { return tags.options(); }
 
+    /**
+     * A copy with other scheme options.
+     *
+     * @param o the options
+     * @return the input
+     */
     public SubdivInput withOptions(SubdivOptions o) {
         return new SubdivInput(mesh, tags.withOptions(o));
     }
 
-    /** The same mesh with face-varying UVs: (u, v) pairs and an index into them per face corner. */
+    /**
+     * The same mesh with face-varying UVs: (u, v) pairs and an index into them per face corner.
+     *
+     * @param uvs (u, v) pairs
+     * @param uvIndex index of a pair per face corner
+     * @return the input
+     */
     public SubdivInput withUvs(double[] uvs, int[] uvIndex) {
         MeshData m = mesh;
         return new SubdivInput(new MeshData(m.positions(), m.normals(), uvs, m.faceSizes(), m.vertexIndex(), m.normalIndex(),
@@ -47,6 +72,8 @@ public record SubdivInput(MeshData mesh, SubdivTags tags) {
      * layout; smooth UV interpolation then behaves as it would for the same mesh with shared OBJ
      * {@code vt} indices.
      *
+     * @param cornerUvs two doubles per face corner
+     * @return the input
      * @throws IllegalArgumentException if there is not exactly one pair per corner
      */
     public SubdivInput withCornerUvs(double[] cornerUvs) {
@@ -79,6 +106,9 @@ public record SubdivInput(MeshData mesh, SubdivTags tags) {
     /**
      * Faces the mesh has after {@code level} uniform refinements: its own at level 0, then one quad
      * per corner, four times more each further level. For refusing levels too deep for memory.
+     *
+     * @param level refinements, at least 0
+     * @return the face count; past 2^60 it stops growing (already far too many)
      */
     public long refinedFaceCount(int level) {
         if (level <= 0) return mesh.faceCount();
@@ -92,6 +122,7 @@ public record SubdivInput(MeshData mesh, SubdivTags tags) {
      * Builds the control mesh: positions, faces, UVs (when the mesh has them), the tags and the
      * options. {@link ControlMesh.Builder#build()} validates the topology.
      *
+     * @return the control mesh
      * @throws IllegalArgumentException naming the mesh's source and the face or vertex at fault
      */
     public ControlMesh toControlMesh() {

@@ -13,17 +13,56 @@ public record SubdivOptions(Boundary boundary, FaceVarying fvar, Creasing creasi
     public static final SubdivOptions DEFAULT = new SubdivOptions(Boundary.EDGE_ONLY, FaceVarying.ALL, Creasing.UNIFORM, Triangles.CATMARK);
 
     /** Sdc VtxBoundaryInterpolation. */
-    public enum Boundary { NONE, EDGE_ONLY, EDGE_AND_CORNER }
+    public enum Boundary {
+        /** Boundary edges are not interpolated: the faces along the boundary do not reach it. */
+        NONE,
+        /** Boundary edges are infinitely sharp, so the surface reaches them; corners stay smooth. */
+        EDGE_ONLY,
+        /** Boundary edges and corner vertices (one face) are infinitely sharp. */
+        EDGE_AND_CORNER
+    }
 
     /** Sdc FVarLinearInterpolation. */
-    public enum FaceVarying { NONE, CORNERS_ONLY, CORNERS_PLUS1, CORNERS_PLUS2, BOUNDARIES, ALL }
+    public enum FaceVarying {
+        /** UVs smooth everywhere, their boundaries interpolated like boundary edges ("edge only"). */
+        NONE,
+        /** UVs smooth but pinned at their corners. */
+        CORNERS_ONLY,
+        /** As {@link #CORNERS_ONLY}, also pinned where three or more UV regions meet. */
+        CORNERS_PLUS1,
+        /** As {@link #CORNERS_PLUS1}, also pinned at concave UV corners. */
+        CORNERS_PLUS2,
+        /** UVs linear along their boundaries (seams), smooth inside. */
+        BOUNDARIES,
+        /** UVs linear everywhere: each face's UVs are interpolated bilinearly (the default). */
+        ALL
+    }
 
     /** Sdc CreasingMethod. */
-    public enum Creasing { UNIFORM, CHAIKIN }
+    public enum Creasing {
+        /** A semi-sharp edge's sharpness drops by 1 at every level. */
+        UNIFORM,
+        /** Chaikin's rule: a crease's sharpness is averaged with its neighbours' along the crease. */
+        CHAIKIN
+    }
 
     /** Sdc TriangleSubdivision. */
-    public enum Triangles { CATMARK, SMOOTH }
+    public enum Triangles {
+        /** Catmull-Clark's own weights at triangles. */
+        CATMARK,
+        /** Modified weights that give triangles a smoother limit surface. */
+        SMOOTH
+    }
 
+    /**
+     * Checks that every option is given.
+     *
+     * @param boundary how boundaries are treated
+     * @param fvar how UVs are interpolated
+     * @param creasing how crease sharpness decays
+     * @param triangles the weights at triangles
+     * @throws NullPointerException if one is null
+     */
     public SubdivOptions {
         java.util.Objects.requireNonNull(boundary);
         java.util.Objects.requireNonNull(fvar);
@@ -31,8 +70,32 @@ public record SubdivOptions(Boundary boundary, FaceVarying fvar, Creasing creasi
         java.util.Objects.requireNonNull(triangles);
     }
 
+    /**
+     * A copy with other boundary rules.
+     *
+     * @param b the rules
+     * @return the options
+     */
     public SubdivOptions withBoundary(Boundary b) { return new SubdivOptions(b, fvar, creasing, triangles); }
+    /**
+     * A copy with another UV interpolation.
+     *
+     * @param f the interpolation
+     * @return the options
+     */
     public SubdivOptions withFaceVarying(FaceVarying f) { return new SubdivOptions(boundary, f, creasing, triangles); }
+    /**
+     * A copy with another creasing method.
+     *
+     * @param c the method
+     * @return the options
+     */
     public SubdivOptions withCreasing(Creasing c) { return new SubdivOptions(boundary, fvar, c, triangles); }
+    /**
+     * A copy with other triangle weights.
+     *
+     * @param t the weights
+     * @return the options
+     */
     public SubdivOptions withTriangles(Triangles t) { return new SubdivOptions(boundary, fvar, creasing, t); }
 }

@@ -24,6 +24,18 @@ public record SubdivTags(int[] creases, float[] creaseSharpness, int[] corners, 
     public static final SubdivTags NONE = new SubdivTags(new int[0], new float[0], new int[0], new float[0], new int[0],
             SubdivOptions.DEFAULT, List.of());
 
+    /**
+     * Checks that the arrays pair up and copies the list of ignored tags.
+     *
+     * @param creases vertex pairs, one per creased edge
+     * @param creaseSharpness sharpness per pair
+     * @param corners vertex indices of the corners
+     * @param cornerSharpness sharpness per corner
+     * @param holes face indices of the holes
+     * @param options the scheme options
+     * @param ignored names of tags read without effect
+     * @throws IllegalArgumentException if the sharpness arrays do not match the index arrays
+     */
     public SubdivTags {
         Objects.requireNonNull(options, "options");
         ignored = List.copyOf(ignored);
@@ -37,15 +49,29 @@ public record SubdivTags(int[] creases, float[] creaseSharpness, int[] corners, 
         }
     }
 
-    /** The same tags with other options (the scene's keys override the file's). */
+    /**
+     * The same tags with other options (the scene's keys override the file's).
+     *
+     * @param o the options
+     * @return the tags
+     */
     public SubdivTags withOptions(SubdivOptions o) {
         return new SubdivTags(creases, creaseSharpness, corners, cornerSharpness, holes, o, ignored);
     }
 
-    /** Number of creased edges. */
+    /**
+     * Number of creased edges.
+     *
+     * @return the count
+     */
     public int creaseCount() { return creaseSharpness.length; }
 
-    /** Gives the builder every crease, corner and hole, and the options. */
+    /**
+     * Gives the builder every crease, corner and hole, and the options.
+     *
+     * @param b the builder
+     * @return {@code b}
+     */
     public ControlMesh.Builder applyTo(ControlMesh.Builder b) {
         for (int i = 0; i < creaseSharpness.length; i++) b.crease(creases[2 * i], creases[2 * i + 1], creaseSharpness[i]);
         for (int i = 0; i < corners.length; i++) b.corner(corners[i], cornerSharpness[i]);

@@ -19,16 +19,29 @@ public enum Channel {
     /** A height field, scaled by the material's bump strength, that tilts the shading normal. */
     BUMP;
 
-    /** The scene-language word: the lower-case name. */
+    /**
+     * The scene-language word: the lower-case name.
+     *
+     * @return the keyword
+     */
     public String keyword() { return name().toLowerCase(java.util.Locale.ROOT); }
 
-    /** The channel with this scene-language word. */
+    /**
+     * The channel with this scene-language word.
+     *
+     * @param word the keyword
+     * @return the channel
+     */
     public static Channel fromKeyword(String word) {
         for (Channel c : values()) if (c.keyword().equals(word)) return c;
         throw new IllegalArgumentException("unknown texture channel '" + word + "'");
     }
 
-    /** Every scene-language word, in declaration order. */
+    /**
+     * Every scene-language word, in declaration order.
+     *
+     * @return the keywords
+     */
     public static java.util.List<String> keywords() {
         java.util.List<String> out = new java.util.ArrayList<>();
         for (Channel c : values()) out.add(c.keyword());

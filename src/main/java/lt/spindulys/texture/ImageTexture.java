@@ -35,7 +35,13 @@ public final class ImageTexture implements Texture {
     private final int channels0;
     private final double maxSide;
 
-    /** A texture over {@code img} with the given filter and wrap mode. */
+    /**
+     * A texture over {@code img} with the given filter and wrap mode.
+     *
+     * @param img the image
+     * @param f the reconstruction filter
+     * @param w what happens outside [0, 1]
+     */
     public ImageTexture(TextureImage img, Filter f, Wrap w) {
         if (img == null || f == null || w == null) throw new NullPointerException("image, filter and wrap are required");
         this.image = img;
@@ -56,17 +62,29 @@ public final class ImageTexture implements Texture {
         channels0 = img.channels();
     }
 
-    /** The image sampled. */
+    /**
+     * The image sampled.
+     *
+     * @return the image
+     */
     public TextureImage image() {
         return image;
     }
 
-    /** The reconstruction filter. */
+    /**
+     * The reconstruction filter.
+     *
+     * @return the filter
+     */
     public Filter filter() {
         return filter;
     }
 
-    /** The wrap mode. */
+    /**
+     * The wrap mode.
+     *
+     * @return the wrap mode
+     */
     public Wrap wrap() {
         return wrap;
     }
@@ -74,6 +92,9 @@ public final class ImageTexture implements Texture {
     /**
      * The (fractional) mip level trilinear filtering uses for a footprint of {@code footprint} uv
      * units: {@code log2(footprint * max(w, h))} clamped to {@code [0, levelCount - 1]}.
+     *
+     * @param footprint the footprint, uv units
+     * @return the level, 0 the sharpest
      */
     public double mipLevel(double footprint) {
         if (!(footprint > 0)) return 0;

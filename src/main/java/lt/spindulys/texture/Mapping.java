@@ -22,6 +22,7 @@ public interface Mapping {
      * <p>The surface's own parameters come as plain values rather than the scene's shading record,
      * so textures stay below the scene in the package graph.
      *
+     * @param out receives the texture point
      * @param u           the surface's own u parameter at the hit
      * @param v           the surface's own v parameter at the hit
      * @param dpdu        dp/du in the object's own space (not normalised; zero where undefined)
@@ -33,6 +34,11 @@ public interface Mapping {
     /**
      * The isotropic (u, v) footprint from the footprints along u and v: the larger, limited to
      * {@link #MAX_ANISOTROPY} times the smaller; 0 when the object-space footprint is 0.
+     *
+     * @param objectFootprint the footprint in object units
+     * @param fu object units per unit of u
+     * @param fv object units per unit of v
+     * @return the footprint in (u, v) units
      */
     static double combine(double objectFootprint, double fu, double fv) {
         if (!(objectFootprint > 0)) return 0;

@@ -26,12 +26,20 @@ public final class Marble extends Procedural {
         this.octaves = checkOctaves(octaves);
     }
 
-    /** Strength of the turbulence. */
+    /**
+     * Strength of the turbulence.
+     *
+     * @return the turbulence's weight
+     */
     public double turbulence() {
         return turbulence;
     }
 
-    /** Octaves of turbulence. */
+    /**
+     * Octaves of turbulence.
+     *
+     * @return the octave count
+     */
     public int octaves() {
         return octaves;
     }

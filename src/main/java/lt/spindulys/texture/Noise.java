@@ -23,7 +23,11 @@ public final class Noise extends Procedural {
         this.octaves = checkOctaves(octaves);
     }
 
-    /** Number of octaves summed. */
+    /**
+     * Number of octaves summed.
+     *
+     * @return the octave count
+     */
     public int octaves() {
         return octaves;
     }

@@ -38,7 +38,14 @@ public final class Perlin {
         for (int i = 0; i < 512; i++) P[i] = perm[i & 255];
     }
 
-    /** Noise at (x, y, z); 0 at every integer lattice point. */
+    /**
+     * Noise at (x, y, z); 0 at every integer lattice point.
+     *
+     * @param x the point's x
+     * @param y the point's y
+     * @param z the point's z
+     * @return the noise, in about [-1, 1]
+     */
     public static double noise(double x, double y, double z) {
         double fx = Math.floor(x), fy = Math.floor(y), fz = Math.floor(z);
         int xi = (int) (long) fx & 255, yi = (int) (long) fy & 255, zi = (int) (long) fz & 255;
@@ -56,14 +63,30 @@ public final class Perlin {
                         lerp(u, grad(P[ab + 1], x, y1, z1), grad(P[bb + 1], x1, y1, z1))));
     }
 
-    /** Turbulence: {@code sum over k < octaves of |noise(2^k p)| / 2^k}; in [0, 2). */
+    /**
+     * Turbulence: {@code sum over k < octaves of |noise(2^k p)| / 2^k}; in [0, 2).
+     *
+     * @param x the point's x
+     * @param y the point's y
+     * @param z the point's z
+     * @param octaves how many octaves, at least 1
+     * @return the turbulence
+     */
     public static double turbulence(double x, double y, double z, int octaves) {
         double sum = 0, f = 1;
         for (int k = 0; k < octaves; k++, f *= 2) sum += Math.abs(noise(x * f, y * f, z * f)) / f;
         return sum;
     }
 
-    /** Fractal sum: {@code sum over k < octaves of noise(2^k p) / 2^k}; in about (-2, 2). */
+    /**
+     * Fractal sum: {@code sum over k < octaves of noise(2^k p) / 2^k}; in about (-2, 2).
+     *
+     * @param x the point's x
+     * @param y the point's y
+     * @param z the point's z
+     * @param octaves how many octaves, at least 1
+     * @return the sum
+     */
     public static double fbm(double x, double y, double z, int octaves) {
         double sum = 0, f = 1;
         for (int k = 0; k < octaves; k++, f *= 2) sum += noise(x * f, y * f, z * f) / f;

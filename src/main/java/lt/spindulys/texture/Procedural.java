@@ -60,22 +60,38 @@ abstract class Procedural implements Texture {
         rgb[2] = ab + t * (bb - ab);
     }
 
-    /** The first colour (pattern value 0). */
+    /**
+     * The first colour (pattern value 0).
+     *
+     * @return the colour, linear RGB
+     */
     public final Color colourA() {
         return new Color(ar, ag, ab);
     }
 
-    /** The second colour (pattern value 1). */
+    /**
+     * The second colour (pattern value 1).
+     *
+     * @return the colour, linear RGB
+     */
     public final Color colourB() {
         return new Color(br, bg, bb);
     }
 
-    /** The scale applied to the coordinates. */
+    /**
+     * The scale applied to the coordinates.
+     *
+     * @return the scale: pattern units per object or (u, v) unit
+     */
     public final double scale() {
         return scale;
     }
 
-    /** Whether this is a solid (3D, object-space) texture rather than a surface (u, v) one. */
+    /**
+     * Whether this is a solid (3D, object-space) texture rather than a surface (u, v) one.
+     *
+     * @return whether it is solid
+     */
     public final boolean solid() {
         return solid;
     }

@@ -53,6 +53,9 @@ public final class TextureCache {
     /** Largest accepted image, in pixels: 2^26 (e.g. 8192 x 8192 or 16384 x 4096). */
     public static final int MAX_PIXELS = 1 << 26;
 
+    /** An empty cache; share one between the scenes that use the same image files. */
+    public TextureCache() {}
+
     private static final double[] SRGB_TO_LINEAR = new double[256];
     /** The float each byte of an 8-bit image stands for: sRGB-decoded (colour) or divided by 255 (grey). */
     private static final float[] SRGB_TABLE = new float[256], LINEAR_TABLE = new float[256];
@@ -83,6 +86,8 @@ public final class TextureCache {
      * The image in {@code file}, loaded on the first request for its normalised absolute path and
      * shared afterwards.
      *
+     * @param file the image file (TGA, PNG or JPEG)
+     * @return the image
      * @throws IOException "FILE: reason" if the file is missing, unreadable, corrupt, of an
      *         unsupported kind, or larger than {@link #MAX_PIXELS}
      */
@@ -102,12 +107,21 @@ public final class TextureCache {
         return img;
     }
 
-    /** Number of distinct images loaded so far. */
+    /**
+     * Number of distinct images loaded so far.
+     *
+     * @return the count
+     */
     public synchronized int size() {
         return images.size();
     }
 
-    /** The exact sRGB decoding function, for {@code c} in [0, 1]. */
+    /**
+     * The exact sRGB decoding function, for {@code c} in [0, 1].
+     *
+     * @param c an encoded value
+     * @return the linear value
+     */
     public static double srgbToLinear(double c) {
         return c <= 0.04045 ? c / 12.92 : Math.pow((c + 0.055) / 1.055, 2.4);
     }

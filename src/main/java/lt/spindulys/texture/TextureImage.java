@@ -57,6 +57,10 @@ public final class TextureImage {
      * An image from linear RGB values, three per texel, rows top to bottom (row 0 is the top of
      * the image, i.e. {@code v = 1}); the array is copied.
      *
+     * @param w width in texels
+     * @param h height in texels
+     * @param rgb linear values, 3 * w * h
+     * @return the image
      * @throws IllegalArgumentException if a size is not positive, the array length is not
      *         {@code 3 * w * h}, or a value is not finite
      */
@@ -108,27 +112,49 @@ public final class TextureImage {
         if ((long) w * h * 3 > Integer.MAX_VALUE - 8) throw new IllegalArgumentException("texture too large: " + w + "x" + h);
     }
 
-    /** Width in texels of level 0. */
+    /**
+     * Width in texels of level 0.
+     *
+     * @return the width
+     */
     public int width() {
         return width;
     }
 
-    /** Height in texels of level 0. */
+    /**
+     * Height in texels of level 0.
+     *
+     * @return the height
+     */
     public int height() {
         return height;
     }
 
-    /** Number of mip levels (1 for a 1x1 image); builds the chain if needed. */
+    /**
+     * Number of mip levels (1 for a 1x1 image); builds the chain if needed.
+     *
+     * @return the level count
+     */
     public int levelCount() {
         return levels().length;
     }
 
-    /** Width of mip level {@code level}. */
+    /**
+     * Width of mip level {@code level}.
+     *
+     * @param level the level, 0 the full image
+     * @return the width in texels
+     */
     public int width(int level) {
         return Math.max(1, width >> level);
     }
 
-    /** Height of mip level {@code level}. */
+    /**
+     * Height of mip level {@code level}.
+     *
+     * @param level the level, 0 the full image
+     * @return the height in texels
+     */
     public int height(int level) {
         return Math.max(1, height >> level);
     }
@@ -136,6 +162,12 @@ public final class TextureImage {
     /**
      * The linear RGB value of texel ({@code x}, {@code row}) of mip level {@code level}, channel
      * {@code c}; {@code row} counts from the TOP. For tests and inspection.
+     *
+     * @param level the level
+     * @param x the column
+     * @param row the row, from the top
+     * @param c the channel, 0 to 2
+     * @return the value
      */
     public double texel(int level, int x, int row, int c) {
         return level == 0 ? base(row * width + x, c) : levels()[level][(row * width(level) + x) * 3 + c];

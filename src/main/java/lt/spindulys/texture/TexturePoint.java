@@ -15,7 +15,17 @@ public final class TexturePoint {
     /** Width of the pixel's footprint in (u, v) units; 0 means sharpest (no pre-filtering). */
     public double footprint;
 
-    /** Sets the surface coordinates and footprint; returns {@code this} for chaining in setup code and tests. */
+    /** A point at the origin with (u, v) = (0, 0) and footprint 0; the caller fills it per shading point. */
+    public TexturePoint() {}
+
+    /**
+     * Sets the surface coordinates and footprint; returns {@code this} for chaining in setup code and tests.
+     *
+     * @param u surface coordinate u
+     * @param v surface coordinate v
+     * @param footprint the footprint in (u, v) units
+     * @return {@code this}
+     */
     public TexturePoint uv(double u, double v, double footprint) {
         this.u = u;
         this.v = v;
@@ -23,7 +33,14 @@ public final class TexturePoint {
         return this;
     }
 
-    /** Sets the object-space point; returns {@code this}. */
+    /**
+     * Sets the object-space point; returns {@code this}.
+     *
+     * @param x object-space x
+     * @param y object-space y
+     * @param z object-space z
+     * @return {@code this}
+     */
     public TexturePoint xyz(double x, double y, double z) {
         this.x = x;
         this.y = y;

@@ -31,7 +31,13 @@ public final class TgaReader {
      */
     public record Image(int width, int height, boolean grey, int[] rgb) {}
 
-    /** Reads the TGA file at {@code file}. */
+    /**
+     * Reads the TGA file at {@code file}.
+     *
+     * @param file the file
+     * @return the image
+     * @throws IOException if the file cannot be read or is not a TGA image this reader supports
+     */
     public static Image read(Path file) throws IOException {
         // A pipe would block and a device never end: only regular files are opened.
         String problem = InputFiles.problem(file);
@@ -41,7 +47,13 @@ public final class TgaReader {
         }
     }
 
-    /** Reads a TGA image from {@code in} (not closed). */
+    /**
+     * Reads a TGA image from {@code in} (not closed).
+     *
+     * @param in the stream
+     * @return the image
+     * @throws IOException if the stream cannot be read or is not a TGA image this reader supports
+     */
     public static Image read(InputStream in) throws IOException {
         InputStream s = in instanceof BufferedInputStream ? in : new BufferedInputStream(in, 1 << 16);
         byte[] h = s.readNBytes(18);

@@ -10,7 +10,12 @@ package lt.spindulys.texture;
 public final class Uv implements Mapping {
     private final double su, sv;
 
-    /** @param su, sv surface units per repeat along u and v (1: the coordinates as they are) */
+    /**
+     * A mapping that scales the surface's own coordinates.
+     *
+     * @param su surface units per repeat along u (1: the coordinates as they are)
+     * @param sv surface units per repeat along v
+     */
     public Uv(double su, double sv) {
         if (!(su > 0) || !(sv > 0) || !Double.isFinite(su) || !Double.isFinite(sv)) {
             throw new IllegalArgumentException("scale must be positive, found " + su + " " + sv);

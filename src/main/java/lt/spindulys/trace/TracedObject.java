@@ -10,15 +10,33 @@ import lt.spindulys.math.Ray;
  * renderer while the objects are public API.
  */
 public interface TracedObject {
-    /** Fills {@code sd} for {@code hit}, found on {@code ray} by this object (phase two: shading data once). */
+    /**
+     * Fills {@code sd} for {@code hit}, found on {@code ray} by this object (phase two: shading data once).
+     *
+     * @param ray the ray that found the hit
+     * @param hit the hit
+     * @param sd receives the shading data
+     */
     void shade(Ray ray, Hit hit, ShadingData sd);
 
-    /** The object's id in its frozen scene. */
+    /**
+     * The object's id in its frozen scene.
+     *
+     * @return the id, from 0
+     */
     int id();
 
-    /** The solid this object bounds as seen from outside (a CSG result is one solid), for the medium stack. */
+    /**
+     * The solid this object bounds as seen from outside (a CSG result is one solid), for the medium stack.
+     *
+     * @return the solid, possibly this object itself
+     */
     TracedObject solid();
 
-    /** The object's material after freezing (inherited if it had none of its own). */
+    /**
+     * The object's material after freezing (inherited if it had none of its own).
+     *
+     * @return the material
+     */
     Material material();
 }

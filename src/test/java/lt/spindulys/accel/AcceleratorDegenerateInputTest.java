@@ -6,6 +6,8 @@ import static lt.spindulys.accel.BvhTest.soup;
 
 import java.util.Random;
 
+import lt.spindulys.scene.AcceleratorKind;
+
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 

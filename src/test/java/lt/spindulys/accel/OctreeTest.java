@@ -168,16 +168,4 @@ class OctreeTest {
         assertThrows(IllegalArgumentException.class, () -> new Octree(s, 8, Octree.DEPTH_LIMIT + 1));
         assertThrows(IllegalArgumentException.class, () -> new Octree(new BvhTest.Spheres(new double[] {0, 0, 0, Double.POSITIVE_INFINITY})));
     }
-
-    @Test
-    void kindsAreNamedAsInSceneFiles() {
-        for (AcceleratorKind k : AcceleratorKind.values()) assertEquals(k, AcceleratorKind.fromKeyword(k.keyword()));
-        assertEquals(AcceleratorKind.BVH, AcceleratorKind.DEFAULT);
-        var e = assertThrows(IllegalArgumentException.class, () -> AcceleratorKind.fromKeyword("kd"));
-        assertEquals("unknown accelerator 'kd' (expected one of bvh, bvh2, octree, bruteforce)", e.getMessage());
-        BvhTest.Spheres s = new BvhTest.Spheres(new double[] {0, 0, 0, 1});
-        assertTrue(AcceleratorKind.OCTREE.build(s) instanceof Octree);
-        assertTrue(AcceleratorKind.BVH.build(s) instanceof Bvh);
-        assertTrue(AcceleratorKind.BRUTE_FORCE.build(s) instanceof BruteForce);
-    }
 }

@@ -11,6 +11,7 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 import lt.spindulys.math.Ray;
+import lt.spindulys.scene.AcceleratorKind;
 import lt.spindulys.scene.TestMeshes;
 import lt.spindulys.trace.TraceContext;
 import lt.spindulys.scene.TriangleMesh;
@@ -28,8 +29,7 @@ class WideBvhTest {
         assertTrue(ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent(), "surefire argLine lost --add-modules");
         assumeTrue(WideBvh.AVAILABLE, "this machine has no 256-bit vectors");
         TriangleMesh m = new TriangleMesh(TestMeshes.icosphere(3, 1));
-        assertInstanceOf(WideBvh.class, AcceleratorKind.BVH.build(m));
-        assertInstanceOf(Bvh.class, AcceleratorKind.BVH2.build(m));
+        assertInstanceOf(WideBvh.class, WideBvh.widen(new Bvh(m)));
     }
 
     /** A random soup in the unit cube, scaled by {@code scale} and moved by (x, y, z). */

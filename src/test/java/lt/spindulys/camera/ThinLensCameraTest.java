@@ -6,7 +6,7 @@ import org.junit.jupiter.api.Test;
 
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
-import lt.spindulys.sampling.LensPattern;
+import lt.spindulys.camera.LensPattern;
 import lt.spindulys.sampling.Rng;
 
 class ThinLensCameraTest {

@@ -135,7 +135,7 @@ class CliHeapLimitsTest {
     @Test
     void theRendererChecksTheFrameForLibraryUsers() {
         SceneBuilder b = new SceneBuilder();
-        b.settings(RenderSettings.DEFAULT.withSize(32768, 16384));
+        b.settings(RenderSettings.builder().size(32768, 16384).build());
         b.add(new Sphere(lt.spindulys.math.Vec3.ZERO, 1));
         var scene = b.build();
         try (HeapBudget.Scope s = HeapBudget.cap(CAP)) {

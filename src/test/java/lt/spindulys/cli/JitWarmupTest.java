@@ -15,7 +15,7 @@ class JitWarmupTest {
     void theWarmupSceneExercisesHitsMissesAndShadows() throws InterruptedException {
         // Its failures are swallowed at run time, so check here that it really renders a lit
         // torus, its shadow on the ground, and background above the horizon.
-        FrameBuffer fb = Renderer.render(JitWarmup.scene(), 1, ProgressListener.NONE).image();
+        FrameBuffer fb = Renderer.render(JitWarmup.scene(), 1, ProgressListener.NONE).frame();
         int lit = 0, dark = 0;
         for (int y = 0; y < 54; y++) {
             for (int x = 0; x < 96; x++) {
@@ -44,20 +44,20 @@ class JitWarmupTest {
         JitWarmup withMesh = JitWarmup.start();
         lt.spindulys.scene.SceneBuilder meshScene = new lt.spindulys.scene.SceneBuilder().add(
                 new lt.spindulys.scene.TriangleMesh(lt.spindulys.scene.TestMeshes.icosphere(2, 1)));
-        withMesh.finishFor(meshScene, lt.spindulys.accel.AcceleratorKind.BVH);
+        withMesh.finishFor(meshScene, lt.spindulys.scene.AcceleratorKind.BVH);
         // The wait is for the vector traversal; without it (no module, or a 256-bit-less machine) nothing waits.
         assertEquals(lt.spindulys.accel.WideBvh.AVAILABLE, withMesh.ended(0), "finishFor waits exactly when the wide tree is used");
 
         JitWarmup otherStructure = JitWarmup.start();
         long t1 = System.nanoTime();
-        otherStructure.finishFor(meshScene, lt.spindulys.accel.AcceleratorKind.BVH2);
+        otherStructure.finishFor(meshScene, lt.spindulys.scene.AcceleratorKind.BVH2);
         assertTrue((System.nanoTime() - t1) / 1e9 < 0.5, "a binary-tree scene waited for the warm-up");
         assertTrue(otherStructure.ended(10_000));
 
         JitWarmup withoutMesh = JitWarmup.start();
         long t0 = System.nanoTime();
         withoutMesh.finishFor(new lt.spindulys.scene.SceneBuilder().add(new lt.spindulys.scene.Sphere(lt.spindulys.math.Vec3.ZERO, 1)),
-                lt.spindulys.accel.AcceleratorKind.BVH);
+                lt.spindulys.scene.AcceleratorKind.BVH);
         double seconds = (System.nanoTime() - t0) / 1e9;
         assertTrue(seconds < 0.5, "a scene of spheres waited " + seconds + " s");
         assertTrue(withoutMesh.ended(10_000));

@@ -60,8 +60,8 @@ class DocScenesTest {
         assertTrue(Files.readString(DOC).contains("](images/" + name + ".png)"), DOC + " does not show " + picture);
 
         // A tiny render: exercises loading textures and shading without the cost of the picture.
-        b.settings(s.withSize(16, 12).withSamplesPerPixel(1));
-        FrameBuffer small = Renderer.render(b.build(), 1, ProgressListener.NONE).image();
+        b.settings(s.toBuilder().size(16, 12).samplesPerPixel(1).build());
+        FrameBuffer small = Renderer.render(b.build(), 1, ProgressListener.NONE).frame();
         double sum = 0;
         for (int y = 0; y < small.height(); y++) for (int x = 0; x < small.width(); x++) sum += small.get(x, y, 0);
         assertTrue(sum > 0, scene + " renders black");

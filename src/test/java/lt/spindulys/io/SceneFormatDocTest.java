@@ -119,7 +119,7 @@ class SceneFormatDocTest {
 
         // The code from the document.
         SceneBuilder b = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(400, 300).withSamplesPerPixel(4))
+                .settings(RenderSettings.builder().size(400, 300).samplesPerPixel(4).build())
                 .camera(new PinholeCamera(new Vec3(0, 2, -6), new Vec3(0, 1, 0), Vec3.Y, 45))
                 .light(new PointLight(new Vec3(5, 10, -5), Color.WHITE, 1, PointLight.Falloff.NONE));
         b.defineMaterial("glass", Material.builder().color(Color.WHITE).kd(0.1).ks(0.8).shininess(100)

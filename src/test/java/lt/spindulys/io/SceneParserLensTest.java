@@ -9,7 +9,7 @@ import org.junit.jupiter.api.Test;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.camera.ThinLensCamera;
 import lt.spindulys.math.Vec3;
-import lt.spindulys.sampling.LensPattern;
+import lt.spindulys.camera.LensPattern;
 import lt.spindulys.scene.SceneBuilder;
 
 /** The camera's lens keys: aperture, focus or focuspoint, and lens. */

@@ -95,23 +95,23 @@ class SceneParserSubdivTest {
     @Test
     void everySchemeChoiceMapsToItsOption() {
         SubdivOptions d = SubdivOptions.DEFAULT;
-        assertSame(d, SceneParser.subdivOptions(d, null, null, null, null));
+        assertSame(d, SceneAssetCache.subdivOptions(d, null, null, null, null));
         String[] boundary = {"none", "edge-only", "edge-and-corner"};
         for (int i = 0; i < 3; i++) {
-            assertEquals(SubdivOptions.Boundary.values()[i], SceneParser.subdivOptions(d, boundary[i], null, null, null).boundary());
+            assertEquals(SubdivOptions.Boundary.values()[i], SceneAssetCache.subdivOptions(d, boundary[i], null, null, null).boundary());
         }
         String[] fvar = {"none", "corners-only", "corners-plus1", "corners-plus2", "boundaries", "all"};
         for (int i = 0; i < fvar.length; i++) {
-            assertEquals(SubdivOptions.FaceVarying.values()[i], SceneParser.subdivOptions(d.withFaceVarying(SubdivOptions.FaceVarying.NONE), null, fvar[i], null, null).fvar());
+            assertEquals(SubdivOptions.FaceVarying.values()[i], SceneAssetCache.subdivOptions(d.withFaceVarying(SubdivOptions.FaceVarying.NONE), null, fvar[i], null, null).fvar());
         }
-        assertEquals(SubdivOptions.Creasing.CHAIKIN, SceneParser.subdivOptions(d, null, null, "chaikin", null).creasing());
-        assertEquals(SubdivOptions.Creasing.UNIFORM, SceneParser.subdivOptions(d.withCreasing(SubdivOptions.Creasing.CHAIKIN), null, null, "uniform", null).creasing());
-        assertEquals(SubdivOptions.Triangles.SMOOTH, SceneParser.subdivOptions(d, null, null, null, "smooth").triangles());
-        assertEquals(SubdivOptions.Triangles.CATMARK, SceneParser.subdivOptions(d.withTriangles(SubdivOptions.Triangles.SMOOTH), null, null, null, "catmark").triangles());
+        assertEquals(SubdivOptions.Creasing.CHAIKIN, SceneAssetCache.subdivOptions(d, null, null, "chaikin", null).creasing());
+        assertEquals(SubdivOptions.Creasing.UNIFORM, SceneAssetCache.subdivOptions(d.withCreasing(SubdivOptions.Creasing.CHAIKIN), null, null, "uniform", null).creasing());
+        assertEquals(SubdivOptions.Triangles.SMOOTH, SceneAssetCache.subdivOptions(d, null, null, null, "smooth").triangles());
+        assertEquals(SubdivOptions.Triangles.CATMARK, SceneAssetCache.subdivOptions(d.withTriangles(SubdivOptions.Triangles.SMOOTH), null, null, null, "catmark").triangles());
         // Every choice the grammar offers has a mapping.
         for (String k : new String[] {"boundary", "uvinterpolation", "creasing", "triangles"}) {
             for (String c : SceneGrammar.SUBDIV.key(k).choices()) {
-                assertDoesNotThrow(() -> SceneParser.subdivOptions(d, k.equals("boundary") ? c : null, k.equals("uvinterpolation") ? c : null,
+                assertDoesNotThrow(() -> SceneAssetCache.subdivOptions(d, k.equals("boundary") ? c : null, k.equals("uvinterpolation") ? c : null,
                         k.equals("creasing") ? c : null, k.equals("triangles") ? c : null));
             }
         }

@@ -79,7 +79,8 @@ class SceneParserTest {
     @Test
     void settingsCameraAndLights() {
         SceneBuilder b = parse(FULL);
-        assertEquals(new RenderSettings(320, 200, 4, 5, 0.01, new Color(0.1, 0.2, 0.3), Color.grey(0.5), true, -7), b.settings());
+        assertEquals(RenderSettings.builder().size(320, 200).samplesPerPixel(4).maxDepth(5).minContribution(0.01)
+                .background(new Color(0.1, 0.2, 0.3)).ambient(Color.grey(0.5)).srgb(true).seed(-7).build(), b.settings());
         PinholeCamera cam = assertInstanceOf(PinholeCamera.class, b.camera());
         assertEquals(new Vec3(0, 2, -6), cam.eye());
         assertEquals(new Vec3(0, 1, 0), cam.lookAt());
@@ -181,9 +182,9 @@ class SceneParserTest {
     @Test
     void settingsKeysOverrideOnlyWhatTheyName() {
         SceneBuilder b = parse("settings { height 100  encoding linear }");
-        assertEquals(RenderSettings.DEFAULT.withSize(RenderSettings.DEFAULT.width(), 100), b.settings());
-        assertEquals(lt.spindulys.accel.AcceleratorKind.BVH, b.settings().accelerator());
-        for (var kind : lt.spindulys.accel.AcceleratorKind.values()) {
+        assertEquals(RenderSettings.builder().height(100).build(), b.settings());
+        assertEquals(lt.spindulys.scene.AcceleratorKind.BVH, b.settings().accelerator());
+        for (var kind : lt.spindulys.scene.AcceleratorKind.values()) {
             assertEquals(kind, parse("settings { accelerator " + kind.keyword() + " }").settings().accelerator());
         }
     }
@@ -195,7 +196,7 @@ class SceneParserTest {
         assertEquals(EnumSet.of(Aov.DEPTH, Aov.OBJECT), s.aovs());
         assertEquals(10, s.width());
         assertEquals(EnumSet.allOf(Aov.class), parse("settings { width 10 aov normal depth object}").settings().aovs());
-        assertEquals(RenderSettings.DEFAULT.withAovs(EnumSet.of(Aov.NORMAL)), parse("settings { aov normal }").settings());
+        assertEquals(RenderSettings.builder().aovs(EnumSet.of(Aov.NORMAL)).build(), parse("settings { aov normal }").settings());
     }
 
     @Test

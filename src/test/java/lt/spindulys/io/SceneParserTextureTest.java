@@ -86,7 +86,7 @@ class SceneParserTextureTest {
                 texture grid { image "grid.png"  filter nearest }
                 mesh { file "quad.obj"  material { ka 0  kd 0  map { texture grid  channel emission } } }
                 """, "t.dat", dir);
-        var image = lt.spindulys.render.Renderer.render(b.build(), 1, lt.spindulys.render.ProgressListener.NONE).image();
+        var image = lt.spindulys.render.Renderer.render(b.build(), 1, lt.spindulys.render.ProgressListener.NONE).frame();
         Texture grid = b.objects().get(0).material().texture(Channel.EMISSION);
         double[] expected = colourAt(grid, 0.8, 0.3);
         for (int c = 0; c < 3; c++) assertEquals(expected[c], image.get(0, 0, c), 1e-9);

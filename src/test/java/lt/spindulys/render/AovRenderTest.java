@@ -41,7 +41,7 @@ class AovRenderTest {
 
     private static Scene scene(int spp, Set<Aov> aovs) {
         SceneBuilder b = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(W, H).withSamplesPerPixel(spp).withSeed(3).withAovs(aovs))
+                .settings(RenderSettings.builder().size(W, H).samplesPerPixel(spp).seed(3).aovs(aovs).build())
                 .camera(new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, FOV))
                 .light(new PointLight(new Vec3(2, 5, -3), Color.WHITE));
         // A mirror sphere: the passes must show the sphere itself, not what it reflects.
@@ -72,8 +72,8 @@ class AovRenderTest {
 
     @Test
     void passesMatchTheAnalyticFirstHitAtEveryPixel() throws Exception {
-        Renderer.Result r = Renderer.render(scene(1, EnumSet.allOf(Aov.class)), 2, ProgressListener.NONE);
-        AovFrame f = r.aovs();
+        RenderResult r = Renderer.render(scene(1, EnumSet.allOf(Aov.class)), 2, ProgressListener.NONE);
+        AovFrame f = r.passes().orElse(null);
         int sphere = 0, floor = 0, sky = 0;
         for (int y = 0; y < H; y++) {
             for (int x = 0; x < W; x++) {
@@ -96,7 +96,7 @@ class AovRenderTest {
 
         // The files carry the same values (PFM stores 32-bit floats) and the ids + 1.
         Path out = dir.resolve("frame.png");
-        ImageWriter.write(r.image(), out, ImageOptions.DEFAULT, f);
+        ImageWriter.write(r.frame(), out, ImageOptions.DEFAULT, f);
         FrameBuffer depth = Images.read(dir.resolve("frame.depth.pfm"));
         FrameBuffer normal = Images.read(dir.resolve("frame.normal.pfm"));
         int[] ids = Images.read(dir.resolve("frame.object.png"), false).toRgb8(false);
@@ -115,10 +115,10 @@ class AovRenderTest {
     @Test
     void theFloorSeenFromBelowHasItsNormalTurnedToTheCamera() throws InterruptedException {
         SceneBuilder b = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(3, 3).withAovs(EnumSet.of(Aov.NORMAL, Aov.DEPTH)))
+                .settings(RenderSettings.builder().size(3, 3).aovs(EnumSet.of(Aov.NORMAL, Aov.DEPTH)).build())
                 .camera(new PinholeCamera(new Vec3(0, -4, 0), new Vec3(0, 0, 0), Vec3.Z, 30));
         b.add(new Plane(Vec3.Y, 0));
-        AovFrame f = Renderer.render(b.build(), 1, ProgressListener.NONE).aovs();
+        AovFrame f = Renderer.render(b.build(), 1, ProgressListener.NONE).passes().orElse(null);
         assertEquals(-1.0, f.normal(1, 1, 1));
         assertEquals(4.0, f.depth(1, 1), 1e-12);
     }
@@ -126,12 +126,12 @@ class AovRenderTest {
     @Test
     void passesAreByteIdenticalForAnyThreadCountAndSampleCount() throws Exception {
         Path one = dir.resolve("one.png"), three = dir.resolve("three.png"), many = dir.resolve("many.png");
-        Renderer.Result r1 = Renderer.render(scene(1, EnumSet.allOf(Aov.class)), 1, ProgressListener.NONE);
-        Renderer.Result r3 = Renderer.render(scene(1, EnumSet.allOf(Aov.class)), 3, ProgressListener.NONE);
-        Renderer.Result r9 = Renderer.render(scene(9, EnumSet.allOf(Aov.class)), 3, ProgressListener.NONE);
-        ImageWriter.write(r1.image(), one, ImageOptions.DEFAULT, r1.aovs());
-        ImageWriter.write(r3.image(), three, ImageOptions.DEFAULT, r3.aovs());
-        ImageWriter.write(r9.image(), many, ImageOptions.DEFAULT, r9.aovs());
+        RenderResult r1 = Renderer.render(scene(1, EnumSet.allOf(Aov.class)), 1, ProgressListener.NONE);
+        RenderResult r3 = Renderer.render(scene(1, EnumSet.allOf(Aov.class)), 3, ProgressListener.NONE);
+        RenderResult r9 = Renderer.render(scene(9, EnumSet.allOf(Aov.class)), 3, ProgressListener.NONE);
+        ImageWriter.write(r1.frame(), one, ImageOptions.DEFAULT, r1.passes().orElse(null));
+        ImageWriter.write(r3.frame(), three, ImageOptions.DEFAULT, r3.passes().orElse(null));
+        ImageWriter.write(r9.frame(), many, ImageOptions.DEFAULT, r9.passes().orElse(null));
         for (Aov a : Aov.values()) {
             byte[] base = Files.readAllBytes(a.fileBeside(one));
             assertArrayEquals(base, Files.readAllBytes(a.fileBeside(three)), a + ": 1 vs 3 threads");
@@ -141,13 +141,13 @@ class AovRenderTest {
 
     @Test
     void noPassesMeansNoFrameAndNoExtraRays() throws InterruptedException {
-        Renderer.Result none = Renderer.render(scene(2, Set.of()), 2, ProgressListener.NONE);
-        assertNull(none.aovs());
+        RenderResult none = Renderer.render(scene(2, Set.of()), 2, ProgressListener.NONE);
+        assertNull(none.passes().orElse(null));
         assertEquals((long) W * H * 2, none.stats().cameraRays());
-        Renderer.Result with = Renderer.render(scene(2, EnumSet.of(Aov.OBJECT)), 2, ProgressListener.NONE);
+        RenderResult with = Renderer.render(scene(2, EnumSet.of(Aov.OBJECT)), 2, ProgressListener.NONE);
         assertEquals((long) W * H * 3, with.stats().cameraRays(), "one more camera ray per pixel");
-        assertEquals(EnumSet.of(Aov.OBJECT), with.aovs().passes());
+        assertEquals(EnumSet.of(Aov.OBJECT), with.passes().orElse(null).passes());
         // The main image does not change when passes are asked for.
-        assertArrayEquals(none.image().data(), with.image().data(), 0.0);
+        assertArrayEquals(none.frame().data(), with.frame().data(), 0.0);
     }
 }

@@ -43,8 +43,8 @@ class CsgNestingRenderTest {
             flat.append(sphere(i));
         }
         flat.append("}\n");
-        double[] deep = Renderer.render(SceneParser.parse(nested.toString(), "nested.dat", null).build(), 2, ProgressListener.NONE).image().data();
-        double[] one = Renderer.render(SceneParser.parse(flat.toString(), "flat.dat", null).build(), 2, ProgressListener.NONE).image().data();
+        double[] deep = Renderer.render(SceneParser.parse(nested.toString(), "nested.dat", null).build(), 2, ProgressListener.NONE).frame().data();
+        double[] one = Renderer.render(SceneParser.parse(flat.toString(), "flat.dat", null).build(), 2, ProgressListener.NONE).frame().data();
         int lit = 0;
         for (double d : one) if (d > 0) lit++;
         assertTrue(lit > one.length / 10, "the solid covers part of the image");

@@ -14,7 +14,7 @@ import lt.spindulys.image.AovFrame;
 import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
-import lt.spindulys.sampling.LensPattern;
+import lt.spindulys.camera.LensPattern;
 import lt.spindulys.material.Material;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.SceneBuilder;
@@ -33,11 +33,11 @@ class DepthOfFieldRenderTest {
     /** The edge x = 0 at depth d: the white side x > 0 is the image's left (right is forward x up = -x). */
     private static FrameBuffer render(Camera camera, double d, int spp, int threads) throws InterruptedException {
         SceneBuilder b = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(W, H).withSamplesPerPixel(spp).withSeed(17).withAmbient(Color.WHITE))
+                .settings(RenderSettings.builder().size(W, H).samplesPerPixel(spp).seed(17).ambient(Color.WHITE).build())
                 .camera(camera);
         b.add(new Triangle(new Vec3(0, -1000, d), new Vec3(0, 1000, d), new Vec3(1000, 0, d))
                 .material(Material.builder().color(Color.WHITE).ka(1).kd(0).build()));
-        return Renderer.render(b.build(), threads, ProgressListener.NONE).image();
+        return Renderer.render(b.build(), threads, ProgressListener.NONE).frame();
     }
 
     private static double[] profile(Camera camera, double d, int spp) throws InterruptedException {
@@ -167,9 +167,9 @@ class DepthOfFieldRenderTest {
 
     private static AovFrame passes(Camera camera) throws InterruptedException {
         SceneBuilder b = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(W, H).withSamplesPerPixel(4).withAovs(EnumSet.of(Aov.DEPTH, Aov.OBJECT)))
+                .settings(RenderSettings.builder().size(W, H).samplesPerPixel(4).aovs(EnumSet.of(Aov.DEPTH, Aov.OBJECT)).build())
                 .camera(camera);
         b.add(new Triangle(new Vec3(0, -1000, 5), new Vec3(0, 1000, 5), new Vec3(1000, 0, 5)));
-        return Renderer.render(b.build(), 2, ProgressListener.NONE).aovs();
+        return Renderer.render(b.build(), 2, ProgressListener.NONE).passes().orElse(null);
     }
 }

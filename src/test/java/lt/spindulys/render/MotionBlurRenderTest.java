@@ -27,7 +27,7 @@ class MotionBlurRenderTest {
     static final double EYE = 10, FOV = 0.86, R = 0.5;
 
     private static RenderSettings settings(int spp, int steps) {
-        return RenderSettings.DEFAULT.withSize(W, H).withSamplesPerPixel(spp).withAmbient(Color.WHITE).withSeed(3).withTimeSteps(steps);
+        return RenderSettings.builder().size(W, H).samplesPerPixel(spp).ambient(Color.WHITE).seed(3).timeSteps(steps).build();
     }
 
     /** The middle row of a render of a sphere at x = c0 moving by dx between start and finish. */
@@ -36,7 +36,7 @@ class MotionBlurRenderTest {
                 .camera(new PinholeCamera(new Vec3(0, 0, -EYE), Vec3.ZERO, Vec3.Y, FOV));
         b.add(new Sphere(new Vec3(c0, 0, 0), R).material(Material.builder().color(Color.WHITE).ka(1).kd(0).build())
                 .motion(Motion.translation(new Vec3(dx, 0, 0), start, finish)));
-        FrameBuffer fb = Renderer.render(b.build(), 2, ProgressListener.NONE).image();
+        FrameBuffer fb = Renderer.render(b.build(), 2, ProgressListener.NONE).frame();
         double[] out = new double[W];
         for (int x = 0; x < W; x++) out[x] = fb.get(x, H / 2, 0);
         return out;
@@ -118,13 +118,13 @@ class MotionBlurRenderTest {
         assertEquals(1, steps[(int) Math.round(column((c0 + 0.25 * dx) / EYE))] * 2, 0.05);
         assertEquals(1, steps[(int) Math.round(column((c0 + 0.75 * dx) / EYE))] * 2, 0.05);
 
-        SceneBuilder b = new SceneBuilder().settings(settings(8, 4).withSize(37, 23))
+        SceneBuilder b = new SceneBuilder().settings(settings(8, 4).toBuilder().size(37, 23).build())
                 .camera(new PinholeCamera(new Vec3(0, 0, -EYE), Vec3.ZERO, Vec3.Y, FOV));
         b.add(new Sphere(Vec3.ZERO, R).motion(Motion.translation(Vec3.X, 0.2, 0.8)));
-        double[] one = Renderer.render(b.build(), 1, ProgressListener.NONE).image().data();
-        b = new SceneBuilder().settings(settings(8, 4).withSize(37, 23)).camera(new PinholeCamera(new Vec3(0, 0, -EYE), Vec3.ZERO, Vec3.Y, FOV));
+        double[] one = Renderer.render(b.build(), 1, ProgressListener.NONE).frame().data();
+        b = new SceneBuilder().settings(settings(8, 4).toBuilder().size(37, 23).build()).camera(new PinholeCamera(new Vec3(0, 0, -EYE), Vec3.ZERO, Vec3.Y, FOV));
         b.add(new Sphere(Vec3.ZERO, R).motion(Motion.translation(Vec3.X, 0.2, 0.8)));
-        double[] three = Renderer.render(b.build(), 3, ProgressListener.NONE).image().data();
+        double[] three = Renderer.render(b.build(), 3, ProgressListener.NONE).frame().data();
         assertArrayEquals(one, three, 0.0);
     }
 
@@ -152,17 +152,17 @@ class MotionBlurRenderTest {
      */
     @Test
     void shadowsAndReflectionsAreTracedAtTheSameTime() throws InterruptedException {
-        RenderSettings st = RenderSettings.DEFAULT.withSize(41, 27).withSamplesPerPixel(2).withShutter(0.7, 0.7);
-        double[] still = Renderer.render(litScene(st, false, 0, 1).build(), 2, ProgressListener.NONE).image().data();
-        double[] instant = Renderer.render(litScene(st, true, 0, 1).build(), 2, ProgressListener.NONE).image().data();
+        RenderSettings st = RenderSettings.builder().size(41, 27).samplesPerPixel(2).shutter(0.7, 0.7).build();
+        double[] still = Renderer.render(litScene(st, false, 0, 1).build(), 2, ProgressListener.NONE).frame().data();
+        double[] instant = Renderer.render(litScene(st, true, 0, 1).build(), 2, ProgressListener.NONE).frame().data();
         assertArrayEquals(still, instant, 1e-9);
     }
 
     @Test
     void singlePassIsIdenticalForAnyThreadCount() throws InterruptedException {
-        RenderSettings st = RenderSettings.DEFAULT.withSize(41, 27).withSamplesPerPixel(5).withShutter(0.2, 0.9);
-        double[] one = Renderer.render(litScene(st, true, Double.NaN, Double.NaN).build(), 1, ProgressListener.NONE).image().data();
-        double[] four = Renderer.render(litScene(st, true, Double.NaN, Double.NaN).build(), 4, ProgressListener.NONE).image().data();
+        RenderSettings st = RenderSettings.builder().size(41, 27).samplesPerPixel(5).shutter(0.2, 0.9).build();
+        double[] one = Renderer.render(litScene(st, true, Double.NaN, Double.NaN).build(), 1, ProgressListener.NONE).frame().data();
+        double[] four = Renderer.render(litScene(st, true, Double.NaN, Double.NaN).build(), 4, ProgressListener.NONE).frame().data();
         assertArrayEquals(one, four, 0.0);
     }
 }

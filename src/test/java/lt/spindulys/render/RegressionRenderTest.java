@@ -59,9 +59,9 @@ class RegressionRenderTest {
         SceneBuilder b = SceneParser.parse(scene);
         RenderSettings s = b.settings();
         int h = Math.max(1, (int) Math.round(WIDTH / s.aspect()));
-        b.settings(s.withSize(WIDTH, h).withSamplesPerPixel(Math.min(s.samplesPerPixel(), MAX_SPP)));
+        b.settings(s.toBuilder().size(WIDTH, h).samplesPerPixel(Math.min(s.samplesPerPixel(), MAX_SPP)).build());
         boolean srgb = s.srgb();
-        FrameBuffer actual = Renderer.render(b.build(), 2, ProgressListener.NONE).image();
+        FrameBuffer actual = Renderer.render(b.build(), 2, ProgressListener.NONE).frame();
 
         String name = SCENES.relativize(scene).toString().replace('\\', '/').replace('/', '_').replaceAll("\\.dat$", "");
         Path golden = GOLDEN.resolve(name + ".png");

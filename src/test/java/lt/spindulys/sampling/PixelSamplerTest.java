@@ -2,6 +2,8 @@ package lt.spindulys.sampling;
 
 import static org.junit.jupiter.api.Assertions.*;
 
+import lt.spindulys.camera.LensPattern;
+
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;

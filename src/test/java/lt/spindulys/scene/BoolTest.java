@@ -569,7 +569,7 @@ class BoolTest {
         // ordinary sphere.
         Bool hollow = bool(Bool.Op.DIFFERENCE, new Box(new Vec3(-2, -2, -2), new Vec3(2, 2, 2)), new Sphere(Vec3.ZERO, 1.5));
         Sphere inside = new Sphere(new Vec3(0, 0, 0.5), 0.3);
-        Scene scene = new SceneBuilder().settings(RenderSettings.DEFAULT.withAccelerator(lt.spindulys.accel.AcceleratorKind.BRUTE_FORCE))
+        Scene scene = new SceneBuilder().settings(RenderSettings.builder().accelerator(lt.spindulys.scene.AcceleratorKind.BRUTE_FORCE).build())
                 .add(hollow).add(inside).build();
         Ray r = new Ray().set(0, 0, -1, 0, 0, 1, 0, Double.POSITIVE_INFINITY);
         TraceContext ctx = new TraceContext();

@@ -13,7 +13,6 @@ import java.util.Random;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
-import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
 import lt.spindulys.mesh.MeshData;

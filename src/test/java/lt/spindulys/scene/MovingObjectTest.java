@@ -102,7 +102,7 @@ class MovingObjectTest {
             Box other = new Box(new Vec3(-1, -1, -1), new Vec3(1, 1, 1));
             Bool u = new Bool(Bool.Op.UNION, List.of(leaf, other));
             u.transform(Transform.rotateZ(20)).motion(randomMotion(r));
-            TestBuild.freeze(u, Placement.of(Transform.translate(1, 0, 0), -0.5, 1.5), Material.DEFAULT, 0, lt.spindulys.accel.AcceleratorKind.BVH);
+            TestBuild.freeze(u, Placement.of(Transform.translate(1, 0, 0), -0.5, 1.5), Material.DEFAULT, 0, AcceleratorKind.BVH);
             for (int k = 0; k < 100; k++) {
                 double t = 2.4 * r.nextDouble() - 0.7;
                 Bounds leafAtT = leaf.localBounds().transformed(leaf.objectToWorld(t));

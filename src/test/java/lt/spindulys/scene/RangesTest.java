@@ -43,9 +43,9 @@ class RangesTest {
         refused("light intensity must be between 0 and 1e15, found 1.0E308", () -> new PointLight(Vec3.ZERO, Color.WHITE, 1e308, PointLight.Falloff.NONE));
         refused("light color must have components between 0 and 100, found (1000.0, 0.0, 0.0)", () -> new PointLight(Vec3.ZERO, new Color(1000, 0, 0)));
         refused("light position must be finite and at most 1e15 in magnitude, found (0.0, 1.0E300, 0.0)", () -> new PointLight(new Vec3(0, 1e300, 0), Color.WHITE));
-        refused("ambient must have components between 0 and 100, found (101.0, 101.0, 101.0)", () -> RenderSettings.DEFAULT.withAmbient(Color.grey(101)));
+        refused("ambient must have components between 0 and 100, found (101.0, 101.0, 101.0)", () -> RenderSettings.builder().ambient(Color.grey(101)).build());
         refused("background must have components between 0 and 100, found (0.0, 0.0, Infinity)",
-                () -> RenderSettings.DEFAULT.withBackground(new Color(0, 0, Double.POSITIVE_INFINITY)));
+                () -> RenderSettings.builder().background(new Color(0, 0, Double.POSITIVE_INFINITY)).build());
         SceneBuilder sb = new SceneBuilder();
         PointLight max = new PointLight(Vec3.ZERO, Color.grey(100), 1e15, PointLight.Falloff.INVERSE_SQUARE);
         for (int i = 0; i < 1000; i++) sb.light(max);

@@ -18,7 +18,6 @@ import java.util.concurrent.Future;
 
 import org.junit.jupiter.api.Test;
 
-import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.camera.Camera;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.io.ObjReader;
@@ -45,12 +44,12 @@ class SceneReuseTest {
     private static final Material RED = Material.builder().color(new Color(0.9, 0.2, 0.1)).kd(0.8).ks(0.3).shininess(20).build();
 
     private static SceneBuilder builder() {
-        return new SceneBuilder().settings(RenderSettings.DEFAULT.withSize(48, 36)).camera(CAMERA)
+        return new SceneBuilder().settings(RenderSettings.builder().size(48, 36).build()).camera(CAMERA)
                 .light(new PointLight(new Vec3(4, 6, -5), Color.WHITE));
     }
 
     private static double[] render(Scene s) throws InterruptedException {
-        return Renderer.render(s, 1, ProgressListener.NONE).image().data().clone();
+        return Renderer.render(s, 1, ProgressListener.NONE).frame().data().clone();
     }
 
     private static double hitT(Scene s, double ox, double oy, double oz) {
@@ -151,7 +150,7 @@ class SceneReuseTest {
         assertFalse(fa.isInstance(), "a copy answers as the mesh it was made from");
         assertEquals(mesh.memoryBytes(), fa.memoryBytes());
         // Another kind of structure is another (shared) structure.
-        Scene brute = builder().settings(RenderSettings.DEFAULT.withAccelerator(AcceleratorKind.OCTREE)).add(mesh).build();
+        Scene brute = builder().settings(RenderSettings.builder().size(48, 36).accelerator(AcceleratorKind.OCTREE).build()).add(mesh).build();
         assertNotSame(fa.accelerator(), ((TriangleMesh) brute.objects().get(0)).accelerator());
 
         // A subdivision surface's triangles are shared the same way.
@@ -202,7 +201,7 @@ class SceneReuseTest {
         ViewProbe top = new ViewProbe(), operand = new ViewProbe();
         Material blue = Material.builder().color(new Color(0.1, 0.2, 0.9)).build();
         Bool holder = new Bool(Bool.Op.UNION, List.of(operand, new Sphere(Vec3.ZERO, 1))).material(blue).transform(Transform.translate(0, 2, 0));
-        RenderSettings settings = RenderSettings.DEFAULT.withSize(320, 200).withShutter(0.25, 0.75).withAccelerator(AcceleratorKind.BVH);
+        RenderSettings settings = RenderSettings.builder().size(320, 200).shutter(0.25, 0.75).accelerator(AcceleratorKind.BVH).build();
         Scene scene = new SceneBuilder().settings(settings).camera(CAMERA).add(top).add(holder).build();
         assertNull(top.seen, "the caller's object is not the one built");
 

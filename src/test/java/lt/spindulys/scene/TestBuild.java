@@ -1,6 +1,5 @@
 package lt.spindulys.scene;
 
-import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.material.Material;
 import lt.spindulys.math.Placement;
 import lt.spindulys.math.Transform;

@@ -18,7 +18,6 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-import lt.spindulys.accel.AcceleratorKind;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.io.SceneParser;
 import lt.spindulys.math.Ray;
@@ -126,7 +125,7 @@ class TriangleMeshInstanceTest {
                 mesh { file "cube.obj"  translate 3 0 0  shading smooth }
                 mesh { file "./cube.obj"  translate -3 0 0 }
                 """);
-        Scene s = SceneParser.parse(scene).settings(lt.spindulys.scene.RenderSettings.DEFAULT.withAccelerator(AcceleratorKind.BVH)).build();
+        Scene s = SceneParser.parse(scene).settings(lt.spindulys.scene.RenderSettings.builder().accelerator(AcceleratorKind.BVH).build()).build();
         TriangleMesh m0 = (TriangleMesh) s.objects().get(0), m1 = (TriangleMesh) s.objects().get(1), m2 = (TriangleMesh) s.objects().get(2);
         assertFalse(m0.isInstance());
         assertTrue(m1.isInstance() && m2.isInstance(), "the same file, however written, is read once");

@@ -495,8 +495,8 @@ class TriangleMeshTest {
     void bvhLeafOrderKeepsEveryTriangleAndEveryHit() {
         MeshData d = TestMeshes.icosphere(3, 1);
         TriangleMesh reordered = new TriangleMesh(d), plain = new TriangleMesh(d);
-        TestBuild.freeze(reordered, Transform.IDENTITY, Material.DEFAULT, 0, lt.spindulys.accel.AcceleratorKind.BVH);
-        TestBuild.freeze(plain, Transform.IDENTITY, Material.DEFAULT, 0, lt.spindulys.accel.AcceleratorKind.BRUTE_FORCE);
+        TestBuild.freeze(reordered, Transform.IDENTITY, Material.DEFAULT, 0, AcceleratorKind.BVH);
+        TestBuild.freeze(plain, Transform.IDENTITY, Material.DEFAULT, 0, AcceleratorKind.BRUTE_FORCE);
         java.util.List<String> a = new java.util.ArrayList<>(), b = new java.util.ArrayList<>();
         for (int t = 0; t < plain.triangleCount(); t++) {
             a.add(corners(reordered, t));

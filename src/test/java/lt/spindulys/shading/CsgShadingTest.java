@@ -37,7 +37,7 @@ class CsgShadingTest {
     private static final Color C = new Color(0.8, 0.6, 0.4);
 
     private static double[] render(SceneBuilder b) throws InterruptedException {
-        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).image();
+        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).frame();
         return new double[] {image.get(0, 0, 0), image.get(0, 0, 1), image.get(0, 0, 2)};
     }
 
@@ -45,7 +45,7 @@ class CsgShadingTest {
 
     private static SceneBuilder floorScene(PointLight light) {
         return new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(1, 1).withAmbient(IA).withBackground(Color.BLACK))
+                .settings(RenderSettings.builder().size(1, 1).ambient(IA).background(Color.BLACK).build())
                 .camera(new PinholeCamera(new Vec3(0, 5, 0), Vec3.ZERO, Vec3.Z, 10))
                 .light(light)
                 .add(new Plane(Vec3.Y, 0).material(Material.builder().color(C).ka(0.2).kd(0.7).build()));
@@ -83,7 +83,7 @@ class CsgShadingTest {
         a.material(ma);
         b.material(mb);
         SceneBuilder s = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(1, 1).withBackground(Color.WHITE))
+                .settings(RenderSettings.builder().size(1, 1).background(Color.WHITE).build())
                 .camera(new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, 10))
                 .add(union(a, b));
         double[] rgb = render(s);
@@ -110,7 +110,7 @@ class CsgShadingTest {
         b.material(mb);
         c.material(mc);
         SceneBuilder s = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(1, 1).withBackground(Color.WHITE))
+                .settings(RenderSettings.builder().size(1, 1).background(Color.WHITE).build())
                 .camera(new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, 10))
                 .add(union(union(a, b), c));
         double[] rgb = render(s);
@@ -167,7 +167,7 @@ class CsgShadingTest {
         Box wall = new Box(new Vec3(-0.5, -0.5, 4), new Vec3(0.5, 0.5, 4.2));
         wall.material(Material.builder().color(C).ka(1).kd(0).build());
         SceneBuilder s = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(24, 24).withMaxDepth(64).withAmbient(Color.WHITE).withBackground(new Color(0.1, 0.2, 0.3)))
+                .settings(RenderSettings.builder().size(24, 24).maxDepth(64).ambient(Color.WHITE).background(new Color(0.1, 0.2, 0.3)).build())
                 .camera(new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, 30))
                 .add(block).add(wall);
         if (marbleIor > 0) {
@@ -176,7 +176,7 @@ class CsgShadingTest {
             marble.material(Material.builder().ka(0).kd(0).kt(1).beta(0.1).ior(marbleIor).build());
             s.add(marble);
         }
-        return Renderer.render(s.build(), 1, ProgressListener.NONE).image().data().clone();
+        return Renderer.render(s.build(), 1, ProgressListener.NONE).frame().data().clone();
     }
 
     @Test
@@ -204,10 +204,10 @@ class CsgShadingTest {
         Box wall = new Box(new Vec3(-0.5, -0.5, 4), new Vec3(0.5, 0.5, 4.2));
         wall.material(Material.builder().color(C).ka(1).kd(0).build());
         SceneBuilder s = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(24, 24).withAmbient(Color.WHITE).withBackground(new Color(0.1, 0.2, 0.3)))
+                .settings(RenderSettings.builder().size(24, 24).ambient(Color.WHITE).background(new Color(0.1, 0.2, 0.3)).build())
                 .camera(new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, 30))
                 .add(union(a, b)).add(wall);
-        return Renderer.render(s.build(), 1, ProgressListener.NONE).image().data().clone();
+        return Renderer.render(s.build(), 1, ProgressListener.NONE).frame().data().clone();
     }
 
     @Test
@@ -242,7 +242,7 @@ class CsgShadingTest {
         Color f = new Color(1, 0.5, 0.25);
         Material glass = Material.builder().ka(0).kd(0).kt(0.9).filter(f).beta(0.4).ior(1.5).build();
         Scene scene = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(1, 1).withBackground(Color.WHITE))
+                .settings(RenderSettings.builder().size(1, 1).background(Color.WHITE).build())
                 .camera(new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, 10))
                 .add(hollowBall(Vec3.ZERO, 1, glass)).build();
         // Through the scene: from the middle of the cavity the first surface is the cut, and its
@@ -260,7 +260,7 @@ class CsgShadingTest {
         // Taken the other way round, the cut would be an entry at -0.5 and an exit at 0.5, and
         // the cavity would absorb as glass: twice the absorption.
         double[] rgb = render(new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(1, 1).withBackground(Color.WHITE))
+                .settings(RenderSettings.builder().size(1, 1).background(Color.WHITE).build())
                 .camera(new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, 10))
                 .add(hollowBall(Vec3.ZERO, 1, glass)));
         // (1e-8: each of the four restarts is offset from its surface by about 1e-9.)
@@ -290,7 +290,7 @@ class CsgShadingTest {
         Bool bowl = new Bool(Bool.Op.DIFFERENCE, List.of(new Box(new Vec3(-1, -1, -1), new Vec3(1, 1, 1)), new Sphere(new Vec3(0, 1, 0), 0.8)));
         bowl.material(m);
         SceneBuilder above = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(1, 1).withAmbient(IA).withBackground(Color.BLACK))
+                .settings(RenderSettings.builder().size(1, 1).ambient(IA).background(Color.BLACK).build())
                 .camera(new PinholeCamera(new Vec3(0, 5, 0), Vec3.ZERO, Vec3.Z, 10))
                 .light(new PointLight(new Vec3(0, 10, 0), Color.WHITE, 1, PointLight.Falloff.NONE))
                 .add(bowl);
@@ -300,7 +300,7 @@ class CsgShadingTest {
         Bool bowl2 = new Bool(Bool.Op.DIFFERENCE, List.of(new Box(new Vec3(-1, -1, -1), new Vec3(1, 1, 1)), new Sphere(new Vec3(0, 1, 0), 0.8)));
         bowl2.material(m);
         SceneBuilder low = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(1, 1).withAmbient(IA).withBackground(Color.BLACK))
+                .settings(RenderSettings.builder().size(1, 1).ambient(IA).background(Color.BLACK).build())
                 .camera(new PinholeCamera(new Vec3(0, 5, 0), Vec3.ZERO, Vec3.Z, 10))
                 .light(new PointLight(new Vec3(5, 1.5, 0), Color.WHITE, 1, PointLight.Falloff.NONE))
                 .add(bowl2);

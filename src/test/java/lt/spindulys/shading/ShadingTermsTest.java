@@ -26,7 +26,7 @@ class ShadingTermsTest {
 
     private static SceneBuilder floorScene(Material floor, PointLight light) {
         SceneBuilder b = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(1, 1).withAmbient(IA).withBackground(Color.BLACK))
+                .settings(RenderSettings.builder().size(1, 1).ambient(IA).background(Color.BLACK).build())
                 .camera(new PinholeCamera(new Vec3(0, 5, 0), Vec3.ZERO, Vec3.Z, 10));
         if (light != null) b.light(light);
         b.add(new Plane(Vec3.Y, 0).material(floor));
@@ -34,7 +34,7 @@ class ShadingTermsTest {
     }
 
     private static double[] render(SceneBuilder b) throws InterruptedException {
-        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).image();
+        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).frame();
         return new double[] {image.get(0, 0, 0), image.get(0, 0, 1), image.get(0, 0, 2)};
     }
 

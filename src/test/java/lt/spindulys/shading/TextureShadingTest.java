@@ -36,7 +36,7 @@ class TextureShadingTest {
 
     private static SceneBuilder floorScene(Material floor) {
         SceneBuilder b = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(1, 1).withAmbient(Color.grey(0.5)).withBackground(Color.BLACK))
+                .settings(RenderSettings.builder().size(1, 1).ambient(Color.grey(0.5)).background(Color.BLACK).build())
                 .camera(new PinholeCamera(new Vec3(0, 5, 0), Vec3.ZERO, Vec3.Z, 10))
                 .light(LIGHT);
         b.add(new Plane(Vec3.Y, 0).material(floor));
@@ -44,7 +44,7 @@ class TextureShadingTest {
     }
 
     private static double[] render(SceneBuilder b) throws InterruptedException {
-        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).image();
+        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).frame();
         return new double[] {image.get(0, 0, 0), image.get(0, 0, 1), image.get(0, 0, 2)};
     }
 
@@ -87,7 +87,7 @@ class TextureShadingTest {
 
     private static SceneBuilder mirrorScene(Material floor, Color sky) {
         SceneBuilder b = floorScene(floor);
-        return b.settings(b.settings().withBackground(sky));
+        return b.settings(b.settings().toBuilder().background(sky).build());
     }
 
     @Test
@@ -149,10 +149,10 @@ class TextureShadingTest {
         Texture t = new lt.spindulys.texture.ImageTexture(img, filter, lt.spindulys.texture.Wrap.REPEAT);
         Material m = Material.builder().ka(0).kd(0).texture(Channel.EMISSION, t, new Planar(Vec3.ZERO, Vec3.Y, Vec3.X, 1, 1)).build();
         SceneBuilder b = new SceneBuilder()
-                .settings(RenderSettings.DEFAULT.withSize(64, 64).withBackground(Color.BLACK))
+                .settings(RenderSettings.builder().size(64, 64).background(Color.BLACK).build())
                 .camera(new PinholeCamera(new Vec3(0, 1, 0), new Vec3(0, 0.7, 10), Vec3.Y, 40));
         b.add(new Plane(Vec3.Y, 0).material(m));
-        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).image();
+        var image = Renderer.render(b.build(), 1, ProgressListener.NONE).frame();
         double sum = 0, sum2 = 0;
         int count = 0;
         for (int y = 0; y < image.height(); y++) {

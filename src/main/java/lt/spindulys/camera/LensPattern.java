@@ -1,11 +1,11 @@
-package lt.spindulys.sampling;
+package lt.spindulys.camera;
 
 import java.util.ArrayList;
 import java.util.List;
 
 /**
  * Where a pixel's lens samples lie on the unit disk (the camera scales them by its aperture). The
- * {@link PixelSampler} places them; a pinhole camera ignores them.
+ * renderer's pixel sampler places them; a pinhole camera ignores them.
  */
 public enum LensPattern {
     /**
@@ -25,16 +25,30 @@ public enum LensPattern {
 
     LensPattern(String keyword) { this.keyword = keyword; }
 
-    /** The word that names the pattern in scene files. */
+    /**
+     * The word that names the pattern in scene files.
+     *
+     * @return the keyword
+     */
     public String keyword() { return keyword; }
 
-    /** The pattern named {@code word}. */
+    /**
+     * The pattern named {@code word}.
+     *
+     * @param word the keyword
+     * @return the pattern
+     * @throws IllegalArgumentException if no pattern has that keyword
+     */
     public static LensPattern fromKeyword(String word) {
         for (LensPattern p : values()) if (p.keyword.equals(word)) return p;
         throw new IllegalArgumentException("unknown lens pattern '" + word + "', expected " + String.join(" or ", keywords()));
     }
 
-    /** Every pattern's keyword, in declaration order. */
+    /**
+     * Every pattern's keyword, in declaration order.
+     *
+     * @return the keywords
+     */
     public static List<String> keywords() {
         List<String> out = new ArrayList<>();
         for (LensPattern p : values()) out.add(p.keyword);

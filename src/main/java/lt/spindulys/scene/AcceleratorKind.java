@@ -1,11 +1,20 @@
-package lt.spindulys.accel;
+package lt.spindulys.scene;
 
 import java.util.ArrayList;
 import java.util.List;
 
+import lt.spindulys.accel.Accelerator;
+import lt.spindulys.accel.BruteForce;
+import lt.spindulys.accel.Bvh;
+import lt.spindulys.accel.Octree;
+import lt.spindulys.accel.PrimitiveSet;
+import lt.spindulys.accel.WideBvh;
+
 /**
  * The acceleration structures to choose from, by name: one switch for both levels, the scene's
- * structure over its objects and each mesh's over its triangles.
+ * structure over its objects and each mesh's over its triangles. A user setting
+ * (in {@link RenderSettings}), so it lives beside the settings; the structures
+ * themselves are internal.
  */
 public enum AcceleratorKind {
     /**
@@ -14,22 +23,21 @@ public enum AcceleratorKind {
      * {@code jdk.incubator.vector} module; otherwise the binary {@link Bvh} itself.
      */
     BVH("bvh") {
-        @Override public Accelerator build(PrimitiveSet set) {
-            Bvh b = new Bvh(set);
-            return WideBvh.AVAILABLE && WideBvh.canCollapse(b) ? new WideBvh(b) : b;
+        @Override Accelerator build(PrimitiveSet set) {
+            return WideBvh.widen(new Bvh(set));
         }
     },
     /** {@link Bvh}: the binary binned-SAH hierarchy with scalar box tests, whatever the JVM. */
     BVH2("bvh2") {
-        @Override public Accelerator build(PrimitiveSet set) { return new Bvh(set); }
+        @Override Accelerator build(PrimitiveSet set) { return new Bvh(set); }
     },
     /** {@link Octree}: the thesis's octree, front-to-back traversal. */
     OCTREE("octree") {
-        @Override public Accelerator build(PrimitiveSet set) { return new Octree(set); }
+        @Override Accelerator build(PrimitiveSet set) { return new Octree(set); }
     },
     /** {@link BruteForce}: tests every primitive; for testing and debugging. */
     BRUTE_FORCE("bruteforce") {
-        @Override public Accelerator build(PrimitiveSet set) { return new BruteForce(set); }
+        @Override Accelerator build(PrimitiveSet set) { return new BruteForce(set); }
     };
 
     /** The structure used when none is chosen. */
@@ -39,12 +47,14 @@ public enum AcceleratorKind {
 
     AcceleratorKind(String keyword) { this.keyword = keyword; }
 
-    /** Builds this kind of structure over {@code set}. */
-    public abstract Accelerator build(PrimitiveSet set);
+    /** Builds this kind of structure over {@code set}; the scene's own business, hence not public. */
+    abstract Accelerator build(PrimitiveSet set);
 
     /**
      * What this kind builds in this JVM, for statistics: for {@link #BVH}, whether the wide vector
      * form or the binary fallback (the module missing, or vectors under 256 bits).
+     *
+     * @return one line for the statistics
      */
     public String description() {
         return switch (this) {
@@ -56,10 +66,18 @@ public enum AcceleratorKind {
         };
     }
 
-    /** The name used in scene files and on the command line, for example "bruteforce". */
+    /**
+     * The name used in scene files and on the command line, for example "bruteforce".
+     *
+     * @return the keyword
+     */
     public String keyword() { return keyword; }
 
-    /** The keywords of all kinds, in declaration order. */
+    /**
+     * The keywords of all kinds, in declaration order.
+     *
+     * @return the keywords
+     */
     public static List<String> keywords() {
         List<String> k = new ArrayList<>();
         for (AcceleratorKind a : values()) k.add(a.keyword);
@@ -69,6 +87,8 @@ public enum AcceleratorKind {
     /**
      * The kind named {@code keyword}.
      *
+     * @param keyword the keyword
+     * @return the kind
      * @throws IllegalArgumentException "unknown accelerator 'kd' (expected one of bvh, bvh2, octree, bruteforce)"
      */
     public static AcceleratorKind fromKeyword(String keyword) {

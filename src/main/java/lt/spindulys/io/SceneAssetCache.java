@@ -1,0 +1,232 @@
+package lt.spindulys.io;
+
+import java.io.IOException;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.Map;
+
+import lt.spindulys.io.SceneBlockReader.Prop;
+import lt.spindulys.io.SceneBlockReader.Props;
+import lt.spindulys.io.SceneLexer.Token;
+import lt.spindulys.limits.InputFiles;
+import lt.spindulys.limits.MessageText;
+import lt.spindulys.mesh.MeshData;
+import lt.spindulys.scene.SubdivisionSurface;
+import lt.spindulys.scene.TriangleMesh;
+import lt.spindulys.subdiv.ControlMesh;
+import lt.spindulys.subdiv.SubdivInput;
+import lt.spindulys.subdiv.SubdivOptions;
+import lt.spindulys.texture.TextureCache;
+import lt.spindulys.texture.TextureImage;
+
+/**
+ * The files one scene file names (meshes, subdivision control meshes with their unwraps, texture
+ * images), resolved against the scene's folder and each read once per parse: a later statement
+ * naming the same mesh, or the same surface, gets an instance of the first (one copy of the
+ * geometry, placed again), and an image named by several textures is decoded once. Errors name
+ * the file as the scene wrote it, at its value.
+ */
+final class SceneAssetCache {
+    private final SceneErrors err;
+    private final Path baseDir;
+    /** Every image of this parse, loaded once however many textures name it. */
+    private final TextureCache textureCache = new TextureCache();
+    /** The first mesh read from each file; later statements naming the file get instances of it. */
+    private final Map<Path, TriangleMesh> meshes = new HashMap<>();
+    /** Likewise for subdivision surfaces, by everything that decides the refined surface. */
+    private final Map<SubdivKey, SubdivisionSurface> surfaces = new HashMap<>();
+
+    /** @param baseDir the absolute folder against which relative file names are resolved */
+    SceneAssetCache(SceneErrors err, Path baseDir) {
+        this.err = err;
+        this.baseDir = baseDir;
+    }
+
+    /**
+     * The image a texture block's 'image' key names, decoded once however many textures name it;
+     * an error at the value if it cannot be read.
+     */
+    TextureImage image(Prop image) {
+        Path path = existingFile(image, "texture image");
+        TextureImage img;
+        try {
+            img = textureCache.load(path);
+        } catch (IOException e) {
+            // The cache says "FILE: reason"; the scene location and the name as written replace FILE.
+            String reason = String.valueOf(e.getMessage());
+            if (reason.startsWith(path + ": ")) reason = reason.substring(path.toString().length() + 2);
+            throw err.error(image.valueAt(), "cannot read texture image " + MessageText.quote((String) image.value()) + ": " + reason);
+        }
+        return img;
+    }
+
+    /** A mesh block's triangle mesh: its file read and indexed on first use, an instance of that mesh after. */
+    TriangleMesh mesh(Props p) {
+        Prop f = p.prop("file");
+        String rel = (String) f.value();
+        Path path;
+        try {
+            path = baseDir.resolve(rel).normalize();
+        } catch (InvalidPathException e) {
+            throw err.error(f.valueAt(), "mesh file name " + MessageText.quote(rel) + " is not a valid path: " + e.getReason());
+        }
+        // Checked here rather than left to the reader so the message points into the scene file.
+        String problem = InputFiles.problem(path);
+        if (problem != null) throw err.error(f.valueAt(), "mesh file " + MessageText.quote(rel) + " " + problem + " (looked in " + MessageText.cut(path.toString(), 200) + ")");
+        TriangleMesh first = meshes.get(path);
+        if (first != null) {
+            // The same file again: another placement of the same geometry, read and indexed once.
+            TriangleMesh m = first.instance();
+            Object shading = p.get("shading");
+            m.smooth(shading != null ? "smooth".equals(shading) : first.hasNormals());
+            return m;
+        }
+        MeshData data;
+        try {
+            data = ObjReader.read(path);
+        } catch (IOException e) {
+            throw err.error(f.valueAt(), "cannot read mesh file " + MessageText.quote(rel) + ": " + e.getMessage());
+        }
+        TriangleMesh m;
+        try {
+            m = new TriangleMesh(data);
+        } catch (IllegalArgumentException e) {
+            throw err.wrap(f.valueAt(), e);
+        }
+        Object shading = p.get("shading");
+        m.smooth(shading != null ? "smooth".equals(shading) : data.normals() != null);
+        meshes.put(path, m);
+        return m;
+    }
+
+    /**
+     * A subdivision surface: the control mesh from an OBJ (with its tags) or a Workframe .dat
+     * file, an optional .tex unwrap as its UVs, the block's scheme keys over the file's options.
+     */
+    SubdivisionSurface surface(Props p) {
+        Prop levelProp = p.prop("level");
+        int level = (Integer) p.get("level");
+        Token levelAt = levelProp != null ? levelProp.at() : p.opener;
+        try {
+            SubdivisionSurface.checkLevel(level);
+        } catch (IllegalArgumentException e) {
+            throw err.wrap(levelAt, e);
+        }
+        Prop f = p.prop("file");
+        String rel = (String) f.value();
+        Path path = existingFile(f, "subdivision mesh file");
+        Prop uvProp = p.prop("uv");
+        SubdivKey key = new SubdivKey(path, uvProp != null ? existingFile(uvProp, "unwrap file") : null, level,
+                "smooth".equals(p.get("shading")), (String) p.get("boundary"), (String) p.get("uvinterpolation"),
+                (String) p.get("creasing"), (String) p.get("triangles"));
+        SubdivisionSurface same = surfaces.get(key);
+        if (same != null) return same.instance(); // the same surface again: refined once, placed twice
+        SubdivisionSurface made = refineSurface(p, f, rel, path, levelAt, level);
+        surfaces.put(key, made);
+        return made;
+    }
+
+    /** What makes two subdiv statements the same surface: file, unwrap, level, shading and scheme words. */
+    private record SubdivKey(Path file, Path uv, int level, boolean smooth, String boundary, String uvinterpolation,
+                             String creasing, String triangles) {}
+
+    private SubdivisionSurface refineSurface(Props p, Prop f, String rel, Path path, Token levelAt, int level) {
+        String ext = extension(rel);
+        if (!ext.equals("obj") && !ext.equals("dat")) {
+            throw err.error(f.valueAt(), "subdivision mesh file " + MessageText.quote(rel) + " must be a Wavefront .obj or a Workframe .dat file");
+        }
+        SubdivInput input;
+        try {
+            input = ext.equals("obj") ? ObjReader.readSubdiv(path) : SubdivInput.of(WorkframeReader.readMesh(path));
+        } catch (IOException e) {
+            throw err.error(f.valueAt(), "cannot read subdivision mesh file " + MessageText.quote(rel) + ": " + e.getMessage());
+        }
+        Prop uv = p.prop("uv");
+        if (uv != null) {
+            Path uvPath = existingFile(uv, "unwrap file");
+            try {
+                input = input.withCornerUvs(WorkframeReader.readUnwrap(uvPath, input.mesh()));
+            } catch (IOException e) {
+                throw err.error(uv.valueAt(), "cannot read unwrap file " + MessageText.quote((String) uv.value()) + ": " + e.getMessage());
+            }
+        }
+        input = input.withOptions(options(p, input.options()));
+        try {
+            SubdivisionSurface.checkLevel(level, input.refinedFaceCount(level));
+        } catch (IllegalArgumentException e) {
+            throw err.wrap(levelAt, e);
+        }
+        try {
+            ControlMesh control = input.toControlMesh();
+            return new SubdivisionSurface(control, level, "smooth".equals(p.get("shading")));
+        } catch (IllegalArgumentException e) {
+            throw err.wrap(f.valueAt(), e);
+        }
+    }
+
+    /** The file's options with the block's scheme keys, where given, in their place. */
+    private static SubdivOptions options(Props p, SubdivOptions o) {
+        return subdivOptions(o, (String) p.get("boundary"), (String) p.get("uvinterpolation"), (String) p.get("creasing"), (String) p.get("triangles"));
+    }
+
+    /** {@code base} with each scheme choice of a subdiv block (its grammar word, or null to keep base's) in its place. */
+    static SubdivOptions subdivOptions(SubdivOptions base, String boundary, String uvinterpolation, String creasing, String triangles) {
+        SubdivOptions o = base;
+        if (boundary != null) {
+            o = o.withBoundary(switch (boundary) {
+                case "edge-only" -> SubdivOptions.Boundary.EDGE_ONLY;
+                case "edge-and-corner" -> SubdivOptions.Boundary.EDGE_AND_CORNER;
+                case "none" -> SubdivOptions.Boundary.NONE;
+                default -> throw new IllegalStateException("boundary choice without a mapping: " + boundary);
+            });
+        }
+        if (uvinterpolation != null) {
+            o = o.withFaceVarying(switch (uvinterpolation) {
+                case "none" -> SubdivOptions.FaceVarying.NONE;
+                case "corners-only" -> SubdivOptions.FaceVarying.CORNERS_ONLY;
+                case "corners-plus1" -> SubdivOptions.FaceVarying.CORNERS_PLUS1;
+                case "corners-plus2" -> SubdivOptions.FaceVarying.CORNERS_PLUS2;
+                case "boundaries" -> SubdivOptions.FaceVarying.BOUNDARIES;
+                case "all" -> SubdivOptions.FaceVarying.ALL;
+                default -> throw new IllegalStateException("uvinterpolation choice without a mapping: " + uvinterpolation);
+            });
+        }
+        if (creasing != null) {
+            o = o.withCreasing(switch (creasing) {
+                case "uniform" -> SubdivOptions.Creasing.UNIFORM;
+                case "chaikin" -> SubdivOptions.Creasing.CHAIKIN;
+                default -> throw new IllegalStateException("creasing choice without a mapping: " + creasing);
+            });
+        }
+        if (triangles != null) {
+            o = o.withTriangles(switch (triangles) {
+                case "catmark" -> SubdivOptions.Triangles.CATMARK;
+                case "smooth" -> SubdivOptions.Triangles.SMOOTH;
+                default -> throw new IllegalStateException("triangles choice without a mapping: " + triangles);
+            });
+        }
+        return o;
+    }
+
+    /** The file a string key names, resolved against the scene's folder; an error at the value if it does not exist. */
+    private Path existingFile(Prop f, String what) {
+        String rel = (String) f.value();
+        Path path;
+        try {
+            path = baseDir.resolve(rel).normalize();
+        } catch (InvalidPathException e) {
+            throw err.error(f.valueAt(), what + " name " + MessageText.quote(rel) + " is not a valid path: " + e.getReason());
+        }
+        String problem = InputFiles.problem(path);
+        if (problem != null) throw err.error(f.valueAt(), what + " " + MessageText.quote(rel) + " " + problem + " (looked in " + MessageText.cut(path.toString(), 200) + ")");
+        return path;
+    }
+
+    /** The lower-case extension of a file name ("" when it has none). */
+    private static String extension(String name) {
+        String base = name.substring(Math.max(name.lastIndexOf('/'), name.lastIndexOf('\\')) + 1);
+        int dot = base.lastIndexOf('.');
+        return dot < 0 ? "" : base.substring(dot + 1).toLowerCase(java.util.Locale.ROOT);
+    }
+}

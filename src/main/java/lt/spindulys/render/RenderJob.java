@@ -1,0 +1,267 @@
+package lt.spindulys.render;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Objects;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.Future;
+import java.util.concurrent.FutureTask;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.function.Consumer;
+import java.util.function.UnaryOperator;
+
+import lt.spindulys.camera.Camera;
+import lt.spindulys.image.FrameBuffer;
+import lt.spindulys.image.ImageOptions;
+import lt.spindulys.image.ImageWriter;
+import lt.spindulys.io.SceneParser;
+import lt.spindulys.scene.RenderSettings;
+import lt.spindulys.scene.Scene;
+import lt.spindulys.scene.SceneBuilder;
+
+/**
+ * The whole route from a scene to an image, as the command line runs it: read the scene file (or
+ * take a scene made in code), apply setting and camera overrides, check the frame against the
+ * heap, build, render on every core, and write the image with its render passes atomically.
+ * The command line, the viewer's output plugin and tests all run renders through this class.
+ *
+ * <pre>{@code
+ * RenderResult r = RenderJob.of(Path.of("scene.dat"))
+ *         .settings(s -> s.toBuilder().samplesPerPixel(16).build())
+ *         .output(Path.of("out.png"))
+ *         .progress((done, total) -> System.err.print("\r" + 100 * done / total + "%"))
+ *         .run();
+ * }</pre>
+ *
+ * <p>A job is configured, then run once, on the calling thread ({@link #run}) or on a thread of
+ * its own ({@link #start}). {@link #cancel} stops it from any thread: the run then throws
+ * {@link CancellationException} and writes nothing. A job given a {@link SceneBuilder} builds
+ * from it without changing it (its settings and camera stay as they were); a job given a
+ * built {@link Scene} takes no overrides.
+ */
+public final class RenderJob {
+    /** The steps of a run, in order; {@link #stage()} tells which one a failure came from. */
+    public enum Stage {
+        /** Not started yet. */
+        READY,
+        /** Checking that the output can be written, before any work. */
+        CHECK,
+        /** Reading the scene file. */
+        LOAD,
+        /** Applying overrides and checking the frame against the heap. */
+        SETTINGS,
+        /** Building the scene: freezing objects, building acceleration structures. */
+        BUILD,
+        /** Tracing rays. */
+        RENDER,
+        /** Writing the image and its passes. */
+        WRITE,
+        /** Finished. */
+        DONE
+    }
+
+    private final Path sceneFile;
+    private final SceneBuilder builder;
+    private final Scene scene;
+    private UnaryOperator<RenderSettings> settingsOverride = UnaryOperator.identity();
+    private UnaryOperator<Camera> cameraOverride;
+    private Consumer<SceneBuilder> onLoaded;
+    private Path output;
+    private double jpegQuality = ImageOptions.DEFAULT.jpegQuality();
+    private int threads = Runtime.getRuntime().availableProcessors();
+    private ProgressListener progress;
+    private final AtomicBoolean cancelled = new AtomicBoolean();
+    private final AtomicBoolean started = new AtomicBoolean();
+    private volatile Stage stage = Stage.READY;
+
+    private RenderJob(Path sceneFile, SceneBuilder builder, Scene scene) {
+        this.sceneFile = sceneFile;
+        this.builder = builder;
+        this.scene = scene;
+    }
+
+    /** A job that reads the scene file {@code file} (the scene format of docs/scene-format.md) when run. */
+    public static RenderJob of(Path file) { return new RenderJob(Objects.requireNonNull(file, "file"), null, null); }
+
+    /** A job that builds the scene {@code builder} describes when run; the builder is not changed. */
+    public static RenderJob of(SceneBuilder builder) { return new RenderJob(null, Objects.requireNonNull(builder, "builder"), null); }
+
+    /** A job that renders an already built scene; it takes no setting or camera overrides. */
+    public static RenderJob of(Scene scene) { return new RenderJob(null, null, Objects.requireNonNull(scene, "scene")); }
+
+    /**
+     * Changes the scene's settings before it is built, for example
+     * {@code s -> s.toBuilder().size(400, 225).build()}; applied to the settings the scene file or builder gives.
+     */
+    public RenderJob settings(UnaryOperator<RenderSettings> override) {
+        configurable(true);
+        settingsOverride = Objects.requireNonNull(override, "override");
+        return this;
+    }
+
+    /** Replaces the scene's camera before it is built: {@code change} gets the scene's camera (or the default one). */
+    public RenderJob camera(UnaryOperator<Camera> change) {
+        configurable(true);
+        cameraOverride = Objects.requireNonNull(change, "change");
+        return this;
+    }
+
+    /**
+     * Called with the scene as read (or as given), before the overrides: to look at it, or to run
+     * work that should overlap with nothing else. Must not keep the builder.
+     */
+    public RenderJob onLoaded(Consumer<SceneBuilder> action) {
+        configurable(true);
+        onLoaded = Objects.requireNonNull(action, "action");
+        return this;
+    }
+
+    /**
+     * Writes the image to {@code out} when the render is done (format by extension, with the
+     * passes the settings ask for beside it; see {@link RenderResult#write(Path)}). Checked before
+     * any work, so an unwritable path fails at once. Without an output nothing is written.
+     */
+    public RenderJob output(Path out) {
+        configurable(false);
+        ImageWriter.checkFormat(Objects.requireNonNull(out, "out"));
+        output = out;
+        return this;
+    }
+
+    /** JPEG quality in [0, 1] for a .jpg output (default 0.92). */
+    public RenderJob jpegQuality(double quality) {
+        configurable(false);
+        new ImageOptions(true, quality); // validates
+        jpegQuality = quality;
+        return this;
+    }
+
+    /** Render threads, at least 1 (default: every core the JVM reports). The image does not depend on it. */
+    public RenderJob threads(int n) {
+        configurable(false);
+        if (n < 1) throw new IllegalArgumentException("threads must be at least 1, found " + n);
+        threads = n;
+        return this;
+    }
+
+    /** Where to report progress (called from render threads); null: nowhere. */
+    public RenderJob progress(ProgressListener listener) {
+        configurable(false);
+        progress = listener;
+        return this;
+    }
+
+    /** Asks the job to stop: a running render stops between tiles, and the run throws {@link CancellationException}. */
+    public void cancel() { cancelled.set(true); }
+
+    /** True once {@link #cancel} was called. */
+    public boolean isCancelled() { return cancelled.get(); }
+
+    /** The step the job is in, or the one it failed in after a failure. */
+    public Stage stage() { return stage; }
+
+    /**
+     * Runs the job on a new thread; the future's {@code cancel} cancels the job.
+     *
+     * @throws IllegalStateException if the job was already run or started
+     */
+    public Future<RenderResult> start() {
+        begin();
+        FutureTask<RenderResult> task = new FutureTask<>(this::runStarted) {
+            @Override
+            public boolean cancel(boolean mayInterruptIfRunning) {
+                RenderJob.this.cancel();
+                return super.cancel(mayInterruptIfRunning);
+            }
+        };
+        Thread t = new Thread(task, "spindulys-render-job");
+        t.start();
+        return task;
+    }
+
+    /**
+     * Runs the job on the calling thread and returns the result, after writing it if an output was
+     * given. Interrupting the thread stops the render.
+     *
+     * @throws IOException                 if the scene file cannot be read or the image cannot be written
+     * @throws IllegalArgumentException    for bad input: a scene file error ({@link lt.spindulys.io.SceneException}),
+     *                                     bad settings, a scene that cannot be built, or a frame the heap cannot hold
+     * @throws CancellationException       if the job was cancelled
+     * @throws InterruptedException        if the thread was interrupted
+     * @throws IllegalStateException       if the job was already run or started
+     */
+    public RenderResult run() throws IOException, InterruptedException {
+        begin();
+        return runStarted();
+    }
+
+    private void begin() {
+        if (!started.compareAndSet(false, true)) throw new IllegalStateException("a render job runs once");
+    }
+
+    private RenderResult runStarted() throws IOException, InterruptedException {
+        if (output != null) {
+            enter(Stage.CHECK);
+            ImageWriter.checkOutput(output);
+        }
+        long t0 = System.nanoTime();
+        Scene built = scene;
+        double load = 0, build = 0;
+        if (built == null) {
+            enter(Stage.LOAD);
+            SceneBuilder b = builder != null ? builder : SceneParser.parse(sceneFile);
+            if (onLoaded != null) onLoaded.accept(b);
+            long t1 = System.nanoTime();
+            load = (t1 - t0) / 1e9;
+            enter(Stage.SETTINGS);
+            RenderSettings s = Objects.requireNonNull(settingsOverride.apply(b.settings()), "the settings override returned null")
+                    .checkTimeSteps();
+            // The frame is asked for by input: checked before anything is built for it.
+            FrameBuffer.checkHeap(s.width(), s.height(), s.aovs());
+            if (output != null && !s.aovs().isEmpty()) ImageWriter.checkOutputs(output, s.aovs());
+            Camera c = cameraOverride == null ? b.camera()
+                    : cameraOverride.apply(b.camera() != null ? b.camera() : SceneBuilder.DEFAULT_CAMERA);
+            enter(Stage.BUILD);
+            built = buildWith(b, s, c);
+            build = (System.nanoTime() - t1) / 1e9;
+        } else {
+            enter(Stage.SETTINGS);
+            RenderSettings s = built.settings();
+            if (output != null && !s.aovs().isEmpty()) ImageWriter.checkOutputs(output, s.aovs());
+        }
+        enter(Stage.RENDER);
+        RenderResult result = Renderer.render(built, threads, progress, cancelled).withTimes(load, build);
+        if (output != null) {
+            enter(Stage.WRITE);
+            result.write(output, jpegQuality);
+        }
+        stage = Stage.DONE;
+        return result;
+    }
+
+    /** Builds {@code b} with these settings and camera, leaving the builder as it was. */
+    private static Scene buildWith(SceneBuilder b, RenderSettings s, Camera c) {
+        RenderSettings settingsBefore = b.settings();
+        Camera cameraBefore = b.camera();
+        try {
+            b.settings(s);
+            if (c != null) b.camera(c);
+            return b.build();
+        } finally {
+            b.settings(settingsBefore);
+            if (cameraBefore != null) b.camera(cameraBefore);
+        }
+    }
+
+    private void enter(Stage next) {
+        if (cancelled.get()) throw new CancellationException("the render job was cancelled");
+        stage = next;
+    }
+
+    private void configurable(boolean needsSceneDescription) {
+        if (started.get()) throw new IllegalStateException("a render job cannot change once it has started");
+        if (needsSceneDescription && scene != null) {
+            throw new IllegalStateException("a job given a built scene takes no overrides: give it the SceneBuilder instead");
+        }
+    }
+}

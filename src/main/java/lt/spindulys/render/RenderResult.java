@@ -1,0 +1,99 @@
+package lt.spindulys.render;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Objects;
+import java.util.Optional;
+
+import lt.spindulys.image.AovFrame;
+import lt.spindulys.image.FrameBuffer;
+import lt.spindulys.image.ImageOptions;
+import lt.spindulys.image.ImageWriter;
+import lt.spindulys.scene.RenderSettings;
+
+/**
+ * A finished render: the frame in linear floating point, the render passes the scene asked for,
+ * what it cost, and the settings it was made with, so that it can be shown or written without
+ * restating them (8-bit images are sRGB-encoded exactly when the scene's settings say so).
+ * Made by {@link Renderer} and {@link RenderJob}; the frame is shared, not copied.
+ */
+public final class RenderResult {
+    private final RenderSettings settings;
+    private final FrameBuffer frame;
+    private final AovFrame passes;
+    private final RenderStats stats;
+    private final double loadSeconds, buildSeconds;
+
+    RenderResult(RenderSettings settings, FrameBuffer frame, AovFrame passes, RenderStats stats) {
+        this(settings, frame, passes, stats, 0, 0);
+    }
+
+    private RenderResult(RenderSettings settings, FrameBuffer frame, AovFrame passes, RenderStats stats,
+                         double loadSeconds, double buildSeconds) {
+        this.settings = Objects.requireNonNull(settings);
+        this.frame = Objects.requireNonNull(frame);
+        this.passes = passes;
+        this.stats = Objects.requireNonNull(stats);
+        this.loadSeconds = loadSeconds;
+        this.buildSeconds = buildSeconds;
+    }
+
+    /** This result with the times a job spent before rendering. */
+    RenderResult withTimes(double load, double build) {
+        return new RenderResult(settings, frame, passes, stats, load, build);
+    }
+
+    /** The frame: linear RGB doubles, unclamped (what a PFM file holds). */
+    public FrameBuffer frame() { return frame; }
+
+    /**
+     * The frame as an 8-bit RGB image, encoded as the scene's settings say ({@link RenderSettings#srgb()}):
+     * the pixels a PNG written by {@link #write(Path)} holds. A new image each call.
+     */
+    public BufferedImage image() { return frame.toBufferedImage(settings.srgb()); }
+
+    /** The render passes the settings asked for ({@link RenderSettings#aovs()}), or empty when they asked for none. */
+    public Optional<AovFrame> passes() { return Optional.ofNullable(passes); }
+
+    /** Rays traced by kind and the wall time of the render itself. */
+    public RenderStats stats() { return stats; }
+
+    /** Seconds a {@link RenderJob} spent reading the scene file (0 when it was given a scene). */
+    public double loadSeconds() { return loadSeconds; }
+
+    /** Seconds a {@link RenderJob} spent building the scene (0 when it was given a built scene). */
+    public double buildSeconds() { return buildSeconds; }
+
+    /** The settings the frame was rendered with (size, samples, sRGB, passes, ...). */
+    public RenderSettings settings() { return settings; }
+
+    /** Image width in pixels. */
+    public int width() { return frame.width(); }
+
+    /** Image height in pixels. */
+    public int height() { return frame.height(); }
+
+    /**
+     * Writes the image to {@code out} in the format its extension names (.png, .jpg/.jpeg, .tga,
+     * .pfm), sRGB-encoded as the scene says, with each render pass beside it
+     * ({@link lt.spindulys.image.Aov#fileBeside}); all files are written atomically as one group,
+     * so a failure leaves none of the new files and every old one.
+     *
+     * @throws IllegalArgumentException if the extension names no supported format
+     * @throws IOException if a file cannot be written (the message names it)
+     */
+    public void write(Path out) throws IOException {
+        write(out, ImageOptions.DEFAULT.jpegQuality());
+    }
+
+    /**
+     * {@link #write(Path)} with a JPEG quality in [0, 1] (1 best; other formats ignore it).
+     *
+     * @throws IllegalArgumentException if the quality is outside [0, 1] or the extension names no format
+     * @throws IOException if a file cannot be written
+     */
+    public void write(Path out, double jpegQuality) throws IOException {
+        ImageWriter.write(frame, out, new ImageOptions(settings.srgb(), jpegQuality), passes);
+    }
+}
