@@ -18,6 +18,7 @@ import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Motion;
 import lt.spindulys.math.Placement;
+import lt.spindulys.math.Transform;
 
 /**
  * Constructive solid geometry node (the thesis's name): the union, intersection or difference
@@ -70,11 +71,22 @@ import lt.spindulys.math.Placement;
  * parent, so an operand's placement (and motion) is relative to the Bool's, and a moving Bool
  * moves its operands; their world bounds, and so the Bool's, cover the whole shutter. The Bool takes the next id and
  * its operands the following ones, depth first in operand order.
+ *
+ * <p><b>Sharing.</b> A scene freezes a copy of the whole tree ({@link #copy()} copies the
+ * operands), so an operand stays the caller's to change between builds, and one object may be an
+ * operand of several Bools (once per Bool) or also be added to the scene by itself: each place
+ * gets its own frozen copy. Since a shared operand is copied once per place it is used, the
+ * objects a tree expands to are counted as it is made and limited to {@link #MAX_OBJECTS}.
  */
 public final class Bool extends GObject {
     /** The operation of a {@link Bool}. */
     public enum Op {
-        UNION, INTERSECTION, DIFFERENCE;
+        /** Inside any operand. */
+        UNION,
+        /** Inside every operand. */
+        INTERSECTION,
+        /** Inside the first operand and none of the others. */
+        DIFFERENCE;
 
         /** The scene-language keyword: "union", "intersection" or "difference". */
         public String keyword() {
@@ -101,21 +113,36 @@ public final class Bool extends GObject {
      */
     public static final int MAX_NESTING = 1000;
 
+    /**
+     * The most objects one tree may expand to, counting this node and each operand once per
+     * place it is used: a Bool reused as an operand of the next one, level after level, would
+     * otherwise double the copies a scene makes at each level. Far above any tree written by hand
+     * or read from a scene file (where every operand is a new object).
+     */
+    public static final long MAX_OBJECTS = 10_000_000;
+
     private final Op op;
-    private final GObject[] operands;
-    private final List<GObject> operandList;
+    /** The caller's operands; in a frozen copy, its own frozen copies of them ({@link #copy()}). */
+    private GObject[] operands;
+    private List<GObject> operandList;
     /** The material given to this Bool itself (not an inherited one); overrides the operands'. */
     private Material own;
     /** Levels of CSG in this node's tree: 1 + the deepest Bool operand's (see {@link #MAX_NESTING}). */
     private final int nesting;
+    /** Objects this tree expands to when copied: 1 + each operand's (see {@link #MAX_OBJECTS}). */
+    private final long objectCount;
 
     /**
      * An n-ary CSG node: union or intersection of all operands; difference = the first minus all
      * the others.
      *
+     * @param op       the operation
+     * @param operands the operands, in order (the list is copied; the operands are not changed)
      * @throws IllegalArgumentException if there are fewer than two operands, or an operand is
-     *         null, frozen, used twice (here or in another Bool), or not closed: "union operand 2
-     *         (mesh) is not closed: it has 4 boundary edges" (operands counted from 1)
+     *         null, an object of a built scene, given twice, not closed ("union operand 2
+     *         (mesh) is not closed: it has 4 boundary edges", operands counted from 1), nested
+     *         deeper than {@link #MAX_NESTING} or the tree would expand to more than
+     *         {@link #MAX_OBJECTS} objects
      */
     public Bool(Op op, List<GObject> operands) {
         if (op == null) throw new IllegalArgumentException("CSG operation is missing");
@@ -126,12 +153,12 @@ public final class Bool extends GObject {
         this.operands = new GObject[operands.size()];
         Map<GObject, Integer> seen = new IdentityHashMap<>();
         int deepest = 0;
+        long count = 1;
         for (int i = 0; i < operands.size(); i++) {
             GObject o = operands.get(i);
             String which = op.keyword() + " operand " + (i + 1);
             if (o == null) throw new IllegalArgumentException(which + " is missing");
-            if (o.isFrozen()) throw new IllegalArgumentException(which + " (" + MessageText.cut(o.name()) + ") already belongs to a built scene");
-            if (o.solid() != o) throw new IllegalArgumentException(which + " (" + MessageText.cut(o.name()) + ") is already an operand of another " + o.solid().kind());
+            if (o.isFrozen()) throw new IllegalArgumentException(which + " (" + MessageText.cut(o.name()) + ") is an object of a built scene; give the object it was built from");
             Integer before = seen.put(o, i);
             if (before != null) throw new IllegalArgumentException(which + " (" + MessageText.cut(o.name()) + ") is the same object as operand " + (before + 1));
             if (o instanceof TriangleMesh m && m.triangleCount() == 0) {
@@ -149,12 +176,26 @@ public final class Bool extends GObject {
                         + ") is " + b.nesting + " levels deep (union and intersection take any number of operands, so a long chain can be one node)");
             }
             if (o instanceof Bool b) deepest = Math.max(deepest, b.nesting);
+            count += o.objectCount();
+            if (count > MAX_OBJECTS) {
+                throw new IllegalArgumentException(which + " (" + MessageText.cut(o.name()) + ") brings the CSG tree to more than " + MAX_OBJECTS
+                        + " objects, counting an operand used in several places once per place");
+            }
             this.operands[i] = o;
         }
         this.nesting = deepest + 1;
+        this.objectCount = count;
         this.operandList = Collections.unmodifiableList(new ArrayList<>(operands));
-        // Claimed only once all are accepted; freezing makes the outermost Bool their solid.
-        for (GObject o : this.operands) o.solid(this);
+    }
+
+    /** A copy of the tree: this node's description and a copy of each operand (see the class comment). */
+    @Override
+    protected Bool copy() {
+        Bool c = (Bool) super.copy();
+        c.operands = new GObject[operands.length];
+        for (int i = 0; i < operands.length; i++) c.operands[i] = operands[i].copy();
+        c.operandList = Collections.unmodifiableList(java.util.Arrays.asList(c.operands.clone()));
+        return c;
     }
 
     /** Boundary edges of an open operand, or -1 for a kind of object that has no edges to count. */
@@ -165,26 +206,52 @@ public final class Bool extends GObject {
         return -1;
     }
 
+    /** The operation. */
     public Op op() { return op; }
+
+    @Override long objectCount() { return objectCount; }
 
     /** Levels of CSG nesting in this node's tree, counting this one: 1 if no operand is a Bool. */
     public int nesting() { return nesting; }
 
-    /** The operands in the order given (read-only). */
+    /** The operands in the order given (read-only); a frozen Bool's are its own frozen copies. */
     public List<GObject> operands() { return operandList; }
 
+    // ---- builder methods, returning this type (see GObject for what each does) ----
+
+    /** {@inheritDoc} */
+    @Override public Bool transform(Transform t) { super.transform(t); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Bool motion(Motion m) { super.motion(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Bool material(Material m) { super.material(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Bool name(String n) { super.name(n); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Bool source(String where) { super.source(where); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Bool source(String file, int line, int column) { super.source(file, line, column); return this; }
+
+    /** The operation's keyword: "union", "intersection" or "difference". */
     @Override public String kind() { return op.keyword(); }
 
+    /** Always true: a CSG result bounds a volume. */
     @Override public boolean isClosed() { return true; }
 
     // ---- freezing and bounds ----
 
+    /** Freezes the operands under this node's placement and material, then this node. */
     @Override
-    public int freeze(Placement parentToWorld, Material inherited, int ids, AcceleratorKind accel) {
-        if (isFrozen()) throw new IllegalStateException(name() + " is added to the scene twice");
+    protected int freeze(BuildContext context, int ids) {
+        if (isFrozen()) throw new IllegalStateException(name() + " is frozen already");
         own = material();
-        Placement toWorld = placementIn(parentToWorld);
-        Material inner = own != null ? own : inherited;
+        Placement toWorld = placementIn(context.placement());
+        BuildContext inner = context.within(toWorld, own != null ? own : context.material());
         // The outermost Bool: an enclosing Bool's freeze made it ours before freezing us (until then
         // an operand's solid is the Bool it was given to); a Bool frozen on its own is its own. Set
         // on the way down, so each object is marked once, not once per enclosing level.
@@ -193,13 +260,13 @@ public final class Bool extends GObject {
         for (int i = 0; i < operands.length; i++) {
             operands[i].solid(top);
             try {
-                next = operands[i].freeze(toWorld, inner, next, accel);
+                next = operands[i].freeze(inner, next);
             } catch (IllegalArgumentException e) {
                 throw SceneBuildException.of(operands[i], e).inOperand(this, i);
             }
         }
         // Last, because the world bounds are computed from the frozen operands'.
-        super.freeze(parentToWorld, inherited, ids, accel);
+        super.freeze(context, ids);
         return next;
     }
 
@@ -213,7 +280,7 @@ public final class Bool extends GObject {
         return b;
     }
 
-    /** The same rule on the operands' placed local bounds (before freezing; in this Bool's space). */
+    /** Union: the operands' placed local bounds together, intersection: their overlap, difference: the first's (in this Bool's space). */
     @Override
     public Bounds localBounds() {
         Bounds b = placed(operands[0]);
@@ -259,6 +326,7 @@ public final class Bool extends GObject {
         return only;
     }
 
+    /** The nearest boundary of the result: a leaf's surface (see the class comment). */
     @Override
     public boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
         GObject only = sole(ray);
@@ -282,6 +350,7 @@ public final class Bool extends GObject {
         }
     }
 
+    /** True if the result has a boundary in (tMin, tMax). */
     @Override
     public boolean occluded(Ray ray, TraceContext ctx) {
         GObject only = sole(ray);

@@ -9,6 +9,9 @@ import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
+import lt.spindulys.math.Transform;
+import lt.spindulys.math.Motion;
+import lt.spindulys.material.Material;
 
 /**
  * An axis-aligned box between two corners in its own space (rotate it with a transform). Closed.
@@ -26,6 +29,11 @@ public final class Box extends GObject {
     private final Vec3 min, max;
     private final double[] lo, hi;
 
+    /**
+     * The box between two opposite corners, in either order.
+     *
+     * @throws IllegalArgumentException if a coordinate is not finite and modest
+     */
     public Box(Vec3 corner1, Vec3 corner2) {
         if (!Ranges.isModest(corner1) || !Ranges.isModest(corner2)) throw new IllegalArgumentException("box corners must be finite and at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude, found " + corner1 + " and " + corner2);
         Vec3 lo = new Vec3(Math.min(corner1.x(), corner2.x()), Math.min(corner1.y(), corner2.y()), Math.min(corner1.z(), corner2.z()));
@@ -39,8 +47,30 @@ public final class Box extends GObject {
         this.hi = new double[] {hi.x(), hi.y(), hi.z()};
     }
 
+    /** The corner with the smallest coordinates (object space). */
     public Vec3 min() { return min; }
+    /** The corner with the largest coordinates (object space). */
     public Vec3 max() { return max; }
+
+    // ---- builder methods, returning this type (see GObject for what each does) ----
+
+    /** {@inheritDoc} */
+    @Override public Box transform(Transform t) { super.transform(t); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Box motion(Motion m) { super.motion(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Box material(Material m) { super.material(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Box name(String n) { super.name(n); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Box source(String where) { super.source(where); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Box source(String file, int line, int column) { super.source(file, line, column); return this; }
 
     @Override public String kind() { return "box"; }
     @Override public Bounds localBounds() { return Bounds.of(min, max); }

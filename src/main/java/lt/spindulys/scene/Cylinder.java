@@ -9,6 +9,9 @@ import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
+import lt.spindulys.math.Transform;
+import lt.spindulys.math.Motion;
+import lt.spindulys.material.Material;
 
 /**
  * A cylinder with flat caps, from the centre of its base cap to the centre of its top cap. Closed.
@@ -44,6 +47,11 @@ public final class Cylinder extends GObject {
     // Unpacked frame for the per-ray path.
     private final double bx, by, bz, ux, uy, uz, vx, vy, vz, wx, wy, wz, height, r2;
 
+    /**
+     * The cylinder from the centre of its base cap to the centre of its top cap.
+     *
+     * @throws IllegalArgumentException if the ends coincide, the radius is not positive, or a number is not finite and modest
+     */
     public Cylinder(Vec3 base, Vec3 top, double radius) {
         if (!Ranges.isModest(base) || !Ranges.isModest(top)) throw new IllegalArgumentException("cylinder end points must be finite and at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude, found " + base + " and " + top);
         if (!(top.minus(base).length() > 0)) throw new IllegalArgumentException("cylinder base and top are the same point " + base);
@@ -66,8 +74,11 @@ public final class Cylinder extends GObject {
         r2 = radius * radius;
     }
 
+    /** Centre of the base cap (object space). */
     public Vec3 base() { return base; }
+    /** Centre of the top cap (object space). */
     public Vec3 top() { return top; }
+    /** Radius (object-space units). */
     public double radius() { return radius; }
     /** Distance from base to top. */
     public double height() { return height; }
@@ -77,6 +88,26 @@ public final class Cylinder extends GObject {
     public Vec3 axisU() { return axisU; }
     /** The third frame direction, V = W x U (u = 1/4 on the side). */
     public Vec3 axisV() { return axisV; }
+
+    // ---- builder methods, returning this type (see GObject for what each does) ----
+
+    /** {@inheritDoc} */
+    @Override public Cylinder transform(Transform t) { super.transform(t); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Cylinder motion(Motion m) { super.motion(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Cylinder material(Material m) { super.material(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Cylinder name(String n) { super.name(n); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Cylinder source(String where) { super.source(where); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Cylinder source(String file, int line, int column) { super.source(file, line, column); return this; }
 
     @Override public String kind() { return "cylinder"; }
 

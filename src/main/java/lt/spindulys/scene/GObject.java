@@ -17,9 +17,19 @@ import lt.spindulys.trace.TracedObject;
 
 /**
  * Base of every scene object (the thesis's name). An object is built in its own space, placed by
- * a transform and given a material; the scene then freezes it, composing the transforms of every
+ * a transform and given a material; building a scene freezes it, composing the transforms of every
  * enclosing object into one object-to-world transform, after which it is immutable and safe to
  * share between render threads.
+ *
+ * <p><b>Objects are descriptions; scenes freeze copies.</b> {@link SceneBuilder#build()} freezes a
+ * private {@link #copy() copy} of each object tree it was given and never changes the caller's
+ * objects, so after a build the caller may change a transform or a material and build again (the
+ * next frame of an animation), and one object may be added to several builders, several times to
+ * one builder, or be an operand of several {@link Bool}s. The copies share the big immutable data
+ * (a mesh's arrays and its object-space acceleration structure, built once), so another build of
+ * the same mesh is cheap. The frozen objects are those of {@link Scene#objects()}; only they answer
+ * {@link #id()}, {@link #bounds()} and rays. A build reads the objects without locking them: do
+ * not change an object on another thread while a scene is being built from it.
  *
  * <p>Intersection has two phases, as in pbrt: {@link #intersect} finds the nearest (t, object,
  * primitive, u, v) and nothing more; {@link #shade} derives point, normals, uv and derivatives once
@@ -40,7 +50,7 @@ import lt.spindulys.trace.TracedObject;
  * which the module {@code lt.spindulys} does not export: they are renderer machinery, not API.
  * Build scenes from the shapes here and combine them with {@link Bool}.
  */
-public abstract class GObject implements TracedObject {
+public abstract class GObject implements TracedObject, Cloneable {
     private Transform transform = Transform.IDENTITY;
     private Motion motion;
     private Material material;
@@ -63,18 +73,27 @@ public abstract class GObject implements TracedObject {
 
     // ---- building (before the scene freezes) ----
 
-    /** Appends {@code t} to this object's placement (applied after the ones already given). */
+    /**
+     * Appends {@code t} to this object's placement (applied after the ones already given).
+     *
+     * @return this object, for chaining (each shape returns its own type)
+     * @throws IllegalStateException if this is a frozen object of a built scene
+     */
     public GObject transform(Transform t) {
         checkMutable();
         transform = transform.then(t);
         return this;
     }
 
+    /** This object's own placement in its parent's space (the identity unless given), without its motion. */
     public Transform transform() { return transform; }
 
     /**
      * Gives this object a motion during the shutter, applied after its transform (null: none).
      * An open start or finish of the motion becomes the scene's shutter time when it is built.
+     *
+     * @return this object, for chaining
+     * @throws IllegalStateException if this is a frozen object of a built scene
      */
     public GObject motion(Motion m) {
         checkMutable();
@@ -85,15 +104,30 @@ public abstract class GObject implements TracedObject {
     /** This object's own motion, or null (after freezing, with its times filled in from the shutter). */
     public Motion motion() { return motion; }
 
-    /** Sets this object's material; null inherits the enclosing object's or the scene default. */
+    /**
+     * Sets this object's material; null inherits the enclosing object's or the scene default.
+     *
+     * @return this object, for chaining
+     * @throws IllegalStateException if this is a frozen object of a built scene
+     */
     public GObject material(Material m) {
         checkMutable();
         material = m;
         return this;
     }
 
+    /**
+     * The material given to this object, or null if it inherits one; on a frozen object, the one
+     * it is shaded with (inherited ones filled in).
+     */
     public Material material() { return material; }
 
+    /**
+     * Names this object for messages (null: none, then it is named by its {@link #kind()}).
+     *
+     * @return this object, for chaining
+     * @throws IllegalStateException if this is a frozen object of a built scene
+     */
     public GObject name(String n) {
         checkMutable();
         name = n;
@@ -110,6 +144,8 @@ public abstract class GObject implements TracedObject {
      * Records where this object was made, such as "scene.dat:12:3" for the statement that made it,
      * so that errors found only when the scene is built name that place ({@link SceneBuildException}).
      * Used for messages only; null: none.
+     *
+     * @return this object, for chaining
      */
     public GObject source(String where) {
         checkMutable();
@@ -121,6 +157,11 @@ public abstract class GObject implements TracedObject {
     /**
      * {@link #source(String)} as "file:line:column" (the scene parser's; "file:line" if the column
      * is 0), kept without making the string until a message needs it.
+     *
+     * @param line   line number, from 1
+     * @param column column number, from 1 (0: none)
+     * @return this object, for chaining
+     * @throws IllegalArgumentException if {@code line} is below 1
      */
     public GObject source(String file, int line, int column) {
         checkMutable();
@@ -142,33 +183,73 @@ public abstract class GObject implements TracedObject {
         return name == null ? kind() : kind() + " " + MessageText.quote(name);
     }
 
+    /**
+     * Refuses a change to a frozen object: call first in every builder method of a subclass.
+     *
+     * @throws IllegalStateException if this object is frozen
+     */
     protected final void checkMutable() {
         if (frozen) throw new IllegalStateException(name() + " is part of a frozen scene and cannot change");
     }
 
-    // ---- freezing ----
+    // ---- copying and freezing ----
 
-    /** {@link #freeze(Placement, Material, int, AcceleratorKind)} with the default acceleration structure. */
-    public final int freeze(Transform parentToWorld, Material inherited, int ids) {
-        return freeze(Placement.of(parentToWorld), inherited, ids, AcceleratorKind.DEFAULT);
+    /**
+     * A new, unfrozen object with this one's description (shape, transform, motion, material,
+     * name, source, options), for a scene to freeze without touching this one. The default is a
+     * shallow {@link Object#clone()}, right for shapes whose fields are immutable or replaced (never
+     * changed in place) by their builder methods; containers copy their children, and objects
+     * whose copies must share a cache with them (a mesh's structures) override it.
+     *
+     * @throws IllegalStateException if this object is frozen (its description was resolved in place)
+     */
+    protected GObject copy() {
+        checkCopyable();
+        try {
+            GObject c = (GObject) super.clone();
+            c.solid = null;
+            return c;
+        } catch (CloneNotSupportedException e) {
+            throw new AssertionError(e); // GObject implements Cloneable
+        }
     }
 
-    /** {@link #freeze(Placement, Material, int, AcceleratorKind)} under a static parent with the default shutter. */
-    public final int freeze(Transform parentToWorld, Material inherited, int ids, AcceleratorKind accel) {
-        return freeze(Placement.of(parentToWorld), inherited, ids, accel);
+    /** Objects a {@link #copy()} of this one makes, itself and everything inside it (a CSG node counts its operands). */
+    long objectCount() { return 1; }
+
+    /** Refuses to copy a frozen object, whose description was resolved in place (for every {@link #copy()}). */
+    final void checkCopyable() {
+        if (frozen) throw new IllegalStateException(name() + " is a built scene's object; copy the object it was built from");
+    }
+
+    /** Gives this new object the description every object has (for {@link #copy()}s that construct). */
+    final void describeLike(GObject from) {
+        transform = from.transform;
+        motion = from.motion;
+        material = from.material;
+        name = from.name;
+        source = from.source;
+        sourceLine = from.sourceLine;
+        sourceColumn = from.sourceColumn;
     }
 
     /**
-     * Fixes this object in the scene: composes its transform with {@code parentToWorld}, computes
-     * world bounds and assigns ids. Containers override to freeze their children, then call super;
-     * objects with primitives of their own (meshes) build their acceleration structure here, of
-     * the kind the scene chose.
+     * Fixes this object in place (the scene calls it on its own {@link #copy()}): composes its
+     * transform with the context's placement, fills in an inherited material and the motion's
+     * open times, computes world bounds and assigns ids. Containers override to freeze their
+     * children under {@link BuildContext#within a derived context}, then call super; objects with
+     * primitives of their own (meshes) build their acceleration structure here, of the context's
+     * kind; an object that depends on the view reads the context's camera, film and shutter.
      *
-     * @param ids   next free object id; returns the next free id after this object and its children
-     * @param accel the structure for objects that index their own primitives, passed on to children
+     * @param context where the parent is placed, what it passes on, and the view
+     * @param ids     next free object id
+     * @return the next free id after this object and its children
+     * @throws SceneBuildException (an IllegalArgumentException) naming this object if it cannot be placed
+     * @throws IllegalStateException if this object is frozen already
      */
-    public int freeze(Placement parentToWorld, Material inherited, int ids, AcceleratorKind accel) {
-        if (frozen) throw new IllegalStateException(name() + " is added to the scene twice");
+    protected int freeze(BuildContext context, int ids) {
+        if (frozen) throw new IllegalStateException(name() + " is frozen already");
+        Placement parentToWorld = context.placement();
         Placement p;
         try {
             if (motion != null) motion = motion.resolve(parentToWorld.open(), parentToWorld.close());
@@ -179,7 +260,7 @@ public abstract class GObject implements TracedObject {
         frozen = true;
         if (p.isStatic()) objectToWorld = p.staticTransform();
         else moving = p;
-        if (material == null) material = inherited;
+        if (material == null) material = context.material();
         id = ids;
         worldBounds = computeWorldBounds();
         return ids + 1;
@@ -197,6 +278,8 @@ public abstract class GObject implements TracedObject {
     /**
      * This object's object-to-world mapping inside a parent placed by {@code parentToWorld}: its
      * transform, its motion (open times from the parent's shutter), then the parent's.
+     *
+     * @throws SceneBuildException if composing overflows or makes the transform singular
      */
     protected final Placement placementIn(Placement parentToWorld) {
         try {
@@ -221,22 +304,30 @@ public abstract class GObject implements TracedObject {
     /** World bounds over the whole shutter interval (see {@link #computeWorldBounds()}); set at freeze. */
     public final Bounds bounds() { return worldBounds; }
 
+    /**
+     * This object's id in its scene, unique among the scene's objects and their operands (the
+     * first top-level object 0, a CSG node before its operands); -1 until frozen.
+     */
     public final int id() { return id; }
 
     /**
      * The solid this object bounds as seen from outside: the outermost {@link Bool} it is an
      * operand of (at any depth), or the object itself. A ray crossing a surface enters or leaves
      * this solid, which is what keeps the integrator's medium stack consistent when a CSG
-     * result's entry and exit surfaces belong to different leaves. Set at freeze; before, an
-     * operand's is the Bool it was given to (so that it cannot be given to a second one).
+     * result's entry and exit surfaces belong to different leaves. Set at freeze: before, and for
+     * the caller's objects, which are never frozen, it is the object itself.
      */
     public final GObject solid() { return solid != null ? solid : this; }
 
-    /** Set by the CSG node that takes this object as an operand, then, to the outermost one, by the enclosing node's freeze before it freezes this object. */
+    /** Set to the outermost CSG node by the enclosing node's freeze before it freezes this object. */
     void solid(GObject s) { solid = s; }
 
     private GObject solid;
 
+    /**
+     * True for the objects of a built scene ({@link Scene#objects()} and their operands); false
+     * for the objects a caller made, which building never freezes.
+     */
     public final boolean isFrozen() { return frozen; }
 
     /** Visits the material of this object and of every object inside it (after freezing). */

@@ -9,6 +9,9 @@ import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
+import lt.spindulys.math.Transform;
+import lt.spindulys.math.Motion;
+import lt.spindulys.material.Material;
 
 /**
  * The infinite plane n.p = offset. As a solid it is the half-space n.p &lt;= offset (the normal
@@ -29,6 +32,11 @@ public final class Plane extends GObject {
     private final Vec3 tangentU, tangentV;
     private final double nx, ny, nz;
 
+    /**
+     * The plane of points p with normal.p = offset (normal and offset scaled together to a unit normal).
+     *
+     * @throws IllegalArgumentException if the normal is zero or a number is not finite and modest
+     */
     public Plane(Vec3 normal, double offset) {
         if (!Ranges.isModest(normal) || !(normal.length() > 0)) throw new IllegalArgumentException("plane normal must be a non-zero vector with components at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude, found " + normal);
         Ranges.modest("plane offset", offset);
@@ -51,6 +59,26 @@ public final class Plane extends GObject {
     public Vec3 tangentU() { return tangentU; }
     /** Unit direction of increasing v (dpdv); normal() = tangentU() x tangentV(). */
     public Vec3 tangentV() { return tangentV; }
+
+    // ---- builder methods, returning this type (see GObject for what each does) ----
+
+    /** {@inheritDoc} */
+    @Override public Plane transform(Transform t) { super.transform(t); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Plane motion(Motion m) { super.motion(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Plane material(Material m) { super.material(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Plane name(String n) { super.name(n); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Plane source(String where) { super.source(where); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Plane source(String file, int line, int column) { super.source(file, line, column); return this; }
 
     @Override public String kind() { return "plane"; }
     @Override public Bounds localBounds() { return Bounds.INFINITE; }

@@ -1,6 +1,5 @@
 package lt.spindulys.scene;
 
-import lt.spindulys.material.Material;
 import lt.spindulys.trace.Hit;
 import lt.spindulys.trace.TraceContext;
 
@@ -14,14 +13,14 @@ import lt.spindulys.accel.PrimitiveHit;
 import lt.spindulys.accel.PrimitiveSet;
 import lt.spindulys.accel.TraversalScratch;
 import lt.spindulys.camera.Camera;
-import lt.spindulys.math.Placement;
+import lt.spindulys.limits.HeapBudget;
 import lt.spindulys.math.Ray;
-import lt.spindulys.math.Transform;
 
 /**
  * A frozen scene: objects with composed transforms and world bounds, an acceleration structure
  * over them, lights, camera and settings. Immutable and shared by all render threads.
- * Made by {@link SceneBuilder#build()}.
+ * Made by {@link SceneBuilder#build()}, which freezes its own copies of the objects it was given
+ * (see {@link GObject}): they are {@link #objects()}, and the caller's objects stay unfrozen.
  */
 public final class Scene {
     private final RenderSettings settings;
@@ -35,29 +34,40 @@ public final class Scene {
     private final int objectIds;
     private final boolean transparent;
 
-    Scene(RenderSettings settings, Camera camera, List<PointLight> lights, List<GObject> objects) {
+    /**
+     * Builds the scene from copies of {@code given}: see {@link SceneBuilder#build()}.
+     *
+     * @throws IllegalArgumentException if an object cannot be placed (a {@link SceneBuildException}
+     *         naming it) or the copies would not fit in the heap
+     */
+    Scene(RenderSettings settings, Camera camera, List<PointLight> lights, List<GObject> given) {
         this.settings = settings.checkTimeSteps();
         this.camera = camera;
         this.lights = List.copyOf(lights);
         this.lightArray = lights.toArray(new PointLight[0]);
-        this.objects = List.copyOf(objects);
-        int ids = 0;
+        long count = 0;
+        for (GObject o : given) count = HeapBudget.sum(count, o.objectCount());
+        HeapBudget.require(HeapBudget.product(count, BYTES_PER_COPY), "the scene's " + count + " objects");
         // The shutter fills in motions' open start and finish times; bounds cover all of it.
-        Placement world = Placement.of(Transform.IDENTITY, settings.shutterOpen(), settings.shutterClose());
-        for (int i = 0; i < objects.size(); i++) {
-            GObject o = objects.get(i);
+        BuildContext world = BuildContext.of(settings, camera);
+        GObject[] frozen = new GObject[given.size()];
+        int ids = 0;
+        for (int i = 0; i < frozen.length; i++) {
+            GObject o = given.get(i);
             try {
-                ids = o.freeze(world, Material.DEFAULT, ids, settings.accelerator());
+                frozen[i] = o.copy();
+                ids = frozen[i].freeze(world, ids);
             } catch (IllegalArgumentException e) {
                 throw SceneBuildException.of(o, e).inScene(i);
             }
         }
+        this.objects = List.of(frozen);
         objectIds = ids;
         boolean[] anyTransparent = {false};
-        for (GObject o : objects) o.forEachMaterial(m -> anyTransparent[0] |= m.isTransparent());
+        for (GObject o : frozen) o.forEachMaterial(m -> anyTransparent[0] |= m.isTransparent());
         transparent = anyTransparent[0];
         List<GObject> b = new ArrayList<>(), u = new ArrayList<>();
-        for (GObject o : objects) {
+        for (GObject o : frozen) {
             if (o.bounds().isEmpty()) continue;
             (o.bounds().isFinite() ? b : u).add(o);
         }
@@ -70,12 +80,25 @@ public final class Scene {
         accel = bounded.length > Bvh.DEFAULT_LEAF_SIZE ? settings.accelerator().build(set) : new BoxList(set);
     }
 
+    /**
+     * Heap one frozen copy of an object takes at most, beyond the data it shares with the caller's
+     * object: the object's fields and, for a CSG node, its operand array and list (a sphere's copy
+     * is under 150 bytes, a mesh's under 250).
+     */
+    static final long BYTES_PER_COPY = 512;
+
+    /** The settings the scene was built with (film size, sampling, shutter, structure kind). */
     public RenderSettings settings() { return settings; }
+    /** The camera the scene is rendered through. */
     public Camera camera() { return camera; }
+    /** The lights, in the order they were added (read-only). */
     public List<PointLight> lights() { return lights; }
     /** The lights as an array for the shading loop; do not modify. */
     public PointLight[] lightArray() { return lightArray; }
-    /** The top-level objects, in the order they were added. */
+    /**
+     * The top-level objects, in the order they were added (read-only): the scene's own frozen
+     * copies of the objects given to the builder, with ids, world bounds and resolved materials.
+     */
     public List<GObject> objects() { return objects; }
     /** Number of object ids assigned (every object, containers and their children included). */
     public int objectIdCount() { return objectIds; }

@@ -32,6 +32,10 @@ import lt.spindulys.math.Vec3;
  * }</pre>
  * Validation happens where a value is given; each method throws IllegalArgumentException with a
  * message that names the value and what was expected.
+ *
+ * <p>A builder may build any number of times: each {@link #build()} freezes fresh copies of the
+ * objects as they are then and leaves the builder and the objects unchanged, so an animation keeps
+ * one builder, changes a transform, and builds the next frame (see {@link GObject}).
  */
 public final class SceneBuilder {
     private RenderSettings settings = RenderSettings.DEFAULT;
@@ -39,12 +43,15 @@ public final class SceneBuilder {
     private final List<PointLight> lights = new ArrayList<>();
     private final List<GObject> objects = new ArrayList<>();
     private final Map<String, Material> materials = new LinkedHashMap<>();
-    private boolean built;
     private String frameSource;
 
+    /** Sets the render settings (film size, sampling, shutter, structure kind, ...); replaces the earlier ones. */
     public SceneBuilder settings(RenderSettings s) { settings = Objects.requireNonNull(s); return this; }
+
+    /** The render settings given so far ({@link RenderSettings#DEFAULT} unless set). */
     public RenderSettings settings() { return settings; }
 
+    /** Sets the camera; replaces the earlier one. */
     public SceneBuilder camera(Camera c) { camera = Objects.requireNonNull(c); return this; }
 
     /** The camera of a scene that gives none: at (0, 0, -5) looking at the origin, 45 degrees. */
@@ -96,19 +103,33 @@ public final class SceneBuilder {
         return m;
     }
 
+    /** True if a material of this name was defined with {@link #defineMaterial}. */
     public boolean hasMaterial(String name) { return materials.containsKey(name); }
 
-    /** Adds a top-level object; it must not be part of another scene or container. */
+    /**
+     * Adds a top-level object. The builder keeps the object itself, not a copy: changes made to it
+     * before a {@link #build()} are in that build's scene. The same object may be added to several
+     * builders, or more than once (each time is one more object in the scene).
+     *
+     * @throws IllegalArgumentException if {@code o} is an object of a built scene (add the one it was built from)
+     */
     public SceneBuilder add(GObject o) {
-        if (o.isFrozen()) throw new IllegalArgumentException(o.name() + " already belongs to a built scene");
-        objects.add(Objects.requireNonNull(o));
+        if (Objects.requireNonNull(o).isFrozen()) throw new IllegalArgumentException(o.name() + " is an object of a built scene; add the object it was built from");
+        objects.add(o);
         return this;
     }
 
-    /** Freezes everything added into an immutable scene. A builder builds once. */
+    /**
+     * Freezes copies of everything added, as it is now, into an immutable scene, its objects
+     * placed and given ids in the order added (each CSG node before its operands). The builder
+     * and the objects given are left unchanged, so it may build again after a change; a mesh
+     * built before shares its acceleration structure with the new scene instead of building it
+     * again.
+     *
+     * @throws IllegalArgumentException if an object cannot be placed (a {@link SceneBuildException}
+     *         naming it), the settings are inconsistent, or the scene's objects do not fit in the heap
+     */
     public Scene build() {
-        if (built) throw new IllegalStateException("this builder has already built its scene");
-        built = true;
         Camera c = camera != null ? camera : DEFAULT_CAMERA;
         return new Scene(settings, c, lights, objects);
     }

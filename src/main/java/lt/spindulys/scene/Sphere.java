@@ -9,6 +9,9 @@ import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
+import lt.spindulys.math.Transform;
+import lt.spindulys.math.Motion;
+import lt.spindulys.material.Material;
 
 /**
  * A sphere given by centre and radius. Closed: its inside is the solid ball.
@@ -29,6 +32,11 @@ public final class Sphere extends GObject {
     // Unpacked for the per-ray path.
     private final double cx, cy, cz, r2;
 
+    /**
+     * The sphere of {@code radius} about {@code center} (object space).
+     *
+     * @throws IllegalArgumentException if the radius is not positive or a number is not finite and modest
+     */
     public Sphere(Vec3 center, double radius) {
         Ranges.modest("sphere center", center);
         if (!(radius > 0) || !Ranges.isModest(radius)) throw new IllegalArgumentException("sphere radius must be a positive number at most " + Ranges.show(Ranges.MAX_NUMBER) + ", found " + radius);
@@ -40,8 +48,30 @@ public final class Sphere extends GObject {
         this.r2 = radius * radius;
     }
 
+    /** Centre (object space). */
     public Vec3 center() { return center; }
+    /** Radius (object-space units). */
     public double radius() { return radius; }
+
+    // ---- builder methods, returning this type (see GObject for what each does) ----
+
+    /** {@inheritDoc} */
+    @Override public Sphere transform(Transform t) { super.transform(t); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Sphere motion(Motion m) { super.motion(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Sphere material(Material m) { super.material(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Sphere name(String n) { super.name(n); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Sphere source(String where) { super.source(where); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Sphere source(String file, int line, int column) { super.source(file, line, column); return this; }
 
     @Override public String kind() { return "sphere"; }
 

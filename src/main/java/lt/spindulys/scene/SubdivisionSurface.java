@@ -1,6 +1,5 @@
 package lt.spindulys.scene;
 
-import lt.spindulys.material.Material;
 import lt.spindulys.trace.Hit;
 import lt.spindulys.trace.TraceContext;
 import lt.spindulys.trace.ShadingData;
@@ -16,6 +15,8 @@ import lt.spindulys.mesh.MeshData;
 import lt.spindulys.subdiv.CatmullClark;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.RefinedMesh;
+import lt.spindulys.math.Motion;
+import lt.spindulys.material.Material;
 
 /**
  * A Catmull-Clark subdivision surface: a control mesh refined uniformly to a fixed level once, at
@@ -59,12 +60,12 @@ public final class SubdivisionSurface extends GObject {
         mesh.smooth(smooth);
     }
 
-    /** An instance of {@code p}: its refined mesh, triangles and structure shared, not copied. */
-    private SubdivisionSurface(SubdivisionSurface p) {
+    /** An instance of {@code p} or a scene's copy of it: its refined mesh shared, {@code mesh} made from p's triangles. */
+    private SubdivisionSurface(SubdivisionSurface p, TriangleMesh mesh) {
         level = p.level;
         smooth = p.smooth;
         refined = p.refined;
-        mesh = p.mesh.instance();
+        this.mesh = mesh;
         mesh.smooth(smooth);
     }
 
@@ -74,19 +75,32 @@ public final class SubdivisionSurface extends GObject {
      * built once).
      */
     public SubdivisionSurface instance() {
-        return new SubdivisionSurface(this);
+        return new SubdivisionSurface(this, mesh.instance());
     }
 
-    /** True if this surface shares another's refinement ({@link #instance()}). */
+    /** True if this surface shares another's refinement ({@link #instance()}; a scene's copy answers as its original). */
     public boolean isInstance() { return mesh.isInstance(); }
 
+    /**
+     * A scene's copy: an {@link #instance()} (the refinement, triangles and structures shared)
+     * with this surface's transform, motion, material and name.
+     */
     @Override
-    public int freeze(Placement parentToWorld, Material inherited, int ids, AcceleratorKind accel) {
-        int next = super.freeze(parentToWorld, inherited, ids, accel);
+    protected SubdivisionSurface copy() {
+        checkCopyable();
+        SubdivisionSurface c = new SubdivisionSurface(this, mesh.copy());
+        c.describeLike(this);
+        return c;
+    }
+
+    /** Places the surface and freezes its triangles, which take the mesh's shared structure of the context's kind. */
+    @Override
+    protected int freeze(BuildContext context, int ids) {
+        int next = super.freeze(context, ids);
         // The inner mesh is never part of a scene; frozen in place, its own queries (occluded)
         // take the object-space rays this surface hands it unchanged.
         try {
-            mesh.freeze(Transform.IDENTITY, null, 0, accel);
+            mesh.freeze(context.within(Placement.of(Transform.IDENTITY, context.shutterOpen(), context.shutterClose()), null), 0);
         } catch (IllegalArgumentException e) {
             // Named as this surface: the inner mesh is not an object of the scene.
             throw SceneBuildException.of(this, e instanceof SceneBuildException b ? (IllegalArgumentException) b.getCause() : e);
@@ -338,13 +352,36 @@ public final class SubdivisionSurface extends GObject {
         return count == 0 && !mesh.isClosed() ? mesh.boundaryEdgeCount() : count;
     }
 
+    /** Times the control mesh was refined (0 to {@link #MAX_LEVEL}). */
     public int level() { return level; }
+    /** True if shading interpolates the limit normals, false for flat facets. */
     public boolean isSmooth() { return smooth; }
     /** The refined mesh the triangles come from (holes included). */
     public RefinedMesh refined() { return refined; }
+    /** Triangles rendered: two per refined quad, holes left out. */
     public int triangleCount() { return mesh.triangleCount(); }
 
     // ---- GObject: everything through the triangle mesh ----
+
+    // ---- builder methods, returning this type (see GObject for what each does) ----
+
+    /** {@inheritDoc} */
+    @Override public SubdivisionSurface transform(Transform t) { super.transform(t); return this; }
+
+    /** {@inheritDoc} */
+    @Override public SubdivisionSurface motion(Motion m) { super.motion(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public SubdivisionSurface material(Material m) { super.material(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public SubdivisionSurface name(String n) { super.name(n); return this; }
+
+    /** {@inheritDoc} */
+    @Override public SubdivisionSurface source(String where) { super.source(where); return this; }
+
+    /** {@inheritDoc} */
+    @Override public SubdivisionSurface source(String file, int line, int column) { super.source(file, line, column); return this; }
 
     @Override public String kind() { return "subdiv"; }
     @Override public Bounds localBounds() { return mesh.localBounds(); }

@@ -8,6 +8,9 @@ import lt.spindulys.math.Bounds;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
+import lt.spindulys.math.Transform;
+import lt.spindulys.math.Motion;
+import lt.spindulys.material.Material;
 
 /**
  * A single triangle, optionally with per-vertex normals and texture coordinates. Open (no inside).
@@ -29,6 +32,11 @@ public final class Triangle extends GObject {
     /** Vertex texture coordinates u0, v0, u1, v1, u2, v2, or null. */
     private double[] uvs;
 
+    /**
+     * The triangle abc; counter-clockwise seen from the side its normal points to.
+     *
+     * @throws IllegalArgumentException if it has zero area or a coordinate is not finite and modest
+     */
     public Triangle(Vec3 a, Vec3 b, Vec3 c) {
         if (!Ranges.isModest(a) || !Ranges.isModest(b) || !Ranges.isModest(c)) throw new IllegalArgumentException("triangle vertices must be finite and at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude, found " + a + " " + b + " " + c);
         if (!(b.minus(a).cross(c.minus(a)).length() > 0)) throw new IllegalArgumentException("triangle " + a + " " + b + " " + c + " is degenerate (zero area)");
@@ -38,8 +46,11 @@ public final class Triangle extends GObject {
         e2x = c.x() - ax; e2y = c.y() - ay; e2z = c.z() - az;
     }
 
+    /** First vertex (object space). */
     public Vec3 a() { return a; }
+    /** Second vertex (object space). */
     public Vec3 b() { return b; }
+    /** Third vertex (object space). */
     public Vec3 c() { return c; }
 
     /** Sets per-vertex shading normals (normalised here); each must be finite and non-zero. */
@@ -74,6 +85,26 @@ public final class Triangle extends GObject {
     public boolean hasNormals() { return normals != null; }
     /** True if vertex texture coordinates were given. */
     public boolean hasUvs() { return uvs != null; }
+
+    // ---- builder methods, returning this type (see GObject for what each does) ----
+
+    /** {@inheritDoc} */
+    @Override public Triangle transform(Transform t) { super.transform(t); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Triangle motion(Motion m) { super.motion(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Triangle material(Material m) { super.material(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Triangle name(String n) { super.name(n); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Triangle source(String where) { super.source(where); return this; }
+
+    /** {@inheritDoc} */
+    @Override public Triangle source(String file, int line, int column) { super.source(file, line, column); return this; }
 
     @Override public String kind() { return "triangle"; }
     @Override public Bounds localBounds() { return Bounds.of(a, b).union(c.x(), c.y(), c.z()); }

@@ -1,6 +1,5 @@
 package lt.spindulys.scene;
 
-import lt.spindulys.material.Material;
 import lt.spindulys.trace.Hit;
 import lt.spindulys.trace.TraceContext;
 import lt.spindulys.trace.ShadingData;
@@ -17,9 +16,11 @@ import lt.spindulys.accel.PrimitiveVisitor;
 import lt.spindulys.accel.TraversalScratch;
 import lt.spindulys.accel.WatertightTriangles;
 import lt.spindulys.math.Bounds;
-import lt.spindulys.math.Placement;
 import lt.spindulys.math.Ray;
 import lt.spindulys.mesh.MeshData;
+import lt.spindulys.math.Transform;
+import lt.spindulys.math.Motion;
+import lt.spindulys.material.Material;
 
 /**
  * A triangle mesh held in flat arrays (no object per triangle) with its own acceleration
@@ -69,8 +70,16 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
      */
     private final TriangleMesh prototype;
     /**
-     * Structures over this mesh's triangles, one per kind asked for, shared by its instances;
-     * only a prototype keeps them. The first one built may renumber the triangles ({@link #reorder}).
+     * True for an {@link #instance()} and for a scene's copy of one; false for a mesh made from
+     * data and for a scene's copy of it, which shares the arrays but stands for the original.
+     */
+    private final boolean instance;
+    /**
+     * Structures over this mesh's triangles, one per kind asked for, shared by its instances and
+     * by the frozen copies scenes make of it ({@link #copy()}), so building the same mesh into
+     * another scene (the next frame) does not build them again; only a prototype keeps them,
+     * guarded by its lock, as scenes may be built on several threads. The first one built may
+     * renumber the triangles ({@link #reorder}).
      */
     private final java.util.EnumMap<AcceleratorKind, Accelerator> structures;
     /** Made once so that collecting crossings allocates nothing per ray. */
@@ -88,6 +97,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
      */
     public TriangleMesh(MeshData data) {
         this.prototype = null;
+        this.instance = false;
         this.structures = new java.util.EnumMap<>(AcceleratorKind.class);
         this.source = data.source();
         MeshTopology.validate(data);
@@ -147,9 +157,13 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         smooth(data.normalIndex() != null);
     }
 
-    /** An instance of {@code p}: the same arrays (no copy), its own transform, material and shading. */
-    private TriangleMesh(TriangleMesh p) {
+    /**
+     * An instance of {@code p} (a root mesh): the same arrays (no copy), its own transform,
+     * material and shading; {@code instance} false for a scene's copy of {@code p} itself.
+     */
+    private TriangleMesh(TriangleMesh p, boolean instance) {
         prototype = p;
+        this.instance = instance;
         structures = null;
         source = p.source;
         pos = p.pos;
@@ -173,16 +187,32 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
      * instance share the same original.
      */
     public TriangleMesh instance() {
-        return new TriangleMesh(root());
+        return new TriangleMesh(root(), true);
+    }
+
+    /**
+     * A scene's copy: an instance of the same geometry (so it shares the arrays and the
+     * structures) with this mesh's transform, motion, material, name and shading.
+     */
+    @Override
+    protected TriangleMesh copy() {
+        checkCopyable();
+        TriangleMesh c = new TriangleMesh(root(), instance);
+        c.describeLike(this);
+        c.smooth = smooth;
+        return c;
     }
 
     /** The mesh that owns the shared arrays and structures: the prototype, or this one. */
     private TriangleMesh root() { return prototype != null ? prototype : this; }
 
-    /** True if this mesh shares another mesh's geometry ({@link #instance()}). */
-    public boolean isInstance() { return prototype != null; }
+    /**
+     * True if this mesh shares another mesh's geometry ({@link #instance()}). A scene's frozen copy
+     * answers as the object it was made from, so that each geometry has one mesh that is not an instance.
+     */
+    public boolean isInstance() { return instance; }
 
-    /** The structure over the triangles for {@code kind}, built on first request. */
+    /** The structure over the triangles for {@code kind}, built on first request; the caller holds this (root) mesh's lock. */
     private Accelerator structure(AcceleratorKind kind) {
         Accelerator a = structures.get(kind);
         if (a == null) {
@@ -223,6 +253,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         return this;
     }
 
+    /** True if shading interpolates normals (see {@link #smooth(boolean)}). */
     public boolean isSmooth() { return smooth; }
     /** True if the source gave normals (some triangles may still lack them). */
     public boolean hasNormals() { return normals != null; }
@@ -235,21 +266,28 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     public MeshData data() {
         int[] sizes = new int[triangleCount];
         Arrays.fill(sizes, 3);
-        return new MeshData(pos, normals, uvs, sizes, tri, triNormal, triUv, source);
+        // The owner's positions: an unfrozen instance's may predate the renumbering (reorder).
+        return new MeshData(root().pos, normals, uvs, sizes, tri, triNormal, triUv, source);
     }
+    /** Triangles of area above zero, the ones rendered. */
     public int triangleCount() { return triangleCount; }
     /** Triangles dropped because their area is zero. */
     public int degenerateCount() { return degenerateCount; }
 
     /**
      * Bytes held by the mesh's arrays (positions, normals, texture coordinates, triangle and
-     * per-corner indices, vertex normals) and its acceleration structure; array headers
-     * and the few fixed fields are left out. An instance holds none of its own: 0.
+     * per-corner indices, vertex normals) and the acceleration structures built over it (one per
+     * kind a scene asked for); array headers and the few fixed fields are left out. An
+     * {@link #isInstance() instance} holds none of its own: 0.
      */
     public long memoryBytes() {
-        if (prototype != null) return 0;
-        long b = bytes(pos) + bytes(normals) + bytes(uvs) + bytes(tri) + bytes(triNormal) + bytes(triUv) + bytes(vertexNormals);
-        return b + (accel != null ? accel.memoryBytes() : 0);
+        if (instance) return 0;
+        TriangleMesh r = root();
+        synchronized (r) {
+            long b = bytes(r.pos) + bytes(normals) + bytes(uvs) + bytes(tri) + bytes(triNormal) + bytes(triUv) + bytes(r.vertexNormals);
+            for (Accelerator a : r.structures.values()) b += a.memoryBytes();
+            return b;
+        }
     }
 
     private static long bytes(double[] a) { return a == null ? 0 : 8L * a.length; }
@@ -279,27 +317,50 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
      * more triangles also keeps a mesh from being closed but is not a boundary edge).
      */
     public int boundaryEdgeCount() {
-        return MeshTopology.boundaryEdgeCount(tri, triangleCount, pos);
+        return MeshTopology.boundaryEdgeCount(tri, triangleCount, root().pos); // the owner's: an unfrozen instance's may predate the renumbering
     }
 
     // ---- GObject ----
+
+    // ---- builder methods, returning this type (see GObject for what each does) ----
+
+    /** {@inheritDoc} */
+    @Override public TriangleMesh transform(Transform t) { super.transform(t); return this; }
+
+    /** {@inheritDoc} */
+    @Override public TriangleMesh motion(Motion m) { super.motion(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public TriangleMesh material(Material m) { super.material(m); return this; }
+
+    /** {@inheritDoc} */
+    @Override public TriangleMesh name(String n) { super.name(n); return this; }
+
+    /** {@inheritDoc} */
+    @Override public TriangleMesh source(String where) { super.source(where); return this; }
+
+    /** {@inheritDoc} */
+    @Override public TriangleMesh source(String file, int line, int column) { super.source(file, line, column); return this; }
 
     @Override public String kind() { return "mesh"; }
     @Override public Bounds localBounds() { return bounds; }
     @Override public boolean isClosed() { return closed; }
 
+    /** Places the mesh and takes the shared structure of the context's kind, built if it is the first to ask. */
     @Override
-    public int freeze(Placement parentToWorld, Material inherited, int ids, AcceleratorKind kind) {
-        int next = super.freeze(parentToWorld, inherited, ids, kind);
+    protected int freeze(BuildContext context, int ids) {
+        int next = super.freeze(context, ids);
         TriangleMesh r = root();
-        try {
-            accel = r.structure(kind);
-        } catch (IllegalArgumentException e) {
-            throw SceneBuildException.of(this, e);
+        synchronized (r) {
+            try {
+                accel = r.structure(context.accelerator());
+            } catch (IllegalArgumentException e) {
+                throw SceneBuildException.of(this, e);
+            }
+            // The first structure may have renumbered the vertices into a new array: read it after.
+            pos = r.pos;
+            vertexNormals = smooth && needsVertexNormals ? r.sharedVertexNormals() : null;
         }
-        // The first structure may have renumbered the vertices into a new array: read it after.
-        pos = r.pos;
-        vertexNormals = smooth && needsVertexNormals ? r.sharedVertexNormals() : null;
         return next;
     }
 

@@ -53,7 +53,7 @@ class SceneParserMotionTest {
         assertEquals(45, d.motion().degrees(), 1e-12);
         assertNull(d.operands().get(0).motion());
         assertEquals(Vec3.X, d.operands().get(1).motion().translation());
-        b.build();
-        for (GObject o : d.operands()) assertTrue(o.isMoving(), "an operand of a moving CSG node moves with it");
+        Bool built = (Bool) b.build().objects().get(0); // the scene's frozen copy
+        for (GObject o : built.operands()) assertTrue(o.isMoving(), "an operand of a moving CSG node moves with it");
     }
 }

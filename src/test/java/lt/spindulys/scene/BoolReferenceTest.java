@@ -468,7 +468,7 @@ class BoolReferenceTest {
             java.util.Map<GObject, Material> materials = new java.util.IdentityHashMap<>();
             expectMaterials(root, null, materials);
             Bool bool = (Bool) root.object();
-            bool.freeze(Transform.IDENTITY, Material.DEFAULT, 0);
+            TestBuild.freeze(bool, Transform.IDENTITY, Material.DEFAULT, 0);
             for (int k = 0; k < RAYS_PER_TREE; k++) {
                 double[] o, d;
                 if (k % 5 == 0) {

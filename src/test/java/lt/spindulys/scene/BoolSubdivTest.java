@@ -47,7 +47,7 @@ class BoolSubdivTest {
         b.transform(Transform.scale(0.8, 0.8, 0.8)).transform(Transform.rotate(new Vec3(1, 1, 0), 30)).transform(Transform.translate(0.7, 0.3, 0.2));
         Bool d = new Bool(Bool.Op.DIFFERENCE, List.of(a, b));
         d.transform(Transform.rotateY(15));
-        d.freeze(Transform.IDENTITY, Material.DEFAULT, 0);
+        TestBuild.freeze(d, Transform.IDENTITY, Material.DEFAULT, 0);
         Random rnd = new Random(5);
         TraceContext ctx = new TraceContext();
         Hit hit = new Hit();

@@ -40,7 +40,7 @@ class BoolTest {
     private static Bool bool(Bool.Op op, GObject... operands) { return new Bool(op, List.of(operands)); }
 
     private static <T extends GObject> T frozen(T o) {
-        o.freeze(Transform.IDENTITY, Material.DEFAULT, 0);
+        TestBuild.freeze(o, Transform.IDENTITY, Material.DEFAULT, 0);
         return o;
     }
 
@@ -232,16 +232,36 @@ class BoolTest {
         assertThrows(IllegalArgumentException.class, () -> new Bool(Bool.Op.UNION, List.of(s)));
         assertTrue(assertThrows(IllegalArgumentException.class, () -> bool(Bool.Op.DIFFERENCE, s, s)).getMessage().contains("same object"));
         Sphere f = frozen(new Sphere(Vec3.ZERO, 1));
-        assertThrows(IllegalArgumentException.class, () -> bool(Bool.Op.INTERSECTION, s, f));
+        assertEquals("intersection operand 2 (sphere) is an object of a built scene; give the object it was built from",
+                assertThrows(IllegalArgumentException.class, () -> bool(Bool.Op.INTERSECTION, s, f)).getMessage());
         assertThrows(IllegalArgumentException.class, () -> new Bool(Bool.Op.UNION, java.util.Arrays.asList(s, null)));
         assertEquals(0, new TriangleMesh(TestMeshes.cube()).boundaryEdgeCount());
-        // An operand belongs to one Bool; a Bool refused leaves its operands free.
+        // An operand is not marked: it may be an operand of a second Bool (a scene freezes a copy per place).
         Sphere p = new Sphere(Vec3.ZERO, 1), q = new Sphere(Vec3.X, 1);
-        assertThrows(IllegalArgumentException.class, () -> bool(Bool.Op.UNION, p, open));
         Bool first = bool(Bool.Op.UNION, p, q);
-        assertEquals("difference operand 1 (sphere) is already an operand of another union",
-                assertThrows(IllegalArgumentException.class, () -> bool(Bool.Op.DIFFERENCE, q, new Sphere(Vec3.Y, 1))).getMessage());
+        assertSame(q, bool(Bool.Op.DIFFERENCE, q, new Sphere(Vec3.Y, 1)).operands().get(0));
         assertSame(first, bool(Bool.Op.INTERSECTION, first, new Sphere(Vec3.Y, 1)).operands().get(0));
+        assertSame(q, q.solid());
+    }
+
+    @Test
+    void aTreeThatReusesItsOperandsIsCountedAsItExpands() {
+        // Each level uses the previous Bool twice (through a second Bool), so the copies double per level.
+        GObject t = bool(Bool.Op.UNION, new Sphere(Vec3.ZERO, 1), new Sphere(Vec3.X, 1));
+        int levels = 0;
+        IllegalArgumentException e = null;
+        while (e == null && levels < 100) {
+            GObject prev = t;
+            try {
+                t = bool(Bool.Op.UNION, prev, bool(Bool.Op.INTERSECTION, prev, new Sphere(Vec3.Y, 2)));
+                levels++;
+            } catch (IllegalArgumentException x) {
+                e = x;
+            }
+        }
+        assertNotNull(e, "refused before 100 levels");
+        assertTrue(levels > 15 && levels < 30, levels + " levels");
+        assertTrue(e.getMessage().startsWith("union operand 2 (intersection) brings the CSG tree to more than " + Bool.MAX_OBJECTS + " objects"), e.getMessage());
     }
 
     @Test
@@ -261,11 +281,14 @@ class BoolTest {
                 + " levels deep (union and intersection take any number of operands, so a long chain can be one node)", e.getMessage());
         // The refusal leaves the tree free to be used.
         Scene scene = new SceneBuilder().add(chain).build();
-        assertSame(chain, leaf.solid());
-        assertSame(chain, chain.operands().get(0).solid());
+        GObject built = scene.objects().get(0), builtLeaf = built;
+        while (builtLeaf instanceof Bool b) builtLeaf = b.operands().get(b.op() == Bool.Op.INTERSECTION ? 1 : 0); // down the chain to leaf's copy
+        assertSame(built, builtLeaf.solid());
+        assertSame(built, ((Bool) built).operands().get(0).solid());
+        assertSame(leaf, leaf.solid(), "the caller's objects are not marked");
         Hit h = new Hit();
         assertTrue(scene.intersect(ray(-5, 0, 0, 1, 0, 0), h, new TraceContext()));
-        assertSame(leaf, h.object);
+        assertSame(builtLeaf, h.object);
         assertEquals(4, h.t, EPS);
     }
 
@@ -512,15 +535,19 @@ class BoolTest {
         Sphere other = new Sphere(new Vec3(5, 0, 0), 1);
         Scene scene = new SceneBuilder().add(u).add(other).build();
         assertEquals(4, scene.objectIdCount());
-        assertEquals(List.of(0, 1, 2, 3), List.of(u.id(), a.id(), b.id(), other.id()));
+        // The scene's own copies carry the ids; the caller's objects stay unfrozen.
+        Bool fu = (Bool) scene.objects().get(0);
+        GObject fa = fu.operands().get(0), fb = fu.operands().get(1), fo = scene.objects().get(1);
+        assertEquals(List.of(0, 1, 2, 3), List.of(fu.id(), fa.id(), fb.id(), fo.id()));
+        assertEquals(List.of(-1, -1, -1, -1), List.of(u.id(), a.id(), b.id(), other.id()));
         assertTrue(scene.hasTransparentObjects());
-        assertSame(u, a.solid());
-        assertSame(u, b.solid());
-        assertSame(u, u.solid());
-        assertSame(other, other.solid());
+        assertSame(fu, fa.solid());
+        assertSame(fu, fb.solid());
+        assertSame(fu, fu.solid());
+        assertSame(fo, fo.solid());
         Hit h = new Hit();
         assertTrue(scene.intersect(ray(-5, 0, 0, 1, 0, 0), h, new TraceContext()));
-        assertSame(a, h.object);
+        assertSame(fa, h.object);
         assertEquals(4, h.t, EPS);
         // The same Bool overridden by an opaque material: no transparency left in the scene.
         Sphere c = new Sphere(Vec3.ZERO, 1), e = new Sphere(Vec3.X, 1);
@@ -528,7 +555,9 @@ class BoolTest {
         Bool opaque = bool(Bool.Op.UNION, c, e);
         opaque.material(Material.DEFAULT);
         assertFalse(new SceneBuilder().add(opaque).build().hasTransparentObjects());
-        assertThrows(IllegalStateException.class, () -> u.material(glass));
+        // The scene's copies are frozen; the caller's Bool stays editable.
+        assertThrows(IllegalStateException.class, () -> fu.material(glass));
+        assertSame(u, u.material(glass));
     }
 
     private static double[] shadeN(Ray r, Hit h) { return shade(r, h).ng; }
@@ -545,10 +574,10 @@ class BoolTest {
         Ray r = new Ray().set(0, 0, -1, 0, 0, 1, 0, Double.POSITIVE_INFINITY);
         TraceContext ctx = new TraceContext();
         Hit h = new Hit();
-        assertTrue(hollow.intersect(r, h.reset(r.tMax), ctx));
+        assertTrue(scene.objects().get(0).intersect(r, h.reset(r.tMax), ctx));
         assertTrue(h.flipNormal, "from inside the hollow its far wall is a subtracted surface");
         assertTrue(scene.intersect(r, h, ctx));
-        assertSame(inside, h.object);
+        assertSame(scene.objects().get(1), h.object);
         assertEquals(1.2, h.t, 1e-12);
         assertFalse(h.flipNormal);
         ShadingData sd = new ShadingData();

@@ -70,7 +70,7 @@ class MeshWatertightTest {
     }
 
     private static TriangleMesh frozen(TriangleMesh m, AcceleratorKind kind) {
-        m.freeze(Transform.IDENTITY, Material.DEFAULT, 0, kind);
+        TestBuild.freeze(m, Transform.IDENTITY, Material.DEFAULT, 0, kind);
         return m;
     }
 

@@ -55,13 +55,13 @@ class MovingObjectTest {
             GObject[] moving = {new Sphere(Vec3.ZERO, 1), new Box(new Vec3(-1, -0.5, -0.7), new Vec3(1, 0.5, 0.7)),
                     new Cylinder(new Vec3(0, -1, 0), new Vec3(0, 1, 0), 0.6)};
             for (GObject o : moving) {
-                o.transform(own).motion(m).freeze(Transform.IDENTITY, Material.DEFAULT, 0);
+                TestBuild.freeze(o.transform(own).motion(m), Transform.IDENTITY, Material.DEFAULT, 0);
                 assertTrue(o.isMoving());
                 TraceContext ctx = new TraceContext();
                 for (int k = 0; k < 40; k++) {
                     double t = r.nextDouble();
                     GObject still = copy(o).transform(o.objectToWorld(t));
-                    still.freeze(Transform.IDENTITY, Material.DEFAULT, 0);
+                    TestBuild.freeze(still, Transform.IDENTITY, Material.DEFAULT, 0);
                     Vec3 from = rv(r, 1).times(6).plus(new Vec3(0, 0, -8)), to = rv(r, 1.5);
                     Ray a = new Ray(from, to.minus(from)), b = new Ray(from, to.minus(from));
                     a.time = t;
@@ -102,7 +102,7 @@ class MovingObjectTest {
             Box other = new Box(new Vec3(-1, -1, -1), new Vec3(1, 1, 1));
             Bool u = new Bool(Bool.Op.UNION, List.of(leaf, other));
             u.transform(Transform.rotateZ(20)).motion(randomMotion(r));
-            u.freeze(Placement.of(Transform.translate(1, 0, 0), -0.5, 1.5), Material.DEFAULT, 0, lt.spindulys.scene.AcceleratorKind.BVH);
+            TestBuild.freeze(u, Placement.of(Transform.translate(1, 0, 0), -0.5, 1.5), Material.DEFAULT, 0, AcceleratorKind.BVH);
             for (int k = 0; k < 100; k++) {
                 double t = 2.4 * r.nextDouble() - 0.7;
                 Bounds leafAtT = leaf.localBounds().transformed(leaf.objectToWorld(t));
@@ -117,7 +117,7 @@ class MovingObjectTest {
     void objectsWithoutMotionKeepTheirOneTransform() {
         Sphere s = new Sphere(Vec3.ZERO, 1);
         s.transform(Transform.translate(1, 2, 3));
-        s.freeze(Transform.rotateX(10), Material.DEFAULT, 0);
+        TestBuild.freeze(s, Transform.rotateX(10), Material.DEFAULT, 0);
         assertFalse(s.isMoving());
         assertSame(s.objectToWorld(0), s.objectToWorld(0.7));
         assertEquals(Transform.translate(1, 2, 3).then(Transform.rotateX(10)), s.objectToWorld(0.3));
@@ -162,7 +162,7 @@ class MovingObjectTest {
     void movingSubdivisionSurfaceHasNoHoles() {
         SubdivisionSurface s = new SubdivisionSurface(cube(), 3);
         s.transform(Transform.rotateX(20)).motion(Motion.of(new Vec3(1.5, 1, 0.8), new Vec3(1, 1, 0), 120, new Vec3(2, 0.5, 0), new Vec3(0.3, 0, 0), 0.1, 0.9));
-        s.freeze(Transform.IDENTITY, Material.DEFAULT, 0);
+        TestBuild.freeze(s, Transform.IDENTITY, Material.DEFAULT, 0);
         assertWatertight(s, new Random(21), 2000);
     }
 
@@ -174,7 +174,7 @@ class MovingObjectTest {
         Cylinder drill = new Cylinder(new Vec3(0, -2, 0), new Vec3(0, 2, 0), 0.3);
         Bool d = new Bool(Bool.Op.DIFFERENCE, List.of(a, bite, drill));
         d.motion(Motion.of(new Vec3(1, 1, 1), Vec3.Z, 90, new Vec3(0, 1, 0), Vec3.ZERO, 0, 0.7));
-        d.freeze(Transform.IDENTITY, Material.DEFAULT, 0);
+        TestBuild.freeze(d, Transform.IDENTITY, Material.DEFAULT, 0);
         assertWatertight(d, new Random(22), 2000);
     }
 

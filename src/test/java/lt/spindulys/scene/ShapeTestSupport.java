@@ -20,7 +20,7 @@ final class ShapeTestSupport {
     private ShapeTestSupport() {}
 
     static <T extends GObject> T frozen(T o) {
-        o.freeze(Transform.IDENTITY, Material.DEFAULT, 0);
+        TestBuild.freeze(o, Transform.IDENTITY, Material.DEFAULT, 0);
         return o;
     }
 

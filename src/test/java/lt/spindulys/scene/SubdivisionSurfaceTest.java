@@ -87,7 +87,7 @@ class SubdivisionSurfaceTest {
     void spansGoThroughTheSurfaceAndAgreeWithTheNearestHit() {
         Material m = Material.builder().color(new lt.spindulys.math.Color(1, 0, 0)).build();
         SubdivisionSurface s = (SubdivisionSurface) new SubdivisionSurface(cube(""), 2).transform(Transform.rotateY(20)).material(m);
-        s.freeze(Transform.IDENTITY, Material.DEFAULT, 0);
+        TestBuild.freeze(s, Transform.IDENTITY, Material.DEFAULT, 0);
         Random rnd = new Random(5);
         TraceContext ctx = new TraceContext();
         SpanBuffer sp = new SpanBuffer();

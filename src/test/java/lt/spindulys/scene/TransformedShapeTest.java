@@ -58,7 +58,7 @@ class TransformedShapeTest {
 
     @Test void parentTransformAppliesAfterTheObjects() {
         GObject s = new Sphere(Vec3.ZERO, 1).transform(Transform.translate(1, 0, 0));
-        s.freeze(Transform.scale(2, 2, 2), Material.DEFAULT, 0); // centre (2, 0, 0), radius 2
+        TestBuild.freeze(s, Transform.scale(2, 2, 2), Material.DEFAULT, 0); // centre (2, 0, 0), radius 2
         Hit h = new Hit().reset(Double.POSITIVE_INFINITY);
         assertTrue(s.intersect(ray(2, 0, -10, 0, 0, 1), h, new TraceContext()));
         assertEquals(8, h.t, 1e-12);

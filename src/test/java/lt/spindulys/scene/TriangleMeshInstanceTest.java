@@ -42,8 +42,8 @@ class TriangleMeshInstanceTest {
     void instancesTraceLikeIndependentCopiesAndShareEverything() {
         MeshData sphere = TestMeshes.icosphere(3, 1);
         TriangleMesh proto = new TriangleMesh(sphere);
-        TriangleMesh a = (TriangleMesh) proto.instance().transform(place(1));
-        TriangleMesh b = (TriangleMesh) a.instance().transform(place(2)); // an instance of an instance
+        TriangleMesh a = proto.instance().transform(place(1));
+        TriangleMesh b = a.instance().transform(place(2)); // an instance of an instance
         proto.transform(place(0));
         // Instances first: whichever is frozen first builds the shared structure.
         Scene shared = scene(b, a, proto);
@@ -52,11 +52,17 @@ class TriangleMeshInstanceTest {
 
         assertTrue(a.isInstance() && b.isInstance());
         assertFalse(proto.isInstance());
-        assertNotNull(proto.accelerator());
-        assertSame(proto.accelerator(), a.accelerator());
-        assertSame(proto.accelerator(), b.accelerator());
+        // The scene's frozen copies (b, a, proto) share one structure and answer isInstance as their originals.
+        TriangleMesh fb = (TriangleMesh) shared.objects().get(0), fa = (TriangleMesh) shared.objects().get(1), fp = (TriangleMesh) shared.objects().get(2);
+        assertTrue(fa.isInstance() && fb.isInstance());
+        assertFalse(fp.isInstance());
+        assertNotNull(fp.accelerator());
+        assertSame(fp.accelerator(), fa.accelerator());
+        assertSame(fp.accelerator(), fb.accelerator());
         assertEquals(0, a.memoryBytes());
+        assertEquals(0, fa.memoryBytes());
         assertTrue(proto.memoryBytes() > 0);
+        assertEquals(proto.memoryBytes(), fp.memoryBytes());
 
         Random r = new Random(17);
         TraceContext ctx = new TraceContext();
@@ -84,13 +90,15 @@ class TriangleMeshInstanceTest {
         TriangleMesh proto = new TriangleMesh(TestMeshes.icosphere(2, 1));
         TriangleMesh smooth = proto.instance().smooth(true);
         proto.smooth(false);
-        scene(proto, (TriangleMesh) smooth.transform(Transform.translate(3, 0, 0)));
+        Scene scene = scene(proto, smooth.transform(Transform.translate(3, 0, 0)));
+        GObject flat = scene.objects().get(0);
+        GObject built = scene.objects().get(1);
         Ray ray = new Ray().set(3.1, 0.2, -5, 0, 0, 1, 0, Double.POSITIVE_INFINITY);
         TraceContext ctx = new TraceContext();
         Hit h = new Hit();
-        assertTrue(smooth.intersect(ray, h.reset(ray.tMax), ctx));
+        assertTrue(built.intersect(ray, h.reset(ray.tMax), ctx));
         ShadingData sd = new ShadingData();
-        smooth.shade(ray, h, sd);
+        built.shade(ray, h, sd);
         double dot = 0, nn = 0, gg = 0;
         for (int k = 0; k < 3; k++) {
             dot += sd.ns[k] * sd.ng[k];
@@ -99,8 +107,8 @@ class TriangleMeshInstanceTest {
         }
         assertTrue(dot / Math.sqrt(nn * gg) < 1 - 1e-6, "the smooth instance interpolates normals");
         Ray flatRay = new Ray().set(0.1, 0.2, -5, 0, 0, 1, 0, Double.POSITIVE_INFINITY);
-        assertTrue(proto.intersect(flatRay, h.reset(flatRay.tMax), ctx));
-        proto.shade(flatRay, h, sd);
+        assertTrue(flat.intersect(flatRay, h.reset(flatRay.tMax), ctx));
+        flat.shade(flatRay, h, sd);
         for (int k = 0; k < 3; k++) assertEquals(sd.ng[k] / Math.sqrt(gg(sd)), sd.ns[k] / Math.sqrt(nn(sd)), 1e-12);
     }
 

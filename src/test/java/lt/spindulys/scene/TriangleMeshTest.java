@@ -27,7 +27,7 @@ class TriangleMeshTest {
     private static final double EPS = 1e-12;
 
     private static TriangleMesh frozen(TriangleMesh m) {
-        m.freeze(Transform.IDENTITY, Material.DEFAULT, 0);
+        TestBuild.freeze(m, Transform.IDENTITY, Material.DEFAULT, 0);
         return m;
     }
 
@@ -36,7 +36,7 @@ class TriangleMeshTest {
             .texture(Channel.DIFFUSE, (p, rgb) -> { rgb[0] = rgb[1] = rgb[2] = 1; }, new Uv(1, 1)).build();
 
     private static TriangleMesh frozenTextured(TriangleMesh m) {
-        m.freeze(Transform.IDENTITY, TEXTURED, 0);
+        TestBuild.freeze(m, Transform.IDENTITY, TEXTURED, 0);
         return m;
     }
 
@@ -495,8 +495,8 @@ class TriangleMeshTest {
     void bvhLeafOrderKeepsEveryTriangleAndEveryHit() {
         MeshData d = TestMeshes.icosphere(3, 1);
         TriangleMesh reordered = new TriangleMesh(d), plain = new TriangleMesh(d);
-        reordered.freeze(Transform.IDENTITY, Material.DEFAULT, 0, lt.spindulys.scene.AcceleratorKind.BVH);
-        plain.freeze(Transform.IDENTITY, Material.DEFAULT, 0, lt.spindulys.scene.AcceleratorKind.BRUTE_FORCE);
+        TestBuild.freeze(reordered, Transform.IDENTITY, Material.DEFAULT, 0, AcceleratorKind.BVH);
+        TestBuild.freeze(plain, Transform.IDENTITY, Material.DEFAULT, 0, AcceleratorKind.BRUTE_FORCE);
         java.util.List<String> a = new java.util.ArrayList<>(), b = new java.util.ArrayList<>();
         for (int t = 0; t < plain.triangleCount(); t++) {
             a.add(corners(reordered, t));

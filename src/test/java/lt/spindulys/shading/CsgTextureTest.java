@@ -84,11 +84,13 @@ class CsgTextureTest {
         Bool union = new Bool(Bool.Op.UNION, List.of(left, right));
         union.material(textured(RECORD_UV)).transform(PLACE);
         Scene scene = new SceneBuilder().add(union).build();
+        // Hits name the scene's own frozen copies of the operands.
+        List<GObject> built = ((Bool) scene.objects().get(0)).operands();
         // Either side of the seam at x = 0 on the front face z = -1, and far from it.
         for (double x : new double[] {-1e-6, 1e-6, -0.9, 0.9, -0.3, 0.4}) {
             Vec3 p = new Vec3(x, 0.3, -1);
             Shaded h = shade(scene, PLACE, p);
-            assertSame(x < 0 ? left : right, h.object());
+            assertSame(built.get(x < 0 ? 0 : 1), h.object());
             assertRgb(expected(RECORD_UV, p), h.rgb(), "x " + x);
             // Bump frames follow: the derivatives given to the mapping are the block-space ones.
             Vec3 du = PLACE.inverse().vector(new Vec3(h.sd().dpdu[0], h.sd().dpdu[1], h.sd().dpdu[2]));
@@ -105,16 +107,17 @@ class CsgTextureTest {
     @Test
     void aSolidPatternOnADifferenceIsCarvedFromTheBlock() {
         Box body = half(0.3);
-        Sphere cut = (Sphere) new Sphere(Vec3.ZERO, 0.8).transform(Transform.translate(0.3, 0, -1));
+        Sphere cut = new Sphere(Vec3.ZERO, 0.8).transform(Transform.translate(0.3, 0, -1));
         Bool d = new Bool(Bool.Op.DIFFERENCE, List.of(body, cut));
         // Nested under a union that gives the material: the outermost material's block decides.
         Bool outer = new Bool(Bool.Op.UNION, List.of(d, half(5)));
         outer.material(textured(RECORD_POINT)).transform(PLACE);
         Scene scene = new SceneBuilder().add(outer).build();
+        List<GObject> built = ((Bool) ((Bool) scene.objects().get(0)).operands().get(0)).operands();
         // The flat face of the box, and the hollow the sphere cut in it.
         for (Vec3 p : new Vec3[] {new Vec3(-0.15, 0.9, -1), new Vec3(0.75, -0.9, -1), new Vec3(0.3, 0, -1 + 0.8)}) {
             Shaded h = shade(scene, PLACE, p);
-            assertSame(p.z() > -1 ? cut : body, h.object());
+            assertSame(built.get(p.z() > -1 ? 1 : 0), h.object());
             assertRgb(new double[] {p.x(), p.y(), p.z()}, h.rgb(), p.toString());
         }
     }
@@ -128,7 +131,7 @@ class CsgTextureTest {
         Scene scene = new SceneBuilder().add(union).build();
         Vec3 p = new Vec3(-0.2, 0.3, -1);
         Shaded h = shade(scene, PLACE, p);
-        assertSame(left, h.object());
+        assertSame(((Bool) scene.objects().get(0)).operands().get(0), h.object());
         // The left box's own space is the block's moved by +0.5 in x.
         assertRgb(new double[] {p.x() + 0.5, p.y(), p.z()}, h.rgb(), "operand's own space");
     }
@@ -139,7 +142,7 @@ class CsgTextureTest {
         Bool union = new Bool(Bool.Op.UNION, List.of(left, right));
         union.material(textured(RECORD_POINT)).transform(PLACE).motion(Motion.linear(Vec3.Y, 2, 0, 1));
         Scene scene = new SceneBuilder().add(union).build();
-        Transform atHalf = union.objectToWorld(0.5);
+        Transform atHalf = scene.objects().get(0).objectToWorld(0.5);
         Vec3 p = new Vec3(1e-6, -0.4, -1);
         Vec3 o = atHalf.point(p.plus(new Vec3(0, 0, -5))), d = atHalf.vector(Vec3.Z);
         Ray ray = new Ray(o, d);
@@ -151,7 +154,7 @@ class CsgTextureTest {
         hit.object.shade(ray, hit, sd);
         TracerScratch.PathVertex v = s.path[0];
         TextureShading.evaluate(sd.material, sd, 0, s, v);
-        assertSame(right, hit.object);
+        assertSame(((Bool) scene.objects().get(0)).operands().get(1), hit.object);
         assertRgb(new double[] {p.x(), p.y(), p.z()}, new double[] {v.colourR, v.colourG, v.colourB}, "moving block");
     }
 }

@@ -1,0 +1,90 @@
+package lt.spindulys.scene;
+
+import java.util.Objects;
+
+import lt.spindulys.camera.Camera;
+import lt.spindulys.material.Material;
+import lt.spindulys.math.Placement;
+import lt.spindulys.math.Transform;
+
+/**
+ * What an object is told when a scene is built ({@link GObject#freeze(BuildContext, int)}): where
+ * its parent is placed, the material it inherits, the acceleration structure to build over its own
+ * primitives, and the view: the camera, the film size in pixels and the shutter interval, so that
+ * an object can do view-dependent work at build time (choose a level of detail from its projected
+ * size, for example).
+ *
+ * <p>Immutable, so one context can be handed to many objects and to several threads. The scene
+ * makes the first one from its settings and camera; a container (a {@link Bool}) derives one for
+ * its operands with {@link #within}, which changes the placement and the material and keeps the
+ * view. Object ids are not part of the context: they are the one value that flows back up (each
+ * freeze returns the next free id), so they stay an argument and a return value.
+ */
+public final class BuildContext {
+    private final Placement placement;
+    private final Material material;
+    private final AcceleratorKind accelerator;
+    private final Camera camera;
+    private final int width, height;
+    private final double shutterOpen, shutterClose;
+
+    BuildContext(Placement placement, Material material, AcceleratorKind accelerator, Camera camera,
+                 int width, int height, double shutterOpen, double shutterClose) {
+        this.placement = Objects.requireNonNull(placement);
+        this.material = material;
+        this.accelerator = Objects.requireNonNull(accelerator);
+        this.camera = Objects.requireNonNull(camera);
+        this.width = width;
+        this.height = height;
+        this.shutterOpen = shutterOpen;
+        this.shutterClose = shutterClose;
+    }
+
+    /**
+     * The context of a scene's top-level objects: placed in world space over the settings'
+     * shutter, inheriting the default material.
+     */
+    static BuildContext of(RenderSettings settings, Camera camera) {
+        double open = settings.shutterOpen(), close = settings.shutterClose();
+        return new BuildContext(Placement.of(Transform.IDENTITY, open, close), Material.DEFAULT,
+                settings.accelerator(), camera, settings.width(), settings.height(), open, close);
+    }
+
+    /**
+     * The context for the children of a container: placed by {@code parentToWorld} and inheriting
+     * {@code inherited} (null: none), with this context's structure kind, camera, film and shutter.
+     */
+    BuildContext within(Placement parentToWorld, Material inherited) {
+        return new BuildContext(parentToWorld, inherited, accelerator, camera, width, height, shutterOpen, shutterClose);
+    }
+
+    /**
+     * The parent's object-to-world mapping: the object's own transform and motion are applied
+     * before it. Its open and close times are the shutter's.
+     */
+    public Placement placement() { return placement; }
+
+    /**
+     * The material the object inherits when it has none of its own: the enclosing CSG node's, or
+     * {@link Material#DEFAULT} at the top; null for an object that is never shaded by itself.
+     */
+    public Material material() { return material; }
+
+    /** The kind of structure an object that indexes its own primitives (a mesh) builds over them. */
+    public AcceleratorKind accelerator() { return accelerator; }
+
+    /** The camera the scene is rendered through. */
+    public Camera camera() { return camera; }
+
+    /** Width of the image in pixels. */
+    public int width() { return width; }
+
+    /** Height of the image in pixels. */
+    public int height() { return height; }
+
+    /** Start of the shutter interval, in the scene's time units (the time a ray may carry). */
+    public double shutterOpen() { return shutterOpen; }
+
+    /** End of the shutter interval, in the scene's time units. */
+    public double shutterClose() { return shutterClose; }
+}
