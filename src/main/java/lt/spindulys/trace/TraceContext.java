@@ -19,7 +19,7 @@ public final class TraceContext extends TraversalScratch {
     /** Range output of bounds tests. */
     public final double[] range = new double[2];
 
-    /** Grow-once scratch for the crossings of a line with a mesh (TriangleMesh spans), and how many are in it. */
+    /** Grow-once scratch for the crossings of a line with a mesh (TriangleSpans), and how many are in it. */
     public double[] crossings = new double[64];
     public int crossingCount;
 
