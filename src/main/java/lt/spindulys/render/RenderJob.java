@@ -301,16 +301,9 @@ public final class RenderJob {
 
     /** Builds {@code b} with these settings and camera, leaving the builder as it was. */
     private static Scene buildWith(SceneBuilder b, RenderSettings s, Camera c) {
-        RenderSettings settingsBefore = b.settings();
-        Camera cameraBefore = b.camera();
-        try {
-            b.settings(s);
-            if (c != null) b.camera(c);
-            return b.build();
-        } finally {
-            b.settings(settingsBefore);
-            if (cameraBefore != null) b.camera(cameraBefore);
-        }
+        SceneBuilder own = b.copy().settings(s);
+        if (c != null) own.camera(c);
+        return own.build();
     }
 
     private void enter(Stage next) {

@@ -45,6 +45,25 @@ public final class SceneBuilder {
     private final Map<String, Material> materials = new LinkedHashMap<>();
     private String frameSource;
 
+    /**
+     * A new builder with everything given to this one so far (settings, camera, lights, objects,
+     * named materials, frame source); later changes to either do not reach the other. The objects
+     * themselves are shared, not copied: building never changes them.
+     *
+     * @return the copy
+     */
+    public SceneBuilder copy() {
+        SceneBuilder c = new SceneBuilder();
+        c.settings = settings;
+        c.camera = camera;
+        c.lights.addAll(lights);
+        c.totalLight = totalLight;
+        c.objects.addAll(objects);
+        c.materials.putAll(materials);
+        c.frameSource = frameSource;
+        return c;
+    }
+
     /** Sets the render settings (film size, sampling, shutter, structure kind, ...); replaces the earlier ones. */
     public SceneBuilder settings(RenderSettings s) { settings = Objects.requireNonNull(s); return this; }
 
