@@ -88,7 +88,11 @@ public final class Bool extends GObject {
         /** Inside the first operand and none of the others. */
         DIFFERENCE;
 
-        /** The scene-language keyword: "union", "intersection" or "difference". */
+        /**
+         * The scene-language keyword: "union", "intersection" or "difference".
+         *
+         * @return the keyword, in lower case as the scene language writes it
+         */
         public String keyword() {
             return switch (this) {
                 case UNION -> "union";
@@ -206,15 +210,27 @@ public final class Bool extends GObject {
         return -1;
     }
 
-    /** The operation. */
+    /**
+     * The operation.
+     *
+     * @return how the operands are combined
+     */
     public Op op() { return op; }
 
     @Override long objectCount() { return objectCount; }
 
-    /** Levels of CSG nesting in this node's tree, counting this one: 1 if no operand is a Bool. */
+    /**
+     * Levels of CSG nesting in this node's tree, counting this one: 1 if no operand is a Bool.
+     *
+     * @return the nesting depth, at least 1
+     */
     public int nesting() { return nesting; }
 
-    /** The operands in the order given (read-only); a frozen Bool's are its own frozen copies. */
+    /**
+     * The operands in the order given (read-only); a frozen Bool's are its own frozen copies.
+     *
+     * @return a read-only list of the operands
+     */
     public List<GObject> operands() { return operandList; }
 
     // ---- builder methods, returning this type (see GObject for what each does) ----

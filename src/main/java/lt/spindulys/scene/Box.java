@@ -32,6 +32,8 @@ public final class Box extends GObject {
     /**
      * The box between two opposite corners, in either order.
      *
+     * @param corner1 one corner (object space)
+     * @param corner2 the opposite corner; it must differ from {@code corner1} in every coordinate
      * @throws IllegalArgumentException if a coordinate is not finite and modest
      */
     public Box(Vec3 corner1, Vec3 corner2) {
@@ -47,9 +49,17 @@ public final class Box extends GObject {
         this.hi = new double[] {hi.x(), hi.y(), hi.z()};
     }
 
-    /** The corner with the smallest coordinates (object space). */
+    /**
+     * The corner with the smallest coordinates (object space).
+     *
+     * @return the lower corner: the smaller of the given corners' coordinates on each axis
+     */
     public Vec3 min() { return min; }
-    /** The corner with the largest coordinates (object space). */
+    /**
+     * The corner with the largest coordinates (object space).
+     *
+     * @return the upper corner: the larger of the given corners' coordinates on each axis
+     */
     public Vec3 max() { return max; }
 
     // ---- builder methods, returning this type (see GObject for what each does) ----

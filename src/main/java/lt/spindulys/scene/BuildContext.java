@@ -61,30 +61,58 @@ public final class BuildContext {
     /**
      * The parent's object-to-world mapping: the object's own transform and motion are applied
      * before it. Its open and close times are the shutter's.
+     *
+     * @return the parent's object-to-world mapping, with the shutter's open and close times
      */
     public Placement placement() { return placement; }
 
     /**
      * The material the object inherits when it has none of its own: the enclosing CSG node's, or
      * {@link Material#DEFAULT} at the top; null for an object that is never shaded by itself.
+     *
+     * @return the inherited material, or null for an object never shaded by itself
      */
     public Material material() { return material; }
 
-    /** The kind of structure an object that indexes its own primitives (a mesh) builds over them. */
+    /**
+     * The kind of structure an object that indexes its own primitives (a mesh) builds over them.
+     *
+     * @return the acceleration structure kind for an object's own primitives
+     */
     public AcceleratorKind accelerator() { return accelerator; }
 
-    /** The camera the scene is rendered through. */
+    /**
+     * The camera the scene is rendered through.
+     *
+     * @return the scene's camera
+     */
     public Camera camera() { return camera; }
 
-    /** Width of the image in pixels. */
+    /**
+     * Width of the image in pixels.
+     *
+     * @return the image width, in pixels
+     */
     public int width() { return width; }
 
-    /** Height of the image in pixels. */
+    /**
+     * Height of the image in pixels.
+     *
+     * @return the image height, in pixels
+     */
     public int height() { return height; }
 
-    /** Start of the shutter interval, in the scene's time units (the time a ray may carry). */
+    /**
+     * Start of the shutter interval, in the scene's time units (the time a ray may carry).
+     *
+     * @return the shutter opening time
+     */
     public double shutterOpen() { return shutterOpen; }
 
-    /** End of the shutter interval, in the scene's time units. */
+    /**
+     * End of the shutter interval, in the scene's time units.
+     *
+     * @return the shutter closing time
+     */
     public double shutterClose() { return shutterClose; }
 }

@@ -50,6 +50,9 @@ public final class Cylinder extends GObject {
     /**
      * The cylinder from the centre of its base cap to the centre of its top cap.
      *
+     * @param base centre of the base cap (object space)
+     * @param top centre of the top cap; must differ from {@code base}
+     * @param radius the radius, positive (object-space units)
      * @throws IllegalArgumentException if the ends coincide, the radius is not positive, or a number is not finite and modest
      */
     public Cylinder(Vec3 base, Vec3 top, double radius) {
@@ -74,19 +77,47 @@ public final class Cylinder extends GObject {
         r2 = radius * radius;
     }
 
-    /** Centre of the base cap (object space). */
+    /**
+     * Centre of the base cap (object space).
+     *
+     * @return the base cap's centre
+     */
     public Vec3 base() { return base; }
-    /** Centre of the top cap (object space). */
+    /**
+     * Centre of the top cap (object space).
+     *
+     * @return the top cap's centre
+     */
     public Vec3 top() { return top; }
-    /** Radius (object-space units). */
+    /**
+     * Radius (object-space units).
+     *
+     * @return the radius, positive
+     */
     public double radius() { return radius; }
-    /** Distance from base to top. */
+    /**
+     * Distance from base to top.
+     *
+     * @return the length of the axis, positive (object-space units)
+     */
     public double height() { return height; }
-    /** Unit axis from base to top (W of the frame). */
+    /**
+     * Unit axis from base to top (W of the frame).
+     *
+     * @return the unit vector from base to top
+     */
     public Vec3 axis() { return axisW; }
-    /** Direction of u = 0 on the side (U of the frame), perpendicular to the axis. */
+    /**
+     * Direction of u = 0 on the side (U of the frame), perpendicular to the axis.
+     *
+     * @return a unit vector perpendicular to the axis
+     */
     public Vec3 axisU() { return axisU; }
-    /** The third frame direction, V = W x U (u = 1/4 on the side). */
+    /**
+     * The third frame direction, V = W x U (u = 1/4 on the side).
+     *
+     * @return the unit vector completing the right-handed frame U, V, W
+     */
     public Vec3 axisV() { return axisV; }
 
     // ---- builder methods, returning this type (see GObject for what each does) ----

@@ -76,6 +76,7 @@ public abstract class GObject implements TracedObject, Cloneable {
     /**
      * Appends {@code t} to this object's placement (applied after the ones already given).
      *
+     * @param t the transform to apply after this object's current one
      * @return this object, for chaining (each shape returns its own type)
      * @throws IllegalStateException if this is a frozen object of a built scene
      */
@@ -85,13 +86,18 @@ public abstract class GObject implements TracedObject, Cloneable {
         return this;
     }
 
-    /** This object's own placement in its parent's space (the identity unless given), without its motion. */
+    /**
+     * This object's own placement in its parent's space (the identity unless given), without its motion.
+     *
+     * @return the object's own transform, the identity if none was given
+     */
     public Transform transform() { return transform; }
 
     /**
      * Gives this object a motion during the shutter, applied after its transform (null: none).
      * An open start or finish of the motion becomes the scene's shutter time when it is built.
      *
+     * @param m the motion, or null for none
      * @return this object, for chaining
      * @throws IllegalStateException if this is a frozen object of a built scene
      */
@@ -101,12 +107,17 @@ public abstract class GObject implements TracedObject, Cloneable {
         return this;
     }
 
-    /** This object's own motion, or null (after freezing, with its times filled in from the shutter). */
+    /**
+     * This object's own motion, or null (after freezing, with its times filled in from the shutter).
+     *
+     * @return the motion, or null if the object has none of its own
+     */
     public Motion motion() { return motion; }
 
     /**
      * Sets this object's material; null inherits the enclosing object's or the scene default.
      *
+     * @param m the material, or null to inherit one
      * @return this object, for chaining
      * @throws IllegalStateException if this is a frozen object of a built scene
      */
@@ -125,6 +136,7 @@ public abstract class GObject implements TracedObject, Cloneable {
     /**
      * Names this object for messages (null: none, then it is named by its {@link #kind()}).
      *
+     * @param n the name, or null for none
      * @return this object, for chaining
      * @throws IllegalStateException if this is a frozen object of a built scene
      */
@@ -134,10 +146,18 @@ public abstract class GObject implements TracedObject, Cloneable {
         return this;
     }
 
-    /** A name for messages: the one given, or the kind of object. */
+    /**
+     * A name for messages: the one given, or the kind of object.
+     *
+     * @return the given name, or {@link #kind()} if none; never null
+     */
     public String name() { return name != null ? name : kind(); }
 
-    /** The kind of object for messages, for example "sphere". */
+    /**
+     * The kind of object for messages, for example "sphere".
+     *
+     * @return a short lower-case noun such as "sphere"; never null
+     */
     public abstract String kind();
 
     /**
@@ -145,6 +165,7 @@ public abstract class GObject implements TracedObject, Cloneable {
      * so that errors found only when the scene is built name that place ({@link SceneBuildException}).
      * Used for messages only; null: none.
      *
+     * @param where the place, such as "scene.dat:12:3", or null for none
      * @return this object, for chaining
      */
     public GObject source(String where) {
@@ -158,6 +179,7 @@ public abstract class GObject implements TracedObject, Cloneable {
      * {@link #source(String)} as "file:line:column" (the scene parser's; "file:line" if the column
      * is 0), kept without making the string until a message needs it.
      *
+     * @param file   the file name, as messages should show it
      * @param line   line number, from 1
      * @param column column number, from 1 (0: none)
      * @return this object, for chaining
@@ -172,7 +194,11 @@ public abstract class GObject implements TracedObject, Cloneable {
         return this;
     }
 
-    /** Where this object was made (see {@link #source(String)}), or null. */
+    /**
+     * Where this object was made (see {@link #source(String)}), or null.
+     *
+     * @return "file:line:column", "file:line" or the string given, or null if none was recorded
+     */
     public String source() {
         if (sourceLine == 0) return source;
         return source + ":" + sourceLine + (sourceColumn > 0 ? ":" + sourceColumn : "");
@@ -201,6 +227,7 @@ public abstract class GObject implements TracedObject, Cloneable {
      * changed in place) by their builder methods; containers copy their children, and objects
      * whose copies must share a cache with them (a mesh's structures) override it.
      *
+     * @return a new unfrozen object, independent of this one for building
      * @throws IllegalStateException if this object is frozen (its description was resolved in place)
      */
     protected GObject copy() {
@@ -270,6 +297,8 @@ public abstract class GObject implements TracedObject, Cloneable {
      * World bounds; the default transforms the object-space bounds' corners. The contract for
      * structures over objects: these bounds must enclose the object at every time of the shutter
      * interval a ray may carry, so an object that moves must return the union over its motion.
+     *
+     * @return world bounds enclosing the object at every time of the shutter interval
      */
     protected Bounds computeWorldBounds() {
         return moving == null ? localBounds().transformed(objectToWorld) : moving.bounds(localBounds());
@@ -279,6 +308,8 @@ public abstract class GObject implements TracedObject, Cloneable {
      * This object's object-to-world mapping inside a parent placed by {@code parentToWorld}: its
      * transform, its motion (open times from the parent's shutter), then the parent's.
      *
+     * @param parentToWorld the parent's object-to-world mapping; its open and close times are the shutter's
+     * @return the mapping from this object's space to world space, static or moving
      * @throws SceneBuildException if composing overflows or makes the transform singular
      */
     protected final Placement placementIn(Placement parentToWorld) {
@@ -292,16 +323,29 @@ public abstract class GObject implements TracedObject, Cloneable {
         }
     }
 
-    /** True if this object moves during the shutter (by its own motion or an enclosing object's); known once frozen. */
+    /**
+     * True if this object moves during the shutter (by its own motion or an enclosing object's); known once frozen.
+     *
+     * @return true if the object moves; false for a static or not yet frozen object
+     */
     public final boolean isMoving() { return moving != null; }
 
-    /** The object-to-world transform at {@code time} (allocates; for tests and tools). Only after freezing. */
+    /**
+     * The object-to-world transform at {@code time} (allocates; for tests and tools). Only after freezing.
+     *
+     * @param time a time in the shutter interval, in the scene's time units (ignored if the object does not move)
+     * @return the object-to-world transform at {@code time}; a new one for a moving object
+     */
     public final Transform objectToWorld(double time) {
         if (!frozen) throw new IllegalStateException(name() + " is not frozen yet");
         return moving == null ? objectToWorld : moving.at(time);
     }
 
-    /** World bounds over the whole shutter interval (see {@link #computeWorldBounds()}); set at freeze. */
+    /**
+     * World bounds over the whole shutter interval (see {@link #computeWorldBounds()}); set at freeze.
+     *
+     * @return the world bounds, or null before the object is frozen
+     */
     public final Bounds bounds() { return worldBounds; }
 
     /**
@@ -327,18 +371,32 @@ public abstract class GObject implements TracedObject, Cloneable {
     /**
      * True for the objects of a built scene ({@link Scene#objects()} and their operands); false
      * for the objects a caller made, which building never freezes.
+     *
+     * @return true for an object of a built scene, which refuses changes
      */
     public final boolean isFrozen() { return frozen; }
 
-    /** Visits the material of this object and of every object inside it (after freezing). */
+    /**
+     * Visits the material of this object and of every object inside it (after freezing).
+     *
+     * @param visitor called with each object's material, once per object (a shared material may come more than once)
+     */
     public void forEachMaterial(java.util.function.Consumer<Material> visitor) {
         visitor.accept(material);
     }
 
-    /** Bounds in the object's own space. */
+    /**
+     * Bounds in the object's own space.
+     *
+     * @return the object-space bounds, before transform and motion
+     */
     public abstract Bounds localBounds();
 
-    /** True if the object bounds a volume (spans and CSG are defined only then). */
+    /**
+     * True if the object bounds a volume (spans and CSG are defined only then).
+     *
+     * @return true if the object has an inside (spans and CSG allowed), false for an open surface
+     */
     public abstract boolean isClosed();
 
     // ---- phase 1: nearest hit ----
@@ -346,6 +404,11 @@ public abstract class GObject implements TracedObject, Cloneable {
     /**
      * Finds the nearest intersection with t in (ray.tMin, ray.tMax). On a hit records it in
      * {@code hit} and returns true; the caller then shrinks ray.tMax to hit.t.
+     *
+     * @param ray world-space ray; only hits with t in (tMin, tMax) count, and tMax is not changed
+     * @param hit receives the hit (t, object, material, ...) when there is one
+     * @param ctx the calling thread's scratch space
+     * @return true if a hit was found and recorded in {@code hit}
      */
     public boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
         Ray local = toLocal(ray, ctx);
@@ -358,7 +421,13 @@ public abstract class GObject implements TracedObject, Cloneable {
         return true;
     }
 
-    /** True if anything blocks the ray in (tMin, tMax); may stop at the first hit found. */
+    /**
+     * True if anything blocks the ray in (tMin, tMax); may stop at the first hit found.
+     *
+     * @param ray world-space ray; the segment (tMin, tMax) is tested
+     * @param ctx the calling thread's scratch space (its scratch hit is overwritten)
+     * @return true if something blocks the segment
+     */
     public boolean occluded(Ray ray, TraceContext ctx) {
         return intersect(ray, ctx.scratchHit.reset(ray.tMax), ctx);
     }
@@ -366,6 +435,10 @@ public abstract class GObject implements TracedObject, Cloneable {
     /**
      * Appends every span inside this (closed) object that overlaps (ray.tMin, ray.tMax), with its
      * true endpoints, in increasing order. Open objects throw.
+     *
+     * @param ray world-space ray
+     * @param out receives the spans, appended after those it holds
+     * @param ctx the calling thread's scratch space
      */
     public void spans(Ray ray, SpanBuffer out, TraceContext ctx) {
         if (!isClosed()) throw new UnsupportedOperationException(name() + " is not closed and has no inside");
@@ -386,6 +459,11 @@ public abstract class GObject implements TracedObject, Cloneable {
     /**
      * As {@link #shade(Ray, Hit, ShadingData)}, with uv and derivatives computed also for an
      * untextured material when {@code parameters} is true (for tools that show them).
+     *
+     * @param ray the ray the hit was found on
+     * @param hit a hit this object recorded on {@code ray}
+     * @param sd filled in with the world-space shading data
+     * @param parameters true to compute uv and derivatives even for an untextured material
      */
     public void shade(Ray ray, Hit hit, ShadingData sd, boolean parameters) {
         sd.p[0] = ray.pointX(hit.t);
@@ -447,10 +525,23 @@ public abstract class GObject implements TracedObject, Cloneable {
 
     // ---- what leaf shapes implement, in object space ----
 
-    /** Nearest hit of an object-space ray; set t, prim, u, v in {@code hit} (object and material are set by the caller). */
+    /**
+     * Nearest hit of an object-space ray; set t, prim, u, v in {@code hit} (object and material are set by the caller).
+     *
+     * @param ray object-space ray; only hits with t in (tMin, tMax) count
+     * @param hit receives t, prim, u and v on a hit
+     * @param ctx the calling thread's scratch space
+     * @return true if the ray hits in (tMin, tMax)
+     */
     protected abstract boolean intersectLocal(Ray ray, Hit hit, TraceContext ctx);
 
-    /** Spans of an object-space ray; only closed shapes are asked. */
+    /**
+     * Spans of an object-space ray; only closed shapes are asked.
+     *
+     * @param ray object-space ray
+     * @param out receives the spans, in increasing order, after those it holds
+     * @param ctx the calling thread's scratch space
+     */
     protected void spansLocal(Ray ray, SpanBuffer out, TraceContext ctx) {
         throw new UnsupportedOperationException(name() + " does not report spans");
     }
@@ -459,12 +550,22 @@ public abstract class GObject implements TracedObject, Cloneable {
      * Shading data in object space at object-space point (x, y, z): normals (outward,
      * unnormalised is fine: they are normalised after transforming), and uv, dpdu, dpdv, which
      * may be skipped when {@link ShadingData#needsParameters} is false.
+     *
+     * @param x object-space x of the hit point
+     * @param y object-space y of the hit point
+     * @param z object-space z of the hit point
+     * @param hit the hit being shaded, with the prim, u and v {@link #intersectLocal} set
+     * @param sd receives the object-space normals and, when needed, uv, dpdu and dpdv
      */
     protected abstract void shadeLocal(double x, double y, double z, Hit hit, ShadingData sd);
 
     /**
      * The ray in object space: the world ray itself when the transform is the identity; for a
      * moving object, mapped by the transform at the ray's time.
+     *
+     * @param ray world-space ray
+     * @param ctx the calling thread's scratch space, whose local ray may be used
+     * @return {@code ray} itself, or the context's local ray (overwritten by the next call)
      */
     protected final Ray toLocal(Ray ray, TraceContext ctx) {
         if (moving != null) {

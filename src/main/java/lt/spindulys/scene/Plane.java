@@ -35,6 +35,8 @@ public final class Plane extends GObject {
     /**
      * The plane of points p with normal.p = offset (normal and offset scaled together to a unit normal).
      *
+     * @param normal the normal, of any non-zero length
+     * @param offset the value of normal.p on the plane, in the scale of the given normal
      * @throws IllegalArgumentException if the normal is zero or a number is not finite and modest
      */
     public Plane(Vec3 normal, double offset) {
@@ -51,13 +53,29 @@ public final class Plane extends GObject {
         tangentV = this.normal.cross(tangentU);
     }
 
-    /** Unit normal. */
+    /**
+     * Unit normal.
+     *
+     * @return the given normal scaled to unit length
+     */
     public Vec3 normal() { return normal; }
-    /** Signed distance of the plane from the origin along the unit normal. */
+    /**
+     * Signed distance of the plane from the origin along the unit normal.
+     *
+     * @return the offset scaled to the unit normal (negative if the origin is on the normal's side)
+     */
     public double offset() { return offset; }
-    /** Unit direction of increasing u (dpdu). */
+    /**
+     * Unit direction of increasing u (dpdu).
+     *
+     * @return the unit tangent along which u grows, perpendicular to the normal
+     */
     public Vec3 tangentU() { return tangentU; }
-    /** Unit direction of increasing v (dpdv); normal() = tangentU() x tangentV(). */
+    /**
+     * Unit direction of increasing v (dpdv); normal() = tangentU() x tangentV().
+     *
+     * @return the unit tangent along which v grows
+     */
     public Vec3 tangentV() { return tangentV; }
 
     // ---- builder methods, returning this type (see GObject for what each does) ----

@@ -87,26 +87,59 @@ public final class Scene {
      */
     static final long BYTES_PER_COPY = 512;
 
-    /** The settings the scene was built with (film size, sampling, shutter, structure kind). */
+    /**
+     * The settings the scene was built with (film size, sampling, shutter, structure kind).
+     *
+     * @return the render settings, never null
+     */
     public RenderSettings settings() { return settings; }
-    /** The camera the scene is rendered through. */
+    /**
+     * The camera the scene is rendered through.
+     *
+     * @return the camera, never null (the default one if the builder had none)
+     */
     public Camera camera() { return camera; }
-    /** The lights, in the order they were added (read-only). */
+    /**
+     * The lights, in the order they were added (read-only).
+     *
+     * @return an unmodifiable list of the lights
+     */
     public List<PointLight> lights() { return lights; }
-    /** The lights as an array for the shading loop; do not modify. */
+    /**
+     * The lights as an array for the shading loop; do not modify.
+     *
+     * @return the lights, in the same order as {@link #lights()}
+     */
     public PointLight[] lightArray() { return lightArray; }
     /**
      * The top-level objects, in the order they were added (read-only): the scene's own frozen
      * copies of the objects given to the builder, with ids, world bounds and resolved materials.
+     *
+     * @return an unmodifiable list of the top-level frozen objects
      */
     public List<GObject> objects() { return objects; }
-    /** Number of object ids assigned (every object, containers and their children included). */
+    /**
+     * Number of object ids assigned (every object, containers and their children included).
+     *
+     * @return the number of ids; every id is below it
+     */
     public int objectIdCount() { return objectIds; }
 
-    /** True if some object transmits light, so shadow rays must look through surfaces. */
+    /**
+     * True if some object transmits light, so shadow rays must look through surfaces.
+     *
+     * @return true if a shadow ray may pass through a surface
+     */
     public boolean hasTransparentObjects() { return transparent; }
 
-    /** Nearest hit along the ray in (tMin, tMax); ray.tMax is left unchanged. */
+    /**
+     * Nearest hit along the ray in (tMin, tMax); ray.tMax is left unchanged.
+     *
+     * @param ray world-space ray; only hits with t in (tMin, tMax) count
+     * @param hit reset, then filled in with the nearest hit if there is one
+     * @param ctx the calling thread's scratch space
+     * @return true if the ray hits something
+     */
     public boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
         hit.reset(ray.tMax);
         double saved = ray.tMax;
@@ -122,7 +155,13 @@ public final class Scene {
         return any;
     }
 
-    /** True if anything blocks the ray in (tMin, tMax). */
+    /**
+     * True if anything blocks the ray in (tMin, tMax).
+     *
+     * @param ray world-space ray; the segment (tMin, tMax) is tested
+     * @param ctx the calling thread's scratch space
+     * @return true if some object blocks the segment
+     */
     public boolean occluded(Ray ray, TraceContext ctx) {
         for (GObject o : unbounded) if (o.occluded(ray, ctx)) return true;
         return accel.occluded(ray, ctx);

@@ -64,24 +64,44 @@ public final class SceneBuilder {
         return c;
     }
 
-    /** Sets the render settings (film size, sampling, shutter, structure kind, ...); replaces the earlier ones. */
+    /**
+     * Sets the render settings (film size, sampling, shutter, structure kind, ...); replaces the earlier ones.
+     *
+     * @param s the settings (not null)
+     * @return this builder, for chaining
+     */
     public SceneBuilder settings(RenderSettings s) { settings = Objects.requireNonNull(s); return this; }
 
-    /** The render settings given so far ({@link RenderSettings#DEFAULT} unless set). */
+    /**
+     * The render settings given so far ({@link RenderSettings#DEFAULT} unless set).
+     *
+     * @return the current settings, never null
+     */
     public RenderSettings settings() { return settings; }
 
-    /** Sets the camera; replaces the earlier one. */
+    /**
+     * Sets the camera; replaces the earlier one.
+     *
+     * @param c the camera (not null)
+     * @return this builder, for chaining
+     */
     public SceneBuilder camera(Camera c) { camera = Objects.requireNonNull(c); return this; }
 
     /** The camera of a scene that gives none: at (0, 0, -5) looking at the origin, 45 degrees. */
     public static final PinholeCamera DEFAULT_CAMERA = new PinholeCamera(new Vec3(0, 0, -5), Vec3.ZERO, Vec3.Y, 45);
 
-    /** The camera given so far, or null (then {@link #build()} uses {@link #DEFAULT_CAMERA}). */
+    /**
+     * The camera given so far, or null (then {@link #build()} uses {@link #DEFAULT_CAMERA}).
+     *
+     * @return the camera given, or null if none was
+     */
     public Camera camera() { return camera; }
 
     /**
      * Adds a light.
      *
+     * @param l the light to add (not null)
+     * @return this builder, for chaining
      * @throws IllegalArgumentException if the lights' total (intensity times largest colour
      *         component, summed) would exceed {@link Ranges#MAX_TOTAL_LIGHT}
      */
@@ -99,20 +119,39 @@ public final class SceneBuilder {
     /** Sum of {@link PointLight#power()} over the lights added so far. */
     private double totalLight;
 
-    /** The lights added so far, in order (read-only view). */
+    /**
+     * The lights added so far, in order (read-only view).
+     *
+     * @return an unmodifiable view of the lights, which follows later additions
+     */
     public List<PointLight> lights() { return Collections.unmodifiableList(lights); }
 
-    /** The top-level objects added so far, in order (read-only view), to inspect before building. */
+    /**
+     * The top-level objects added so far, in order (read-only view), to inspect before building.
+     *
+     * @return an unmodifiable view of the objects, which follows later additions
+     */
     public List<GObject> objects() { return Collections.unmodifiableList(objects); }
 
-    /** Registers a named material for later lookup with {@link #material(String)}. */
+    /**
+     * Registers a named material for later lookup with {@link #material(String)}.
+     *
+     * @param name the name to look the material up by; must not be defined already
+     * @param m the material (not null)
+     * @return this builder, for chaining
+     */
     public SceneBuilder defineMaterial(String name, Material m) {
         if (materials.containsKey(name)) throw new IllegalArgumentException("material '" + name + "' is already defined");
         materials.put(name, Objects.requireNonNull(m));
         return this;
     }
 
-    /** A material defined earlier with {@link #defineMaterial}; throws if there is none of that name. */
+    /**
+     * A material defined earlier with {@link #defineMaterial}; throws if there is none of that name.
+     *
+     * @param name the name the material was defined under
+     * @return the material of that name, never null
+     */
     public Material material(String name) {
         Material m = materials.get(name);
         if (m == null) {
@@ -122,7 +161,12 @@ public final class SceneBuilder {
         return m;
     }
 
-    /** True if a material of this name was defined with {@link #defineMaterial}. */
+    /**
+     * True if a material of this name was defined with {@link #defineMaterial}.
+     *
+     * @param name the material name to look for
+     * @return true if {@link #material(String)} would find it
+     */
     public boolean hasMaterial(String name) { return materials.containsKey(name); }
 
     /**
@@ -130,6 +174,8 @@ public final class SceneBuilder {
      * before a {@link #build()} are in that build's scene. The same object may be added to several
      * builders, or more than once (each time is one more object in the scene).
      *
+     * @param o the object (not null), kept by reference rather than copied
+     * @return this builder, for chaining
      * @throws IllegalArgumentException if {@code o} is an object of a built scene (add the one it was built from)
      */
     public SceneBuilder add(GObject o) {
@@ -145,6 +191,7 @@ public final class SceneBuilder {
      * built before shares its acceleration structure with the new scene instead of building it
      * again.
      *
+     * @return a new immutable scene, independent of this builder
      * @throws IllegalArgumentException if an object cannot be placed (a {@link SceneBuildException}
      *         naming it), the settings are inconsistent, or the scene's objects do not fit in the heap
      */
@@ -157,12 +204,24 @@ public final class SceneBuilder {
      * Records where the frame's size was given, such as "scene.dat:3:14" for the settings key that
      * set it, so that a frame the heap cannot hold is reported there (the size is checked only
      * once every override is known, just before rendering). Used for messages only; null: none.
+     *
+     * @param where the place, such as "scene.dat:3:14", or null for none
+     * @return this builder, for chaining
      */
     public SceneBuilder frameSource(String where) { frameSource = where; return this; }
 
-    /** Where the frame's size was given (see {@link #frameSource(String)}), or null. */
+    /**
+     * Where the frame's size was given (see {@link #frameSource(String)}), or null.
+     *
+     * @return the place recorded, or null
+     */
     public String frameSource() { return frameSource; }
 
-    /** Convenience for code: the ambient light intensity. */
+    /**
+     * Convenience for code: the ambient light intensity.
+     *
+     * @param c the ambient light colour, replacing the settings' ambient
+     * @return this builder, for chaining
+     */
     public SceneBuilder ambient(Color c) { settings = settings.toBuilder().ambient(c).build(); return this; }
 }

@@ -35,6 +35,8 @@ public final class Sphere extends GObject {
     /**
      * The sphere of {@code radius} about {@code center} (object space).
      *
+     * @param center the centre (object space)
+     * @param radius the radius, positive (object-space units)
      * @throws IllegalArgumentException if the radius is not positive or a number is not finite and modest
      */
     public Sphere(Vec3 center, double radius) {
@@ -48,9 +50,17 @@ public final class Sphere extends GObject {
         this.r2 = radius * radius;
     }
 
-    /** Centre (object space). */
+    /**
+     * Centre (object space).
+     *
+     * @return the centre, as given
+     */
     public Vec3 center() { return center; }
-    /** Radius (object-space units). */
+    /**
+     * Radius (object-space units).
+     *
+     * @return the radius, positive
+     */
     public double radius() { return radius; }
 
     // ---- builder methods, returning this type (see GObject for what each does) ----

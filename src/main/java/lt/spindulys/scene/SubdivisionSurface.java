@@ -40,7 +40,12 @@ public final class SubdivisionSurface extends GObject {
     private final RefinedMesh refined;
     private final TriangleMesh mesh;
 
-    /** The surface at {@code level} with smooth shading. */
+    /**
+     * The surface at {@code level} with smooth shading.
+     *
+     * @param control the control mesh to refine
+     * @param level times to refine, 0 to {@link #MAX_LEVEL}
+     */
     public SubdivisionSurface(ControlMesh control, int level) {
         this(control, level, true);
     }
@@ -48,6 +53,8 @@ public final class SubdivisionSurface extends GObject {
     /**
      * Refines {@code control} {@code level} times and builds the triangles.
      *
+     * @param control the control mesh to refine
+     * @param level times to refine, 0 to {@link #MAX_LEVEL}
      * @param smooth limit normals interpolated (true) or flat facets
      * @throws IllegalArgumentException if the level is not between 0 and {@link #MAX_LEVEL}
      */
@@ -73,12 +80,18 @@ public final class SubdivisionSurface extends GObject {
      * Another placement of this surface: a new object with its own transform, material and name
      * that shares the refined mesh, its triangles and its acceleration structure (refined and
      * built once).
+     *
+     * @return a new unfrozen surface sharing this one's refinement and structures
      */
     public SubdivisionSurface instance() {
         return new SubdivisionSurface(this, mesh.instance());
     }
 
-    /** True if this surface shares another's refinement ({@link #instance()}; a scene's copy answers as its original). */
+    /**
+     * True if this surface shares another's refinement ({@link #instance()}; a scene's copy answers as its original).
+     *
+     * @return true for an instance; false for the surface that refined the mesh
+     */
     public boolean isInstance() { return mesh.isInstance(); }
 
     /**
@@ -111,6 +124,8 @@ public final class SubdivisionSurface extends GObject {
     /**
      * Refuses a level outside 0..{@link #MAX_LEVEL}; returns it otherwise.
      *
+     * @param level the subdivision level to check
+     * @return {@code level}, unchanged
      * @throws IllegalArgumentException "subdivision level must be between 0 and 8, found 9"
      */
     public static int checkLevel(int level) {
@@ -130,7 +145,9 @@ public final class SubdivisionSurface extends GObject {
      * {@link #checkLevel(int)}, and refuses a level that would make more than {@link #MAX_FACES}
      * faces, before any memory is spent on them.
      *
+     * @param level the subdivision level to check
      * @param refinedFaces the faces the control mesh has after {@code level} refinements
+     * @return {@code level}, unchanged
      */
     public static int checkLevel(int level, long refinedFaces) {
         return checkLevel(level, refinedFaces, BYTES_PER_FACE);
@@ -150,6 +167,10 @@ public final class SubdivisionSurface extends GObject {
      * level whose {@code refinedFaces * bytesPerFace} the heap cannot give now, with a message that
      * says how much it needs and how much is free.
      *
+     * @param level the subdivision level to check
+     * @param refinedFaces the faces the control mesh has after {@code level} refinements
+     * @param bytesPerFace heap needed per refined face while building, in bytes ({@link #BYTES_PER_FACE} for a surface)
+     * @return {@code level}, unchanged
      * @throws IllegalArgumentException (an {@link InsufficientMemoryException} when it is the heap)
      */
     public static int checkLevel(int level, long refinedFaces, long bytesPerFace) {
@@ -336,6 +357,8 @@ public final class SubdivisionSurface extends GObject {
      * but the refined triangles are still open (faces that collapse to nothing), the triangles'
      * count ({@link TriangleMesh#boundaryEdgeCount()}) is returned instead, so an open surface
      * never reports 0.
+     *
+     * @return the number of boundary edges; 0 only when the surface is closed
      */
     public int boundaryEdgeCount() {
         RefinedMesh base = level == 0 ? refined : CatmullClark.refine(refined.controlMesh(), 0);
@@ -352,13 +375,29 @@ public final class SubdivisionSurface extends GObject {
         return count == 0 && !mesh.isClosed() ? mesh.boundaryEdgeCount() : count;
     }
 
-    /** Times the control mesh was refined (0 to {@link #MAX_LEVEL}). */
+    /**
+     * Times the control mesh was refined (0 to {@link #MAX_LEVEL}).
+     *
+     * @return the subdivision level, 0 to {@link #MAX_LEVEL}
+     */
     public int level() { return level; }
-    /** True if shading interpolates the limit normals, false for flat facets. */
+    /**
+     * True if shading interpolates the limit normals, false for flat facets.
+     *
+     * @return true for smooth shading, false for flat facets
+     */
     public boolean isSmooth() { return smooth; }
-    /** The refined mesh the triangles come from (holes included). */
+    /**
+     * The refined mesh the triangles come from (holes included).
+     *
+     * @return the refined mesh, shared with instances
+     */
     public RefinedMesh refined() { return refined; }
-    /** Triangles rendered: two per refined quad, holes left out. */
+    /**
+     * Triangles rendered: two per refined quad, holes left out.
+     *
+     * @return the number of triangles rendered
+     */
     public int triangleCount() { return mesh.triangleCount(); }
 
     // ---- GObject: everything through the triangle mesh ----

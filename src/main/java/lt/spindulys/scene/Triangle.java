@@ -35,6 +35,9 @@ public final class Triangle extends GObject {
     /**
      * The triangle abc; counter-clockwise seen from the side its normal points to.
      *
+     * @param a first vertex (object space)
+     * @param b second vertex
+     * @param c third vertex
      * @throws IllegalArgumentException if it has zero area or a coordinate is not finite and modest
      */
     public Triangle(Vec3 a, Vec3 b, Vec3 c) {
@@ -46,14 +49,33 @@ public final class Triangle extends GObject {
         e2x = c.x() - ax; e2y = c.y() - ay; e2z = c.z() - az;
     }
 
-    /** First vertex (object space). */
+    /**
+     * First vertex (object space).
+     *
+     * @return the first vertex, as given
+     */
     public Vec3 a() { return a; }
-    /** Second vertex (object space). */
+    /**
+     * Second vertex (object space).
+     *
+     * @return the second vertex, as given
+     */
     public Vec3 b() { return b; }
-    /** Third vertex (object space). */
+    /**
+     * Third vertex (object space).
+     *
+     * @return the third vertex, as given
+     */
     public Vec3 c() { return c; }
 
-    /** Sets per-vertex shading normals (normalised here); each must be finite and non-zero. */
+    /**
+     * Sets per-vertex shading normals (normalised here); each must be finite and non-zero.
+     *
+     * @param na shading normal at a, any non-zero length
+     * @param nb shading normal at b, any non-zero length
+     * @param nc shading normal at c, any non-zero length
+     * @return this triangle, for chaining
+     */
     public Triangle normals(Vec3 na, Vec3 nb, Vec3 nc) {
         checkMutable();
         Vec3[] ns = {na, nb, nc};
@@ -70,7 +92,17 @@ public final class Triangle extends GObject {
         return this;
     }
 
-    /** Sets per-vertex texture coordinates (u0, v0) at a, (u1, v1) at b, (u2, v2) at c; all finite. */
+    /**
+     * Sets per-vertex texture coordinates (u0, v0) at a, (u1, v1) at b, (u2, v2) at c; all finite.
+     *
+     * @param u0 u at a
+     * @param v0 v at a
+     * @param u1 u at b
+     * @param v1 v at b
+     * @param u2 u at c
+     * @param v2 v at c
+     * @return this triangle, for chaining
+     */
     public Triangle uvs(double u0, double v0, double u1, double v1, double u2, double v2) {
         checkMutable();
         double[] out = {u0, v0, u1, v1, u2, v2};
@@ -81,9 +113,17 @@ public final class Triangle extends GObject {
         return this;
     }
 
-    /** True if vertex normals were given. */
+    /**
+     * True if vertex normals were given.
+     *
+     * @return true if {@link #normals} was called
+     */
     public boolean hasNormals() { return normals != null; }
-    /** True if vertex texture coordinates were given. */
+    /**
+     * True if vertex texture coordinates were given.
+     *
+     * @return true if {@link #uvs} was called
+     */
     public boolean hasUvs() { return uvs != null; }
 
     // ---- builder methods, returning this type (see GObject for what each does) ----

@@ -93,6 +93,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
      * Triangulates and indexes {@code data}. Shading is smooth when the data has normals, flat
      * otherwise; see {@link #smooth(boolean)}.
      *
+     * @param data the positions, faces and optional normals and texture coordinates
      * @throws IllegalArgumentException if the arrays are inconsistent, an index is out of range or a position is not finite
      */
     public TriangleMesh(MeshData data) {
@@ -185,6 +186,8 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
      * name and shading that shares this mesh's triangles, vertex data and acceleration structure
      * (built once, in object space, by whichever of them is frozen first). Instances of an
      * instance share the same original.
+     *
+     * @return a new unfrozen mesh sharing this one's geometry
      */
     public TriangleMesh instance() {
         return new TriangleMesh(root(), true);
@@ -209,6 +212,8 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     /**
      * True if this mesh shares another mesh's geometry ({@link #instance()}). A scene's frozen copy
      * answers as the object it was made from, so that each geometry has one mesh that is not an instance.
+     *
+     * @return true for an instance; false for the mesh that owns the geometry
      */
     public boolean isInstance() { return instance; }
 
@@ -246,6 +251,9 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     /**
      * Smooth shading interpolates normals (the file's where a triangle has them, otherwise
      * area-weighted vertex normals); flat shading uses each triangle's geometric normal.
+     *
+     * @param on true for smooth shading, false for flat
+     * @return this mesh, for chaining
      */
     public TriangleMesh smooth(boolean on) {
         checkMutable();
@@ -253,15 +261,25 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         return this;
     }
 
-    /** True if shading interpolates normals (see {@link #smooth(boolean)}). */
+    /**
+     * True if shading interpolates normals (see {@link #smooth(boolean)}).
+     *
+     * @return true for smooth shading, false for flat
+     */
     public boolean isSmooth() { return smooth; }
-    /** True if the source gave normals (some triangles may still lack them). */
+    /**
+     * True if the source gave normals (some triangles may still lack them).
+     *
+     * @return true if the mesh data has normals
+     */
     public boolean hasNormals() { return normals != null; }
     /** The structure rays are traced through, once frozen (shared with instances); null before. */
     Accelerator accelerator() { return accel; }
     /**
      * The mesh as triangles (degenerate ones dropped), sharing this mesh's arrays: positions,
      * normals and texture coordinates as given, one face of three corners per triangle.
+     *
+     * @return a triangles-only view of the mesh, sharing its arrays (do not modify them)
      */
     public MeshData data() {
         int[] sizes = new int[triangleCount];
@@ -269,9 +287,17 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         // The owner's positions: an unfrozen instance's may predate the renumbering (reorder).
         return new MeshData(root().pos, normals, uvs, sizes, tri, triNormal, triUv, source);
     }
-    /** Triangles of area above zero, the ones rendered. */
+    /**
+     * Triangles of area above zero, the ones rendered.
+     *
+     * @return the number of triangles rendered
+     */
     public int triangleCount() { return triangleCount; }
-    /** Triangles dropped because their area is zero. */
+    /**
+     * Triangles dropped because their area is zero.
+     *
+     * @return the number of zero-area triangles dropped
+     */
     public int degenerateCount() { return degenerateCount; }
 
     /**
@@ -279,6 +305,8 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
      * per-corner indices, vertex normals) and the acceleration structures built over it (one per
      * kind a scene asked for); array headers and the few fixed fields are left out. An
      * {@link #isInstance() instance} holds none of its own: 0.
+     *
+     * @return the bytes held, 0 for an instance
      */
     public long memoryBytes() {
         if (instance) return 0;
@@ -293,7 +321,13 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     private static long bytes(double[] a) { return a == null ? 0 : 8L * a.length; }
     private static long bytes(int[] a) { return a == null ? 0 : 4L * a.length; }
 
-    /** Position index of corner {@code corner} (0..2) of triangle {@code t}. */
+    /**
+     * Position index of corner {@code corner} (0..2) of triangle {@code t}.
+     *
+     * @param t triangle index, 0 to {@link #triangleCount()} - 1
+     * @param corner corner index, 0, 1 or 2
+     * @return the index of the corner's position (a vertex index)
+     */
     public int triangleVertex(int t, int corner) { return tri[3 * t + corner]; }
 
     private double[] computeVertexNormals() {
@@ -315,6 +349,8 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
      * Edges used by exactly one triangle, vertices merged by position as for {@link #isClosed()}:
      * the edges along the holes of an open mesh (0 for a closed one; an edge shared by three or
      * more triangles also keeps a mesh from being closed but is not a boundary edge).
+     *
+     * @return the number of boundary edges, 0 for a closed mesh
      */
     public int boundaryEdgeCount() {
         return MeshTopology.boundaryEdgeCount(tri, triangleCount, root().pos); // the owner's: an unfrozen instance's may predate the renumbering
