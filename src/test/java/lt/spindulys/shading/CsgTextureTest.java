@@ -53,8 +53,14 @@ class CsgTextureTest {
 
     /** Shades the hit of the ray that reaches block-space point p from block-space direction -z. */
     private static Shaded shade(Scene scene, Transform blockToWorld, Vec3 p) {
+        return shade(scene, blockToWorld, p, new Ray().time);
+    }
+
+    /** {@link #shade(Scene, Transform, Vec3)} with a ray at {@code time} (blockToWorld: the block's placement then). */
+    private static Shaded shade(Scene scene, Transform blockToWorld, Vec3 p, double time) {
         Vec3 o = blockToWorld.point(p.plus(new Vec3(0, 0, -5))), d = blockToWorld.vector(Vec3.Z);
         Ray ray = new Ray(o, d);
+        ray.time = time;
         TracerScratch s = new TracerScratch(8);
         Hit hit = new Hit();
         assertTrue(scene.intersect(ray, hit, s.ctx));
@@ -144,17 +150,8 @@ class CsgTextureTest {
         Scene scene = new SceneBuilder().add(union).build();
         Transform atHalf = scene.objects().get(0).objectToWorld(0.5);
         Vec3 p = new Vec3(1e-6, -0.4, -1);
-        Vec3 o = atHalf.point(p.plus(new Vec3(0, 0, -5))), d = atHalf.vector(Vec3.Z);
-        Ray ray = new Ray(o, d);
-        ray.time = 0.5;
-        TracerScratch s = new TracerScratch(8);
-        Hit hit = new Hit();
-        assertTrue(scene.intersect(ray, hit, s.ctx));
-        ShadingData sd = new ShadingData();
-        hit.object.shade(ray, hit, sd);
-        TracerScratch.PathVertex v = s.path[0];
-        TextureShading.evaluate(sd.material, sd, 0, s, v);
-        assertSame(((Bool) scene.objects().get(0)).operands().get(1), hit.object);
-        assertRgb(new double[] {p.x(), p.y(), p.z()}, new double[] {v.colourR, v.colourG, v.colourB}, "moving block");
+        Shaded h = shade(scene, atHalf, p, 0.5);
+        assertSame(((Bool) scene.objects().get(0)).operands().get(1), h.object());
+        assertRgb(new double[] {p.x(), p.y(), p.z()}, h.rgb(), "moving block");
     }
 }
