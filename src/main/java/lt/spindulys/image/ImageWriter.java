@@ -181,6 +181,18 @@ public final class ImageWriter {
      */
     public static void checkOutputs(Path out, Set<Aov> aovs) throws IOException {
         checkOutput(out);
+        checkPassOutputs(out, aovs);
+    }
+
+    /**
+     * The check of {@link #checkOutputs} for the passes' files alone, for a caller that has
+     * already checked {@code out} itself. Leaves nothing.
+     *
+     * @param out the main output path
+     * @param aovs the passes to be written beside it
+     * @throws IOException if one of the files could not be written
+     */
+    public static void checkPassOutputs(Path out, Set<Aov> aovs) throws IOException {
         for (Aov a : aovs) AtomicFile.checkWritable(a.fileBeside(out));
     }
 

@@ -278,7 +278,7 @@ public final class RenderJob {
                     .checkTimeSteps();
             // The frame is asked for by input: checked before anything is built for it.
             FrameBuffer.checkHeap(s.width(), s.height(), s.aovs());
-            if (output != null && !s.aovs().isEmpty()) ImageWriter.checkOutputs(output, s.aovs());
+            if (output != null) ImageWriter.checkPassOutputs(output, s.aovs()); // the image itself was checked first
             Camera c = cameraOverride == null ? b.camera()
                     : cameraOverride.apply(b.camera() != null ? b.camera() : SceneBuilder.DEFAULT_CAMERA);
             enter(Stage.BUILD);
@@ -287,7 +287,7 @@ public final class RenderJob {
         } else {
             enter(Stage.SETTINGS);
             RenderSettings s = built.settings();
-            if (output != null && !s.aovs().isEmpty()) ImageWriter.checkOutputs(output, s.aovs());
+            if (output != null) ImageWriter.checkPassOutputs(output, s.aovs()); // the image itself was checked first
         }
         enter(Stage.RENDER);
         RenderResult result = Renderer.render(built, threads, progress, cancelled).withTimes(load, build);
