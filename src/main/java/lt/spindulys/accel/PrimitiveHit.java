@@ -13,4 +13,9 @@ public class PrimitiveHit {
     public int prim;
     /** Primitive-local parameters. */
     public double u, v;
+    /**
+     * A part of the primitive, for a set whose primitives have parts: the triangle within a lazily
+     * refined patch (the patch being the primitive). Sets without parts leave it alone.
+     */
+    public int sub;
 }

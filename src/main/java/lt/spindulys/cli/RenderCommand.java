@@ -11,6 +11,7 @@ import java.util.Locale;
 import java.util.Set;
 
 import lt.spindulys.scene.AcceleratorKind;
+import lt.spindulys.scene.AdaptiveSettings;
 import lt.spindulys.camera.Camera;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.camera.ThinLensCamera;
@@ -38,6 +39,7 @@ final class RenderCommand {
     static final String USAGE = """
             usage: render SCENE.dat [-o OUT] [--width W] [--height H] [--spp N] [--aperture R] [--focus D]
                                     [--threads N] [--seed S] [--accel A] [--aov LIST] [--shutter OPEN,CLOSE] [--timesteps N]
+                                    [--subdiv-target PX] [--subdiv-memory MIB] [--subdiv-cache MIB]
                                     [--quality Q] [--stats] [--quiet] [--debug]
                    render subdivide MESH.obj|MESH.dat --level N -o OUT.obj [...]   (see render subdivide --help)
                    render bench [--only NAME] [--runs N] [--accel A] [--list]      (see render bench --help)
@@ -58,8 +60,12 @@ final class RenderCommand {
               --shutter OPEN,CLOSE  shutter interval of the motion blur, e.g. 0,1 (overrides the scene)
               --timesteps N      1: one pass, every sample at its own time (default); N > 1: the thesis's
                                  method, N whole-frame passes at fixed times averaged (spp must be a multiple of N)
+              --subdiv-target PX target edge length in pixels of every adaptive subdiv (overrides the scene's)
+              --subdiv-memory MIB  heap for adaptive subdivision, eager and cached together (0: automatic)
+              --subdiv-cache MIB the lazy patches' cache, part of the subdivision memory (default 64)
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
-              --stats            print load, build and render times, rays by kind, Mrays/s, peak heap
+              --stats            print load, build and render times, rays by kind, Mrays/s, peak heap,
+                                 and per adaptive subdiv its levels, patches, cache hits and misses
               --quiet            no progress bar, and no closing 'wrote OUT (WxH, N spp) in T s' line
               --debug            stack traces on errors
             Exit status: 0 success, 2 bad usage or bad input, 1 failure while rendering or writing.""";
@@ -72,6 +78,7 @@ final class RenderCommand {
     private Set<Aov> aovs;
     private double[] shutter;
     private Integer timeSteps;
+    private Double subdivTarget, subdivMemory, subdivCache;
     private double quality = ImageOptions.DEFAULT.jpegQuality();
     private boolean stats, quiet;
 
@@ -106,6 +113,9 @@ final class RenderCommand {
                 case "--shutter" -> shutter = shutterValue(args, ++i, a);
                 case "--timesteps" -> timeSteps = intValue(args, ++i, a, 1, 65536);
                 case "--quality" -> quality = doubleValue(args, ++i, a, 0, 1);
+                case "--subdiv-target" -> subdivTarget = doubleValue(args, ++i, a, AdaptiveSettings.MIN_TARGET, AdaptiveSettings.MAX_TARGET);
+                case "--subdiv-memory" -> subdivMemory = doubleValue(args, ++i, a, 0, AdaptiveSettings.MAX_BYTES >> 20);
+                case "--subdiv-cache" -> subdivCache = doubleValue(args, ++i, a, 1.0 / (1 << 20), AdaptiveSettings.MAX_BYTES >> 20);
                 case "--stats" -> stats = true;
                 case "--quiet", "-q" -> quiet = true;
                 default -> {
@@ -185,7 +195,10 @@ final class RenderCommand {
         }
         // On stderr with the progress bar it replaces: stdout carries only what was asked for (--stats).
         if (!quiet) err.println(MessageText.escape(doneLine(output, result.settings(), (System.nanoTime() - t0) / 1e9)));
-        if (stats) printStats(out, result.loadSeconds() - warmup[0], warmup[0], result.buildSeconds(), result.settings().accelerator(), result.stats(), n);
+        if (stats) {
+            printStats(out, result.loadSeconds() - warmup[0], warmup[0], result.buildSeconds(), result.settings().accelerator(), result.stats(), n);
+            for (String line : result.subdivisionStatistics()) out.println(MessageText.escape(line));
+        }
         return 0;
     }
 
@@ -207,6 +220,17 @@ final class RenderCommand {
         if (aovs != null) o.aovs(aovs);
         if (shutter != null) o.shutter(shutter[0], shutter[1]);
         if (timeSteps != null) o.timeSteps(timeSteps);
+        if (subdivTarget != null || subdivMemory != null || subdivCache != null) {
+            AdaptiveSettings a = s.adaptive();
+            try {
+                if (subdivMemory != null) a = a.withMemory((long) (subdivMemory * (1 << 20)));
+                if (subdivCache != null) a = a.withCache((long) (subdivCache * (1 << 20)));
+            } catch (IllegalArgumentException e) {
+                throw new UncheckedUsage(new UsageException("--subdiv-memory/--subdiv-cache: " + e.getMessage()));
+            }
+            if (subdivTarget != null) a = a.withTarget(subdivTarget);
+            o.adaptive(a);
+        }
         s = o.build();
         if (spp != null || timeSteps != null) {
             try {

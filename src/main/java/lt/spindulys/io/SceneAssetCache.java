@@ -12,7 +12,10 @@ import lt.spindulys.io.SceneLexer.Token;
 import lt.spindulys.limits.InputFiles;
 import lt.spindulys.limits.MessageText;
 import lt.spindulys.mesh.MeshData;
+import lt.spindulys.scene.AdaptiveSubdivisionSurface;
+import lt.spindulys.scene.GObject;
 import lt.spindulys.scene.SubdivisionSurface;
+import lt.spindulys.limits.InsufficientMemoryException;
 import lt.spindulys.scene.TriangleMesh;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.SubdivInput;
@@ -36,6 +39,8 @@ final class SceneAssetCache {
     private final Map<Path, TriangleMesh> meshes = new HashMap<>();
     /** Likewise for subdivision surfaces, by everything that decides the refined surface. */
     private final Map<SubdivKey, SubdivisionSurface> surfaces = new HashMap<>();
+    /** Adaptive surfaces by control mesh and scheme (level -1): later statements share the first one's refiner. */
+    private final Map<SubdivKey, AdaptiveSubdivisionSurface> adaptiveSurfaces = new HashMap<>();
 
     /** @param baseDir the absolute folder against which relative file names are resolved */
     SceneAssetCache(SceneErrors err, Path baseDir) {
@@ -102,9 +107,12 @@ final class SceneAssetCache {
 
     /**
      * A subdivision surface: the control mesh from an OBJ (with its tags) or a Workframe .dat
-     * file, an optional .tex unwrap as its UVs, the block's scheme keys over the file's options.
+     * file, an optional .tex unwrap as its UVs, the block's scheme keys over the file's options,
+     * refined uniformly ({@code method uniform}, the default) or adaptively. A uniform level whose
+     * refinement would not fit in the heap is not refused: the combined method renders it at the
+     * same level within the scene's memory budget.
      */
-    SubdivisionSurface surface(Props p) {
+    GObject surface(Props p) {
         Prop levelProp = p.prop("level");
         int level = (Integer) p.get("level");
         Token levelAt = levelProp != null ? levelProp.at() : p.opener;
@@ -113,25 +121,92 @@ final class SceneAssetCache {
         } catch (IllegalArgumentException e) {
             throw err.wrap(levelAt, e);
         }
+        String method = (String) p.get("method");
+        Prop target = p.prop("target"), levels = p.prop("levels"), maxLevel = p.prop("maxlevel");
+        if (method.equals("uniform")) {
+            for (Prop adaptiveOnly : new Prop[] {target, levels, maxLevel}) {
+                if (adaptiveOnly != null) {
+                    throw err.error(adaptiveOnly.at(), "'" + adaptiveOnly.key().name() + "' needs an adaptive method (method projected, lazy or combined)");
+                }
+            }
+        } else if (levelProp != null && (target != null || levels != null)) {
+            Prop other = target != null ? target : levels;
+            throw err.error(other.at(), "'" + other.key().name() + "' chooses levels from the view, but 'level' fixes one; give one of them");
+        }
         Prop f = p.prop("file");
         String rel = (String) f.value();
         Path path = existingFile(f, "subdivision mesh file");
         Prop uvProp = p.prop("uv");
+        boolean smooth = "smooth".equals(p.get("shading"));
         SubdivKey key = new SubdivKey(path, uvProp != null ? existingFile(uvProp, "unwrap file") : null, level,
-                "smooth".equals(p.get("shading")), (String) p.get("boundary"), (String) p.get("uvinterpolation"),
+                smooth, (String) p.get("boundary"), (String) p.get("uvinterpolation"),
                 (String) p.get("creasing"), (String) p.get("triangles"));
-        SubdivisionSurface same = surfaces.get(key);
-        if (same != null) return same.instance(); // the same surface again: refined once, placed twice
-        SubdivisionSurface made = refineSurface(p, f, rel, path, levelAt, level);
-        surfaces.put(key, made);
-        return made;
+        if (method.equals("uniform")) {
+            SubdivisionSurface same = surfaces.get(key);
+            if (same != null) return same.instance(); // the same surface again: refined once, placed twice
+            SubdivInput input = readSurface(p, f, rel, path);
+            try {
+                SubdivisionSurface.checkLevel(level, input.refinedFaceCount(level));
+            } catch (IllegalArgumentException e) {
+                if (!(e instanceof InsufficientMemoryException) && input.refinedFaceCount(level) <= SubdivisionSurface.MAX_FACES) throw err.wrap(levelAt, e);
+                // Too large to refine whole: the combined method gives the same triangles within the budget.
+                return adaptive(p, f, key, input, AdaptiveSubdivisionSurface.Method.COMBINED, level, null, null, null, smooth);
+            }
+            try {
+                SubdivisionSurface made = new SubdivisionSurface(input.toControlMesh(), level, smooth);
+                surfaces.put(key, made);
+                return made;
+            } catch (IllegalArgumentException e) {
+                throw err.wrap(f.valueAt(), e);
+            }
+        }
+        AdaptiveSubdivisionSurface.Method m = switch (method) {
+            case "projected" -> AdaptiveSubdivisionSurface.Method.PROJECTED;
+            case "lazy" -> AdaptiveSubdivisionSurface.Method.LAZY;
+            case "combined" -> AdaptiveSubdivisionSurface.Method.COMBINED;
+            default -> throw new IllegalStateException("method choice without a mapping: " + method);
+        };
+        return adaptive(p, f, key, null, m, levelProp != null ? level : -1, target, levels, maxLevel, smooth);
+    }
+
+    /** An adaptive surface; statements naming the same control mesh and scheme share its refiner. */
+    private GObject adaptive(Props p, Prop f, SubdivKey key, SubdivInput read, AdaptiveSubdivisionSurface.Method method, int level,
+                             Prop target, Prop levels, Prop maxLevel, boolean smooth) {
+        SubdivKey shared = new SubdivKey(key.file(), key.uv(), -1, key.smooth(), key.boundary(), key.uvinterpolation(), key.creasing(), key.triangles());
+        AdaptiveSubdivisionSurface first = adaptiveSurfaces.get(shared);
+        AdaptiveSubdivisionSurface s;
+        if (first != null) {
+            s = first.sibling(method);
+        } else {
+            SubdivInput input = read != null ? read : readSurface(p, f, (String) f.value(), key.file());
+            try {
+                s = new AdaptiveSubdivisionSurface(input.toControlMesh(), method, smooth);
+            } catch (IllegalArgumentException e) {
+                throw err.wrap(f.valueAt(), e);
+            }
+            adaptiveSurfaces.put(shared, s);
+        }
+        s.level(level);
+        try {
+            if (target != null) s.target((Double) target.value());
+        } catch (IllegalArgumentException e) {
+            throw err.wrap(target.at(), e);
+        }
+        if (levels != null) s.levels("object".equals(levels.value()) ? AdaptiveSubdivisionSurface.Levels.OBJECT : AdaptiveSubdivisionSurface.Levels.EDGE);
+        try {
+            if (maxLevel != null) s.maxLevel((Integer) maxLevel.value());
+        } catch (IllegalArgumentException e) {
+            throw err.wrap(maxLevel.at(), e);
+        }
+        return s;
     }
 
     /** What makes two subdiv statements the same surface: file, unwrap, level, shading and scheme words. */
     private record SubdivKey(Path file, Path uv, int level, boolean smooth, String boundary, String uvinterpolation,
                              String creasing, String triangles) {}
 
-    private SubdivisionSurface refineSurface(Props p, Prop f, String rel, Path path, Token levelAt, int level) {
+    /** The control mesh of a subdiv block, with its unwrap and the block's scheme keys. */
+    private SubdivInput readSurface(Props p, Prop f, String rel, Path path) {
         String ext = extension(rel);
         if (!ext.equals("obj") && !ext.equals("dat")) {
             throw err.error(f.valueAt(), "subdivision mesh file " + MessageText.quote(rel) + " must be a Wavefront .obj or a Workframe .dat file");
@@ -151,18 +226,7 @@ final class SceneAssetCache {
                 throw err.error(uv.valueAt(), "cannot read unwrap file " + MessageText.quote((String) uv.value()) + ": " + e.getMessage());
             }
         }
-        input = input.withOptions(options(p, input.options()));
-        try {
-            SubdivisionSurface.checkLevel(level, input.refinedFaceCount(level));
-        } catch (IllegalArgumentException e) {
-            throw err.wrap(levelAt, e);
-        }
-        try {
-            ControlMesh control = input.toControlMesh();
-            return new SubdivisionSurface(control, level, "smooth".equals(p.get("shading")));
-        } catch (IllegalArgumentException e) {
-            throw err.wrap(f.valueAt(), e);
-        }
+        return input.withOptions(options(p, input.options()));
     }
 
     /** The file's options with the block's scheme keys, where given, in their place. */

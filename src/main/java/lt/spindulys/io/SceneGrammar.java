@@ -138,7 +138,11 @@ final class SceneGrammar {
             choice("accelerator", null, "bvh", "bvh2", "octree", "bruteforce"),
             new Key("aov", Kind.CHOICES, false, false, null, Aov.keywords()),
             opt("shutter", Kind.INTERVAL),
-            opt("timesteps", Kind.INTEGER)));
+            opt("timesteps", Kind.INTEGER),
+            opt("subdivmemory", Kind.NUMBER),
+            opt("subdivcache", Kind.NUMBER),
+            choice("subdivpolicy", null, "lru", "last-two"),
+            opt("subdivtarget", Kind.NUMBER)));
 
     // A thin lens when any of the lens keys is given, else a pinhole. 'focus' and 'focuspoint'
     // exclude each other (checked by the parser); without either the look-at point is in focus.
@@ -246,6 +250,10 @@ final class SceneGrammar {
     static final Block SUBDIV = solid("subdiv",
             req("file", Kind.STRING),
             opt("level", Kind.INTEGER, 3),
+            choice("method", "uniform", "uniform", "projected", "lazy", "combined"),
+            opt("target", Kind.NUMBER),
+            choice("levels", "edge", "edge", "object"),
+            opt("maxlevel", Kind.INTEGER),
             choice("boundary", null, "edge-only", "edge-and-corner", "none"),
             choice("uvinterpolation", null, "none", "corners-only", "corners-plus1", "corners-plus2", "boundaries", "all"),
             choice("creasing", null, "uniform", "chaikin"),

@@ -8,6 +8,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 import lt.spindulys.scene.AcceleratorKind;
+import lt.spindulys.scene.AdaptiveSettings;
 import lt.spindulys.camera.Camera;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.camera.ThinLensCamera;
@@ -75,8 +76,22 @@ final class SceneObjectFactory {
      * {@code s} with a settings block's keys applied in the order written, each reported at its
      * key if refused; samples and timesteps are checked together once all keys are in.
      */
+    /**
+     * Bytes of a size given in mebibytes (fractions allowed), refused when negative, not a number,
+     * zero where zero has no meaning, or beyond {@link AdaptiveSettings#MAX_BYTES}.
+     */
+    static long mebibytes(double mib, boolean zeroAllowed) {
+        double bytes = mib * (1 << 20);
+        if (!(bytes >= (zeroAllowed ? 0 : 1)) || bytes > AdaptiveSettings.MAX_BYTES) {
+            throw new IllegalArgumentException("a size in MiB must be " + (zeroAllowed ? "0 (automatic) or more" : "more than 0")
+                    + " and at most " + (AdaptiveSettings.MAX_BYTES >> 20) + ", found " + mib);
+        }
+        return (long) bytes;
+    }
+
     RenderSettings settings(Props p, RenderSettings s) {
         RenderSettings.Builder sb = s.toBuilder();
+        AdaptiveSettings adaptive = s.adaptive();
         for (Prop pr : p.all) {
             Object v = pr.value();
             try {
@@ -94,6 +109,10 @@ final class SceneObjectFactory {
                     case "aov" -> sb.aovs(aovs((List<?>) v));
                     case "shutter" -> sb.shutter(((double[]) v)[0], ((double[]) v)[1]);
                     case "timesteps" -> sb.timeSteps((Integer) v);
+                    case "subdivmemory" -> sb.adaptive(adaptive = adaptive.withMemory(mebibytes((Double) v, true)));
+                    case "subdivcache" -> sb.adaptive(adaptive = adaptive.withCache(mebibytes((Double) v, false)));
+                    case "subdivpolicy" -> sb.adaptive(adaptive = adaptive.withLastTwoPatches("last-two".equals(v)));
+                    case "subdivtarget" -> sb.adaptive(adaptive = adaptive.withTarget(AdaptiveSettings.checkTarget((Double) v)));
                     default -> throw unhandled(pr);
                 }
             } catch (IllegalArgumentException e) {

@@ -24,13 +24,15 @@ public final class RenderResult {
     private final AovFrame passes;
     private final RenderStats stats;
     private final double loadSeconds, buildSeconds;
+    private final java.util.List<String> subdivision;
 
-    RenderResult(RenderSettings settings, FrameBuffer frame, AovFrame passes, RenderStats stats) {
-        this(settings, frame, passes, stats, 0, 0);
+    RenderResult(RenderSettings settings, FrameBuffer frame, AovFrame passes, RenderStats stats, java.util.List<String> subdivision) {
+        this(settings, frame, passes, stats, subdivision, 0, 0);
     }
 
-    private RenderResult(RenderSettings settings, FrameBuffer frame, AovFrame passes, RenderStats stats,
+    private RenderResult(RenderSettings settings, FrameBuffer frame, AovFrame passes, RenderStats stats, java.util.List<String> subdivision,
                          double loadSeconds, double buildSeconds) {
+        this.subdivision = java.util.List.copyOf(subdivision);
         this.settings = Objects.requireNonNull(settings);
         this.frame = Objects.requireNonNull(frame);
         this.passes = passes;
@@ -41,8 +43,17 @@ public final class RenderResult {
 
     /** This result with the times a job spent before rendering. */
     RenderResult withTimes(double load, double build) {
-        return new RenderResult(settings, frame, passes, stats, load, build);
+        return new RenderResult(settings, frame, passes, stats, subdivision, load, build);
     }
+
+    /**
+     * One line per adaptive subdivision tessellation of the scene (see
+     * {@code Scene.adaptiveStatistics()}): method, levels, patches built, cache hits, misses,
+     * evictions, peak bytes and the histogram of levels used, as they stood when the render ended.
+     *
+     * @return the lines, empty when the scene has no adaptive surface
+     */
+    public java.util.List<String> subdivisionStatistics() { return subdivision; }
 
     /**
      * The frame: linear RGB doubles, unclamped (what a PFM file holds).

@@ -27,9 +27,10 @@ public final class BuildContext {
     private final Camera camera;
     private final int width, height;
     private final double shutterOpen, shutterClose;
+    private final BuildShared shared;
 
     BuildContext(Placement placement, Material material, AcceleratorKind accelerator, Camera camera,
-                 int width, int height, double shutterOpen, double shutterClose) {
+                 int width, int height, double shutterOpen, double shutterClose, BuildShared shared) {
         this.placement = Objects.requireNonNull(placement);
         this.material = material;
         this.accelerator = Objects.requireNonNull(accelerator);
@@ -38,6 +39,7 @@ public final class BuildContext {
         this.height = height;
         this.shutterOpen = shutterOpen;
         this.shutterClose = shutterClose;
+        this.shared = Objects.requireNonNull(shared);
     }
 
     /**
@@ -47,7 +49,8 @@ public final class BuildContext {
     static BuildContext of(RenderSettings settings, Camera camera) {
         double open = settings.shutterOpen(), close = settings.shutterClose();
         return new BuildContext(Placement.of(Transform.IDENTITY, open, close), Material.DEFAULT,
-                settings.accelerator(), camera, settings.width(), settings.height(), open, close);
+                settings.accelerator(), camera, settings.width(), settings.height(), open, close,
+                new BuildShared(settings.adaptive(), camera, settings.width(), settings.height()));
     }
 
     /**
@@ -55,8 +58,11 @@ public final class BuildContext {
      * {@code inherited} (null: none), with this context's structure kind, camera, film and shutter.
      */
     BuildContext within(Placement parentToWorld, Material inherited) {
-        return new BuildContext(parentToWorld, inherited, accelerator, camera, width, height, shutterOpen, shutterClose);
+        return new BuildContext(parentToWorld, inherited, accelerator, camera, width, height, shutterOpen, shutterClose, shared);
     }
+
+    /** What every object of this scene build shares: adaptive tessellations, their cache and budget. */
+    BuildShared shared() { return shared; }
 
     /**
      * The parent's object-to-world mapping: the object's own transform and motion are applied

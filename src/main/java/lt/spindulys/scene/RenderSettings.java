@@ -37,10 +37,12 @@ import lt.spindulys.math.Ranges;
  *                        thesis's method, N passes each at one time with samplesPerPixel / N
  *                        samples, averaged (samplesPerPixel must then be a multiple of N, checked
  *                        when the scene is built, see {@link #checkTimeSteps()})
+ * @param adaptive        heap budget, cache and target edge length of adaptive subdivision
+ *                        (see {@link AdaptiveSettings}); none of them changes the image
  */
 public record RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, double minContribution,
                              Color background, Color ambient, boolean srgb, long seed, AcceleratorKind accelerator,
-                             Set<Aov> aovs, double shutterOpen, double shutterClose, int timeSteps) {
+                             Set<Aov> aovs, double shutterOpen, double shutterClose, int timeSteps, AdaptiveSettings adaptive) {
     /** Largest accepted image side, so that a typo cannot ask for terabytes. */
     public static final int MAX_SIDE = 32768;
 
@@ -50,7 +52,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      * linear encoding, seed 0, the default accelerator, no passes, shutter [0, 1] in one pass.
      */
     public static final RenderSettings DEFAULT = new RenderSettings(640, 480, 1, 8, 0.001, Color.BLACK, Color.WHITE, false, 0,
-            AcceleratorKind.DEFAULT, Set.of(), Placement.OPEN, Placement.CLOSE, 1);
+            AcceleratorKind.DEFAULT, Set.of(), Placement.OPEN, Placement.CLOSE, 1, AdaptiveSettings.DEFAULT);
 
     /**
      * Checks every value as the {@link Builder}'s methods do, with the same messages; the
@@ -70,6 +72,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      * @param shutterOpen     time the shutter opens
      * @param shutterClose    time the shutter closes
      * @param timeSteps       1: one pass; N &gt; 1: N passes each at one time
+     * @param adaptive        memory, cache and target of adaptive subdivision
      * @throws IllegalArgumentException if a value is out of its range
      * @throws NullPointerException     if accelerator or aovs is null
      */
@@ -85,6 +88,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         aovs = passes(aovs);
         Placement.checkShutter(shutterOpen, shutterClose);
         steps(timeSteps);
+        Objects.requireNonNull(adaptive, "adaptive");
     }
 
     /**
@@ -114,6 +118,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         private long seed;
         private AcceleratorKind accelerator;
         private Set<Aov> aovs;
+        private AdaptiveSettings adaptive;
 
         private Builder(RenderSettings s) {
             width = s.width;
@@ -130,6 +135,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
             shutterOpen = s.shutterOpen;
             shutterClose = s.shutterClose;
             timeSteps = s.timeSteps;
+            adaptive = s.adaptive;
         }
 
         /**
@@ -306,13 +312,24 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         }
 
         /**
+         * Memory, cache and target of adaptive subdivision.
+         *
+         * @param a the adaptive subdivision settings
+         * @return this builder
+         */
+        public Builder adaptive(AdaptiveSettings a) {
+            adaptive = Objects.requireNonNull(a, "adaptive");
+            return this;
+        }
+
+        /**
          * The settings with the values given so far.
          *
          * @return new settings; the builder can go on to make more
          */
         public RenderSettings build() {
             return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed,
-                    accelerator, aovs, shutterOpen, shutterClose, timeSteps);
+                    accelerator, aovs, shutterOpen, shutterClose, timeSteps, adaptive);
         }
     }
 

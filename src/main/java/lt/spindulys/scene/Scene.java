@@ -61,6 +61,9 @@ public final class Scene {
                 throw SceneBuildException.of(o, e).inScene(i);
             }
         }
+        // Shared adaptive tessellations choose their levels now that every placement is known.
+        world.shared().finish(world);
+        adaptive = world.shared().tessellations();
         this.objects = List.of(frozen);
         objectIds = ids;
         boolean[] anyTransparent = {false};
@@ -86,6 +89,22 @@ public final class Scene {
      * is under 150 bytes, a mesh's under 250).
      */
     static final long BYTES_PER_COPY = 512;
+
+    /** The adaptive subdivision surfaces' tessellations, for their statistics. */
+    private final List<AdaptiveTessellation> adaptive;
+
+    /**
+     * One line per adaptive subdivision tessellation of this scene (instances of one surface share
+     * one): its method, levels, patches built, cache hits, misses and evictions, peak bytes and the
+     * histogram of levels used. Counters grow as the scene is rendered.
+     *
+     * @return the lines, empty when the scene has no adaptive surface
+     */
+    public List<String> adaptiveStatistics() {
+        List<String> lines = new ArrayList<>();
+        for (AdaptiveTessellation t : adaptive) lines.add(t.statistics());
+        return lines;
+    }
 
     /**
      * The settings the scene was built with (film size, sampling, shutter, structure kind).

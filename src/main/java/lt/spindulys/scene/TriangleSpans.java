@@ -53,8 +53,9 @@ final class TriangleSpans {
                 // Zero-length spans (a line grazing an edge or vertex from outside) enclose nothing.
                 double tIn = c[start], tOut = c[o];
                 if (tOut > tIn && tOut > tMin && tIn < tMax) {
-                    out.add(tIn, owner, (int) c[start + 1], c[start + 2], c[start + 3],
-                            tOut, owner, (int) (-1 - c[o + 1]), c[o + 2], c[o + 3]);
+                    long in = (long) c[start + 1], outId = (long) (-1 - c[o + 1]);
+                    out.add(tIn, owner, (int) (in & PRIM_MASK), (int) (in >>> SUB_SHIFT), c[start + 2], c[start + 3],
+                            tOut, owner, (int) (outId & PRIM_MASK), (int) (outId >>> SUB_SHIFT), c[o + 2], c[o + 3]);
                 }
             }
             // A leaving crossing while outside can only come from an inconsistently wound mesh; ignored.
@@ -69,6 +70,19 @@ final class TriangleSpans {
      * the duplicates from the triangles sharing it compare exactly equal.
      */
     static void addCrossing(int[] tri, double[] pos, int i, Ray ray, TraceContext ctx) {
+        addCrossing(tri, pos, i, i, 0, ray, ctx);
+    }
+
+    /** A crossing's primitive and part are packed into one double: part above bit 31, exact below 2^53. */
+    private static final int SUB_SHIFT = 31;
+    private static final long PRIM_MASK = (1L << SUB_SHIFT) - 1;
+
+    /**
+     * {@link #addCrossing(int[], double[], int, Ray, TraceContext)} of triangle {@code i} of the
+     * arrays, recorded as primitive {@code prim} with part {@code sub} (a lazily refined patch and
+     * its triangle; sub below 2^21).
+     */
+    static void addCrossing(int[] tri, double[] pos, int i, int prim, int sub, Ray ray, TraceContext ctx) {
         ctx.direction(ray);
         final int kx = ctx.shearKx, ky = ctx.shearKy, kz = ctx.shearKz;
         final double sx = ctx.shearSx, sy = ctx.shearSy, sz = ctx.shearSz;
@@ -108,7 +122,8 @@ final class TriangleSpans {
         double inv = 1 / det;
         list[o] = t;
         // The signed projected area det is positive exactly when dot(ng, d) < 0: the line enters.
-        list[o + 1] = det > 0 ? i : -1 - i;
+        double id = (double) (((long) sub << SUB_SHIFT) | prim);
+        list[o + 1] = det > 0 ? id : -1 - id;
         list[o + 2] = v * inv;
         list[o + 3] = w * inv;
         ctx.crossingCount = k + 1;

@@ -28,6 +28,7 @@ public final class Hit extends PrimitiveHit {
         t = tMax;
         object = null;
         prim = -1;
+        sub = 0;
         u = v = 0;
         flipNormal = false;
         material = null;
@@ -38,7 +39,7 @@ public final class Hit extends PrimitiveHit {
     public boolean found() { return object != null; }
 
     public void set(Hit o) {
-        t = o.t; object = o.object; prim = o.prim; u = o.u; v = o.v; flipNormal = o.flipNormal; material = o.material;
+        t = o.t; object = o.object; prim = o.prim; sub = o.sub; u = o.u; v = o.v; flipNormal = o.flipNormal; material = o.material;
         materialSpace = o.materialSpace;
     }
 }

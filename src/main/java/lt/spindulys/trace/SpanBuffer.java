@@ -12,7 +12,7 @@ public final class SpanBuffer {
     private int count;
     private double[] t = new double[8];
     private TracedObject[] object = new TracedObject[8];
-    private int[] prim = new int[8];
+    private int[] prim = new int[8], sub = new int[8];
     private double[] u = new double[8], v = new double[8];
     private boolean[] flip = new boolean[8];
     private Material[] material = new Material[8];
@@ -27,10 +27,16 @@ public final class SpanBuffer {
     /** Appends a span; spans must be appended in increasing, non-overlapping order. */
     public void add(double tIn, TracedObject oIn, int pIn, double uIn, double vIn,
                     double tOut, TracedObject oOut, int pOut, double uOut, double vOut) {
+        add(tIn, oIn, pIn, 0, uIn, vIn, tOut, oOut, pOut, 0, uOut, vOut);
+    }
+
+    /** {@link #add}, with the primitives' parts (see {@link lt.spindulys.accel.PrimitiveHit#sub}). */
+    public void add(double tIn, TracedObject oIn, int pIn, int sIn, double uIn, double vIn,
+                    double tOut, TracedObject oOut, int pOut, int sOut, double uOut, double vOut) {
         int i = 2 * count;
         ensure(i + 2);
-        setEndpoint(i, tIn, oIn, pIn, uIn, vIn, false, oIn == null ? null : oIn.material(), null);
-        setEndpoint(i + 1, tOut, oOut, pOut, uOut, vOut, false, oOut == null ? null : oOut.material(), null);
+        setEndpoint(i, tIn, oIn, pIn, sIn, uIn, vIn, false, oIn == null ? null : oIn.material(), null);
+        setEndpoint(i + 1, tOut, oOut, pOut, sOut, uOut, vOut, false, oOut == null ? null : oOut.material(), null);
         count++;
     }
 
@@ -38,15 +44,15 @@ public final class SpanBuffer {
     public void addEndpoint(SpanBuffer from, int endpoint, boolean flipNormal) {
         int i = 2 * count + pending;
         ensure(i + 1);
-        setEndpoint(i, from.t[endpoint], from.object[endpoint], from.prim[endpoint], from.u[endpoint], from.v[endpoint],
+        setEndpoint(i, from.t[endpoint], from.object[endpoint], from.prim[endpoint], from.sub[endpoint], from.u[endpoint], from.v[endpoint],
                 from.flip[endpoint] ^ flipNormal, from.material[endpoint], from.space[endpoint]);
         if (++pending == 2) { pending = 0; count++; }
     }
 
     private int pending;
 
-    private void setEndpoint(int i, double tt, TracedObject o, int p, double uu, double vv, boolean f, Material m, TracedObject s) {
-        t[i] = tt; object[i] = o; prim[i] = p; u[i] = uu; v[i] = vv; flip[i] = f; material[i] = m; space[i] = s;
+    private void setEndpoint(int i, double tt, TracedObject o, int p, int ps, double uu, double vv, boolean f, Material m, TracedObject s) {
+        t[i] = tt; object[i] = o; prim[i] = p; sub[i] = ps; u[i] = uu; v[i] = vv; flip[i] = f; material[i] = m; space[i] = s;
     }
 
     /**
@@ -83,6 +89,7 @@ public final class SpanBuffer {
         hit.t = t[endpoint];
         hit.object = object[endpoint];
         hit.prim = prim[endpoint];
+        hit.sub = sub[endpoint];
         hit.u = u[endpoint];
         hit.v = v[endpoint];
         hit.flipNormal = flip[endpoint];
@@ -96,6 +103,7 @@ public final class SpanBuffer {
         t = java.util.Arrays.copyOf(t, n);
         object = java.util.Arrays.copyOf(object, n);
         prim = java.util.Arrays.copyOf(prim, n);
+        sub = java.util.Arrays.copyOf(sub, n);
         u = java.util.Arrays.copyOf(u, n);
         v = java.util.Arrays.copyOf(v, n);
         flip = java.util.Arrays.copyOf(flip, n);

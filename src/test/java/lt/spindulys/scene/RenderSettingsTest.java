@@ -33,7 +33,7 @@ class RenderSettingsTest {
                 .background(Color.grey(0.5)).ambient(new Color(0.1, 0.2, 0.3)).srgb(true).seed(-9).accelerator(AcceleratorKind.OCTREE)
                 .aovs(EnumSet.of(Aov.OBJECT, Aov.DEPTH)).shutter(0.25, 0.75).timeSteps(4).build();
         assertEquals(new RenderSettings(320, 200, 16, 3, 0.25, Color.grey(0.5), new Color(0.1, 0.2, 0.3), true, -9, AcceleratorKind.OCTREE,
-                EnumSet.of(Aov.DEPTH, Aov.OBJECT), 0.25, 0.75, 4), s);
+                EnumSet.of(Aov.DEPTH, Aov.OBJECT), 0.25, 0.75, 4, AdaptiveSettings.DEFAULT), s);
         assertEquals(s, s.toBuilder().build());
         assertEquals(200, RenderSettings.builder().width(7).height(200).build().height());
         assertEquals(7, RenderSettings.builder().width(7).height(200).build().width());
@@ -86,7 +86,7 @@ class RenderSettingsTest {
         assertEquals(RenderSettings.DEFAULT, b.build());
         // The constructor words a refusal as the builder does.
         refused("width must be between 1 and 32768, found 0", () -> new RenderSettings(0, 1, 1, 0, 0, Color.BLACK, Color.BLACK, false, 0,
-                AcceleratorKind.DEFAULT, Set.of(), 0, 1, 1));
+                AcceleratorKind.DEFAULT, Set.of(), 0, 1, 1, AdaptiveSettings.DEFAULT));
     }
 
     @Test

@@ -1,0 +1,325 @@
+package lt.spindulys.scene;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.stream.IntStream;
+
+import lt.spindulys.accel.Accelerator;
+import lt.spindulys.accel.PrimitiveHit;
+import lt.spindulys.accel.PrimitiveSet;
+import lt.spindulys.accel.PrimitiveVisitor;
+import lt.spindulys.accel.TraversalScratch;
+import lt.spindulys.adaptive.CachedPatch;
+import lt.spindulys.adaptive.EdgeLevels;
+import lt.spindulys.adaptive.PatchCache;
+import lt.spindulys.adaptive.PatchSource;
+import lt.spindulys.adaptive.RecentPatches;
+import lt.spindulys.limits.HeapBudget;
+import lt.spindulys.math.Placement;
+import lt.spindulys.math.Ray;
+import lt.spindulys.math.Transform;
+import lt.spindulys.mesh.MeshData;
+import lt.spindulys.subdiv.PatchRefiner;
+import lt.spindulys.trace.Hit;
+import lt.spindulys.trace.ShadingData;
+import lt.spindulys.trace.SpanBuffer;
+import lt.spindulys.trace.TraceContext;
+
+/**
+ * The tessellation of one adaptive subdivision surface in one scene build, shared by every
+ * instance of it: the level of each control edge (from the view, the largest any placement
+ * needs, or fixed), and the triangles, either eager (one {@link TriangleMesh} of every patch) or
+ * lazy (a structure over the coarse faces, each refined when a ray first reaches it and kept in
+ * the scene's {@link PatchCache}), or a mix of the two (the combined method: patches pinned while
+ * the eager budget lasts, the rest lazy).
+ *
+ * <p>Every patch is a pure function of its face, its level and its edges' levels, so the image
+ * does not depend on which patches were cached, evicted and rebuilt, on the cache's size or on
+ * the number of threads. A face's box is the box of its one-ring control points, which contains
+ * every refined level of it (all Catmull-Clark weights are non-negative): no ray can miss a
+ * part of the surface that bulges past the coarse mesh.
+ */
+final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
+    /** Off-screen edges are refined as if this many times shorter (Cycles' offscreen dicing scale). */
+    static final double OFFSCREEN_SCALE = 4;
+
+    private final AdaptiveSubdivisionSurface.Geometry geometry;
+    private final PatchRefiner refiner;
+    private final AdaptiveSubdivisionSurface.Method method;
+    private final boolean smooth;
+    private final int fixedLevel, maxLevel;
+    private final double target;
+    private final AdaptiveSubdivisionSurface.Levels levels;
+    private final String name;
+    private final List<Placement> placements = new ArrayList<>();
+
+    // ---- made by finish ----
+    private AdaptiveSubdivisionSurface.Method used;
+    private int[] edgeLevel, faceLevel;
+    /** Non-hole faces: the top structure's primitives. */
+    private int[] faces;
+    private double[] faceBounds;
+    private AcceleratorKind kind;
+    private TriangleMesh mesh;
+    private Accelerator top;
+    private PatchCache cache;
+    private PatchCache.Table table;
+    private PatchTriangles[] pinned;
+    private long pinnedBytes, eagerBytes;
+    private int pinnedCount;
+    private final PrimitiveVisitor crossingVisitor = this::visitPatch;
+
+    AdaptiveTessellation(AdaptiveSubdivisionSurface s, double target) {
+        geometry = s.geometry();
+        refiner = geometry.refiner();
+        method = s.method();
+        smooth = s.isSmooth();
+        fixedLevel = s.fixedLevel();
+        maxLevel = s.maxLevel();
+        levels = s.levels();
+        this.target = target;
+        name = s.name();
+    }
+
+    /** Records one placement (object to world over the shutter) of a surface using this tessellation. */
+    synchronized void addPlacement(Placement p) { placements.add(p); }
+
+    /** The triangles as one mesh when eager, else null. */
+    TriangleMesh mesh() { return mesh; }
+
+    /** Chooses the levels and builds the eager part; called once, after every placement is known. */
+    void finish(BuildShared shared, BuildContext root) {
+        kind = root.accelerator();
+        chooseLevels(shared);
+        int nf = refiner.faceCount();
+        int count = 0;
+        for (int f = 0; f < nf; f++) if (!refiner.isHole(f)) count++;
+        faces = new int[count];
+        for (int f = 0, k = 0; f < nf; f++) if (!refiner.isHole(f)) faces[k++] = f;
+        used = method;
+        if (method == AdaptiveSubdivisionSurface.Method.PROJECTED) {
+            long need = 0;
+            for (int f : faces) need = HeapBudget.sum(need, refiner.patchBytes(f, faceLevel[f], smooth));
+            // The flat mesh repeats what the patches hold, once, while it is made from them.
+            need = HeapBudget.product(need, 2);
+            if (shared.takeEager(need) && HeapBudget.fits(need)) {
+                buildEager(root);
+                eagerBytes = need / 2;
+                return;
+            }
+            // Does not fit: refine lazily instead, as the combined method does, within the budget.
+            used = AdaptiveSubdivisionSurface.Method.COMBINED;
+        }
+        cache = shared.cache();
+        table = cache.table(faces.length, name);
+        faceBounds = new double[6 * faces.length];
+        double[] box = new double[6];
+        for (int i = 0; i < faces.length; i++) {
+            refiner.oneRingBounds(faces[i], box);
+            System.arraycopy(box, 0, faceBounds, 6 * i, 6);
+        }
+        if (used == AdaptiveSubdivisionSurface.Method.COMBINED) pinWithinBudget(shared);
+        top = kind.build(this);
+    }
+
+    private void chooseLevels(BuildShared shared) {
+        int[] ev = refiner.edgeVertices();
+        int ne = refiner.edgeCount();
+        edgeLevel = new int[ne];
+        if (fixedLevel >= 0) {
+            Arrays.fill(edgeLevel, fixedLevel);
+        } else if (levels == AdaptiveSubdivisionSurface.Levels.OBJECT) {
+            int l = 0;
+            for (Placement p : placements) {
+                l = Math.max(l, EdgeLevels.perObject(shared.view(), refiner.control().positions(), ev, p, target, maxLevel, OFFSCREEN_SCALE));
+            }
+            Arrays.fill(edgeLevel, l);
+        } else {
+            for (Placement p : placements) {
+                EdgeLevels.perEdgeMax(shared.view(), refiner.control().positions(), ev, p, target, maxLevel, OFFSCREEN_SCALE, edgeLevel);
+            }
+        }
+        int nf = refiner.faceCount();
+        faceLevel = new int[nf];
+        for (int f = 0; f < nf; f++) {
+            int l = 0;
+            for (int k = 0, n = refiner.faceSize(f); k < n; k++) l = Math.max(l, edgeLevel[refiner.faceEdge(f, k)]);
+            faceLevel[f] = l;
+        }
+    }
+
+    /** Levels of the face's edges, corner by corner. */
+    private int[] edgeLevels(int f) {
+        int n = refiner.faceSize(f);
+        int[] e = new int[n];
+        for (int k = 0; k < n; k++) e[k] = edgeLevel[refiner.faceEdge(f, k)];
+        return e;
+    }
+
+    private MeshData refine(int f) {
+        return refiner.refine(f, faceLevel[f], edgeLevels(f), smooth);
+    }
+
+    /** Every patch built (on all cores: each is independent) and joined into one flat mesh. */
+    private void buildEager(BuildContext root) {
+        MeshData[] parts = new MeshData[faces.length];
+        IntStream.range(0, faces.length).parallel().forEach(i -> parts[i] = refine(faces[i]));
+        MeshData joined = join(parts, refiner.control().source());
+        mesh = new TriangleMesh(joined);
+        mesh.smooth(smooth);
+        mesh.freeze(root.within(Placement.of(Transform.IDENTITY, root.shutterOpen(), root.shutterClose()), null), 0);
+    }
+
+    /** One mesh of the parts, in face order: their vertices side by side (the census welds equal positions). */
+    static MeshData join(MeshData[] parts, String source) {
+        long nv = 0, nn = 0, nu = 0, nfaces = 0, nc = 0;
+        boolean normals = false, uvs = false;
+        for (MeshData d : parts) {
+            nv += d.positions().length;
+            if (d.normals() != null) { nn += d.normals().length; normals = true; }
+            if (d.uvs() != null) { nu += d.uvs().length; uvs = true; }
+            nfaces += d.faceSizes().length;
+            nc += d.vertexIndex().length;
+        }
+        if (nv > Integer.MAX_VALUE - 8 || nc > Integer.MAX_VALUE - 8) throw new IllegalArgumentException("the tessellation is too large for one mesh");
+        double[] p = new double[(int) nv], n = normals ? new double[(int) nn] : null, t = uvs ? new double[(int) nu] : null;
+        int[] sizes = new int[(int) nfaces], vi = new int[(int) nc], ni = normals ? new int[(int) nc] : null, ti = uvs ? new int[(int) nc] : null;
+        int op = 0, on = 0, ot = 0, of = 0, oc = 0;
+        for (MeshData d : parts) {
+            int vBase = op / 3, nBase = on / 3, tBase = ot / 2;
+            System.arraycopy(d.positions(), 0, p, op, d.positions().length);
+            op += d.positions().length;
+            if (d.normals() != null) { System.arraycopy(d.normals(), 0, n, on, d.normals().length); on += d.normals().length; }
+            if (d.uvs() != null) { System.arraycopy(d.uvs(), 0, t, ot, d.uvs().length); ot += d.uvs().length; }
+            System.arraycopy(d.faceSizes(), 0, sizes, of, d.faceSizes().length);
+            of += d.faceSizes().length;
+            int[] dv = d.vertexIndex(), dn = d.normalIndex(), dt = d.uvIndex();
+            for (int c = 0; c < dv.length; c++) {
+                vi[oc + c] = dv[c] + vBase;
+                if (ni != null) ni[oc + c] = dn == null ? -1 : dn[c] + nBase;
+                if (ti != null) ti[oc + c] = dt == null ? -1 : dt[c] + tBase;
+            }
+            oc += dv.length;
+        }
+        return new MeshData(p, n, t, sizes, vi, ni, ti, source);
+    }
+
+    /** The combined method: the cheapest patches built and pinned while the eager budget lasts. */
+    private void pinWithinBudget(BuildShared shared) {
+        pinned = new PatchTriangles[faces.length];
+        long[] cost = new long[faces.length];
+        Integer[] order = new Integer[faces.length];
+        for (int i = 0; i < faces.length; i++) {
+            cost[i] = refiner.patchBytes(faces[i], faceLevel[faces[i]], smooth);
+            order[i] = i;
+        }
+        Arrays.sort(order, (a, b) -> cost[a] != cost[b] ? Long.compare(cost[a], cost[b]) : Integer.compare(a, b));
+        int take = 0;
+        long sum = 0;
+        while (take < order.length && HeapBudget.sum(sum, cost[order[take]]) <= shared.eagerLeft()) sum += cost[order[take++]];
+        if (take == 0 || !shared.takeEager(sum) || !HeapBudget.fits(sum)) return;
+        int[] chosen = new int[take];
+        for (int k = 0; k < take; k++) chosen[k] = order[k];
+        IntStream.range(0, take).parallel().forEach(k -> {
+            int i = chosen[k];
+            PatchTriangles p = (PatchTriangles) build(i);
+            pinned[i] = p;
+        });
+        double[] box = new double[6];
+        for (int k = 0; k < take; k++) {
+            int i = chosen[k];
+            pinnedBytes += pinned[i].bytes();
+            // A built patch's own box is tighter than its one-ring's.
+            Arrays.fill(box, 0, 3, Double.POSITIVE_INFINITY);
+            Arrays.fill(box, 3, 6, Double.NEGATIVE_INFINITY);
+            pinned[i].include(box);
+            System.arraycopy(box, 0, faceBounds, 6 * i, 6);
+        }
+        pinnedCount = take;
+    }
+
+    // ---- queries (object space) ----
+
+    boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
+        return mesh != null ? mesh.intersectLocal(ray, hit, ctx) : top.intersect(ray, hit, ctx);
+    }
+
+    boolean occluded(Ray ray, TraceContext ctx) {
+        return mesh != null ? mesh.occluded(ray, ctx) : top.occluded(ray, ctx);
+    }
+
+    void spans(Ray ray, SpanBuffer out, TraceContext ctx, GObject owner) {
+        if (mesh != null) {
+            int first = out.size();
+            mesh.spansLocal(ray, out, ctx);
+            out.relabel(first, owner);
+        } else {
+            TriangleSpans.spans(top, crossingVisitor, owner, ray, out, ctx);
+        }
+    }
+
+    void shade(double x, double y, double z, Hit hit, ShadingData sd) {
+        if (mesh != null) mesh.shadeLocal(x, y, z, hit, sd);
+        else patch(hit.prim, sd.recentPatches).shade(smooth, hit.sub, hit.u, hit.v, sd);
+    }
+
+    private void visitPatch(int i, Ray ray, TraversalScratch s) {
+        TraceContext ctx = (TraceContext) s;
+        PatchTriangles p = patch(i, ctx.recentPatches);
+        p.accel.visit(ray, ctx, p.crossingCollector);
+    }
+
+    private PatchTriangles patch(int i, RecentPatches recent) {
+        PatchTriangles p = pinned != null ? pinned[i] : null;
+        return p != null ? p : (PatchTriangles) cache.get(table, i, this, recent);
+    }
+
+    /** Builds the patch of primitive {@code i} (the cache calls this on a miss). */
+    @Override
+    public CachedPatch build(int i) {
+        int f = faces[i];
+        PatchTriangles p = new PatchTriangles(i, faceLevel[f], refine(f), kind);
+        if (table != null) table.stats().recordLevel(faceLevel[f]);
+        return p;
+    }
+
+    // ---- PrimitiveSet: the coarse faces ----
+
+    @Override public int size() { return faces.length; }
+
+    @Override
+    public void bounds(int i, double[] out) { System.arraycopy(faceBounds, 6 * i, out, 0, 6); }
+
+    @Override
+    public boolean intersect(int i, Ray ray, PrimitiveHit hit, TraversalScratch s) {
+        TraceContext ctx = (TraceContext) s;
+        PatchTriangles p = patch(i, ctx.recentPatches);
+        if (!p.accel.intersect(ray, hit, ctx)) return false;
+        hit.sub = hit.prim;
+        hit.prim = i;
+        return true;
+    }
+
+    @Override
+    public boolean occluded(int i, Ray ray, TraversalScratch s) {
+        TraceContext ctx = (TraceContext) s;
+        return patch(i, ctx.recentPatches).accel.occluded(ray, ctx);
+    }
+
+    // ---- statistics ----
+
+    /** One line: name, method, faces, levels, eager or pinned bytes, and the cache's counters for this surface. */
+    String statistics() {
+        int[] hist = new int[maxLevel + 1];
+        if (faceLevel != null) for (int f : faces) hist[Math.min(faceLevel[f], maxLevel)]++;
+        StringBuilder h = new StringBuilder();
+        for (int l = 0; l < hist.length; l++) if (hist[l] > 0) h.append(h.length() == 0 ? "" : " ").append(l).append(':').append(hist[l]);
+        String head = String.format(Locale.ROOT, "subdiv %s: %s%s, %d faces, face levels %s", name, method.word(),
+                used != method ? " (as combined: the eager tessellation does not fit)" : "", faces == null ? 0 : faces.length, h);
+        if (mesh != null) return head + String.format(Locale.ROOT, "; eager %d triangles, %s", mesh.triangleCount(), HeapBudget.format(eagerBytes));
+        String pin = used == AdaptiveSubdivisionSurface.Method.COMBINED ? String.format(Locale.ROOT, "; %d patches eager (%s)", pinnedCount, HeapBudget.format(pinnedBytes)) : "";
+        return head + pin + "; " + (table == null ? "no patches" : table.stats().summary());
+    }
+}
