@@ -16,9 +16,11 @@ import lt.spindulys.math.Vec3;
  *
  * <p><b>Moving objects.</b> The placement is evaluated at {@link #TIME_SAMPLES} times evenly spread
  * over the shutter, its ends included. Between two samples each end of an edge stays within the
- * distance d it moves from one sample to the next (the chord; exact for translations and scales,
- * and for rotations of at most 180 degrees between samples, that is 1800 degrees over the shutter),
- * and because the placement is affine every point of the edge does too. So for each interval
+ * distance d it moves from one sample to the next (the chord: exact for a translation, a scale, or
+ * a rotation of at most 180 degrees between samples, that is 1800 degrees over the shutter; for
+ * motions combined in one placement a close approximation, off by the path's second-order bend,
+ * which Motion's sweep pads for boxes and this bound does not), and because the placement is
+ * affine every point of the edge does too. So for each interval
  * the edge is bounded as a segment no longer than min(L0, L1) plus the change of the vector b - a
  * (which the linear part alone moves, so the same argument holds for it), whose distance from the
  * eye is at least either sample's distance minus max(dA, dB), inside a frustum widened by that
