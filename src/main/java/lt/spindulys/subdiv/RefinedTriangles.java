@@ -6,7 +6,7 @@ import lt.spindulys.mesh.MeshData;
 
 /**
  * The triangles of a refined mesh, the one implementation the uniform surface and the per-face
- * patches share: positions of the refined vertices, face-varying UVs and,
+ * patches ({@link PatchRefiner}) share: positions of the refined vertices, face-varying UVs and,
  * for smooth shading, a normal per corner (the limit normal, or the sector's where sharp edges split a vertex); quads split along the
  * shorter diagonal, other polygons (at level 0) left whole for the triangle mesh's fans, holes
  * dropped. Stateless.
