@@ -113,12 +113,12 @@ public final class PatchCache {
     public CachedPatch get(Table table, int face, PatchSource source, RecentPatches recent) {
         if (table.cache() != this) throw new IllegalArgumentException("the table " + table.name + " belongs to another tessellation cache");
         if (recent.aTable == table && recent.aFace == face) {
-            table.hit(face);
+            table.hit(face, recent);
             return recent.aPatch;
         }
         if (recent.bTable == table && recent.bFace == face) {
             recent.promoteB();
-            table.hit(face);
+            table.hit(face, recent);
             return recent.aPatch;
         }
         if (face < 0 || face >= table.faces) {
@@ -126,16 +126,16 @@ public final class PatchCache {
         }
         CachedPatch p = table.slots.get(face);
         if (p != null) {
-            table.hit(face);
-            // Under LAST_TWO the recent entries are the thread's own patches (their bytes are counted as held);
-            // a shared pinned patch stays out of them.
-            if (lru) recent.push(table, face, p);
+            // Not made the thread's newest: the slot is as quick to ask again, and under LAST_TWO the recent
+            // entries are the thread's own patches (their bytes counted as held), which a pinned one is not.
+            table.hit(face, recent);
             return p;
         }
         return miss(table, face, source, recent);
     }
 
     private CachedPatch miss(Table t, int face, PatchSource source, RecentPatches recent) {
+        recent.flush();
         CachedPatch p = source.build(face);
         if (p == null) throw new IllegalArgumentException("the patch source of " + t.name + " gave no patch for face " + face);
         long b = p.bytes();
@@ -373,8 +373,8 @@ public final class PatchCache {
         /** The name given at creation. */
         public String name() { return name; }
 
-        void hit(int face) {
-            stats.hits.increment();
+        void hit(int face, RecentPatches recent) {
+            recent.hit(this);
             if (lru && (byte) REF.getOpaque(referenced, face) == 0) REF.setOpaque(referenced, face, (byte) 1);
         }
 

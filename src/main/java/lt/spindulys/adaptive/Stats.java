@@ -33,7 +33,10 @@ public final class Stats {
     /** Patches made by a {@link PatchSource} (a race that builds one face twice counts two). */
     public long built() { return built.sum(); }
 
-    /** Requests answered without building: from a thread's recent patches, a shared slot or a pinned patch. */
+    /**
+     * Requests answered without building: from a thread's recent patches, a shared slot or a pinned patch. Each
+     * thread adds its hits in batches; they are all here once every thread has called {@link RecentPatches#flush}.
+     */
     public long hits() { return hits.sum(); }
 
     /** Requests that had to build (equal to {@link #built()}). */
