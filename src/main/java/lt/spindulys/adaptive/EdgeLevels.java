@@ -16,12 +16,15 @@ import lt.spindulys.math.Vec3;
  *
  * <p><b>Moving objects.</b> The placement is evaluated at {@link #TIME_SAMPLES} times evenly spread
  * over the shutter, its ends included. Between two samples each end of an edge stays within the
- * distance d it moves from one sample to the next (the chord; exact for translations and scales,
- * and for rotations of at most 180 degrees between samples, that is 1800 degrees over the shutter),
- * and because the placement is affine every point of the edge does too. So for each interval
- * the edge is bounded as a segment of length at most min(L0, L1) + dA + dB whose distance from the
- * eye is at least its sampled distance minus max(dA, dB), inside a frustum widened by that much:
- * no time in between can hide a closer, longer or visible position.
+ * distance d it moves from one sample to the next (the chord: exact for a translation, a scale, or
+ * a rotation of at most 180 degrees between samples, that is 1800 degrees over the shutter; for
+ * motions combined in one placement a close approximation, off by the path's second-order bend,
+ * which Motion's sweep pads for boxes and this bound does not), and because the placement is
+ * affine every point of the edge does too. So for each interval
+ * the edge is bounded as a segment no longer than min(L0, L1) plus the change of the vector b - a
+ * (which the linear part alone moves, so the same argument holds for it), whose distance from the
+ * eye is at least either sample's distance minus max(dA, dB), inside a frustum widened by that
+ * much: no time in between can hide a closer, longer or visible position.
  */
 public final class EdgeLevels {
     /** Placement samples over the shutter of a moving object: 9 inside plus the open and close times. */
@@ -109,7 +112,10 @@ public final class EdgeLevels {
                     apply(m, k, positions, va, a1);
                     apply(m, k, positions, vb, b1);
                     double da = dist(a0, a1), db = dist(b0, b1);
-                    double length = Math.min(dist(a0, b0), dist(a1, b1)) + da + db;
+                    // b - a is mapped by the linear part alone, so it moves on the same kind of path:
+                    // its length in between is within the chord of its own change (0 for a translation).
+                    double dvx = (b1[0] - a1[0]) - (b0[0] - a0[0]), dvy = (b1[1] - a1[1]) - (b0[1] - a0[1]), dvz = (b1[2] - a1[2]) - (b0[2] - a0[2]);
+                    double length = Math.min(dist(a0, b0), dist(a1, b1)) + Math.sqrt(dvx * dvx + dvy * dvy + dvz * dvz);
                     double pad = Math.max(da, db);
                     double p = Math.min(view.pixels(a0[0], a0[1], a0[2], b0[0], b0[1], b0[2], length, pad, offscreenScale),
                             view.pixels(a1[0], a1[1], a1[2], b1[0], b1[1], b1[2], length, pad, offscreenScale));

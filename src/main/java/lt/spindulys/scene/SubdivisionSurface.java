@@ -15,6 +15,7 @@ import lt.spindulys.mesh.MeshData;
 import lt.spindulys.subdiv.CatmullClark;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.RefinedMesh;
+import lt.spindulys.subdiv.RefinedTriangles;
 import lt.spindulys.math.Motion;
 import lt.spindulys.material.Material;
 
@@ -195,159 +196,11 @@ public final class SubdivisionSurface extends GObject {
     }
 
     /**
-     * The triangles of a refined mesh as MeshData: its positions, its face-varying UVs and, for
-     * smooth shading, a normal per corner (see {@link #cornerNormals}); quads split along the
-     * shorter diagonal, other polygons (at level 0) left to TriangleMesh's fans, holes dropped.
+     * The triangles of a refined mesh as MeshData: {@link RefinedTriangles#triangles(RefinedMesh, boolean)},
+     * the implementation the per-face patches share.
      */
     static MeshData triangles(RefinedMesh r, boolean smooth) {
-        double[] p = r.positions();
-        int[] sizes = r.faceSizes(), fv = r.faceVertices(), fuv = r.faceUvs();
-        double[] uvs = r.uvs();
-        boolean withUv = uvs != null && fuv != null;
-        int faces = 0, corners = 0;
-        for (int f = 0, c = 0; f < sizes.length; c += sizes[f], f++) {
-            if (r.isHole(f)) continue;
-            faces += sizes[f] == 4 ? 2 : 1;
-            corners += sizes[f] == 4 ? 6 : sizes[f];
-        }
-        int[] outSizes = new int[faces], outV = new int[corners], outUv = withUv ? new int[corners] : null;
-        int o = 0, k = 0;
-        for (int f = 0, c = 0; f < sizes.length; c += sizes[f], f++) {
-            if (r.isHole(f)) continue;
-            if (sizes[f] == 4) {
-                int[] order = split(p, fv, c);
-                for (int j : order) {
-                    outV[k] = fv[c + j];
-                    if (withUv) outUv[k] = fuv[c + j];
-                    k++;
-                }
-                outSizes[o++] = 3;
-                outSizes[o++] = 3;
-            } else {
-                for (int j = 0; j < sizes[f]; j++) {
-                    outV[k] = fv[c + j];
-                    if (withUv) outUv[k] = fuv[c + j];
-                    k++;
-                }
-                outSizes[o++] = sizes[f];
-            }
-        }
-        if (!smooth) return new MeshData(p, null, withUv ? uvs : null, outSizes, outV, null, outUv, null);
-        int[] outN = new int[corners];
-        double[] normals = cornerNormals(r, outN);
-        return new MeshData(p, normals, withUv ? uvs : null, outSizes, outV, outN, outUv, null);
-    }
-
-    /**
-     * The shading normal of every output corner, written as an index into the returned array to
-     * {@code outN} (in the order {@link #triangles} emits corners): the vertex's limit normal,
-     * except where infinitely sharp edges (creases, boundaries, corners) cut the faces around a
-     * vertex into several sectors. The limit surface has a tangent plane per sector there and no
-     * single normal is right for all, so each corner gets the area-weighted normal of the faces in
-     * its own sector and the crease stays crisp in shading.
-     */
-    private static double[] cornerNormals(RefinedMesh r, int[] outN) {
-        double[] p = r.positions(), limit = r.limitNormals();
-        int[] sizes = r.faceSizes(), fv = r.faceVertices(), twin = r.cornerTwins();
-        boolean[] sharp = r.sharpEdges();
-        int nv = p.length / 3, nf = sizes.length, nc = fv.length;
-        int[] start = new int[nf + 1], faceOf = new int[nc];
-        for (int f = 0; f < nf; f++) {
-            start[f + 1] = start[f] + sizes[f];
-            for (int c = start[f]; c < start[f + 1]; c++) faceOf[c] = f;
-        }
-        // Sectors: corners at the same vertex joined across every edge that is neither sharp nor
-        // next to a hole (union-find over corners).
-        int[] parent = new int[nc];
-        for (int c = 0; c < nc; c++) parent[c] = c;
-        for (int c = 0; c < nc; c++) {
-            int t = twin[c];
-            if (t < c || sharp[c] || r.isHole(faceOf[c]) || r.isHole(faceOf[t])) continue;
-            // c runs a -> b in its face, t runs b -> a in the neighbour.
-            union(parent, c, next(t, faceOf, start));
-            union(parent, next(c, faceOf, start), t);
-        }
-        // Area-weighted face normals (Newell's method) summed per sector.
-        double[] sector = new double[3 * nc];
-        int[] vertexRoot = new int[nv];
-        boolean[] split = new boolean[nv];
-        java.util.Arrays.fill(vertexRoot, -1);
-        for (int f = 0; f < nf; f++) {
-            if (r.isHole(f)) continue;
-            double x = 0, y = 0, z = 0;
-            for (int c = start[f]; c < start[f + 1]; c++) {
-                int a = 3 * fv[c], b = 3 * fv[next(c, faceOf, start)];
-                x += (p[a + 1] - p[b + 1]) * (p[a + 2] + p[b + 2]);
-                y += (p[a + 2] - p[b + 2]) * (p[a] + p[b]);
-                z += (p[a] - p[b]) * (p[a + 1] + p[b + 1]);
-            }
-            for (int c = start[f]; c < start[f + 1]; c++) {
-                int root = find(parent, c), v = fv[c];
-                sector[3 * root] += x; sector[3 * root + 1] += y; sector[3 * root + 2] += z;
-                if (vertexRoot[v] < 0) vertexRoot[v] = root;
-                else if (vertexRoot[v] != root) split[v] = true;
-            }
-        }
-        double[] normals = java.util.Arrays.copyOf(limit, limit.length + 3 * nc);
-        int[] sectorNormal = new int[nc];
-        java.util.Arrays.fill(sectorNormal, -1);
-        int count = nv, k = 0;
-        for (int f = 0; f < nf; f++) {
-            if (r.isHole(f)) continue;
-            int[] order = sizes[f] == 4 ? split(p, fv, start[f]) : null;
-            int n = order != null ? 6 : sizes[f];
-            for (int m = 0; m < n; m++) {
-                int c = start[f] + (order != null ? order[m] : m), v = fv[c];
-                int root = find(parent, c);
-                double x = sector[3 * root], y = sector[3 * root + 1], z = sector[3 * root + 2];
-                double len = Math.sqrt(x * x + y * y + z * z);
-                if (!split[v] || !(len > 0) || !Double.isFinite(len)) {
-                    outN[k++] = v;
-                    continue;
-                }
-                if (sectorNormal[root] < 0) {
-                    // Unit length like the limit normals, so that interpolation weighs them alike.
-                    normals[3 * count] = x / len;
-                    normals[3 * count + 1] = y / len;
-                    normals[3 * count + 2] = z / len;
-                    sectorNormal[root] = count++;
-                }
-                outN[k++] = sectorNormal[root];
-            }
-        }
-        return java.util.Arrays.copyOf(normals, 3 * count);
-    }
-
-    private static int next(int c, int[] faceOf, int[] start) {
-        int f = faceOf[c];
-        return c + 1 == start[f + 1] ? start[f] : c + 1;
-    }
-
-    private static int find(int[] parent, int c) {
-        while (parent[c] != c) c = parent[c] = parent[parent[c]];
-        return c;
-    }
-
-    private static void union(int[] parent, int a, int b) {
-        a = find(parent, a);
-        b = find(parent, b);
-        if (a != b) parent[Math.max(a, b)] = Math.min(a, b);
-    }
-
-    /** Corners of the two triangles of a quad abcd cut along ac, or along bd; both keep the winding. */
-    private static final int[] SPLIT_AC = {0, 1, 2, 0, 2, 3}, SPLIT_BD = {0, 1, 3, 1, 2, 3};
-
-    /**
-     * How the quad whose corners start at {@code c} is cut: along the shorter diagonal, which keeps
-     * the two triangles closest to the (curved) quad.
-     */
-    private static int[] split(double[] p, int[] fv, int c) {
-        return dist2(p, fv[c], fv[c + 2]) <= dist2(p, fv[c + 1], fv[c + 3]) ? SPLIT_AC : SPLIT_BD;
-    }
-
-    private static double dist2(double[] p, int a, int b) {
-        double dx = p[3 * a] - p[3 * b], dy = p[3 * a + 1] - p[3 * b + 1], dz = p[3 * a + 2] - p[3 * b + 2];
-        return dx * dx + dy * dy + dz * dz;
+        return RefinedTriangles.triangles(r, smooth);
     }
 
     /**

@@ -33,10 +33,14 @@ final class BaseLevelBuilder {
      * twice by one face, by two faces in the same direction, or joining a vertex to itself is
      * non-manifold (and its end vertices too), as is any vertex whose faces do not form a single
      * fan (unused vertices included).
+     *
+     * @param general keep per-face starts even when every face is a quad (a patch's one-ring cut
+     *                from a mesh with other polygons: level 0 is then stored, and its values are
+     *                computed, as the whole mesh's are)
      */
-    BaseLevelBuilder(int nV, int[] faceSizes, int[] faceVerts) {
+    BaseLevelBuilder(int nV, int[] faceSizes, int[] faceVerts, boolean general) {
         int nF = faceSizes.length;
-        boolean quads = true;
+        boolean quads = !general;
         for (int s : faceSizes) quads &= s == 4;
         int[] faceStart = null, hFace = null;
         int nH = faceVerts.length;

@@ -125,6 +125,8 @@ public final class ControlMesh {
         private int holeCount;
         private SubdivOptions options = SubdivOptions.DEFAULT;
         private String source;
+        /** Level 0 keeps per-face starts even when all faces are quads (see {@link PatchRefiner}). */
+        boolean generalFaces;
 
         private Builder(double[] positions, int[] faceSizes, int[] faceVertices) {
             this.positions = Objects.requireNonNull(positions, "positions");
@@ -279,7 +281,7 @@ public final class ControlMesh {
             }
             double[] pos = positions.clone();
             int[] sizes = faceSizes.clone(), verts = faceVertices.clone();
-            BaseLevelBuilder levelBuilder = new BaseLevelBuilder(nV, sizes, verts);
+            BaseLevelBuilder levelBuilder = new BaseLevelBuilder(nV, sizes, verts, generalFaces);
             Level base = levelBuilder.level;
             float[] eSharp = null;
             for (int i = 0; i < creaseCount; i++) {

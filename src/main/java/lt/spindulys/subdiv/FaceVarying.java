@@ -68,7 +68,7 @@ final class FaceVarying {
             values[2 * id] = uv[2 * valueUv[id]];
             values[2 * id + 1] = uv[2 * valueUv[id] + 1];
         }
-        BaseLevelBuilder levelBuilder = new BaseLevelBuilder(nValues, faceSizes, valueOf);
+        BaseLevelBuilder levelBuilder = new BaseLevelBuilder(nValues, faceSizes, valueOf, geom.faceStart != null);
         Level lv = levelBuilder.level;
         SubdivOptions.FaceVarying fv = opt.fvar();
         boolean linear = fv == SubdivOptions.FaceVarying.ALL;

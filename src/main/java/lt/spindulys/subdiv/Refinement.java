@@ -120,7 +120,7 @@ final class Refinement {
     }
 
     /** The rotation of the child faces of h's face: quads keep the parent corner in place. */
-    private static int rot(Level p, int h) {
+    static int rot(Level p, int h) {
         if (p.faceStart == null) return h & 3;
         int f = p.hFace[h];
         return p.faceStart[f + 1] - p.faceStart[f] == 4 ? h - p.faceStart[f] : 0;

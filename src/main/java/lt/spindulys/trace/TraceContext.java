@@ -1,6 +1,7 @@
 package lt.spindulys.trace;
 
 import lt.spindulys.accel.TraversalScratch;
+import lt.spindulys.adaptive.RecentPatches;
 import lt.spindulys.math.Affine;
 import lt.spindulys.math.Ray;
 
@@ -18,6 +19,8 @@ public final class TraceContext extends TraversalScratch {
     public final Hit scratchHit = new Hit();
     /** Range output of bounds tests. */
     public final double[] range = new double[2];
+    /** This thread's last two lazily refined patches (see lt.spindulys.adaptive.PatchCache). */
+    public final RecentPatches recentPatches = new RecentPatches();
 
     /** Grow-once scratch for the crossings of a line with a mesh (TriangleSpans), and how many are in it. */
     public double[] crossings = new double[64];

@@ -1,0 +1,491 @@
+package lt.spindulys.subdiv;
+
+import java.util.Arrays;
+
+import lt.spindulys.mesh.MeshData;
+
+/**
+ * Refines one coarse face of a control mesh at a time, from its one-ring only. Immutable,
+ * thread-safe: every call works on its own arrays.
+ *
+ * <p><b>Why the one-ring gives the uniform path's values bit for bit.</b> A patch is made by
+ * gathering the faces that share a vertex with the face (through a vertex-to-faces incidence
+ * built once, which also copes with non-manifold vertices), building a small {@link ControlMesh}
+ * of them that keeps faces, vertices and UVs in their original relative order with the creases,
+ * corners, holes and options that apply, and refining it with the same code as the whole mesh.
+ * Far's numbering depends only on relative order (edges by first appearance, a vertex's first
+ * face, its edges in creation order), and every value of the face's descendants, and of the
+ * vertices around them, depends only on that one-ring: so each is computed by the same
+ * operations in the same order as in the whole-mesh refinement. The descendants of a face are
+ * one contiguous range of each level (faces of level L are the children of level L-1's faces in
+ * order), and their triangles come from {@link RefinedTriangles}, the code the uniform surface
+ * uses. Only the vertices at the one-ring's outer rim get other values than in the whole mesh
+ * (their own neighbourhood is cut), and no descendant of the face depends on them.
+ */
+public final class PatchRefiner {
+    /** The deepest level a patch may be refined to (as the uniform surface's). */
+    public static final int MAX_LEVEL = 8;
+
+    private final ControlMesh control;
+    private final Level base;
+    /** First corner of each face (faceCount + 1 entries). */
+    private final int[] cornerStart;
+    /** Vertex to faces: the faces at vertex v, ascending and each once, are vfFace[vfStart[v] .. vfStart[v+1]-1]. */
+    private final int[] vfStart, vfFace;
+
+    /**
+     * Builds the vertex-to-face incidence of {@code control} (two int arrays as long as its
+     * vertices and its corners).
+     *
+     * @param control the control mesh
+     */
+    public PatchRefiner(ControlMesh control) {
+        this.control = control;
+        this.base = control.base;
+        int[] sizes = control.faceSizes(), fv = control.faceVertices();
+        int nF = sizes.length, nV = control.vertexCount();
+        cornerStart = new int[nF + 1];
+        for (int f = 0; f < nF; f++) cornerStart[f + 1] = cornerStart[f] + sizes[f];
+        // A face that repeats a vertex is listed once at it: lastFace marks the faces counted.
+        int[] lastFace = new int[nV];
+        Arrays.fill(lastFace, -1);
+        int[] start = new int[nV + 1];
+        for (int f = 0; f < nF; f++) {
+            for (int c = cornerStart[f]; c < cornerStart[f + 1]; c++) {
+                int v = fv[c];
+                if (lastFace[v] != f) {
+                    lastFace[v] = f;
+                    start[v + 1]++;
+                }
+            }
+        }
+        for (int v = 0; v < nV; v++) start[v + 1] += start[v];
+        int[] faces = new int[start[nV]], fill = Arrays.copyOf(start, nV);
+        Arrays.fill(lastFace, -1);
+        for (int f = 0; f < nF; f++) {
+            for (int c = cornerStart[f]; c < cornerStart[f + 1]; c++) {
+                int v = fv[c];
+                if (lastFace[v] != f) {
+                    lastFace[v] = f;
+                    faces[fill[v]++] = f;
+                }
+            }
+        }
+        vfStart = start;
+        vfFace = faces;
+        base.edgeCodes();
+    }
+
+    /** {@return the control mesh} */
+    public ControlMesh control() { return control; }
+
+    /** {@return the number of coarse faces} */
+    public int faceCount() { return cornerStart.length - 1; }
+
+    /**
+     * Whether the face is a hole (its patches have no triangles): tagged so, or made so by
+     * boundary interpolation NONE.
+     *
+     * @param face the face
+     * @return true for a hole
+     */
+    public boolean isHole(int face) { return base.hole != null && base.hole[face]; }
+
+    /**
+     * Corners of a coarse face.
+     *
+     * @param face the face
+     * @return its size
+     */
+    public int faceSize(int face) { return cornerStart[face + 1] - cornerStart[face]; }
+
+    /**
+     * Whether every face's patches are exact against the uniform path. Always true: the one-ring
+     * construction holds for non-manifold vertices and edges too (the tests check every
+     * reference shape, the non-manifold ones included).
+     *
+     * @return true
+     */
+    public boolean isLocal() { return true; }
+
+    /** {@return the number of control edges, numbered as the base level numbers them (Far's order)} */
+    public int edgeCount() { return base.nE; }
+
+    /**
+     * The control edge from corner k's vertex to corner k+1's.
+     *
+     * @param face the face
+     * @param corner the corner k, 0 to faceSize - 1
+     * @return the edge index
+     */
+    public int faceEdge(int face, int corner) {
+        if (corner < 0 || corner >= faceSize(face)) throw new IllegalArgumentException("face " + face + " has no corner " + corner);
+        return base.edge(cornerStart[face] + corner);
+    }
+
+    /**
+     * The two vertices of every control edge, in Far's edge order and vertex order: a new array
+     * each call (the caller may keep or change it).
+     *
+     * @return two vertex indices per edge
+     */
+    public int[] edgeVertices() {
+        int[] ev = new int[2 * base.nE];
+        for (int h = 0; h < base.nH; h++) {
+            if (!base.primary(h)) continue;
+            int e = base.edge(h);
+            ev[2 * e] = base.edgeV0(h);
+            ev[2 * e + 1] = base.edgeV1(h);
+        }
+        return ev;
+    }
+
+    /**
+     * Box (minX, minY, minZ, maxX, maxY, maxZ) of the face's one-ring control points: contains
+     * every refined level of the face and its limit patch, because every Catmull-Clark rule
+     * (smooth, crease, corner, semi-sharp blends, smooth triangles) has non-negative weights.
+     * Not padded.
+     *
+     * @param face the face
+     * @param out receives the six numbers
+     */
+    public void oneRingBounds(int face, double[] out) {
+        double[] p = control.positions();
+        int[] fv = control.faceVertices();
+        double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+        for (int c = cornerStart[face]; c < cornerStart[face + 1]; c++) {
+            int v = fv[c];
+            for (int i = vfStart[v]; i < vfStart[v + 1]; i++) {
+                int g = vfFace[i];
+                for (int d = cornerStart[g]; d < cornerStart[g + 1]; d++) {
+                    int w = 3 * fv[d];
+                    x0 = Math.min(x0, p[w]); x1 = Math.max(x1, p[w]);
+                    y0 = Math.min(y0, p[w + 1]); y1 = Math.max(y1, p[w + 1]);
+                    z0 = Math.min(z0, p[w + 2]); z1 = Math.max(z1, p[w + 2]);
+                }
+            }
+        }
+        out[0] = x0; out[1] = y0; out[2] = z0; out[3] = x1; out[4] = y1; out[5] = z1;
+    }
+
+    /** Bytes of an array's header, and of the MeshData record, on a 64-bit JVM (uncompressed references: the larger). */
+    private static final long ARRAY_HEADER = 16, RECORD_BYTES = 80;
+
+    /**
+     * Heap bytes a patch of this face at this level will hold (its MeshData and arrays; for cache
+     * budgets), computed without building it: an upper bound. A patch has at most one normal
+     * and one UV per vertex (no sharp edge or UV seam runs inside a coarse face), unless the face
+     * repeats a vertex, when one per corner is counted.
+     *
+     * @param face the face
+     * @param level the level, 0 to {@link #MAX_LEVEL}
+     * @param smooth whether normals are made
+     * @return the bytes
+     */
+    public long patchBytes(int face, int level, boolean smooth) {
+        checkLevel(level);
+        int n = faceSize(face);
+        long verts, faces, corners;
+        if (level == 0) {
+            verts = n;
+            faces = n == 4 ? 2 : 1;
+            corners = n == 4 ? 6 : n;
+        } else {
+            long m = 1L << (level - 1), quads = n * m * m;
+            verts = quads + n * m + 1;
+            faces = 2 * quads;
+            corners = 6 * quads;
+        }
+        if (isHole(face)) {
+            verts = faces = corners = 0;
+        }
+        long perVertex = repeatsVertex(face) ? corners : verts;
+        boolean uv = control.uvs() != null;
+        long b = RECORD_BYTES + array(verts, 24) + array(faces, 4) + array(corners, 4);
+        if (smooth) b += array(perVertex, 24) + array(corners, 4);
+        if (uv) b += array(perVertex, 16) + array(corners, 4);
+        return b;
+    }
+
+    private static long array(long count, long bytesEach) {
+        return ARRAY_HEADER + ((count * bytesEach + 7) & ~7L);
+    }
+
+    private boolean repeatsVertex(int face) {
+        int[] fv = control.faceVertices();
+        for (int c = cornerStart[face]; c < cornerStart[face + 1]; c++) {
+            for (int d = cornerStart[face]; d < c; d++) if (fv[c] == fv[d]) return true;
+        }
+        return false;
+    }
+
+    private static void checkLevel(int level) {
+        if (level < 0 || level > MAX_LEVEL) throw new IllegalArgumentException("patch level must be between 0 and " + MAX_LEVEL + ", found " + level);
+    }
+
+    /**
+     * The triangles of {@code face} refined {@code level} times, from its one-ring alone: see
+     * {@link #refine(int, int, int[], int[], boolean)}, with each corner vertex placed at the
+     * lower level of its two edges.
+     *
+     * @param face the coarse face
+     * @param level 0 to {@link #MAX_LEVEL}
+     * @param edgeLevels per corner k, the level of edge k (each at most {@code level}), or null for all {@code level}
+     * @param smooth per-corner normals (true) or none
+     * @return the patch
+     */
+    public MeshData refine(int face, int level, int[] edgeLevels, boolean smooth) {
+        return refine(face, level, edgeLevels, null, smooth);
+    }
+
+    /**
+     * The triangles of {@code face} refined {@code level} times (0..8), from its one-ring alone,
+     * as MeshData with triangles only (at level 0 an n-gon stays one polygon, as the uniform path
+     * leaves it), vertex positions, for smooth shading per-corner normal indices and normals
+     * exactly as the uniform path gives them (flat: none), and face-varying UVs when the mesh has
+     * them. With no level lowered the result is bit for bit the uniform path's triangles of the
+     * face's descendants, in the same order (the arrays are the patch's own, numbered in order of
+     * first use).
+     *
+     * <p>An edge refined less than the face: the face's boundary vertices on that edge are
+     * snapped, monotonically (each to the nearest, ties towards the edge's first vertex), to the
+     * positions the edge's vertices have at the edge's own level, so that a neighbour refined at
+     * that level shares exactly the same edge vertices and the stitched surface is watertight
+     * (degenerate zero-area triangles are allowed). A corner vertex is placed at its corner level:
+     * for a watertight surface every face at a vertex must place it at the same level, e.g. the
+     * least level of all the control edges at it ({@link #vertexLevel}). Normals and UVs of
+     * snapped vertices are not changed.
+     *
+     * @param face the coarse face
+     * @param level 0 to {@link #MAX_LEVEL}
+     * @param edgeLevels per corner k, the level of edge k (each at most {@code level}), or null for all {@code level}
+     * @param cornerLevels per corner k, the level whose position corner k's vertex takes (each at
+     *                     most {@code level}), or null for the lower level of the two edges at it
+     * @param smooth per-corner normals (true) or none
+     * @return the patch
+     */
+    public MeshData refine(int face, int level, int[] edgeLevels, int[] cornerLevels, boolean smooth) {
+        if (face < 0 || face >= faceCount()) throw new IllegalArgumentException("face " + face + " is not in the mesh (" + faceCount() + " faces)");
+        checkLevel(level);
+        int n = faceSize(face);
+        int[] el = new int[n], cl = new int[n];
+        Arrays.fill(el, level);
+        if (edgeLevels != null) {
+            if (edgeLevels.length != n) throw new IllegalArgumentException("face " + face + " has " + n + " edges, but " + edgeLevels.length + " edge levels were given");
+            for (int k = 0; k < n; k++) {
+                if (edgeLevels[k] < 0 || edgeLevels[k] > level) {
+                    throw new IllegalArgumentException("edge level " + edgeLevels[k] + " of face " + face + " corner " + k + " is not between 0 and the face's level " + level);
+                }
+                el[k] = edgeLevels[k];
+            }
+        }
+        if (cornerLevels != null) {
+            if (cornerLevels.length != n) throw new IllegalArgumentException("face " + face + " has " + n + " corners, but " + cornerLevels.length + " corner levels were given");
+            for (int k = 0; k < n; k++) {
+                if (cornerLevels[k] < 0 || cornerLevels[k] > level) {
+                    throw new IllegalArgumentException("corner level " + cornerLevels[k] + " of face " + face + " corner " + k + " is not between 0 and the face's level " + level);
+                }
+                cl[k] = cornerLevels[k];
+            }
+        } else {
+            for (int k = 0; k < n; k++) cl[k] = Math.min(el[k], el[(k + n - 1) % n]);
+        }
+        boolean snap = false;
+        for (int k = 0; k < n; k++) snap |= el[k] < level || cl[k] < level;
+
+        Local lm = local(face);
+        RefinedMesh r = RefinedMesh.base(lm.mesh);
+        RefinedMesh[] levels = snap ? new RefinedMesh[level + 1] : null;
+        for (int i = 0; i < level; i++) {
+            if (snap) levels[i] = r;
+            r = r.refine();
+        }
+        if (snap) levels[level] = r;
+        Level b = lm.mesh.base;
+        int f0 = lm.face, count = 1;
+        if (level >= 1) {
+            f0 = b.firstHalf(lm.face);
+            count = n;
+            for (int l = 2; l <= level; l++) {
+                f0 *= 4;
+                count *= 4;
+            }
+        }
+        int[] vmap = new int[r.vertexCount()];
+        MeshData md = RefinedTriangles.triangles(r, f0, f0 + count, smooth, vmap);
+        if (snap && md.vertexIndex().length > 0) snap(levels, b.firstHalf(lm.face), n, level, el, cl, vmap, md.positions());
+        return md;
+    }
+
+    /** Moves the boundary vertices of edges and corners below the face's level (see {@link #refine}). */
+    private static void snap(RefinedMesh[] levels, int h0, int n, int level, int[] el, int[] cl, int[] vmap, double[] out) {
+        Level b = levels[0].topo;
+        for (int k = 0; k < n; k++) {
+            int ka = k, kb = (k + 1) % n;
+            if (el[k] == level && cl[ka] == level && cl[kb] == level) continue;
+            int h = h0 + k;
+            int[] fine = chain(levels, h, level);
+            int[] coarse = el[k] < level ? chain(levels, h, el[k]) : fine;
+            int d = level - el[k], last = 1 << el[k];
+            boolean towardsLow = b.fwd(h); // the edge's first vertex is at this face's corner k
+            double[] pa = levels[cl[ka]].positions(), pb = levels[cl[kb]].positions(), pe = levels[el[k]].positions();
+            int va = b.hOrig[h], vb = b.dest(h);
+            for (int j = 0; j < fine.length; j++) {
+                int i;
+                if (d == 0) {
+                    i = j;
+                } else {
+                    int rem = j & ((1 << d) - 1), half = 1 << (d - 1);
+                    i = j >> d;
+                    if (rem > half || (rem == half && !towardsLow)) i++;
+                }
+                int m = vmap[fine[j]];
+                if (m < 0) continue;
+                if (i == 0) System.arraycopy(pa, 3 * va, out, 3 * m, 3);
+                else if (i == last) System.arraycopy(pb, 3 * vb, out, 3 * m, 3);
+                else System.arraycopy(pe, 3 * coarse[i], out, 3 * m, 3);
+            }
+        }
+    }
+
+    /**
+     * The vertices along base half-edge h at a level, from h's origin to its end (2^level + 1):
+     * a child half-edge of x runs from x's origin to x's edge point, the next from there to x's
+     * end (see {@link Refinement}'s numbering).
+     */
+    private static int[] chain(RefinedMesh[] levels, int h, int level) {
+        int[] hs = {h};
+        for (int l = 0; l < level; l++) {
+            Level p = levels[l].topo;
+            int[] next = new int[2 * hs.length];
+            for (int i = 0; i < hs.length; i++) {
+                int x = hs[i], xn = p.next(x);
+                next[2 * i] = 4 * x + (Refinement.rot(p, x) & 3);
+                next[2 * i + 1] = 4 * xn + ((Refinement.rot(p, xn) + 3) & 3);
+            }
+            hs = next;
+        }
+        Level t = levels[level].topo;
+        int[] v = new int[hs.length + 1];
+        for (int i = 0; i < hs.length; i++) v[i] = t.hOrig[hs[i]];
+        v[hs.length] = t.dest(hs[hs.length - 1]);
+        return v;
+    }
+
+    /**
+     * The least level of the control edges at a face's corner vertex, given a level per control
+     * edge: the corner level at which every face around the vertex places it alike.
+     *
+     * @param face the face
+     * @param corner its corner
+     * @param edgeLevel a level per control edge (indexed as {@link #faceEdge})
+     * @return the least level of an edge at the vertex
+     */
+    public int vertexLevel(int face, int corner, int[] edgeLevel) {
+        int v = control.faceVertices()[cornerStart[face] + corner];
+        int min = Integer.MAX_VALUE;
+        for (int i = vfStart[v]; i < vfStart[v + 1]; i++) {
+            int g = vfFace[i];
+            for (int c = cornerStart[g]; c < cornerStart[g + 1]; c++) {
+                if (base.hOrig[c] == v || base.dest(c) == v) min = Math.min(min, edgeLevel[base.edge(c)]);
+            }
+        }
+        return min;
+    }
+
+    /** The one-ring control mesh of a face and the face's index in it. */
+    private record Local(ControlMesh mesh, int face) {}
+
+    /**
+     * The faces sharing a vertex with {@code face}, with their vertices, UVs, creases, corners,
+     * holes and the options, everything kept in its original relative order.
+     */
+    private Local local(int face) {
+        int[] sizes = control.faceSizes(), fv = control.faceVertices();
+        int total = 0;
+        for (int c = cornerStart[face]; c < cornerStart[face + 1]; c++) total += vfStart[fv[c] + 1] - vfStart[fv[c]];
+        int[] ring = new int[total];
+        int k = 0;
+        for (int c = cornerStart[face]; c < cornerStart[face + 1]; c++) {
+            int v = fv[c];
+            for (int i = vfStart[v]; i < vfStart[v + 1]; i++) ring[k++] = vfFace[i];
+        }
+        int nr = sortedUnique(ring, k);
+        int corners = 0;
+        for (int i = 0; i < nr; i++) corners += sizes[ring[i]];
+        int[] verts = new int[corners];
+        int[] lsizes = new int[nr];
+        k = 0;
+        for (int i = 0; i < nr; i++) {
+            int g = ring[i];
+            lsizes[i] = sizes[g];
+            for (int c = cornerStart[g]; c < cornerStart[g + 1]; c++) verts[k++] = fv[c];
+        }
+        int[] lfv = verts.clone();
+        int nv = sortedUnique(verts, corners);
+        for (int i = 0; i < corners; i++) lfv[i] = Arrays.binarySearch(verts, 0, nv, lfv[i]);
+        double[] p = control.positions(), lp = new double[3 * nv];
+        for (int i = 0; i < nv; i++) System.arraycopy(p, 3 * verts[i], lp, 3 * i, 3);
+        ControlMesh.Builder mb = ControlMesh.builder(lp, lsizes, lfv).options(control.options());
+        // Level 0 of a mesh with other polygons is stored (and refined) in the general form, even
+        // where a one-ring has only quads: the quad-only code sums in another order.
+        mb.generalFaces = base.faceStart != null;
+        if (control.uvs() != null) {
+            int[] fuv = control.faceUvIndices();
+            int[] uvIds = new int[corners];
+            k = 0;
+            for (int i = 0; i < nr; i++) {
+                int g = ring[i];
+                for (int c = cornerStart[g]; c < cornerStart[g + 1]; c++) uvIds[k++] = fuv[c];
+            }
+            int[] luv = uvIds.clone();
+            int nu = sortedUnique(uvIds, corners);
+            for (int i = 0; i < corners; i++) luv[i] = Arrays.binarySearch(uvIds, 0, nu, luv[i]);
+            double[] uv = control.uvs(), lu = new double[2 * nu];
+            for (int i = 0; i < nu; i++) System.arraycopy(uv, 2 * uvIds[i], lu, 2 * i, 2);
+            mb.uvs(lu, luv);
+        }
+        // Sharpness as tagged (base.eSharp is the input, by edge) and as the base level settled
+        // it for vertices (given corners plus those sharpened by its own topology, which the
+        // one-ring sharpens alike at every vertex that matters).
+        if (base.eSharp != null) {
+            for (int i = 0; i < nr; i++) {
+                int g = ring[i];
+                for (int c = cornerStart[g]; c < cornerStart[g + 1]; c++) {
+                    float s = base.eSharp[base.edge(c)];
+                    if (s != 0f) {
+                        mb.crease(Arrays.binarySearch(verts, 0, nv, base.edgeV0(c)), Arrays.binarySearch(verts, 0, nv, base.edgeV1(c)), s);
+                    }
+                }
+            }
+        }
+        if (base.vSharp != null) {
+            for (int i = 0; i < nv; i++) {
+                float s = base.vSharp[verts[i]];
+                if (s != 0f) mb.corner(i, s);
+            }
+        }
+        ControlMesh m = mb.build();
+        // Holes as the whole mesh has them: boundary NONE would also make holes of faces at the
+        // ring's own rim, where the whole mesh has none.
+        boolean[] holes = null;
+        if (base.hole != null) {
+            for (int i = 0; i < nr; i++) {
+                if (base.hole[ring[i]]) {
+                    if (holes == null) holes = new boolean[nr];
+                    holes[i] = true;
+                }
+            }
+        }
+        m.base.hole = holes;
+        return new Local(m, Arrays.binarySearch(ring, 0, nr, face));
+    }
+
+    /** Sorts a[0..n) and removes repeats; returns the new length. */
+    private static int sortedUnique(int[] a, int n) {
+        Arrays.sort(a, 0, n);
+        int u = 0;
+        for (int i = 0; i < n; i++) if (u == 0 || a[i] != a[u - 1]) a[u++] = a[i];
+        return u;
+    }
+}

@@ -1,0 +1,248 @@
+package lt.spindulys.subdiv;
+
+import java.util.Arrays;
+
+import lt.spindulys.mesh.MeshData;
+
+/**
+ * The triangles of a refined mesh, the one implementation the uniform surface and the per-face
+ * patches ({@link PatchRefiner}) share: positions of the refined vertices, face-varying UVs and,
+ * for smooth shading, a normal per corner (the limit normal, or the sector's where sharp edges split a vertex); quads split along the
+ * shorter diagonal, other polygons (at level 0) left whole for the triangle mesh's fans, holes
+ * dropped. Stateless.
+ */
+public final class RefinedTriangles {
+    private RefinedTriangles() {}
+
+    /**
+     * The triangles of every face of a refined mesh. The MeshData shares the mesh's positions and
+     * UVs (its vertex and UV indices are the mesh's own).
+     *
+     * @param r the refined mesh
+     * @param smooth a normal per corner (true) or none (flat shading)
+     * @return the triangles
+     */
+    public static MeshData triangles(RefinedMesh r, boolean smooth) {
+        return build(r, 0, r.faceCount(), smooth, null);
+    }
+
+    /**
+     * The triangles of the faces {@code f0 .. f1-1} only, with their own compact vertex, UV and
+     * normal arrays (numbered in order of first use) but every value computed exactly as
+     * {@link #triangles(RefinedMesh, boolean)} computes it for the whole mesh.
+     *
+     * @param vertexMap receives, per vertex of {@code r}, its index in the result or -1 (length
+     *                  {@code r.vertexCount()})
+     */
+    static MeshData triangles(RefinedMesh r, int f0, int f1, boolean smooth, int[] vertexMap) {
+        return build(r, f0, f1, smooth, vertexMap);
+    }
+
+    /** Compact when {@code vmap} is given, else the whole mesh sharing its arrays. */
+    private static MeshData build(RefinedMesh r, int f0, int f1, boolean smooth, int[] vmap) {
+        double[] p = r.positions();
+        int[] sizes = r.faceSizes(), fv = r.faceVertices(), fuv = r.faceUvs();
+        double[] uvs = r.uvs();
+        boolean withUv = uvs != null && fuv != null;
+        int c0 = 0;
+        if (r.level() > 0) c0 = 4 * f0;
+        else for (int f = 0; f < f0; f++) c0 += sizes[f];
+        int faces = 0, corners = 0;
+        for (int f = f0; f < f1; f++) {
+            if (r.isHole(f)) continue;
+            faces += sizes[f] == 4 ? 2 : 1;
+            corners += sizes[f] == 4 ? 6 : sizes[f];
+        }
+        int[] outSizes = new int[faces], outV = new int[corners], outUv = withUv ? new int[corners] : null;
+        int o = 0, k = 0;
+        for (int f = f0, c = c0; f < f1; c += sizes[f], f++) {
+            if (r.isHole(f)) continue;
+            if (sizes[f] == 4) {
+                int[] order = split(p, fv, c);
+                for (int j : order) {
+                    outV[k] = fv[c + j];
+                    if (withUv) outUv[k] = fuv[c + j];
+                    k++;
+                }
+                outSizes[o++] = 3;
+                outSizes[o++] = 3;
+            } else {
+                for (int j = 0; j < sizes[f]; j++) {
+                    outV[k] = fv[c + j];
+                    if (withUv) outUv[k] = fuv[c + j];
+                    k++;
+                }
+                outSizes[o++] = sizes[f];
+            }
+        }
+        int[] outN = smooth ? new int[corners] : null;
+        double[] normals = smooth ? cornerNormals(r, f0, f1, outN, vmap != null) : null;
+        if (vmap == null) return new MeshData(p, normals, withUv ? uvs : null, outSizes, outV, outN, outUv, null);
+        // Compact: vertices and UVs renumbered in order of first use, values copied unchanged.
+        Arrays.fill(vmap, -1);
+        int nv = 0;
+        for (int i = 0; i < corners; i++) {
+            int v = outV[i];
+            if (vmap[v] < 0) vmap[v] = nv++;
+            outV[i] = vmap[v];
+        }
+        double[] pos = new double[3 * nv];
+        for (int v = 0; v < vmap.length; v++) {
+            int m = vmap[v];
+            if (m >= 0) System.arraycopy(p, 3 * v, pos, 3 * m, 3);
+        }
+        double[] outUvs = null;
+        if (withUv) {
+            int[] umap = new int[uvs.length / 2];
+            Arrays.fill(umap, -1);
+            int nu = 0;
+            double[] u = new double[2 * corners];
+            for (int i = 0; i < corners; i++) {
+                int t = outUv[i];
+                if (umap[t] < 0) {
+                    umap[t] = nu;
+                    u[2 * nu] = uvs[2 * t];
+                    u[2 * nu + 1] = uvs[2 * t + 1];
+                    nu++;
+                }
+                outUv[i] = umap[t];
+            }
+            outUvs = Arrays.copyOf(u, 2 * nu);
+        }
+        return new MeshData(pos, normals, outUvs, outSizes, outV, outN, outUv, null);
+    }
+
+    /**
+     * The shading normal of every output corner of faces {@code f0 .. f1-1}, written as an index
+     * into the returned array to {@code outN} (in the order {@link #build} emits corners): the
+     * vertex's limit normal, except where infinitely sharp edges (creases, boundaries, corners)
+     * cut the faces around a vertex into several sectors. The limit surface has a tangent plane
+     * per sector there and no single normal is right for all, so each corner gets the
+     * area-weighted normal of the faces in its own sector and the crease stays crisp in shading.
+     * Sectors are summed over every face of the mesh, in face order, whatever the range, so a
+     * range gets the values the whole mesh gets. Compact: only the normals the range uses, in
+     * order of first use; otherwise every limit normal first (index = vertex), then the sectors'.
+     */
+    private static double[] cornerNormals(RefinedMesh r, int f0, int f1, int[] outN, boolean compact) {
+        double[] p = r.positions(), limit = r.limitNormals();
+        int[] sizes = r.faceSizes(), fv = r.faceVertices(), twin = r.cornerTwins();
+        boolean[] sharp = r.sharpEdges();
+        int nv = p.length / 3, nf = sizes.length, nc = fv.length;
+        int[] start = new int[nf + 1], faceOf = new int[nc];
+        for (int f = 0; f < nf; f++) {
+            start[f + 1] = start[f] + sizes[f];
+            for (int c = start[f]; c < start[f + 1]; c++) faceOf[c] = f;
+        }
+        // Sectors: corners at the same vertex joined across every edge that is neither sharp nor
+        // next to a hole (union-find over corners).
+        int[] parent = new int[nc];
+        for (int c = 0; c < nc; c++) parent[c] = c;
+        for (int c = 0; c < nc; c++) {
+            int t = twin[c];
+            if (t < c || sharp[c] || r.isHole(faceOf[c]) || r.isHole(faceOf[t])) continue;
+            // c runs a -> b in its face, t runs b -> a in the neighbour.
+            union(parent, c, next(t, faceOf, start));
+            union(parent, next(c, faceOf, start), t);
+        }
+        // Area-weighted face normals (Newell's method) summed per sector.
+        double[] sector = new double[3 * nc];
+        int[] vertexRoot = new int[nv];
+        boolean[] split = new boolean[nv];
+        Arrays.fill(vertexRoot, -1);
+        for (int f = 0; f < nf; f++) {
+            if (r.isHole(f)) continue;
+            double x = 0, y = 0, z = 0;
+            for (int c = start[f]; c < start[f + 1]; c++) {
+                int a = 3 * fv[c], b = 3 * fv[next(c, faceOf, start)];
+                x += (p[a + 1] - p[b + 1]) * (p[a + 2] + p[b + 2]);
+                y += (p[a + 2] - p[b + 2]) * (p[a] + p[b]);
+                z += (p[a] - p[b]) * (p[a + 1] + p[b + 1]);
+            }
+            for (int c = start[f]; c < start[f + 1]; c++) {
+                int root = find(parent, c), v = fv[c];
+                sector[3 * root] += x; sector[3 * root + 1] += y; sector[3 * root + 2] += z;
+                if (vertexRoot[v] < 0) vertexRoot[v] = root;
+                else if (vertexRoot[v] != root) split[v] = true;
+            }
+        }
+        double[] normals;
+        int count;
+        int[] vertexNormal = null;
+        if (compact) {
+            normals = new double[3 * outN.length];
+            count = 0;
+            vertexNormal = new int[nv];
+            Arrays.fill(vertexNormal, -1);
+        } else {
+            normals = Arrays.copyOf(limit, limit.length + 3 * nc);
+            count = nv;
+        }
+        int[] sectorNormal = new int[nc];
+        Arrays.fill(sectorNormal, -1);
+        int k = 0;
+        for (int f = f0; f < f1; f++) {
+            if (r.isHole(f)) continue;
+            int[] order = sizes[f] == 4 ? split(p, fv, start[f]) : null;
+            int n = order != null ? 6 : sizes[f];
+            for (int m = 0; m < n; m++) {
+                int c = start[f] + (order != null ? order[m] : m), v = fv[c];
+                int root = find(parent, c);
+                double x = sector[3 * root], y = sector[3 * root + 1], z = sector[3 * root + 2];
+                double len = Math.sqrt(x * x + y * y + z * z);
+                if (!split[v] || !(len > 0) || !Double.isFinite(len)) {
+                    if (!compact) {
+                        outN[k++] = v;
+                    } else {
+                        if (vertexNormal[v] < 0) {
+                            System.arraycopy(limit, 3 * v, normals, 3 * count, 3);
+                            vertexNormal[v] = count++;
+                        }
+                        outN[k++] = vertexNormal[v];
+                    }
+                    continue;
+                }
+                if (sectorNormal[root] < 0) {
+                    // Unit length like the limit normals, so that interpolation weighs them alike.
+                    normals[3 * count] = x / len;
+                    normals[3 * count + 1] = y / len;
+                    normals[3 * count + 2] = z / len;
+                    sectorNormal[root] = count++;
+                }
+                outN[k++] = sectorNormal[root];
+            }
+        }
+        return Arrays.copyOf(normals, 3 * count);
+    }
+
+    private static int next(int c, int[] faceOf, int[] start) {
+        int f = faceOf[c];
+        return c + 1 == start[f + 1] ? start[f] : c + 1;
+    }
+
+    private static int find(int[] parent, int c) {
+        while (parent[c] != c) c = parent[c] = parent[parent[c]];
+        return c;
+    }
+
+    private static void union(int[] parent, int a, int b) {
+        a = find(parent, a);
+        b = find(parent, b);
+        if (a != b) parent[Math.max(a, b)] = Math.min(a, b);
+    }
+
+    /** Corners of the two triangles of a quad abcd cut along ac, or along bd; both keep the winding. */
+    private static final int[] SPLIT_AC = {0, 1, 2, 0, 2, 3}, SPLIT_BD = {0, 1, 3, 1, 2, 3};
+
+    /**
+     * How the quad whose corners start at {@code c} is cut: along the shorter diagonal, which keeps
+     * the two triangles closest to the (curved) quad.
+     */
+    private static int[] split(double[] p, int[] fv, int c) {
+        return dist2(p, fv[c], fv[c + 2]) <= dist2(p, fv[c + 1], fv[c + 3]) ? SPLIT_AC : SPLIT_BD;
+    }
+
+    private static double dist2(double[] p, int a, int b) {
+        double dx = p[3 * a] - p[3 * b], dy = p[3 * a + 1] - p[3 * b + 1], dz = p[3 * a + 2] - p[3 * b + 2];
+        return dx * dx + dy * dy + dz * dz;
+    }
+}
