@@ -10,6 +10,12 @@ import lt.spindulys.math.Affine;
  * decides which side the ray came from. Mutable per-thread scratch.
  */
 public final class ShadingData {
+    /**
+     * The shading thread's own last patches of lazily refined surfaces (a hit is shaded once,
+     * right after it was found, so its patch is usually here).
+     */
+    public final lt.spindulys.adaptive.RecentPatches recentPatches = new lt.spindulys.adaptive.RecentPatches();
+
     /** Hit point. */
     public final double[] p = new double[3];
     /** Geometric normal, outward. */

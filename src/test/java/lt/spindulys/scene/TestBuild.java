@@ -13,11 +13,15 @@ final class TestBuild {
 
     static BuildContext context(Placement parentToWorld, Material inherited, AcceleratorKind kind) {
         return new BuildContext(parentToWorld, inherited, kind, SceneBuilder.DEFAULT_CAMERA,
-                RenderSettings.DEFAULT.width(), RenderSettings.DEFAULT.height(), parentToWorld.open(), parentToWorld.close());
+                RenderSettings.DEFAULT.width(), RenderSettings.DEFAULT.height(), parentToWorld.open(), parentToWorld.close(),
+                new BuildShared(AdaptiveSettings.DEFAULT, SceneBuilder.DEFAULT_CAMERA, RenderSettings.DEFAULT.width(), RenderSettings.DEFAULT.height()));
     }
 
     static int freeze(GObject o, Placement parentToWorld, Material inherited, int ids, AcceleratorKind kind) {
-        return o.freeze(context(parentToWorld, inherited, kind), ids);
+        BuildContext c = context(parentToWorld, inherited, kind);
+        int next = o.freeze(c, ids);
+        c.shared().finish(c); // adaptive surfaces choose their levels, as a scene has them do after placing all
+        return next;
     }
 
     static int freeze(GObject o, Transform parentToWorld, Material inherited, int ids, AcceleratorKind kind) {
