@@ -185,6 +185,7 @@ public final class Renderer {
                 } catch (Throwable e) {
                     failure.compareAndSet(null, e);
                 } finally {
+                    scratch.flushStatistics();
                     counters[index] = new long[] {scratch.cameraRays, scratch.shadowRays, scratch.reflectionRays, scratch.refractionRays};
                 }
             }, "spindulys-render-" + k, WORKER_STACK_BYTES);

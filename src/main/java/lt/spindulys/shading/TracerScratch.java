@@ -42,8 +42,15 @@ public final class TracerScratch {
 
     public TracerScratch(int maxDepth) {
         path = new PathVertex[maxDepth + 2];
-        for (int i = 0; i < path.length; i++) path[i] = new PathVertex();
+        for (int i = 0; i < path.length; i++) {
+            path[i] = new PathVertex();
+            path[i].shading.recentPatches = ctx.recentPatches;
+        }
+        shadowShading.recentPatches = ctx.recentPatches;
     }
+
+    /** Adds this thread's batched counts of lazily refined patches to their caches' statistics; call when the thread is done. */
+    public void flushStatistics() { ctx.recentPatches.flush(); }
 
     void pushMedium(Material m, TracedObject solid) {
         if (mediaCount == media.length) {

@@ -12,9 +12,10 @@ import lt.spindulys.math.Affine;
 public final class ShadingData {
     /**
      * The shading thread's own last patches of lazily refined surfaces (a hit is shaded once,
-     * right after it was found, so its patch is usually here).
+     * right after it was found, so its patch is usually here): a render thread's scratch makes
+     * this its {@link TraceContext#recentPatches}, so that a thread has one.
      */
-    public final lt.spindulys.adaptive.RecentPatches recentPatches = new lt.spindulys.adaptive.RecentPatches();
+    public lt.spindulys.adaptive.RecentPatches recentPatches = new lt.spindulys.adaptive.RecentPatches();
 
     /** Hit point. */
     public final double[] p = new double[3];
