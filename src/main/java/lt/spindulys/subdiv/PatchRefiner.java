@@ -21,6 +21,16 @@ import lt.spindulys.mesh.MeshData;
  * order), and their triangles come from {@link RefinedTriangles}, the code the uniform surface
  * uses. Only the vertices at the one-ring's outer rim get other values than in the whole mesh
  * (their own neighbourhood is cut), and no descendant of the face depends on them.
+ *
+ * <p><b>Pruning.</b> The same holds at every level: the descendants at level l and the faces
+ * sharing a vertex with them are all that deeper levels need. So each refined level below the
+ * last is cut down to those faces (order kept, the rim's vertices made corners so that no rule
+ * walks around their cut rings) before it is refined again, and a patch costs about
+ * (2^l + 2)^2 faces per level instead of the whole one-ring's 9 * 4^l. Levels with non-manifold
+ * side tables (and level 0, which may hold other polygons) are refined whole.
+ *
+ * <p><b>Cost.</b> Per patch, arrays proportional to the pruned levels plus one int per control
+ * face of the one-ring; no hash maps, nothing shared and mutable.
  */
 public final class PatchRefiner {
     /** The deepest level a patch may be refined to (as the uniform surface's). */

@@ -200,6 +200,22 @@ class PatchRefinerTest {
     }
 
     @Test
+    void faceEdgesJoinTheFacesCorners() {
+        for (String shape : new String[] {"catmark_nonquads", "catmark_nonman_edges", "catmark_torus"}) {
+            ControlMesh m = Corpus.load(shape);
+            PatchRefiner pr = new PatchRefiner(m);
+            int[] ev = pr.edgeVertices(), fv = m.faceVertices();
+            assertEquals(2 * pr.edgeCount(), ev.length);
+            for (int f = 0, c = 0; f < pr.faceCount(); c += pr.faceSize(f), f++) {
+                for (int k = 0; k < pr.faceSize(f); k++) {
+                    int e = pr.faceEdge(f, k), a = fv[c + k], b = fv[c + (k + 1) % pr.faceSize(f)];
+                    assertTrue(ev[2 * e] == a && ev[2 * e + 1] == b || ev[2 * e] == b && ev[2 * e + 1] == a, shape + " face " + f + " edge " + k);
+                }
+            }
+        }
+    }
+
+    @Test
     void badArgumentsAreRefused() {
         PatchRefiner pr = new PatchRefiner(Corpus.load("catmark_cube"));
         assertThrows(IllegalArgumentException.class, () -> pr.refine(0, 9, null, true));
