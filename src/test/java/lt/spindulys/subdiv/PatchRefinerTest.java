@@ -216,6 +216,31 @@ class PatchRefinerTest {
     }
 
     @Test
+    void patchesFromManyThreadsEqualOnesMadeAlone() throws Exception {
+        ControlMesh m = Corpus.load("catmark_fvar_bound2", o -> o.withFaceVarying(SubdivOptions.FaceVarying.CORNERS_ONLY));
+        PatchRefiner pr = new PatchRefiner(m);
+        MeshData[] alone = new MeshData[pr.faceCount()];
+        for (int f = 0; f < alone.length; f++) alone[f] = pr.refine(f, 3, null, true);
+        java.util.concurrent.ExecutorService pool = java.util.concurrent.Executors.newFixedThreadPool(4);
+        try {
+            List<java.util.concurrent.Future<Boolean>> results = new ArrayList<>();
+            for (int rep = 0; rep < 8; rep++) {
+                for (int f = 0; f < alone.length; f++) {
+                    int face = f;
+                    results.add(pool.submit(() -> {
+                        MeshData p = pr.refine(face, 3, null, true);
+                        return java.util.Arrays.equals(p.positions(), alone[face].positions()) && java.util.Arrays.equals(p.normals(), alone[face].normals())
+                                && java.util.Arrays.equals(p.uvs(), alone[face].uvs()) && java.util.Arrays.equals(p.vertexIndex(), alone[face].vertexIndex());
+                    }));
+                }
+            }
+            for (java.util.concurrent.Future<Boolean> r : results) assertTrue(r.get());
+        } finally {
+            pool.shutdown();
+        }
+    }
+
+    @Test
     void badArgumentsAreRefused() {
         PatchRefiner pr = new PatchRefiner(Corpus.load("catmark_cube"));
         assertThrows(IllegalArgumentException.class, () -> pr.refine(0, 9, null, true));
