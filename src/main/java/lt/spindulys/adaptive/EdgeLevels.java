@@ -14,7 +14,7 @@ import lt.spindulys.math.Vec3;
  * faces sharing an edge always see the same level (design note, pitfall 1), clamped to a maximum
  * and coarsened off screen (pitfall 8). Stateless.
  *
- * <p><b>Moving objects.</b> The placement is evaluated at {@link #TIME_SAMPLES} times evenly spread
+ * <p><b>Moving objects.</b> The placement is evaluated at {@link #INTERVALS} + 1 times evenly spread
  * over the shutter, its ends included. Between two samples each end of an edge stays within the
  * distance d it moves from one sample to the next (the chord: exact for a translation, a scale, or
  * a rotation of at most 180 degrees between samples, that is 1800 degrees over the shutter; for
@@ -24,11 +24,16 @@ import lt.spindulys.math.Vec3;
  * the edge is bounded as a segment no longer than min(L0, L1) plus the change of the vector b - a
  * (which the linear part alone moves, so the same argument holds for it), whose distance from the
  * eye is at least either sample's distance minus max(dA, dB), inside a frustum widened by that
- * much: no time in between can hide a closer, longer or visible position.
+ * much: no time in between can hide a closer, longer or visible position. The bound is loose where
+ * an edge moves far compared with its distance from the eye; where it costs a level over both
+ * sampled ends, the interval is bounded again in {@link #STEPS} finer steps (each as rigorous), so
+ * the extra evaluations go only to the few edges that sweep close past the camera.
  */
 public final class EdgeLevels {
-    /** Placement samples over the shutter of a moving object: 9 inside plus the open and close times. */
-    static final int TIME_SAMPLES = 11;
+    /** Intervals between the placement's samples over the shutter of a moving object: 9 times inside plus the open and close times. */
+    static final int INTERVALS = 10;
+    /** Finer steps in each interval, taken only where the coarse bound costs a level (see the class comment). */
+    static final int STEPS = 8;
 
     private EdgeLevels() {}
 
@@ -94,13 +99,12 @@ public final class EdgeLevels {
             }
         }
         double[] m = matrices(placement);
-        int times = m.length / 12;
         double[] a0 = new double[3], b0 = new double[3], a1 = new double[3], b1 = new double[3];
         for (int e = 0; e < edges; e++) {
             if (levelsInOut[e] >= maxLevel) continue;
             int va = 3 * edgeVertices[2 * e], vb = 3 * edgeVertices[2 * e + 1];
             double pixels;
-            if (times == 1) {
+            if (m.length == 12) {
                 apply(m, 0, positions, va, a0);
                 apply(m, 0, positions, vb, b0);
                 pixels = view.pixels(a0[0], a0[1], a0[2], b0[0], b0[1], b0[2], dist(a0, b0), 0, offscreenScale);
@@ -108,25 +112,49 @@ public final class EdgeLevels {
                 pixels = 0;
                 apply(m, 0, positions, va, a0);
                 apply(m, 0, positions, vb, b0);
-                for (int k = 1; k < times && !(pixels == Double.POSITIVE_INFINITY); k++) {
-                    apply(m, k, positions, va, a1);
-                    apply(m, k, positions, vb, b1);
-                    double da = dist(a0, a1), db = dist(b0, b1);
-                    // b - a is mapped by the linear part alone, so it moves on the same kind of path:
-                    // its length in between is within the chord of its own change (0 for a translation).
-                    double dvx = (b1[0] - a1[0]) - (b0[0] - a0[0]), dvy = (b1[1] - a1[1]) - (b0[1] - a0[1]), dvz = (b1[2] - a1[2]) - (b0[2] - a0[2]);
-                    double length = Math.min(dist(a0, b0), dist(a1, b1)) + Math.sqrt(dvx * dvx + dvy * dvy + dvz * dvz);
-                    double pad = Math.max(da, db);
-                    double p = Math.min(view.pixels(a0[0], a0[1], a0[2], b0[0], b0[1], b0[2], length, pad, offscreenScale),
-                            view.pixels(a1[0], a1[1], a1[2], b1[0], b1[1], b1[2], length, pad, offscreenScale));
+                double atStart = view.pixels(a0[0], a0[1], a0[2], b0[0], b0[1], b0[2], dist(a0, b0), 0, offscreenScale);
+                for (int c = 0; c < INTERVALS && !(pixels == Double.POSITIVE_INFINITY); c++) {
+                    int k0 = c * STEPS, k1 = k0 + STEPS;
+                    apply(m, k0, positions, va, a0);
+                    apply(m, k0, positions, vb, b0);
+                    apply(m, k1, positions, va, a1);
+                    apply(m, k1, positions, vb, b1);
+                    double atEnd = view.pixels(a1[0], a1[1], a1[2], b1[0], b1[1], b1[2], dist(a1, b1), 0, offscreenScale);
+                    double p = between(view, a0, b0, a1, b1, offscreenScale);
+                    // Where the padding costs a level over both sampled ends, the finer steps
+                    // (each as rigorous) may win it back.
+                    if (levelFor(p, targetPixels, maxLevel) > levelFor(Math.max(atStart, atEnd), targetPixels, maxLevel)) {
+                        double fine = 0;
+                        for (int k = k0; k < k1 && fine < p; k++) {
+                            apply(m, k, positions, va, a0);
+                            apply(m, k, positions, vb, b0);
+                            apply(m, k + 1, positions, va, a1);
+                            apply(m, k + 1, positions, vb, b1);
+                            double q = between(view, a0, b0, a1, b1, offscreenScale);
+                            if (!(q <= fine)) fine = q;
+                        }
+                        if (!(fine >= p)) p = fine;
+                    }
                     if (p > pixels || Double.isNaN(p)) pixels = p;
-                    double[] t = a0; a0 = a1; a1 = t;
-                    t = b0; b0 = b1; b1 = t;
+                    atStart = atEnd;
                 }
             }
             int level = levelFor(pixels, targetPixels, maxLevel);
             if (level > levelsInOut[e]) levelsInOut[e] = level;
         }
+    }
+
+    /** A bound on the pixels of the edge at every time between two samples (see the class comment). */
+    private static double between(ViewFootprint view, double[] a0, double[] b0, double[] a1, double[] b1, double offscreenScale) {
+        double da = dist(a0, a1), db = dist(b0, b1);
+        // b - a is mapped by the linear part alone, so it moves on the same kind of path:
+        // its length in between is within the chord of its own change (0 for a translation).
+        double dvx = (b1[0] - a1[0]) - (b0[0] - a0[0]), dvy = (b1[1] - a1[1]) - (b0[1] - a0[1]), dvz = (b1[2] - a1[2]) - (b0[2] - a0[2]);
+        double length = Math.min(dist(a0, b0), dist(a1, b1)) + Math.sqrt(dvx * dvx + dvy * dvy + dvz * dvz);
+        double pad = Math.max(da, db);
+        // Each sample's segment bounds every one in between; the smaller bound is the better.
+        return Math.min(view.pixels(a0[0], a0[1], a0[2], b0[0], b0[1], b0[2], length, pad, offscreenScale),
+                view.pixels(a1[0], a1[1], a1[2], b1[0], b1[1], b1[2], length, pad, offscreenScale));
     }
 
     /**
@@ -184,10 +212,11 @@ public final class EdgeLevels {
         if (placement.isStatic() || placement.open() == placement.close()) {
             return matrix(placement.isStatic() ? placement.staticTransform() : placement.at(placement.open()));
         }
-        double[] m = new double[12 * TIME_SAMPLES];
+        int samples = INTERVALS * STEPS + 1;
+        double[] m = new double[12 * samples];
         double open = placement.open(), close = placement.close();
-        for (int k = 0; k < TIME_SAMPLES; k++) {
-            double time = k == TIME_SAMPLES - 1 ? close : open + (close - open) * k / (TIME_SAMPLES - 1);
+        for (int k = 0; k < samples; k++) {
+            double time = k == samples - 1 ? close : open + (close - open) * k / (samples - 1);
             System.arraycopy(matrix(placement.at(time)), 0, m, 12 * k, 12);
         }
         return m;

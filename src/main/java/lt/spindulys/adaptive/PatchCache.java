@@ -15,8 +15,10 @@ import lt.spindulys.limits.HeapBudget;
  * <p>Each tessellation gets a {@link Table} of one slot per coarse face (an instanced surface shares its table, so
  * one entry serves every instance). Under {@link CachePolicy#LRU}:
  * <ul>
- * <li>A hit takes no lock: it reads the slot (an {@link AtomicReferenceArray}) and sets the slot's reference bit
- *     (written only when clear, so a hot slot's cache line stays shared between cores).
+ * <li>A hit takes no lock and writes no shared counter: it is answered by the thread's last two built patches
+ *     ({@link RecentPatches}) or by the slot (an {@link AtomicReferenceArray}), sets the slot's reference bit
+ *     (written only when clear, so a hot slot's cache line stays shared between cores), and is counted in the
+ *     thread's {@link RecentPatches}, which adds its hits to the stats in batches.
  * <li>A miss builds outside any lock. Two threads may build the same face at once; the first to install it wins,
  *     the other drops its copy, counts a race and returns the winner's (equal, since sources are pure).
  * <li>Before installing, a builder reserves the patch's bytes with a compare-and-set that succeeds only within

@@ -155,8 +155,7 @@ public final class ViewFootprint {
     /**
      * The same bound for every segment within {@code pad} of a-b (each end moved at most that far)
      * and at most {@code length} long: the distance is reduced by pad, the frustum widened by pad,
-     * and off-axis the frustum's largest stretch is taken (the moved segment's direction is not
-     * known). With pad 0 and the true length it is {@link #pixels(double, double, double, double, double, double, double)}.
+     * and the directions of the visible part turned outwards by the most that pad allows. With pad 0 and the true length it is {@link #pixels(double, double, double, double, double, double, double)}.
      */
     double pixels(double ax, double ay, double az, double bx, double by, double bz, double length, double pad, double offscreenScale) {
         if (length == 0) return 0;
@@ -165,7 +164,7 @@ public final class ViewFootprint {
         double dd = dx * dx + dy * dy + dz * dz;
         double t = dd > 0 ? Math.max(0, Math.min(1, -(wx * dx + wy * dy + wz * dz) / dd)) : 0;
         double nx = wx + t * dx, ny = wy + t * dy, nz = wz + t * dz;
-        double distance = Math.sqrt(nx * nx + ny * ny + nz * nz) - pad;
+        double nearest = Math.sqrt(nx * nx + ny * ny + nz * nz), distance = nearest - pad;
         if (!(distance > 0)) return distance <= 0 ? Double.POSITIVE_INFINITY : Double.NaN;
         double angle = length / distance;
         // Clip the segment to the frustum (four half-spaces through the eye, each widened by pad).
@@ -179,12 +178,18 @@ public final class ViewFootprint {
             else if (db < 0) t1 = Math.min(t1, da / (da - db));
         }
         if (!(t0 <= t1)) return angle * centrePixelsPerRadian / offscreenScale;
-        double c = minCos;
-        if (pad == 0) {
-            // The visible part's directions form an arc inside the frustum; its angle from the
-            // axis is largest at an end of the arc, so the clipped ends bound 1 / cos² over it.
-            c = Math.max(minCos, Math.min(cosToAxis(wx + t0 * dx, wy + t0 * dy, wz + t0 * dz), cosToAxis(wx + t1 * dx, wy + t1 * dy, wz + t1 * dz)));
+        // The visible part's directions form an arc inside the frustum; its angle from the axis is
+        // largest at an end of the arc, so the clipped ends bound 1 / cos² over it. A segment
+        // within pad of this one, which can be visible only where this one is within pad of the
+        // frustum (the widened clip), turns each direction by at most asin(pad / nearest).
+        double c = Math.min(cosToAxis(wx + t0 * dx, wy + t0 * dy, wz + t0 * dz), cosToAxis(wx + t1 * dx, wy + t1 * dy, wz + t1 * dz));
+        if (pad > 0) {
+            // cos(θ + δ) with cos θ = c, sin δ = pad / nearest (< 1 here), without trigonometry;
+            // past 90 degrees it is at most 0, below minCos, as wanted.
+            double sd = pad / nearest, cc = Math.min(1, c);
+            c = cc * Math.sqrt(1 - sd * sd) - Math.sqrt(1 - cc * cc) * sd;
         }
+        c = Math.max(minCos, c);
         return angle * centrePixelsPerRadian * slack / (c * c);
     }
 

@@ -20,6 +20,14 @@ final class Limit {
      * @param nrm receives the unit limit normal of every vertex (3 per vertex), or null
      */
     static void evaluate(Level lv, double[] p, double[] pos, double[] nrm) {
+        evaluate(lv, p, pos, nrm, null);
+    }
+
+    /**
+     * As {@link #evaluate(Level, double[], double[], double[])} for the vertices flagged in
+     * {@code only} (null: all); each vertex's values are computed alone, so they are the same.
+     */
+    static void evaluate(Level lv, double[] p, double[] pos, double[] nrm, boolean[] only) {
         if (lv.eSharp != null) lv.edgeCodes(); // edge sharpness is looked up by edge index
         int cap = lv.maxValence() + 2;
         int[] ring = new int[cap + 1], other = new int[cap], opp = new int[cap];
@@ -37,6 +45,7 @@ final class Limit {
             int[] orig = lv.hOrig, out = lv.vOut;
             for (int h = 0; h < lv.nH; h++) {
                 int v = orig[h];
+                if (only != null && !only[v]) continue;
                 if (out[v] == h && lv.rule(v) <= Crease.RULE_DART && !(anyNm && lv.isNonManifold(v))) {
                     done[v] = regular(lv, p, v, pos, nrm);
                 }
@@ -44,6 +53,7 @@ final class Limit {
         }
         for (int v = 0; v < lv.nV; v++) {
             if (done != null && done[v]) continue;
+            if (only != null && !only[v]) continue;
             int nEdges, nFaces;
             int nmi = lv.nmVertIndex(v);
             if (nmi >= 0) {

@@ -21,6 +21,16 @@ import lt.spindulys.mesh.MeshData;
  * order), and their triangles come from {@link RefinedTriangles}, the code the uniform surface
  * uses. Only the vertices at the one-ring's outer rim get other values than in the whole mesh
  * (their own neighbourhood is cut), and no descendant of the face depends on them.
+ *
+ * <p><b>Pruning.</b> The same holds at every level: the descendants at level l and the faces
+ * sharing a vertex with them are all that deeper levels need. So each refined level below the
+ * last is cut down to those faces (order kept, the rim's vertices made corners so that no rule
+ * walks around their cut rings) before it is refined again, and a patch costs about
+ * (2^l + 2)^2 faces per level instead of the whole one-ring's 9 * 4^l. Levels with non-manifold
+ * side tables (and level 0, which may hold other polygons) are refined whole.
+ *
+ * <p><b>Cost.</b> Per patch, arrays proportional to the pruned levels plus one int per control
+ * face of the one-ring; no hash maps, nothing shared and mutable.
  */
 public final class PatchRefiner {
     /** The deepest level a patch may be refined to (as the uniform surface's). */
@@ -295,41 +305,80 @@ public final class PatchRefiner {
 
         Local lm = local(face);
         RefinedMesh r = RefinedMesh.base(lm.mesh);
-        RefinedMesh[] levels = snap ? new RefinedMesh[level + 1] : null;
-        for (int i = 0; i < level; i++) {
-            if (snap) levels[i] = r;
-            r = r.refine();
+        int h0 = lm.mesh.base.firstHalf(lm.face);
+        // For snapping: the face's edges as half-edges of the current level (from corner k's
+        // vertex on), and their vertices at every level, numbered as that level numbers them.
+        int[][] halves = null;
+        int[][][] chains = null;
+        double[][] positions = null;
+        if (snap) {
+            halves = new int[n][];
+            chains = new int[n][level + 1][];
+            positions = new double[level + 1][];
+            for (int k = 0; k < n; k++) halves[k] = new int[] {h0 + k};
+            record(r, halves, chains, positions, 0);
         }
-        if (snap) levels[level] = r;
-        Level b = lm.mesh.base;
         int f0 = lm.face, count = 1;
-        if (level >= 1) {
-            f0 = b.firstHalf(lm.face);
-            count = n;
-            for (int l = 2; l <= level; l++) {
-                f0 *= 4;
-                count *= 4;
+        for (int l = 1; l <= level; l++) {
+            Level p = r.topo;
+            f0 = p.firstHalf(f0);
+            count = l == 1 ? n : 4 * count;
+            r = r.refine();
+            if (snap) {
+                for (int k = 0; k < n; k++) halves[k] = childHalves(p, halves[k]);
             }
+            // Below the last level, only the faces around the face's descendants are kept.
+            if (l < level && prunable(r)) {
+                int[] faceAt = keptFaces(r, f0, count);
+                r = prune(r, faceAt);
+                f0 = faceAt[f0];
+                if (snap) {
+                    for (int[] hs : halves) for (int i = 0; i < hs.length; i++) hs[i] = 4 * faceAt[hs[i] >> 2] + (hs[i] & 3);
+                }
+            }
+            if (snap) record(r, halves, chains, positions, l);
         }
         int[] vmap = new int[r.vertexCount()];
         MeshData md = RefinedTriangles.triangles(r, f0, f0 + count, smooth, vmap);
-        if (snap && md.vertexIndex().length > 0) snap(levels, b.firstHalf(lm.face), n, level, el, cl, vmap, md.positions());
+        if (snap && md.vertexIndex().length > 0) snap(lm.mesh.base, h0, n, level, el, cl, chains, positions, vmap, md.positions());
         return md;
     }
 
+    private static void record(RefinedMesh r, int[][] halves, int[][][] chains, double[][] positions, int l) {
+        Level t = r.topo;
+        positions[l] = r.positions();
+        for (int k = 0; k < halves.length; k++) {
+            int[] hs = halves[k], v = new int[hs.length + 1];
+            for (int i = 0; i < hs.length; i++) v[i] = t.hOrig[hs[i]];
+            v[hs.length] = t.dest(hs[hs.length - 1]);
+            chains[k][l] = v;
+        }
+    }
+
+    /**
+     * The child half-edges along half-edges of p: a child of x runs from x's origin to x's edge
+     * point, the next from there to x's end (see {@link Refinement}'s numbering).
+     */
+    private static int[] childHalves(Level p, int[] hs) {
+        int[] next = new int[2 * hs.length];
+        for (int i = 0; i < hs.length; i++) {
+            int x = hs[i], xn = p.next(x);
+            next[2 * i] = 4 * x + (Refinement.rot(p, x) & 3);
+            next[2 * i + 1] = 4 * xn + ((Refinement.rot(p, xn) + 3) & 3);
+        }
+        return next;
+    }
+
     /** Moves the boundary vertices of edges and corners below the face's level (see {@link #refine}). */
-    private static void snap(RefinedMesh[] levels, int h0, int n, int level, int[] el, int[] cl, int[] vmap, double[] out) {
-        Level b = levels[0].topo;
+    private static void snap(Level b, int h0, int n, int level, int[] el, int[] cl, int[][][] chains, double[][] positions, int[] vmap, double[] out) {
         for (int k = 0; k < n; k++) {
             int ka = k, kb = (k + 1) % n;
             if (el[k] == level && cl[ka] == level && cl[kb] == level) continue;
-            int h = h0 + k;
-            int[] fine = chain(levels, h, level);
-            int[] coarse = el[k] < level ? chain(levels, h, el[k]) : fine;
+            int[] fine = chains[k][level], coarse = chains[k][el[k]];
             int d = level - el[k], last = 1 << el[k];
-            boolean towardsLow = b.fwd(h); // the edge's first vertex is at this face's corner k
-            double[] pa = levels[cl[ka]].positions(), pb = levels[cl[kb]].positions(), pe = levels[el[k]].positions();
-            int va = b.hOrig[h], vb = b.dest(h);
+            boolean towardsLow = b.fwd(h0 + k); // the edge's first vertex is at this face's corner k
+            double[] pa = positions[cl[ka]], pb = positions[cl[kb]], pe = positions[el[k]];
+            int va = chains[k][cl[ka]][0], vb = chains[k][cl[kb]][chains[k][cl[kb]].length - 1];
             for (int j = 0; j < fine.length; j++) {
                 int i;
                 if (d == 0) {
@@ -348,28 +397,149 @@ public final class PatchRefiner {
         }
     }
 
+    // ---------------------------------------------------------------- pruning
+
     /**
-     * The vertices along base half-edge h at a level, from h's origin to its end (2^level + 1):
-     * a child half-edge of x runs from x's origin to x's edge point, the next from there to x's
-     * end (see {@link Refinement}'s numbering).
+     * Whether a refined level can be cut down: quads only and no non-manifold side tables (for
+     * them, and before the first refinement, the whole one-ring is refined).
      */
-    private static int[] chain(RefinedMesh[] levels, int h, int level) {
-        int[] hs = {h};
-        for (int l = 0; l < level; l++) {
-            Level p = levels[l].topo;
-            int[] next = new int[2 * hs.length];
-            for (int i = 0; i < hs.length; i++) {
-                int x = hs[i], xn = p.next(x);
-                next[2 * i] = 4 * x + (Refinement.rot(p, x) & 3);
-                next[2 * i + 1] = 4 * xn + ((Refinement.rot(p, xn) + 3) & 3);
-            }
-            hs = next;
+    private static boolean prunable(RefinedMesh r) {
+        Level t = r.topo;
+        if (t.faceStart != null || t.nmVert.length > 0 || t.nmEdge.length > 0) return false;
+        FaceVarying.Channel uv = r.uvChannel();
+        return uv == null || (uv.level().faceStart == null && uv.level().nmVert.length == 0 && uv.level().nmEdge.length == 0);
+    }
+
+    /**
+     * The faces to keep around the faces f0 .. f0+count-1: those sharing a vertex with them (their
+     * one-ring, which is all that their refinements and the one-rings of those depend on). Old
+     * face index to new (order kept), -1 for a face left out.
+     */
+    private static int[] keptFaces(RefinedMesh r, int f0, int count) {
+        Level t = r.topo;
+        boolean[] want = new boolean[t.nV];
+        for (int h = 4 * f0, e = 4 * (f0 + count); h < e; h++) want[t.hOrig[h]] = true;
+        int[] faceAt = new int[t.nF];
+        int m = 0;
+        for (int f = 0; f < t.nF; f++) {
+            int h = 4 * f;
+            faceAt[f] = want[t.hOrig[h]] || want[t.hOrig[h + 1]] || want[t.hOrig[h + 2]] || want[t.hOrig[h + 3]] ? m++ : -1;
         }
-        Level t = levels[level].topo;
-        int[] v = new int[hs.length + 1];
-        for (int i = 0; i < hs.length; i++) v[i] = t.hOrig[hs[i]];
-        v[hs.length] = t.dest(hs[hs.length - 1]);
-        return v;
+        return faceAt;
+    }
+
+    /** The level with only the faces kept ({@code faceAt} not -1), its positions and UVs likewise. */
+    private static RefinedMesh prune(RefinedMesh r, int[] faceAt) {
+        int[] vAt = new int[r.topo.nV];
+        Level t = pruneLevel(r.topo, faceAt, vAt);
+        double[] p = r.positions(), np = new double[3 * t.nV];
+        for (int v = 0; v < vAt.length; v++) if (vAt[v] >= 0) System.arraycopy(p, 3 * v, np, 3 * vAt[v], 3);
+        FaceVarying.Channel uv = r.uvChannel();
+        if (uv != null) {
+            int[] uAt = new int[uv.level().nV];
+            Level ut = pruneLevel(uv.level(), faceAt, uAt);
+            double[] u = uv.values(), nu = new double[2 * ut.nV];
+            for (int v = 0; v < uAt.length; v++) if (uAt[v] >= 0) System.arraycopy(u, 2 * v, nu, 2 * uAt[v], 2);
+            uv = new FaceVarying.Channel(ut, nu, uv.linear(), uv.linearBoundaries());
+        }
+        return r.with(t, np, uv);
+    }
+
+    /**
+     * A quad level cut down to the faces kept, everything renumbered in its original order:
+     * faces, their half-edges, vertices (written to {@code vAt}, -1 where dropped) and edges, with
+     * twins, edge codes, first half-edges, tags, sharpness and holes. An edge whose primary
+     * half-edge is dropped gets a kept one as primary; a twin dropped leaves a boundary there.
+     * Only the ring's rim sees these changes, and no value of the kept faces' descendants
+     * depends on the rim's own neighbourhood.
+     */
+    private static Level pruneLevel(Level c, int[] faceAt, int[] vAt) {
+        int[] code = c.edgeCodes();
+        int m = 0;
+        for (int a : faceAt) if (a >= 0) m++;
+        Arrays.fill(vAt, -1);
+        int[] eAt = new int[c.nE];
+        Arrays.fill(eAt, -1);
+        for (int f = 0; f < faceAt.length; f++) {
+            if (faceAt[f] < 0) continue;
+            for (int h = 4 * f; h < 4 * f + 4; h++) {
+                vAt[c.hOrig[h]] = 0;
+                eAt[code[h] >>> 2] = 0;
+            }
+        }
+        int nv = 0, ne = 0;
+        for (int v = 0; v < vAt.length; v++) if (vAt[v] == 0) vAt[v] = nv++;
+        for (int e = 0; e < eAt.length; e++) if (eAt[e] == 0) eAt[e] = ne++;
+        int nh = 4 * m;
+        int[] o = new int[nh], tw = c.hTwin == null ? null : new int[nh], ed = new int[nh];
+        boolean[] hasPrimary = new boolean[ne];
+        for (int f = 0; f < faceAt.length; f++) {
+            int nf = faceAt[f];
+            if (nf < 0) continue;
+            for (int k = 0; k < 4; k++) {
+                int h = 4 * f + k, nh1 = 4 * nf + k;
+                o[nh1] = vAt[c.hOrig[h]];
+                if (tw != null) {
+                    int x = c.hTwin[h];
+                    tw[nh1] = x < 0 || faceAt[x >> 2] < 0 ? -1 : 4 * faceAt[x >> 2] + (x & 3);
+                }
+                int e = eAt[code[h] >>> 2];
+                ed[nh1] = e << 2 | (code[h] & (Level.E_FWD | Level.E_PRIMARY));
+                if ((code[h] & Level.E_PRIMARY) != 0) hasPrimary[e] = true;
+            }
+        }
+        for (int h = 0; h < nh; h++) {
+            int e = ed[h] >>> 2;
+            if (!hasPrimary[e]) {
+                ed[h] |= Level.E_PRIMARY;
+                hasPrimary[e] = true;
+            }
+        }
+        int[] out = null;
+        if (c.vOut != null) {
+            out = new int[nv];
+            Arrays.fill(out, -1);
+            for (int v = 0; v < vAt.length; v++) {
+                int x = vAt[v] < 0 ? -1 : c.vOut[v];
+                if (x >= 0 && faceAt[x >> 2] >= 0) out[vAt[v]] = 4 * faceAt[x >> 2] + (x & 3);
+            }
+            // A rim vertex whose first face was dropped starts at any kept one: walks around
+            // it end at the dropped twins.
+            for (int h = 0; h < nh; h++) if (out[o[h]] < 0) out[o[h]] = h;
+        }
+        Level n = new Level(c.depth, nv, m, ne, null, null, o, tw, ed, out);
+        if (c.vTag != null) {
+            n.vTag = new byte[nv];
+            for (int v = 0; v < vAt.length; v++) if (vAt[v] >= 0) n.vTag[vAt[v]] = c.vTag[v];
+        }
+        if (c.vSharp != null) {
+            n.vSharp = new float[nv];
+            for (int v = 0; v < vAt.length; v++) if (vAt[v] >= 0) n.vSharp[vAt[v]] = c.vSharp[v];
+        }
+        if (c.eSharp != null) {
+            n.eSharp = new float[ne];
+            for (int e = 0; e < eAt.length; e++) if (eAt[e] >= 0) n.eSharp[eAt[e]] = c.eSharp[e];
+        }
+        if (c.hole != null) {
+            n.hole = new boolean[m];
+            for (int f = 0; f < faceAt.length; f++) if (faceAt[f] >= 0) n.hole[faceAt[f]] = c.hole[f];
+        }
+        if (tw != null) {
+            // Rim vertices (some of their faces dropped) become corners: their rings are cut, and
+            // a corner's rules never walk around it. Their values are not used (see above).
+            int[] lost = new int[nv];
+            for (int h = 0; h < c.nH; h++) {
+                if (faceAt[h >> 2] < 0 && vAt[c.hOrig[h]] >= 0) lost[vAt[c.hOrig[h]]]++;
+            }
+            for (int v = 0; v < nv; v++) {
+                if (lost[v] == 0) continue;
+                if (n.vTag == null) n.vTag = new byte[nv];
+                if (n.vSharp == null) n.vSharp = new float[nv];
+                n.vSharp[v] = Crease.INFINITE;
+                n.vTag[v] = (byte) ((n.vTag[v] & ~(Level.T_RULE | Level.T_SEMI_SHARP)) | Crease.RULE_CORNER | Level.T_INF_SHARP | Level.T_BOUNDARY);
+            }
+        }
+        return n;
     }
 
     /**

@@ -60,6 +60,14 @@ public final class RefinedMesh {
         return new RefinedMesh(control, level + 1, c, p, cuv);
     }
 
+    /** The same level cut down to other topology and data (a patch's pruned level, see {@link PatchRefiner}). */
+    RefinedMesh with(Level topo, double[] positions, FaceVarying.Channel uv) {
+        return new RefinedMesh(control, level, topo, positions, uv);
+    }
+
+    /** The UV channel, or null. */
+    FaceVarying.Channel uvChannel() { return uv; }
+
     /** {@return the control mesh this level was refined from} */
     public ControlMesh controlMesh() { return control; }
 

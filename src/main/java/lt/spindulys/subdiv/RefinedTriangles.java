@@ -76,7 +76,7 @@ public final class RefinedTriangles {
             }
         }
         int[] outN = smooth ? new int[corners] : null;
-        double[] normals = smooth ? cornerNormals(r, f0, f1, outN, vmap != null) : null;
+        double[] normals = !smooth ? null : vmap != null ? rangeNormals(r, f0, f1, outN) : cornerNormals(r, f0, f1, outN, false);
         if (vmap == null) return new MeshData(p, normals, withUv ? uvs : null, outSizes, outV, outN, outUv, null);
         // Compact: vertices and UVs renumbered in order of first use, values copied unchanged.
         Arrays.fill(vmap, -1);
@@ -199,6 +199,115 @@ public final class RefinedTriangles {
                         }
                         outN[k++] = vertexNormal[v];
                     }
+                    continue;
+                }
+                if (sectorNormal[root] < 0) {
+                    // Unit length like the limit normals, so that interpolation weighs them alike.
+                    normals[3 * count] = x / len;
+                    normals[3 * count + 1] = y / len;
+                    normals[3 * count + 2] = z / len;
+                    sectorNormal[root] = count++;
+                }
+                outN[k++] = sectorNormal[root];
+            }
+        }
+        return Arrays.copyOf(normals, 3 * count);
+    }
+
+    /**
+     * {@link #cornerNormals} for a compact range: the same values, but only the faces that touch
+     * a vertex of the range are visited (in face order, so every sector sums in the same order)
+     * and only those vertices' limit normals are evaluated.
+     */
+    private static double[] rangeNormals(RefinedMesh r, int f0, int f1, int[] outN) {
+        Level lv = r.topo;
+        double[] p = r.positions();
+        int[] sizes = r.faceSizes(), fv = r.faceVertices(), twin = r.cornerTwins();
+        int nv = p.length / 3, nf = sizes.length;
+        boolean quads = lv.faceStart == null;
+        if (lv.eSharp != null) lv.edgeCodes();
+        boolean[] want = new boolean[nv];
+        for (int c = lv.firstHalf(f0), e = f1 < nf ? lv.firstHalf(f1) : lv.nH; c < e; c++) want[fv[c]] = true;
+        double[] limit = new double[3 * nv];
+        Limit.evaluate(lv, p, null, limit, want);
+        // The faces that touch the range's vertices, and their corners numbered compactly.
+        int[] faceAt = new int[nf], faces = new int[nf], cornerAt = new int[nf + 1];
+        int m = 0;
+        for (int f = 0; f < nf; f++) {
+            faceAt[f] = -1;
+            int s = lv.firstHalf(f), n = quads ? 4 : sizes[f];
+            boolean any = false;
+            for (int c = s; c < s + n && !any; c++) any = want[fv[c]];
+            if (!any) continue;
+            faceAt[f] = m;
+            faces[m] = f;
+            cornerAt[m + 1] = cornerAt[m] + n;
+            m++;
+        }
+        int nc = cornerAt[m];
+        int[] parent = new int[nc];
+        for (int c = 0; c < nc; c++) parent[c] = c;
+        for (int i = 0; i < m; i++) {
+            int f = faces[i], s = lv.firstHalf(f), n = cornerAt[i + 1] - cornerAt[i];
+            if (r.isHole(f)) continue;
+            for (int k = 0; k < n; k++) {
+                int c = s + k, t = twin[c];
+                if (t < c || Crease.isInfinite(lv.edgeSharpness(c))) continue;
+                int cn = s + (k + 1 == n ? 0 : k + 1);
+                if (!want[fv[c]] && !want[fv[cn]]) continue; // the neighbour may not be listed
+                int g = lv.face(t), j = faceAt[g];
+                if (r.isHole(g)) continue;
+                int gs = lv.firstHalf(g), gn = cornerAt[j + 1] - cornerAt[j], tk = t - gs, tn = gs + (tk + 1 == gn ? 0 : tk + 1);
+                // c runs a -> b in its face, t runs b -> a in the neighbour.
+                if (want[fv[c]]) union(parent, cornerAt[i] + k, cornerAt[j] + (tn - gs));
+                if (want[fv[cn]]) union(parent, cornerAt[i] + (cn - s), cornerAt[j] + tk);
+            }
+        }
+        double[] sector = new double[3 * nc];
+        int[] vertexRoot = new int[nv];
+        boolean[] split = new boolean[nv];
+        Arrays.fill(vertexRoot, -1);
+        for (int i = 0; i < m; i++) {
+            int f = faces[i];
+            if (r.isHole(f)) continue;
+            int s = lv.firstHalf(f), n = cornerAt[i + 1] - cornerAt[i];
+            double x = 0, y = 0, z = 0;
+            for (int k = 0; k < n; k++) {
+                int a = 3 * fv[s + k], b = 3 * fv[s + (k + 1 == n ? 0 : k + 1)];
+                x += (p[a + 1] - p[b + 1]) * (p[a + 2] + p[b + 2]);
+                y += (p[a + 2] - p[b + 2]) * (p[a] + p[b]);
+                z += (p[a] - p[b]) * (p[a + 1] + p[b + 1]);
+            }
+            for (int k = 0; k < n; k++) {
+                int root = find(parent, cornerAt[i] + k), v = fv[s + k];
+                sector[3 * root] += x; sector[3 * root + 1] += y; sector[3 * root + 2] += z;
+                if (vertexRoot[v] < 0) vertexRoot[v] = root;
+                else if (vertexRoot[v] != root) split[v] = true;
+            }
+        }
+        double[] normals = new double[3 * outN.length];
+        int count = 0;
+        int[] vertexNormal = new int[nv];
+        Arrays.fill(vertexNormal, -1);
+        int[] sectorNormal = new int[nc];
+        Arrays.fill(sectorNormal, -1);
+        int k = 0;
+        for (int f = f0; f < f1; f++) {
+            if (r.isHole(f)) continue;
+            int s = lv.firstHalf(f), i = faceAt[f];
+            int[] order = sizes[f] == 4 ? split(p, fv, s) : null;
+            int n = order != null ? 6 : sizes[f];
+            for (int q = 0; q < n; q++) {
+                int j = order != null ? order[q] : q, v = fv[s + j];
+                int root = find(parent, cornerAt[i] + j);
+                double x = sector[3 * root], y = sector[3 * root + 1], z = sector[3 * root + 2];
+                double len = Math.sqrt(x * x + y * y + z * z);
+                if (!split[v] || !(len > 0) || !Double.isFinite(len)) {
+                    if (vertexNormal[v] < 0) {
+                        System.arraycopy(limit, 3 * v, normals, 3 * count, 3);
+                        vertexNormal[v] = count++;
+                    }
+                    outN[k++] = vertexNormal[v];
                     continue;
                 }
                 if (sectorNormal[root] < 0) {

@@ -187,6 +187,13 @@ class EdgeLevelsTest {
         Placement pass = Placement.IDENTITY.then(Motion.translation(new Vec3(41, 0, 0), Double.NaN, Double.NaN));
         int mid = EdgeLevels.perObject(v, new double[] {0.9, 2, 0, 1.1, 2, 0}, edge, Placement.IDENTITY, 0.25, 20, 4);
         assertTrue(EdgeLevels.perObject(v, across, edge, pass, 0.25, 20, 4) >= mid, "a pass in front of the eye");
+        // Swinging round a pivot 8 units in front of the eye by 170 degrees: closest (4 units away)
+        // at 90 degrees, between the samples at 0.5 and 0.6 of the shutter.
+        double[] swing = {-7, 1.9, -9, -7, 2.1, -9};
+        Placement turn = Placement.IDENTITY.then(Motion.of(new Vec3(1, 1, 1), Vec3.Y, 170, Vec3.ZERO, new Vec3(1, 2, -9), Double.NaN, Double.NaN));
+        int closest = EdgeLevels.perObject(v, new double[] {1, 1.9, -1, 1, 2.1, -1}, edge, Placement.IDENTITY, 0.25, 20, 4);
+        int swung = EdgeLevels.perObject(v, swing, edge, turn, 0.25, 20, 4);
+        assertTrue(swung >= closest && swung <= closest + 1, "swinging " + swung + ", at its closest " + closest);
         // The shutter's ends are what the placement says: an open shutter of no length is one time.
         Placement instant = Placement.of(Transform.IDENTITY, 1, 1).then(Motion.translation(new Vec3(0, 0, 18), 0, 2));
         assertEquals(EdgeLevels.perObject(v, pos, edge, Placement.of(Transform.translate(0, 0, 9)), 0.25, 20, 4),

@@ -76,6 +76,24 @@ class PatchCacheTest {
     }
 
     @Test
+    void theHandSweepsEveryTable() {
+        FakePatches source = new FakePatches(1000, 100, 1);
+        PatchCache cache = new PatchCache(2000, CachePolicy.LRU); // twenty patches, shared by both tables
+        PatchCache.Table first = cache.table(source.faces, "first");
+        PatchCache.Table second = cache.table(source.faces, "second");
+        RecentPatches r = new RecentPatches();
+        for (int f = 0; f < 20; f++) cache.get(first, f, source, r);
+        assertEquals(2000, first.stats().currentBytes());
+        for (int f = 0; f < 20; f++) cache.get(second, f, source, r);
+        assertEquals(0, first.stats().currentBytes(), "the new table's patches took the old one's room");
+        assertEquals(20, first.stats().evictions());
+        assertTrue(second.stats().currentBytes() >= 1900, second.stats().summary());
+        assertEquals(second.stats().currentBytes(), cache.stats().currentBytes());
+        assertEquals(slotBytes(first) + slotBytes(second), cache.stats().currentBytes());
+        assertEquals(40, cache.stats().built());
+    }
+
+    @Test
     void lruKeepsAHotSetThatLastTwoLoses() {
         for (CachePolicy policy : CachePolicy.values()) {
             FakePatches source = new FakePatches(100_000, 100, 1);
