@@ -158,8 +158,16 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
         return e;
     }
 
+    /**
+     * The patch of face {@code f}: refined to its level, each edge's vertices placed at the edge's
+     * level, and each corner at the least level of the control edges around its vertex, which
+     * every face around the vertex computes alike (so no crack opens where several faces meet).
+     */
     private MeshData refine(int f) {
-        return refiner.refine(f, faceLevel[f], edgeLevels(f), smooth);
+        int n = refiner.faceSize(f);
+        int[] corners = new int[n];
+        for (int k = 0; k < n; k++) corners[k] = refiner.vertexLevel(f, k, edgeLevel);
+        return refiner.refine(f, faceLevel[f], edgeLevels(f), corners, smooth);
     }
 
     /** Every patch built (on all cores: each is independent) and joined into one flat mesh. */
