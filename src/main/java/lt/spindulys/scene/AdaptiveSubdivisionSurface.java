@@ -266,6 +266,38 @@ public final class AdaptiveSubdivisionSurface extends GObject {
      */
     public String statistics() { return tessellation == null ? name() + ": not in a built scene" : tessellation.statistics(); }
 
+    /**
+     * The tessellation this surface has in the scene it was frozen into, as one mesh in object
+     * space: every coarse face refined to its chosen levels, stitched, vertices at one position
+     * welded, so the mesh is crack-free (what {@code render subdivide --scene} writes).
+     *
+     * @return positions, per-corner normals (smooth shading) and uvs of the triangles
+     * @throws IllegalStateException if the surface is not in a built scene
+     * @throws lt.spindulys.limits.InsufficientMemoryException if the whole tessellation does not fit in the heap
+     */
+    public lt.spindulys.mesh.MeshData tessellation() {
+        if (tessellation == null) throw new IllegalStateException(name() + " is not in a built scene");
+        return tessellation.welded();
+    }
+
+    /**
+     * The level chosen for each control edge in the scene this surface was frozen into.
+     *
+     * @return a level per control edge, numbered as {@link PatchRefiner#edgeVertices()} numbers them
+     * @throws IllegalStateException if the surface is not in a built scene
+     */
+    public int[] edgeLevels() {
+        if (tessellation == null) throw new IllegalStateException(name() + " is not in a built scene");
+        return tessellation.edgeLevels();
+    }
+
+    /**
+     * The refiner of this surface's control mesh (shared by its instances).
+     *
+     * @return the per-face refiner
+     */
+    public PatchRefiner refiner() { return geometry.refiner(); }
+
     // ---- builder methods, returning this type (see GObject for what each does) ----
 
     /** {@inheritDoc} */

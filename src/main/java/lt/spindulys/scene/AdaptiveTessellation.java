@@ -80,7 +80,9 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
         maxLevel = s.maxLevel();
         levels = s.levels();
         this.target = target;
-        name = s.name();
+        String source = refiner.control().source();
+        // An unnamed surface is known by its control mesh's file.
+        name = s.name().equals(s.kind()) && source != null ? source : s.name();
     }
 
     /** Records one placement (object to world over the shutter) of a surface using this tessellation. */
@@ -213,6 +215,77 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
         }
         return new MeshData(p, n, t, sizes, vi, ni, ti, source);
     }
+
+    /**
+     * The whole tessellation as one welded mesh, as {@code render subdivide --scene} writes it:
+     * every patch at its chosen levels, vertices at the same position joined into one (the
+     * stitching makes shared edge vertices bit-identical, so the welded mesh has no crack), and
+     * triangles that the stitching collapsed dropped.
+     */
+    MeshData welded() {
+        long need = 0;
+        for (int f : faces) need = HeapBudget.sum(need, refiner.patchBytes(f, faceLevel[f], smooth));
+        HeapBudget.require(HeapBudget.product(need, 3), "the tessellation of " + name);
+        MeshData[] parts = new MeshData[faces.length];
+        IntStream.range(0, faces.length).parallel().forEach(i -> parts[i] = refine(faces[i]));
+        return weld(join(parts, refiner.control().source()));
+    }
+
+    /** {@code d} with vertices at equal positions joined and the triangles that collapse dropped. */
+    static MeshData weld(MeshData d) {
+        double[] p = d.positions();
+        int n = p.length / 3;
+        Integer[] order = new Integer[n];
+        for (int i = 0; i < n; i++) order[i] = i;
+        Arrays.sort(order, (a, b) -> {
+            for (int k = 0; k < 3; k++) {
+                int c = Double.compare(p[3 * a + k], p[3 * b + k]);
+                if (c != 0) return c;
+            }
+            return Integer.compare(a, b);
+        });
+        int[] map = new int[n];
+        double[] q = new double[p.length];
+        int m = -1;
+        for (int k = 0; k < n; k++) {
+            int i = order[k];
+            if (m < 0 || p[3 * i] != q[3 * m] || p[3 * i + 1] != q[3 * m + 1] || p[3 * i + 2] != q[3 * m + 2]) {
+                m++;
+                System.arraycopy(p, 3 * i, q, 3 * m, 3);
+            }
+            map[i] = m;
+        }
+        int[] sizes = d.faceSizes(), vi = d.vertexIndex(), ni = d.normalIndex(), ti = d.uvIndex();
+        int faces = 0, corners = 0;
+        for (int f = 0, c = 0; f < sizes.length; c += sizes[f], f++) {
+            if (collapsed(map, vi, c, sizes[f])) continue;
+            faces++;
+            corners += sizes[f];
+        }
+        int[] os = new int[faces], ov = new int[corners], on = ni != null ? new int[corners] : null, ot = ti != null ? new int[corners] : null;
+        for (int f = 0, c = 0, of = 0, oc = 0; f < sizes.length; c += sizes[f], f++) {
+            if (collapsed(map, vi, c, sizes[f])) continue;
+            os[of++] = sizes[f];
+            for (int j = 0; j < sizes[f]; j++, oc++) {
+                ov[oc] = map[vi[c + j]];
+                if (on != null) on[oc] = ni[c + j];
+                if (ot != null) ot[oc] = ti[c + j];
+            }
+        }
+        return new MeshData(Arrays.copyOf(q, 3 * (m + 1)), d.normals(), d.uvs(), os, ov, on, ot, d.source());
+    }
+
+    /** True if two corners of the face starting at corner {@code c} became one vertex. */
+    private static boolean collapsed(int[] map, int[] vi, int c, int size) {
+        for (int a = 0; a < size; a++) for (int b = a + 1; b < size; b++) if (map[vi[c + a]] == map[vi[c + b]]) return true;
+        return false;
+    }
+
+    /** The level chosen for each control edge (indexed as the refiner numbers edges). */
+    int[] edgeLevels() { return edgeLevel.clone(); }
+
+    /** The level of each coarse face: the finest of its edges. */
+    int[] faceLevels() { return faceLevel.clone(); }
 
     /** The combined method: the cheapest patches built and pinned while the eager budget lasts. */
     private void pinWithinBudget(BuildShared shared) {
