@@ -32,21 +32,33 @@ import lt.spindulys.subdiv.RefinedMesh;
  */
 final class BenchCommand {
     static final String USAGE = """
-            usage: render bench [--only NAME] [--runs N] [--accel A] [--list]
+            usage: render bench [--only NAME] [--runs N] [--accel A] [--cell-timeout S] [--list]
 
-              --only NAME   run only the row NAME (see --list)
+              --only NAME   run only the row NAME, or the rows of the group NAME (see --list); the group
+                            'adaptive' (issue 16's rows, long: each cell is a new JVM) runs only when asked for
               --runs N      timed runs per row after the warm-up (default 5); the median is reported
+                            (adaptive rows: alternated pairs of new JVMs; Table 1 cells run once each)
+              --cell-timeout S  stop an adaptive-row cell after S seconds (default 600) and report it as stopped
               --accel A     acceleration structure of the peer-scene rows: bvh (the scenes' default),
                             bvh2, octree or bruteforce; to compare structures on the same scene
               --list        list the rows and exit
             Run from the repository root: inputs are read from scenes/bench/; the torus-* rows first write
             their meshes into scenes/bench/meshes/ when missing. See docs/performance.md.""";
 
-    /** One benchmark row: a name, what it measures, and how. */
-    private record Row(String name, String section, String description, Action action) {}
+    /**
+     * One benchmark row: a name, what it measures, and how; rows with a group run only when
+     * {@code --only} names the row or its group (they take too long for every run of the bench).
+     */
+    private record Row(String name, String section, String description, Action action, String group) {
+        Row(String name, String section, String description, Action action) { this(name, section, description, action, null); }
+        boolean selected(String only) { return only == null ? group == null : only.equals(name) || only.equals(group); }
+    }
 
     @FunctionalInterface
     private interface Action { void run(BenchCommand bench, PrintStream out) throws IOException; }
+
+    /** The group of the issue-16 rows. */
+    static final String ADAPTIVE = "adaptive";
 
     private static final List<Row> ROWS = List.of(
             new Row("refine-bishop", "Subdivision",
@@ -60,7 +72,36 @@ final class BenchCommand {
             new Row("motion-blur", "Motion blur",
                     "scenes/bench/motion-blur.dat: the figure-48 objects, 640x360, 16 spp, 2 threads, in one pass (each sample its own time) "
                             + "beside the thesis's method, 4 and 16 whole-frame time steps: equal samples; times and error against a reference",
-                    (b, out) -> b.motionBlur(out)));
+                    (b, out) -> b.motionBlur(out)),
+            new Row("adaptive-close", "Adaptive subdivision: the thesis's Table 1",
+                    "the close scene (a 288-quad torus cage filling the frame, levels 6-7 at 1920x1080): projected, lazy and combined "
+                            + "at 150x100, 300x200, 450x300 and 1920x1080; each cell a new JVM with -Xmx2048m: time, peak and live heap",
+                    (b, out) -> b.adaptive(out, a -> a.table1("close", AdaptiveBench.CLOSE_FRONT)), ADAPTIVE),
+            new Row("adaptive-huge", "Adaptive subdivision: the thesis's Table 1",
+                    "the huge scene (a 4,096-quad hills cage to the horizon, whose eager 1-pixel tessellation does not fit in 2 GiB): "
+                            + "the same cells as adaptive-close",
+                    (b, out) -> b.adaptive(out, a -> a.table1("huge", AdaptiveBench.HUGE_VIEW)), ADAPTIVE),
+            new Row("adaptive-lazy", "Adaptive subdivision: lazy against eager",
+                    "close scene, two views, 1280x720: lazy (64 MiB cache) against projected at the same tessellation, alternated "
+                            + "pairs of new JVMs (targets: at least 0.8x the speed, a fifth of the heap)",
+                    (b, out) -> b.adaptive(out, AdaptiveBench::lazyVsEager), ADAPTIVE),
+            new Row("adaptive-cache", "Adaptive subdivision: cache policy and size",
+                    "close scene, front view, 1280x720, lazy: the thesis's last two patches per thread, and a shared LRU cache of "
+                            + "8, 64 and 512 MiB; hit rates",
+                    (b, out) -> b.adaptive(out, AdaptiveBench::cache), ADAPTIVE),
+            peerVariant("1k", "lazy", "the 1k cage as a lazy adaptive subdiv, target 1 px (beside Cycles' adaptive subdivision, dicing rate 1 px)"),
+            peerVariant("1k", "combined", "the 1k cage as a combined adaptive subdiv, target 1 px (beside Cycles' adaptive subdivision)"),
+            peerVariant("1k", "level2", "the 1k cage as a uniform subdiv at level 2 (beside Embree's subdivision at edge level 4)"),
+            peerVariant("1k", "level2-lazy", "the 1k cage as a lazy subdiv at fixed level 2 (beside Embree's subdivision at edge level 4)"));
+
+    /** A peer-scene row whose torus is a subdivision surface: scenes/bench/torus-SIZE-VARIANT.dat. */
+    private static Row peerVariant(String size, String variant, String what) {
+        BenchMeshes.Size s = BenchMeshes.size(size);
+        String name = "torus-" + size + "-" + variant;
+        return new Row(name, "Peer scene, subdivision",
+                String.format(Locale.ROOT, "scenes/bench/%s.dat: %s, 1280x720, 1 spp, %d threads; in-process and cold process", name, what, THREADS),
+                (b, out) -> b.peerScene(out, s, name), ADAPTIVE);
+    }
 
     private static Row torusRow(String size) {
         BenchMeshes.Size s = BenchMeshes.size(size);
@@ -80,6 +121,8 @@ final class BenchCommand {
     /** Structure the peer-scene rows use instead of their scenes' own; null keeps the scenes'. */
     private AcceleratorKind accel;
     private boolean list;
+    /** Seconds an adaptive-row cell (a child JVM) may take before it is stopped. */
+    private int cellTimeout = 600;
     private final Path benchDir = Path.of("scenes", "bench");
 
     BenchCommand(String[] args) throws UsageException {
@@ -88,8 +131,9 @@ final class BenchCommand {
                 case "--only" -> {
                     if (++i >= args.length) throw new UsageException("option --only needs a value");
                     only = args[i];
-                    if (ROWS.stream().noneMatch(r -> r.name().equals(only))) {
-                        throw new UsageException("unknown bench row '" + only + "' (rows: " + String.join(", ", ROWS.stream().map(Row::name).toList()) + ")");
+                    if (ROWS.stream().noneMatch(r -> r.name().equals(only) || only.equals(r.group()))) {
+                        throw new UsageException("unknown bench row '" + only + "' (rows: " + String.join(", ", ROWS.stream().map(Row::name).toList())
+                                + "; group: " + ADAPTIVE + ")");
                     }
                 }
                 case "--runs" -> {
@@ -109,6 +153,15 @@ final class BenchCommand {
                         throw new UsageException(e.getMessage());
                     }
                 }
+                case "--cell-timeout" -> {
+                    if (++i >= args.length) throw new UsageException("option --cell-timeout needs a value");
+                    try {
+                        cellTimeout = Integer.parseInt(args[i]);
+                    } catch (NumberFormatException e) {
+                        throw new UsageException("--cell-timeout expects a whole number of seconds, found '" + args[i] + "'");
+                    }
+                    if (cellTimeout < 1 || cellTimeout > 86400) throw new UsageException("--cell-timeout must be between 1 and 86400 seconds, found " + cellTimeout);
+                }
                 case "--list" -> list = true;
                 default -> throw new UsageException("unknown bench option '" + args[i] + "' (see render bench --help)");
             }
@@ -117,7 +170,7 @@ final class BenchCommand {
 
     int run(PrintStream out) throws IOException {
         if (list) {
-            for (Row r : ROWS) out.printf("%-16s %s%n", r.name(), r.description());
+            for (Row r : ROWS) out.printf("%-22s %s%s%n", r.name(), r.group() != null ? "[" + r.group() + "] " : "", r.description());
             return 0;
         }
         if (!Files.isDirectory(benchDir)) {
@@ -129,7 +182,7 @@ final class BenchCommand {
         out.printf(Locale.ROOT, "Structure of the peer-scene rows: %s%n", (accel != null ? accel : AcceleratorKind.DEFAULT).description());
         String section = null;
         for (Row r : ROWS) {
-            if (only != null && !only.equals(r.name())) continue;
+            if (!r.selected(only)) continue;
             if (!r.section().equals(section)) {
                 section = r.section();
                 out.println();
@@ -156,12 +209,30 @@ final class BenchCommand {
     private BenchTable peerTable;
 
     private void peerScene(PrintStream out, BenchMeshes.Size size) throws IOException {
+        peerScene(out, size, "torus-" + size.name());
+    }
+
+    /** The adaptive rows, in a scratch folder that is removed afterwards. */
+    private void adaptive(PrintStream out, AdaptiveAction action) throws IOException {
+        AdaptiveBench a = new AdaptiveBench(runs, cellTimeout, out);
+        try {
+            action.run(a);
+        } finally {
+            a.close();
+        }
+    }
+
+    @FunctionalInterface
+    private interface AdaptiveAction { void run(AdaptiveBench a) throws IOException; }
+
+    /** The peer view with the scene scenes/bench/NAME.dat (the plain torus or a subdivision variant of its cage). */
+    private void peerScene(PrintStream out, BenchMeshes.Size size, String name) throws IOException {
         Path meshes = benchDir.resolve("meshes");
         long g0 = System.nanoTime();
         BenchMeshes.ensure(meshes, size);
         double gen = (System.nanoTime() - g0) / 1e9;
         if (gen > 0.05) out.printf(Locale.ROOT, "  generated %s in %.1f s%n", meshes.resolve(size.file()), gen);
-        Path scene = benchDir.resolve("torus-" + size.name() + ".dat");
+        Path scene = benchDir.resolve(name + ".dat");
         if (!Files.isRegularFile(scene)) throw new IOException("bench scene not found: " + scene.toAbsolutePath());
 
         for (int i = 0; i < WARMUPS; i++) renderOnce(scene, accel);
@@ -181,7 +252,7 @@ final class BenchCommand {
             peerTable = new BenchTable("row", "triangles", "load s", "build s", "render s", "camera rays", "shadow rays",
                     "refl. rays", "refr. rays", "Mrays/s", "peak heap MiB", "bytes/tri", "cold s");
         }
-        String label = "torus-" + size.name() + (accel != null ? " " + accel.keyword() : "");
+        String label = name + (accel != null ? " " + accel.keyword() : "");
         peerTable.add(label, String.format(Locale.ROOT, "%,d", last.triangles), fmt(median(load), 3),
                 fmt(median(build), 3), fmt(median(render), 3), String.format(Locale.ROOT, "%,d", last.stats.cameraRays()),
                 String.format(Locale.ROOT, "%,d", last.stats.shadowRays()), String.format(Locale.ROOT, "%,d", last.stats.reflectionRays()),
@@ -190,6 +261,7 @@ final class BenchCommand {
                 Double.isNaN(cold) ? "failed" : fmt(cold, 3));
         out.printf(Locale.ROOT, "  %s: load %.3f s, build %.3f s, render %.3f s (%.2f Mrays/s), cold %.3f s%n", label,
                 median(load), median(build), median(render), median(mrays), cold);
+        for (String line : last.subdivision) out.println("    " + line);
     }
 
     // ---- CSG ----
@@ -293,7 +365,7 @@ final class BenchCommand {
 
     /** One timed load, build and render of a scene file, and what it used. */
     private record Measured(double load, double build, RenderStats stats, long peakHeap, long triangles, long meshBytes,
-                            lt.spindulys.image.FrameBuffer image, double cpuSeconds) {}
+                            lt.spindulys.image.FrameBuffer image, double cpuSeconds, List<String> subdivision) {}
 
     private static Measured renderOnce(Path file, AcceleratorKind accel) throws IOException {
         return renderOnce(file, accel, s -> s);
@@ -327,7 +399,8 @@ final class BenchCommand {
                 bytes += m.memoryBytes();
             }
         }
-        return new Measured((t1 - t0) / 1e9, (t2 - t1) / 1e9, result.stats(), peak, triangles, bytes, result.frame(), (cpu1 - cpu0) / 1e9);
+        return new Measured((t1 - t0) / 1e9, (t2 - t1) / 1e9, result.stats(), peak, triangles, bytes, result.frame(), (cpu1 - cpu0) / 1e9,
+                result.subdivisionStatistics());
     }
 
     /**
