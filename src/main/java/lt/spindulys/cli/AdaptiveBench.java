@@ -43,7 +43,7 @@ final class AdaptiveBench {
     /** Heap of every child JVM: the "does not fit in a 2 GB heap". */
     static final int CHILD_HEAP_MIB = 2048;
     /** Image size of the lazy-against-eager and cache rows. */
-    static final int PAIR_WIDTH = 1280, PAIR_HEIGHT = 720;
+    static final int PAIR_WIDTH = 640, PAIR_HEIGHT = 360;
     /** Cache sizes of the cache row, MiB. */
     static final int[] CACHE_MIB = {8, 64, 512};
 

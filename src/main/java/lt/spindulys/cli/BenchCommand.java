@@ -82,11 +82,11 @@ final class BenchCommand {
                             + "the same cells as adaptive-close",
                     (b, out) -> b.adaptive(out, a -> a.table1("huge", AdaptiveBench.HUGE_VIEW)), ADAPTIVE),
             new Row("adaptive-lazy", "Adaptive subdivision: lazy against eager",
-                    "close scene, two views, 1280x720: lazy (64 MiB cache) against projected at the same tessellation, alternated "
+                    "close scene, two views, 640x360: lazy (64 MiB cache) against projected at the same tessellation, alternated "
                             + "pairs of new JVMs (targets: at least 0.8x the speed, a fifth of the heap)",
                     (b, out) -> b.adaptive(out, AdaptiveBench::lazyVsEager), ADAPTIVE),
             new Row("adaptive-cache", "Adaptive subdivision: cache policy and size",
-                    "close scene, front view, 1280x720, lazy: the thesis's last two patches per thread, and a shared LRU cache of "
+                    "close scene, front view, 640x360, lazy: the thesis's last two patches per thread, and a shared LRU cache of "
                             + "8, 64 and 512 MiB; hit rates",
                     (b, out) -> b.adaptive(out, AdaptiveBench::cache), ADAPTIVE),
             peerVariant("1k", "lazy", "the 1k cage as a lazy adaptive subdiv, target 1 px (beside Cycles' adaptive subdivision, dicing rate 1 px)"),
