@@ -9,6 +9,7 @@ import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+import lt.spindulys.scene.AdaptiveSubdivisionSurface;
 import lt.spindulys.scene.GObject;
 import lt.spindulys.scene.SceneBuilder;
 import lt.spindulys.scene.SubdivisionSurface;
@@ -118,8 +119,9 @@ class SceneParserSubdivTest {
     }
 
     @Test
-    void aTooDeepLevelForTheMeshIsRefusedAtTheLevelKey() throws IOException {
-        // 1,156 quads, so 4,624 corners, each 4^7 quads at level 8: over the limit.
+    void aTooDeepUniformLevelIsRenderedByTheCombinedMethod() throws IOException {
+        // 1,156 quads, so 4,624 corners, each 4^7 quads at level 8: over the uniform path's limit,
+        // so the combined method refines it, at that level, within the scene's memory budget.
         StringBuilder obj = new StringBuilder();
         int n = 34;
         for (int j = 0; j <= n; j++) for (int i = 0; i <= n; i++) obj.append("v ").append(i).append(" 0 ").append(j).append('\n');
@@ -130,8 +132,8 @@ class SceneParserSubdivTest {
             }
         }
         Files.writeString(dir.resolve("big.obj"), obj);
-        SceneException e = assertThrows(SceneException.class, () -> only("subdiv {\n  file \"big.obj\"\n  level 8\n}"));
-        assertEquals("s.dat:3:3: subdivision level 8 would make " + (4L * n * n << 14) + " faces from this mesh, more than the 16777216 allowed (choose a lower level)",
-                e.getMessage());
+        AdaptiveSubdivisionSurface s = (AdaptiveSubdivisionSurface) only("subdiv {\n  file \"big.obj\"\n  level 8\n}");
+        assertEquals(AdaptiveSubdivisionSurface.Method.COMBINED, s.method());
+        assertEquals(8, s.fixedLevel());
     }
 }
