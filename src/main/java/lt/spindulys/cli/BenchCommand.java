@@ -364,7 +364,7 @@ final class BenchCommand {
     }
 
     /** One timed load, build and render of a scene file, and what it used. */
-    private record Measured(double load, double build, RenderStats stats, long peakHeap, long triangles, long meshBytes,
+    record Measured(double load, double build, RenderStats stats, long peakHeap, long triangles, long meshBytes,
                             lt.spindulys.image.FrameBuffer image, double cpuSeconds, List<String> subdivision) {}
 
     private static Measured renderOnce(Path file, AcceleratorKind accel) throws IOException {
@@ -372,7 +372,7 @@ final class BenchCommand {
     }
 
     /** {@link #renderOnce(Path, AcceleratorKind)} with the scene's settings changed by {@code settings}. */
-    private static Measured renderOnce(Path file, AcceleratorKind accel, java.util.function.UnaryOperator<RenderSettings> settings) throws IOException {
+    static Measured renderOnce(Path file, AcceleratorKind accel, java.util.function.UnaryOperator<RenderSettings> settings) throws IOException {
         System.gc();
         RenderCommand.resetPeakHeap();
         long t0 = System.nanoTime();
