@@ -95,6 +95,9 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
     /** Records one placement (object to world over the shutter) of a surface using this tessellation. */
     synchronized void addPlacement(Placement p) { placements.add(p); }
 
+    /** True if some patch is refined on demand (not eager, not all pinned). */
+    boolean refinesWhileTracing() { return top != null && pinnedCount < faces.length; }
+
     /** The triangles as one mesh when eager, else null. */
     TriangleMesh mesh() { return mesh; }
 
