@@ -41,7 +41,7 @@ final class RenderCommand {
                                     [--threads N] [--seed S] [--accel A] [--aov LIST] [--shutter OPEN,CLOSE] [--timesteps N]
                                     [--subdiv-target PX] [--subdiv-memory MIB] [--subdiv-cache MIB]
                                     [--quality Q] [--stats] [--quiet] [--debug]
-                   render subdivide MESH.obj|MESH.dat --level N -o OUT.obj [...]   (see render subdivide --help)
+                   render subdivide MESH.obj|MESH.dat --level N|--scene SCENE.dat -o OUT.obj [...]   (see render subdivide --help)
                    render bench [--only NAME] [--runs N] [--accel A] [--list]      (see render bench --help)
                    render --help | --version
 
