@@ -407,6 +407,77 @@ class AdaptiveSubdivisionTest {
         assertTrue(worst <= TOLERANCE, file + ": a visible edge projects to " + worst + " x the target");
     }
 
+    // ---- everything else keeps working on a lazy surface ----
+
+    /** A scene around the cube with {@code objects} ({@code METHOD} in them replaced), and a light. */
+    static String cubeScene(String settings, String objects, String method) {
+        Frame f = frame("cube.dat");
+        return "settings { width 48  height 36  aov depth normal " + settings + " }\n" + f.camera(3.2, new Vec3(-0.45, 0.55, -1), 40)
+                + "light { position -5 8 -9 }\n" + objects.replace("CUBE", "\"" + file("cube.dat") + "\"").replace("METHOD", method) + "\n";
+    }
+
+    /** The lazy and uniform scenes' images and passes, equal. */
+    static RenderResult[] assertLazyRendersAsUniform(String settings, String objects, String what) {
+        RenderResult u = render(build(cubeScene(settings, objects, ""), AdaptiveSettings.DEFAULT), 2);
+        RenderResult l = render(build(cubeScene(settings, objects, "method lazy"), AdaptiveSettings.DEFAULT), 2);
+        assertSamePasses(u, l, what);
+        java.awt.image.BufferedImage a = u.image(), b = l.image();
+        for (int y = 0; y < a.getHeight(); y++) {
+            for (int x = 0; x < a.getWidth(); x++) {
+                if (a.getRGB(x, y) != b.getRGB(x, y)) fail(what + ": pixel (" + x + ", " + y + ") differs from the uniform surface's");
+            }
+        }
+        return new RenderResult[] {u, l};
+    }
+
+    @Test
+    void csgWithALazyOperandEqualsTheUniformOne() {
+        assertLazyRendersAsUniform("", "difference { subdiv { file CUBE  level 2  METHOD }  sphere { center -0.6 0.7 -0.6  radius 0.75 } }",
+                "difference");
+        assertLazyRendersAsUniform("", "intersection { subdiv { file CUBE  level 2  METHOD }  sphere { center 0.2 0.1 -0.1  radius 1.05 } }",
+                "intersection");
+    }
+
+    @Test
+    void aMovingLazySurfaceEqualsTheUniformOne() {
+        assertLazyRendersAsUniform("samples 4  shutter 0 1",
+                "subdiv { file CUBE  level 2  METHOD  motion { translate 0.7 0.2 0  rotate y 25 } }", "motion blur");
+    }
+
+    @Test
+    void faceVaryingUvsWithATextureEqualTheUniformOnes() {
+        Path dice = Path.of("textures/dice.png").toAbsolutePath();
+        assertLazyRendersAsUniform("", "texture dice { image \"" + dice + "\" }\nmaterial die { color 1 1 1  map { texture dice  mapping uv } }\n"
+                + "subdiv { file CUBE  uv \"" + file("cube.tex") + "\"  level 3  METHOD  material die }", "uvs and a texture");
+    }
+
+    @Test
+    void instancesShareOneTessellationBuiltOncePerFace() {
+        String two = "subdiv { file CUBE  level 2  METHOD  scale 0.6  translate -0.7 0 0 }\nsubdiv { file CUBE  level 2  METHOD  scale 0.6  rotate y 30  translate 0.8 0 0.3 }";
+        assertLazyRendersAsUniform("", two, "two instances");
+        Scene s = build(cubeScene("", two, "method lazy"), AdaptiveSettings.DEFAULT);
+        render(s, 1);
+        List<String> lines = s.adaptiveStatistics();
+        assertEquals(1, lines.size(), "one tessellation for both instances: " + lines);
+        Matcher m = Pattern.compile("patches (\\d+) built, (\\d+) hits").matcher(lines.get(0));
+        assertTrue(m.find(), lines.get(0));
+        assertEquals(6, Integer.parseInt(m.group(1)), "each of the cube's 6 faces refined once for both instances: " + lines.get(0));
+        assertTrue(Long.parseLong(m.group(2)) > 1000, "the second instance's rays hit the first's patches: " + lines.get(0));
+    }
+
+    @Test
+    void statsListPatchesHitsMissesEvictionsPeakAndLevels() throws IOException {
+        Path scene = shapes.resolve("stats.dat"), out = shapes.resolve("stats.png");
+        Files.writeString(scene, cubeScene("", "subdiv { file CUBE  METHOD  target 2 }", "method lazy"));
+        java.io.ByteArrayOutputStream o = new java.io.ByteArrayOutputStream(), e = new java.io.ByteArrayOutputStream();
+        int status = lt.spindulys.cli.Main.run(new String[] {scene.toString(), "-o", out.toString(), "--stats", "--quiet", "--threads", "2"},
+                new java.io.PrintStream(o, true, java.nio.charset.StandardCharsets.UTF_8), new java.io.PrintStream(e, true, java.nio.charset.StandardCharsets.UTF_8));
+        assertEquals(0, status, e.toString(java.nio.charset.StandardCharsets.UTF_8));
+        String line = o.toString(java.nio.charset.StandardCharsets.UTF_8).lines().filter(l -> l.startsWith("subdiv ")).findFirst().orElseThrow();
+        assertTrue(Pattern.compile("^subdiv .*cube\\.dat: lazy, 6 faces, face levels [0-9: ]+; patches \\d+ built, \\d+ hits, \\d+ misses, \\d+ evictions.*, peak [0-9.]+ [KMG]?i?B.*; levels [0-9: ]+")
+                .matcher(line).find(), line);
+    }
+
     /** A pinhole camera's projection, from its public view (the frame its constructor builds). */
     static final class Projector {
         final double[] e, r, u, f;
