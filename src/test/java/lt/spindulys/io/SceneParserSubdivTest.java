@@ -118,8 +118,8 @@ class SceneParserSubdivTest {
     }
 
     @Test
-    void aTooDeepLevelForTheMeshIsRefusedAtTheLevelKey() throws IOException {
-        // 1,156 quads, so 4,624 corners, each 4^7 quads at level 8: over the limit.
+    void aTooDeepUniformLevelBecomesTheCombinedMethodAtThatLevel() throws IOException {
+        // 1,156 quads, so 4,624 corners, each 4^7 quads at level 8: over the uniform path's 2^24 faces.
         StringBuilder obj = new StringBuilder();
         int n = 34;
         for (int j = 0; j <= n; j++) for (int i = 0; i <= n; i++) obj.append("v ").append(i).append(" 0 ").append(j).append('\n');
@@ -130,8 +130,9 @@ class SceneParserSubdivTest {
             }
         }
         Files.writeString(dir.resolve("big.obj"), obj);
-        SceneException e = assertThrows(SceneException.class, () -> only("subdiv {\n  file \"big.obj\"\n  level 8\n}"));
-        assertEquals("s.dat:3:3: subdivision level 8 would make " + (4L * n * n << 14) + " faces from this mesh, more than the 16777216 allowed (choose a lower level)",
-                e.getMessage());
+        // Not refused (issue 16): the combined method refines the same faces within the memory budget.
+        var s = assertInstanceOf(lt.spindulys.scene.AdaptiveSubdivisionSurface.class, only("subdiv {\n  file \"big.obj\"\n  level 8\n}"));
+        assertEquals(lt.spindulys.scene.AdaptiveSubdivisionSurface.Method.COMBINED, s.method());
+        assertEquals(8, s.fixedLevel());
     }
 }
