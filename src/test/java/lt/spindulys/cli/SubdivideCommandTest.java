@@ -146,7 +146,7 @@ class SubdivideCommandTest {
         Files.copy(CUBE_DAT, dir.resolve("cube.dat"));
         Files.copy(CUBE_TEX, dir.resolve("cube.tex"));
         Path scene = dir.resolve("close.dat");
-        Files.writeString(scene, "settings { width 320  height 240 }\ncamera { eye 0.9 1.1 -2.6  lookat 0 0 0  fov 60 }\n" + subdivs);
+        Files.writeString(scene, "settings { width 160  height 120 }\ncamera { eye 0.9 1.1 -2.6  lookat 0 0 0  fov 60 }\n" + subdivs);
         return scene;
     }
 
@@ -166,7 +166,7 @@ class SubdivideCommandTest {
 
     @Test
     void sceneWritesTheAdaptiveTessellationCrackFree() throws IOException {
-        Path scene = cubeScene("subdiv { file \"cube.dat\"  uv \"cube.tex\"  method lazy  target 3 }\n");
+        Path scene = cubeScene("subdiv { file \"cube.dat\"  uv \"cube.tex\"  method lazy  target 6  maxlevel 5 }\n");
         Path out = dir.resolve("adaptive.obj");
         CliTest.Run r = run("subdivide", dir.resolve("cube.dat").toString(), "--scene", scene.toString(), "-o", out.toString());
         assertEquals(0, r.status(), r.err());
@@ -193,8 +193,8 @@ class SubdivideCommandTest {
 
     @Test
     void instancesShareOneTessellationAndDifferentOptionsAreNoted() throws IOException {
-        Path scene = cubeScene("subdiv { file \"cube.dat\"  method projected  target 4 }\n"
-                + "subdiv { file \"cube.dat\"  method projected  target 4  translate 3 0 0 }\n");
+        Path scene = cubeScene("subdiv { file \"cube.dat\"  method projected  target 4  maxlevel 4 }\n"
+                + "subdiv { file \"cube.dat\"  method projected  target 4  maxlevel 4  translate 3 0 0 }\n");
         Path out = dir.resolve("two.obj");
         CliTest.Run r = run("subdivide", dir.resolve("cube.dat").toString(), "--scene", scene.toString(), "-o", out.toString());
         assertEquals(0, r.status(), r.err());
