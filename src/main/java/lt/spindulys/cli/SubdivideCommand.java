@@ -220,12 +220,12 @@ final class SubdivideCommand {
 
     private static String where(GObject o) { return o.source() != null ? o.source() : o.name(); }
 
-    /** "3:12 4:40 5:2": how many control edges have each level. */
+    /** "level 3: 12, level 4: 40": how many control edges have each level. */
     private static String histogram(int[] levels) {
         java.util.TreeMap<Integer, Integer> h = new java.util.TreeMap<>();
         for (int l : levels) h.merge(l, 1, Integer::sum);
         StringBuilder b = new StringBuilder();
-        h.forEach((l, n) -> b.append(b.length() == 0 ? "" : " ").append("level ").append(l).append(": ").append(n));
+        h.forEach((l, n) -> b.append(b.length() == 0 ? "" : ", ").append("level ").append(l).append(": ").append(n));
         return b.toString();
     }
 
