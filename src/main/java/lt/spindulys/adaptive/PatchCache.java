@@ -155,6 +155,7 @@ public final class PatchCache {
         try {
             // The build that registered just before may have finished and installed it.
             CachedPatch there = t.slots.get(face);
+            if (there != null) t.hit(face, recent);
             CachedPatch p = there != null ? there : build(t, face, source, recent);
             mine.complete(p);
             return p;
