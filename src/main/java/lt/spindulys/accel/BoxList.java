@@ -74,4 +74,39 @@ public final class BoxList implements Accelerator {
 
     @Override
     public long memoryBytes() { return 4L * box.length; }
+
+    /**
+     * Stores box {@code i} (minX, minY, minZ, maxX, maxY, maxZ in {@code bounds}) into
+     * {@code boxes} as six float bits rounded outward, the form {@link #crosses(int[], int, Ray, TraversalScratch)}
+     * reads. Each int is one plain write: a reader racing with a store that only shrinks a box
+     * sees, coordinate by coordinate, the old or the new value, a box that still contains the new one.
+     *
+     * @param boxes six ints per box
+     * @param i the box
+     * @param bounds six doubles
+     */
+    public static void store(int[] boxes, int i, double[] bounds) {
+        for (int k = 0; k < 3; k++) {
+            boxes[6 * i + k] = Float.floatToRawIntBits(Bvh.down(bounds[k]));
+            boxes[6 * i + 3 + k] = Float.floatToRawIntBits(Bvh.up(bounds[k + 3]));
+        }
+    }
+
+    /**
+     * Whether the ray crosses box {@code i} of {@code boxes} (stored by {@link #store}) within
+     * [tMin, tMax], by the padded slab test of a {@link Bvh} node: never false for a box whose
+     * contents the watertight triangle test could hit.
+     *
+     * @param boxes six ints per box
+     * @param i the box
+     * @param ray the ray
+     * @param ctx the thread's scratch (its per-direction constants)
+     * @return whether the ray may meet what the box holds
+     */
+    public static boolean crosses(int[] boxes, int i, Ray ray, TraversalScratch ctx) {
+        ctx.direction(ray);
+        double ix = ctx.invX, iy = ctx.invY, iz = ctx.invZ;
+        return !Double.isNaN(Bvh.slabEntry(boxes, 6 * i, ray.ox, ray.oy, ray.oz, ix, iy, iz,
+                ix < 0 ? 3 : 0, iy < 0 ? 3 : 0, iz < 0 ? 3 : 0, ray.tMin, ray.tMax));
+    }
 }

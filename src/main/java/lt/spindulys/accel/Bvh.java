@@ -55,10 +55,22 @@ public final class Bvh implements Accelerator {
      * Builds the hierarchy. Primitives with empty bounds can never be hit and are left out;
      * non-finite bounds are an error (unbounded objects belong outside any hierarchy).
      */
-    public Bvh(PrimitiveSet set, int maxLeafSize) {
+    public Bvh(PrimitiveSet set, int maxLeafSize) { this(set, maxLeafSize, true); }
+
+    /**
+     * Builds the hierarchy, on the calling thread alone when {@code parallel} is false (a render
+     * thread refining a patch: the render threads are the parallelism then, and a pool per patch
+     * would cost more than the build).
+     *
+     * @param set the primitives
+     * @param maxLeafSize most primitives in a leaf
+     * @param parallel whether large builds may split across a pool of threads
+     */
+    public Bvh(PrimitiveSet set, int maxLeafSize, boolean parallel) {
         if (maxLeafSize < 1) throw new IllegalArgumentException("leaf size must be at least 1, got " + maxLeafSize);
         this.set = set;
         Builder b = new Builder(set, maxLeafSize);
+        b.parallel = parallel;
         b.build();
         node = b.node;
         perm = b.perm.length == set.size() && set.reorder(b.perm) ? null : b.perm;
@@ -307,6 +319,9 @@ public final class Bvh implements Accelerator {
         int count, maxDepth;
         Bounds exact = Bounds.EMPTY;
 
+        /** Whether a large build may use a pool of threads. */
+        boolean parallel = true;
+
         Builder(PrimitiveSet set, int leafSize) {
             this.leafSize = leafSize;
             int n = set.size();
@@ -342,7 +357,7 @@ public final class Bvh implements Accelerator {
                 return;
             }
             Part root;
-            if (n >= PARALLEL_GRAIN) {
+            if (parallel && n >= PARALLEL_GRAIN) {
                 // A pool of our own: forks must not land in the common pool, whose size is not ours to choose.
                 ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
                 try {

@@ -50,6 +50,15 @@ public enum AcceleratorKind {
     /** Builds this kind of structure over {@code set}; the scene's own business, hence not public. */
     abstract Accelerator build(PrimitiveSet set);
 
+    /** {@link #build}, on the calling thread alone (a render thread refining a lazy patch). */
+    Accelerator buildOnThisThread(PrimitiveSet set) {
+        return switch (this) {
+            case BVH -> WideBvh.widen(new Bvh(set, Bvh.DEFAULT_LEAF_SIZE, false));
+            case BVH2 -> new Bvh(set, Bvh.DEFAULT_LEAF_SIZE, false);
+            default -> build(set);
+        };
+    }
+
     /**
      * What this kind builds in this JVM, for statistics: for {@link #BVH}, whether the wide vector
      * form or the binary fallback (the module missing, or vectors under 256 bits).

@@ -7,6 +7,7 @@ import java.util.Locale;
 import java.util.stream.IntStream;
 
 import lt.spindulys.accel.Accelerator;
+import lt.spindulys.accel.BoxList;
 import lt.spindulys.accel.PrimitiveHit;
 import lt.spindulys.accel.PrimitiveSet;
 import lt.spindulys.accel.PrimitiveVisitor;
@@ -61,6 +62,12 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
     /** Non-hole faces: the top structure's primitives. */
     private int[] faces;
     private double[] faceBounds;
+    /**
+     * Each face's box as float bits: its one-ring box until its patch is first built, then the
+     * patch's own (tighter) box, so that a ray that misses a built patch is turned away before the
+     * cache is asked for it, even after the patch was evicted.
+     */
+    private int[] tight;
     private AcceleratorKind kind;
     private TriangleMesh mesh;
     private Accelerator top;
@@ -82,7 +89,7 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
         this.target = target;
         String source = refiner.control().source();
         // An unnamed surface is known by its control mesh's file.
-        name = s.name().equals(s.kind()) && source != null ? source : s.name();
+        name = s.name().equals(s.kind()) && source != null ? source.substring(Math.max(source.lastIndexOf('/'), source.lastIndexOf('\\')) + 1) : s.name();
     }
 
     /** Records one placement (object to world over the shutter) of a surface using this tessellation. */
@@ -106,7 +113,7 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
             for (int f : faces) need = HeapBudget.sum(need, refiner.patchBytes(f, faceLevel[f], smooth));
             // The flat mesh repeats what the patches hold, once, while it is made from them.
             need = HeapBudget.product(need, 2);
-            if (shared.takeEager(need) && HeapBudget.fits(need)) {
+            if (HeapBudget.fits(need) && shared.takeEager(need)) {
                 buildEager(root);
                 eagerBytes = need / 2;
                 return;
@@ -121,6 +128,11 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
         for (int i = 0; i < faces.length; i++) {
             refiner.oneRingBounds(faces[i], box);
             System.arraycopy(box, 0, faceBounds, 6 * i, 6);
+        }
+        tight = new int[faceBounds.length];
+        for (int i = 0; i < faces.length; i++) {
+            System.arraycopy(faceBounds, 6 * i, box, 0, 6);
+            BoxList.store(tight, i, box);
         }
         if (used == AdaptiveSubdivisionSurface.Method.COMBINED) pinWithinBudget(shared);
         top = kind.build(this);
@@ -300,7 +312,7 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
         int take = 0;
         long sum = 0;
         while (take < order.length && HeapBudget.sum(sum, cost[order[take]]) <= shared.eagerLeft()) sum += cost[order[take++]];
-        if (take == 0 || !shared.takeEager(sum) || !HeapBudget.fits(sum)) return;
+        if (take == 0 || !HeapBudget.fits(sum) || !shared.takeEager(sum)) return;
         int[] chosen = new int[take];
         for (int k = 0; k < take; k++) chosen[k] = order[k];
         IntStream.range(0, take).parallel().forEach(k -> {
@@ -363,6 +375,10 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
         int f = faces[i];
         PatchTriangles p = new PatchTriangles(i, faceLevel[f], refine(f), kind);
         if (table != null) table.stats().recordLevel(faceLevel[f]);
+        double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+                Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        p.include(box);
+        if (box[0] <= box[3]) BoxList.store(tight, i, box);
         return p;
     }
 
@@ -375,6 +391,7 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
 
     @Override
     public boolean intersect(int i, Ray ray, PrimitiveHit hit, TraversalScratch s) {
+        if (!BoxList.crosses(tight, i, ray, s)) return false;
         TraceContext ctx = (TraceContext) s;
         PatchTriangles p = patch(i, ctx.recentPatches);
         if (!p.accel.intersect(ray, hit, ctx)) return false;
@@ -385,6 +402,7 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
 
     @Override
     public boolean occluded(int i, Ray ray, TraversalScratch s) {
+        if (!BoxList.crosses(tight, i, ray, s)) return false;
         TraceContext ctx = (TraceContext) s;
         return patch(i, ctx.recentPatches).accel.occluded(ray, ctx);
     }

@@ -54,7 +54,7 @@ final class PatchTriangles implements CachedPatch, PrimitiveSet {
         pos = d.positions();
         normals = d.normals();
         uvs = d.uvs();
-        accel = kind.build(this);
+        accel = kind.buildOnThisThread(this);
         bytes = 96 + 4L * (tri.length + len(triNormal) + len(triUv)) + 8L * (pos.length + len(normals) + len(uvs)) + accel.memoryBytes();
     }
 

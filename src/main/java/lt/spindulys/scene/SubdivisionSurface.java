@@ -180,10 +180,11 @@ public final class SubdivisionSurface extends GObject {
             throw new IllegalArgumentException("subdivision level " + level + " would make " + refinedFaces + " faces from this mesh, more than the "
                     + MAX_FACES + " allowed (choose a lower level)");
         }
-        // Refinement is uniform: every face is split to the level asked, whether the camera
-        // needs that detail or not. Until an adaptive method exists, a level that does not fit is refused.
+        // Uniform refinement splits every face to the level asked, whether the camera needs that
+        // detail or not; a level that does not fit is refused here (a scene file's subdiv then
+        // renders it by the combined adaptive method instead: AdaptiveSubdivisionSurface).
         HeapBudget.require(HeapBudget.product(refinedFaces, bytesPerFace), "subdivision level " + level + " of this mesh ("
-                + refinedFaces + " faces; refinement is uniform until an adaptive method exists, so choose a lower level or give more heap)");
+                + refinedFaces + " faces; uniform refinement; choose a lower level, give more heap, or refine adaptively)");
         return level;
     }
 

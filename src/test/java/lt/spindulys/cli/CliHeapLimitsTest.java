@@ -63,10 +63,7 @@ class CliHeapLimitsTest {
                 new Case("8192x8192 run-length TGA of 18 bytes", CAM + "texture t {\n  image \"big.tga\"\n}\n", Map.of("big.tga", tgaHeader(8192, 8192, 10)),
                         "3:9: cannot read texture image 'big.tga': the 8192x8192 image needs 704 MiB of heap"),
                 new Case("8 KB PNG of 8192x8192 1-bit pixels", CAM + "texture t {\n  image \"big.png\"\n}\n", Map.of("big.png", blackPng(8192, 8192)),
-                        "3:9: cannot read texture image 'big.png': the 8192x8192 image needs 456 MiB of heap"),
-                new Case("32 quads at level 8", CAM + "subdiv {\n  file \"grid.obj\"\n  level 8\n}\n", Map.of("grid.obj", grid(8, 4)),
-                        "4:3: subdivision level 8 of this mesh (2097152 faces; refinement is uniform until an adaptive method exists, so choose a lower "
-                                + "level or give more heap) needs 1.1 GiB of heap, but only 64 MiB is free"));
+                        "3:9: cannot read texture image 'big.png': the 8192x8192 image needs 456 MiB of heap"));
     }
 
     @ParameterizedTest(name = "{0}")
@@ -105,6 +102,23 @@ class CliHeapLimitsTest {
     }
 
     @Test
+    void aUniformLevelTooLargeForTheHeapRendersByTheCombinedMethod() throws IOException {
+        // 4 quads at level 8 (262144 faces) would need more than the 64 MiB left for uniform
+        // refinement; the combined method renders the same level within the scene's budget.
+        Path scene = dir.resolve("scene.dat");
+        Files.writeString(scene, CAM + "settings { width 16 height 12 }\nsubdiv {\n  file \"grid.obj\"\n  level 8\n}\n");
+        Files.write(dir.resolve("grid.obj"), grid(2, 2));
+        Path out = dir.resolve("out.png");
+        CliTest.Run r;
+        try (HeapBudget.Scope s = HeapBudget.cap(CAP)) {
+            r = CliTest.run(scene.toString(), "-o", out.toString(), "--quiet", "--stats");
+        }
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().contains("subdiv grid.obj: combined"), r.out());
+        assertTrue(Files.exists(out));
+    }
+
+    @Test
     void optionsThatShrinkAHugeFrameRenderIt() throws IOException {
         // The scene's own size is checked only once the options are known, so they can make it fit.
         Path scene = dir.resolve("scene.dat");
@@ -126,7 +140,7 @@ class CliHeapLimitsTest {
             r = CliTest.run("subdivide", mesh.toString(), "--level", "8", "-o", out.toString());
         }
         assertEquals(2, r.status(), r.err());
-        assertTrue(r.err().startsWith("render: --level 8: " + mesh + ": subdivision level 8 of this mesh (8388608 faces; refinement is uniform"), r.err());
+        assertTrue(r.err().startsWith("render: --level 8: " + mesh + ": subdivision level 8 of this mesh (8388608 faces; uniform refinement"), r.err());
         assertTrue(r.err().contains("needs 1.4 GiB of heap, but only 64 MiB is free"), r.err());
         assertEquals(1, r.err().lines().count(), r.err());
         assertFalse(Files.exists(out), "no mesh written");
