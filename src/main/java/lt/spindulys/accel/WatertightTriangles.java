@@ -17,6 +17,23 @@ public final class WatertightTriangles {
     private WatertightTriangles() {}
 
     /**
+     * The box of triangle {@code i} (three position indices per triangle in {@code tri}, x, y, z
+     * per position in {@code pos}) as minX, minY, minZ, maxX, maxY, maxZ into {@code out[0..5]}.
+     *
+     * @param tri three position indices per triangle
+     * @param pos three coordinates per position
+     * @param i the triangle
+     * @param out receives six doubles
+     */
+    public static void bounds(int[] tri, double[] pos, int i, double[] out) {
+        int a = 3 * tri[3 * i], b = 3 * tri[3 * i + 1], c = 3 * tri[3 * i + 2];
+        for (int k = 0; k < 3; k++) {
+            out[k] = Math.min(pos[a + k], Math.min(pos[b + k], pos[c + k]));
+            out[k + 3] = Math.max(pos[a + k], Math.max(pos[b + k], pos[c + k]));
+        }
+    }
+
+    /**
      * The test of triangles prims[from..to) (or from..to themselves when prims is null), with the
      * per-ray constants read once. Vertices are translated to the ray origin, permuted so the ray
      * runs along the (new) z axis and sheared so it becomes the z axis itself; the 2D edge

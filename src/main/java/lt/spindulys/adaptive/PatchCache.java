@@ -138,6 +138,37 @@ public final class PatchCache {
 
     private CachedPatch miss(Table t, int face, PatchSource source, RecentPatches recent) {
         recent.flush();
+        if (!lru) return build(t, face, source, recent);
+        java.util.concurrent.CompletableFuture<CachedPatch> mine = new java.util.concurrent.CompletableFuture<>();
+        java.util.concurrent.CompletableFuture<CachedPatch> other = t.building.putIfAbsent(face, mine);
+        if (other != null) {
+            CachedPatch p;
+            try {
+                p = other.join();
+            } catch (java.util.concurrent.CompletionException e) {
+                // The builder's own failure (it reports it too); this thread builds for itself.
+                return build(t, face, source, recent);
+            }
+            t.hit(face, recent);
+            return p;
+        }
+        try {
+            // The build that registered just before may have finished and installed it.
+            CachedPatch there = t.slots.get(face);
+            if (there != null) t.hit(face, recent);
+            CachedPatch p = there != null ? there : build(t, face, source, recent);
+            mine.complete(p);
+            return p;
+        } catch (RuntimeException | Error e) {
+            mine.completeExceptionally(e);
+            throw e;
+        } finally {
+            t.building.remove(face, mine);
+        }
+    }
+
+    /** Builds the patch of {@code face} and keeps it as the policy says. */
+    private CachedPatch build(Table t, int face, PatchSource source, RecentPatches recent) {
         CachedPatch p = source.build(face);
         if (p == null) throw new IllegalArgumentException("the patch source of " + t.name + " gave no patch for face " + face);
         long b = p.bytes();
@@ -353,6 +384,13 @@ public final class PatchCache {
         final byte[] referenced;
         final long[] occupied;
         final Stats stats = new Stats();
+        /**
+         * LRU only: the builds under way, by face, so that a thread missing a face another thread is
+         * building waits for that build instead of repeating it (a deep patch takes milliseconds,
+         * and render threads working on neighbouring tiles often reach the same face together).
+         */
+        final java.util.concurrent.ConcurrentHashMap<Integer, java.util.concurrent.CompletableFuture<CachedPatch>> building =
+                new java.util.concurrent.ConcurrentHashMap<>();
 
         Table(int faces, String name, int words) {
             this.faces = faces;

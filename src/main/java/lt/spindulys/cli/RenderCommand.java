@@ -41,7 +41,7 @@ final class RenderCommand {
                                     [--threads N] [--seed S] [--accel A] [--aov LIST] [--shutter OPEN,CLOSE] [--timesteps N]
                                     [--subdiv-target PX] [--subdiv-memory MIB] [--subdiv-cache MIB]
                                     [--quality Q] [--stats] [--quiet] [--debug]
-                   render subdivide MESH.obj|MESH.dat --level N -o OUT.obj [...]   (see render subdivide --help)
+                   render subdivide MESH.obj|MESH.dat --level N|--scene SCENE.dat -o OUT.obj [...]   (see render subdivide --help)
                    render bench [--only NAME] [--runs N] [--accel A] [--list]      (see render bench --help)
                    render --help | --version
 
@@ -115,7 +115,10 @@ final class RenderCommand {
                 case "--quality" -> quality = doubleValue(args, ++i, a, 0, 1);
                 case "--subdiv-target" -> subdivTarget = doubleValue(args, ++i, a, AdaptiveSettings.MIN_TARGET, AdaptiveSettings.MAX_TARGET);
                 case "--subdiv-memory" -> subdivMemory = doubleValue(args, ++i, a, 0, AdaptiveSettings.MAX_BYTES >> 20);
-                case "--subdiv-cache" -> subdivCache = doubleValue(args, ++i, a, 1.0 / (1 << 20), AdaptiveSettings.MAX_BYTES >> 20);
+                case "--subdiv-cache" -> {
+                    subdivCache = doubleValue(args, ++i, a, 0, AdaptiveSettings.MAX_BYTES >> 20);
+                    if (!(subdivCache * (1 << 20) >= 1)) throw new UsageException(a + " must be more than 0 (mebibytes of the lazy patches' cache), found " + args[i]);
+                }
                 case "--stats" -> stats = true;
                 case "--quiet", "-q" -> quiet = true;
                 default -> {
@@ -398,11 +401,17 @@ final class RenderCommand {
         String v = value(args, i, option);
         try {
             double d = Double.parseDouble(v);
-            if (!(d >= min && d <= max)) throw new UsageException(option + " must be between " + min + " and " + max + ", found " + v);
+            if (!(d >= min && d <= max)) throw new UsageException(option + " must be between " + bound(min) + " and " + bound(max) + ", found " + v);
             return d;
         } catch (NumberFormatException e) {
             throw new UsageException(option + " expects a number, found '" + v + "'");
         }
+    }
+
+    /** A range's end as a person writes it: 0, 1, 16777216, 0.01 (not 0.0 or 1.6777216E7). */
+    private static String bound(double b) {
+        if (b == Math.rint(b) && Math.abs(b) < 1e15) return Long.toString((long) b);
+        return java.math.BigDecimal.valueOf(b).stripTrailingZeros().toPlainString();
     }
 
     /** A finite lens dimension: at least 0, or with {@code positive} greater than 0. */

@@ -2,14 +2,24 @@ package lt.spindulys.cli;
 
 import java.io.IOException;
 import java.io.PrintStream;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 
 import lt.spindulys.files.AtomicFile;
 import lt.spindulys.io.ObjReader;
 import lt.spindulys.io.ObjWriter;
 import lt.spindulys.limits.MessageText;
+import lt.spindulys.io.SceneParser;
 import lt.spindulys.io.WorkframeReader;
+import lt.spindulys.limits.InputFiles;
+import lt.spindulys.mesh.MeshData;
+import lt.spindulys.scene.AdaptiveSubdivisionSurface;
+import lt.spindulys.scene.Bool;
+import lt.spindulys.scene.GObject;
+import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.SubdivisionSurface;
 import lt.spindulys.subdiv.CatmullClark;
 import lt.spindulys.subdiv.ControlMesh;
@@ -18,22 +28,30 @@ import lt.spindulys.subdiv.SubdivInput;
 
 /**
  * {@code render subdivide IN.(obj|dat) --level N [--limit] [--uv IN.tex] -o OUT.obj}: refines a
- * control mesh by Catmull-Clark and writes the refined mesh as an OBJ file, atomically.
+ * control mesh by Catmull-Clark and writes the refined mesh as an OBJ file, atomically; with
+ * {@code --scene SCENE.dat} instead of {@code --level}, writes the tessellation that scene renders
+ * the mesh with (adaptive: per-edge levels from its camera, stitched and welded).
  */
 final class SubdivideCommand {
     static final String USAGE = """
             usage: render subdivide MESH.obj|MESH.dat --level N -o OUT.obj [--limit] [--uv UNWRAP.tex] [--debug]
+                   render subdivide MESH.obj|MESH.dat --scene SCENE.dat -o OUT.obj [--debug]
                    render subdivide --help
 
             Refines a control mesh by Catmull-Clark subdivision (OpenSubdiv's rules; the t tags of an
             OBJ file give creases, corners, holes and options) and writes the refined mesh as OBJ:
             v positions, vt face-varying UVs (when the mesh has them), f quads; holes are left out.
-            The mesh formats are described in docs/mesh-formats.md.
+            With --scene, writes the tessellation that scene renders the mesh with instead: the
+            scene's subdiv statement naming MESH chooses the method, levels (per edge, from its
+            camera, for an adaptive method) and options; the patches are stitched and welded, so
+            the triangles (v, vt, vn, f v/vt/vn) are crack-free. A uniform subdiv statement gives
+            its uniform refinement. The mesh formats are described in docs/mesh-formats.md.
 
-              --level N          refinement level, 0 to 8 (required)
+              --level N          refinement level, 0 to 8 (this or --scene is required)
+              --scene SCENE.dat  the tessellation SCENE.dat would render MESH with
               -o, --output OUT   the .obj file to write (required); written atomically
-              --limit            write limit-surface positions, and vn limit normals
-              --uv UNWRAP.tex    face-varying UVs from a Workframe unwrap (one u v per face corner)
+              --limit            write limit-surface positions, and vn limit normals (with --level)
+              --uv UNWRAP.tex    face-varying UVs from a Workframe unwrap (one u v per face corner; with --level)
               --debug            stack traces on errors
             Exit status: 0 success, 2 bad usage or bad input, 1 failure while writing.""";
 
@@ -48,7 +66,7 @@ final class SubdivideCommand {
     /** Added per face by --limit: limit positions and normals, three doubles each per vertex. */
     static final long LIMIT_BYTES_PER_FACE = 64;
 
-    private Path input, output, uv;
+    private Path input, output, uv, scene;
     private Integer level;
     private boolean limit;
 
@@ -61,6 +79,7 @@ final class SubdivideCommand {
                 case "--uv" -> uv = Path.of(value(args, ++i, a));
                 case "--level" -> level = levelValue(value(args, ++i, a));
                 case "--limit" -> limit = true;
+                case "--scene" -> scene = Path.of(value(args, ++i, a));
                 default -> {
                     if (a.startsWith("-") && a.length() > 1) throw new UsageException("unknown option '" + a + "' for subdivide (see render subdivide --help)");
                     if (input != null) throw new UsageException("more than one mesh given: '" + input + "' and '" + a + "'");
@@ -73,7 +92,13 @@ final class SubdivideCommand {
         if (!ext.equals("obj") && !ext.equals("dat")) {
             throw new UsageException("the mesh to subdivide must be an .obj or a .dat file, found '" + input + "'");
         }
-        if (level == null) throw new UsageException("subdivide needs --level N (see render subdivide --help)");
+        if (scene != null) {
+            if (level != null) throw new UsageException("--level and --scene exclude each other: the scene's subdiv statement chooses the levels");
+            if (limit) throw new UsageException("--limit goes with --level, not --scene (the scene's tessellation is written as it renders it)");
+            if (uv != null) throw new UsageException("--uv goes with --level, not --scene (the scene's subdiv statement names its unwrap)");
+        } else if (level == null) {
+            throw new UsageException("subdivide needs --level N or --scene SCENE.dat (see render subdivide --help)");
+        }
         if (output == null) throw new UsageException("subdivide needs an output file: -o OUT.obj (see render subdivide --help)");
         if (!extension(output).equals("obj")) throw new UsageException("the output of subdivide must be an .obj file, found '" + output + "'");
     }
@@ -85,6 +110,7 @@ final class SubdivideCommand {
         } catch (IOException e) {
             throw new UsageException(e.getMessage());
         }
+        if (scene != null) return runScene(err);
         String name = input.toString();
         SubdivInput in = extension(input).equals("obj") ? ObjReader.readSubdiv(input) : SubdivInput.of(WorkframeReader.readMesh(input));
         if (uv != null) in = in.withCornerUvs(WorkframeReader.readUnwrap(uv, in.mesh()));
@@ -104,6 +130,103 @@ final class SubdivideCommand {
                 + refined.vertexCount() + " vertices, " + refined.faceCount() + " faces";
         AtomicFile.write(output, os -> ObjWriter.write(refined, limit, comment, os));
         return 0;
+    }
+
+    /**
+     * --scene: parses and builds the scene as a render would, finds its subdiv statements whose
+     * control mesh is the input file, and writes the tessellation the first of them renders with
+     * (adaptive statements before uniform ones; a note names the others when their options differ,
+     * since they do not share one tessellation).
+     */
+    private int runScene(PrintStream err) throws IOException, UsageException {
+        String problem = InputFiles.problem(scene);
+        if (problem != null) throw new RenderCommand.NoSuchFileException(scene, problem);
+        problem = InputFiles.problem(input);
+        if (problem != null) throw new UsageException("mesh " + input + " " + problem);
+        Scene built = SceneParser.parse(scene).build();
+        List<AdaptiveSubdivisionSurface> adaptive = new ArrayList<>();
+        List<SubdivisionSurface> uniform = new ArrayList<>();
+        List<String> others = new ArrayList<>();
+        collect(built.objects(), adaptive, uniform, others);
+        String note = null;
+        if (!adaptive.isEmpty()) {
+            AdaptiveSubdivisionSurface first = adaptive.get(0);
+            List<String> differ = new ArrayList<>();
+            for (AdaptiveSubdivisionSurface s : adaptive) if (!sameTessellation(first, s)) differ.add(where(s));
+            if (!differ.isEmpty()) {
+                note = "note: " + adaptive.size() + " subdiv statements of " + scene + " refine " + input + " with different options; writing the tessellation of the first ("
+                        + where(first) + "), not of " + String.join(", ", differ);
+            }
+            MeshData m = first.tessellation();
+            int[] edgeLevels = first.edgeLevels();
+            String comment = "tessellation of " + input.getFileName() + " as " + scene.getFileName() + " renders it (" + where(first) + ", method "
+                    + first.method().word() + ") (spindulys " + Main.version() + ")\n"
+                    + "control edges per level: " + histogram(edgeLevels) + "\n"
+                    + m.vertexCount() + " vertices, " + m.faceCount() + " triangles, welded: crack-free";
+            AtomicFile.write(output, os -> ObjWriter.write(m, comment, os));
+        } else if (!uniform.isEmpty()) {
+            SubdivisionSurface first = uniform.get(0);
+            List<String> differ = new ArrayList<>();
+            for (SubdivisionSurface s : uniform) if (s.refined() != first.refined()) differ.add(where(s));
+            if (!differ.isEmpty()) {
+                note = "note: " + uniform.size() + " subdiv statements of " + scene + " refine " + input + " differently; writing the first's ("
+                        + where(first) + "), not " + String.join(", ", differ);
+            }
+            RefinedMesh refined = first.refined();
+            String comment = "Catmull-Clark subdivision of " + input.getFileName() + " at level " + first.level() + " as " + scene.getFileName()
+                    + " renders it (" + where(first) + ", method uniform) (spindulys " + Main.version() + ")\n"
+                    + refined.vertexCount() + " vertices, " + refined.faceCount() + " faces";
+            AtomicFile.write(output, os -> ObjWriter.write(refined, false, comment, os));
+        } else {
+            throw new UsageException(scene + " has no subdiv statement whose file is " + input
+                    + (others.isEmpty() ? " (it has none)" : " (its subdiv files: " + String.join(", ", others) + ")"));
+        }
+        if (note != null) err.println(MessageText.escape(note));
+        return 0;
+    }
+
+    /** The subdiv surfaces among {@code objects} (CSG operands too) whose control mesh is the input file; the others' files. */
+    private void collect(List<GObject> objects, List<AdaptiveSubdivisionSurface> adaptive, List<SubdivisionSurface> uniform, List<String> others) {
+        for (GObject o : objects) {
+            if (o instanceof Bool b) {
+                collect(b.operands(), adaptive, uniform, others);
+            } else if (o instanceof AdaptiveSubdivisionSurface a) {
+                if (isInput(a.control().source())) adaptive.add(a);
+                else others.add(a.control().source());
+            } else if (o instanceof SubdivisionSurface u) {
+                if (isInput(u.refined().controlMesh().source())) uniform.add(u);
+                else others.add(u.refined().controlMesh().source());
+            }
+        }
+    }
+
+    /** True if the parser's path of a control mesh (absolute, normalised) is the input file. */
+    private boolean isInput(String source) {
+        if (source == null) return false;
+        Path p = Path.of(source);
+        if (p.equals(input.toAbsolutePath().normalize())) return true;
+        try {
+            return Files.isSameFile(p, input);
+        } catch (IOException e) {
+            return false;
+        }
+    }
+
+    /** True if two placements use one tessellation: the scene shares it when the geometry and every option agree. */
+    private static boolean sameTessellation(AdaptiveSubdivisionSurface a, AdaptiveSubdivisionSurface b) {
+        return a.refiner() == b.refiner() && a.method() == b.method() && a.isSmooth() == b.isSmooth() && a.fixedLevel() == b.fixedLevel()
+                && a.maxLevel() == b.maxLevel() && a.target() == b.target() && a.levels() == b.levels();
+    }
+
+    private static String where(GObject o) { return o.source() != null ? o.source() : o.name(); }
+
+    /** "level 3: 12, level 4: 40": how many control edges have each level. */
+    private static String histogram(int[] levels) {
+        java.util.TreeMap<Integer, Integer> h = new java.util.TreeMap<>();
+        for (int l : levels) h.merge(l, 1, Integer::sum);
+        StringBuilder b = new StringBuilder();
+        h.forEach((l, n) -> b.append(b.length() == 0 ? "" : ", ").append("level ").append(l).append(": ").append(n));
+        return b.toString();
     }
 
     private static Integer levelValue(String v) throws UsageException {

@@ -7,6 +7,7 @@ import java.io.OutputStreamWriter;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 
+import lt.spindulys.mesh.MeshData;
 import lt.spindulys.subdiv.RefinedMesh;
 
 /**
@@ -63,6 +64,57 @@ public final class ObjWriter {
                 // Normals are per vertex, so a vertex's normal has the vertex's own index.
                 if (withUv) line.append('/').append(faceUvs[c + j] + 1);
                 if (limit) line.append(withUv ? "/" : "//").append(v);
+            }
+            line.append('\n');
+            w.append(line);
+        }
+        w.flush();
+    }
+
+    /**
+     * Writes a polygon mesh (an adaptive tessellation) to {@code out} (flushed, not closed):
+     * {@code v}, then {@code vt} and {@code vn} when the mesh has them, and {@code f v/vt/vn}
+     * corners with the indices the mesh gives each corner.
+     *
+     * @param mesh    the mesh; a corner's uv or normal index of -1 leaves that part out of every corner of its face
+     * @param comment a comment for the first lines (may hold several lines), or null
+     * @param out     the stream
+     * @throws IOException if writing fails
+     */
+    public static void write(MeshData mesh, String comment, OutputStream out) throws IOException {
+        Writer w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), 1 << 16);
+        if (comment != null) {
+            for (String line : comment.split("\\R", -1)) w.write("# " + line + "\n");
+        }
+        double[] p = mesh.positions();
+        for (int i = 0; i < p.length; i += 3) triple(w, "v ", p, i);
+        double[] uvs = mesh.uvs();
+        if (uvs != null) {
+            for (int i = 0; i < uvs.length; i += 2) {
+                w.write("vt ");
+                w.write(number(uvs[i]));
+                w.write(' ');
+                w.write(number(uvs[i + 1]));
+                w.write('\n');
+            }
+        }
+        double[] n = mesh.normals();
+        if (n != null) for (int i = 0; i < n.length; i += 3) triple(w, "vn ", n, i);
+        int[] sizes = mesh.faceSizes(), vi = mesh.vertexIndex(), ti = mesh.uvIndex(), ni = mesh.normalIndex();
+        StringBuilder line = new StringBuilder(64);
+        for (int f = 0, c = 0; f < sizes.length; c += sizes[f], f++) {
+            // A face whose corners miss a uv or a normal is written without that part (OBJ wants all or none).
+            boolean withUv = ti != null, withNormal = ni != null;
+            for (int j = 0; j < sizes[f]; j++) {
+                withUv &= ti != null && ti[c + j] >= 0;
+                withNormal &= ni != null && ni[c + j] >= 0;
+            }
+            line.setLength(0);
+            line.append('f');
+            for (int j = 0; j < sizes[f]; j++) {
+                line.append(' ').append(vi[c + j] + 1);
+                if (withUv) line.append('/').append(ti[c + j] + 1);
+                if (withNormal) line.append(withUv ? "/" : "//").append(ni[c + j] + 1);
             }
             line.append('\n');
             w.append(line);

@@ -193,10 +193,12 @@ final class SceneAssetCache {
             throw err.wrap(target.at(), e);
         }
         if (levels != null) s.levels("object".equals(levels.value()) ? AdaptiveSubdivisionSurface.Levels.OBJECT : AdaptiveSubdivisionSurface.Levels.EDGE);
-        try {
-            if (maxLevel != null) s.maxLevel((Integer) maxLevel.value());
-        } catch (IllegalArgumentException e) {
-            throw err.wrap(maxLevel.at(), e);
+        if (maxLevel != null) {
+            int max = (Integer) maxLevel.value();
+            if (max < 0 || max > SubdivisionSurface.MAX_LEVEL) {
+                throw err.error(maxLevel.at(), "maxlevel must be between 0 and " + SubdivisionSurface.MAX_LEVEL + ", found " + max);
+            }
+            s.maxLevel(max);
         }
         return s;
     }

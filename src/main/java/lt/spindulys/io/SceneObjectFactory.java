@@ -80,11 +80,11 @@ final class SceneObjectFactory {
      * Bytes of a size given in mebibytes (fractions allowed), refused when negative, not a number,
      * zero where zero has no meaning, or beyond {@link AdaptiveSettings#MAX_BYTES}.
      */
-    static long mebibytes(double mib, boolean zeroAllowed) {
+    static long mebibytes(String key, double mib, boolean zeroAllowed) {
         double bytes = mib * (1 << 20);
         if (!(bytes >= (zeroAllowed ? 0 : 1)) || bytes > AdaptiveSettings.MAX_BYTES) {
-            throw new IllegalArgumentException("a size in MiB must be " + (zeroAllowed ? "0 (automatic) or more" : "more than 0")
-                    + " and at most " + (AdaptiveSettings.MAX_BYTES >> 20) + ", found " + mib);
+            throw new IllegalArgumentException(key + " must be " + (zeroAllowed ? "0 (automatic) or more" : "more than 0")
+                    + " mebibytes and at most " + (AdaptiveSettings.MAX_BYTES >> 20) + ", found " + mib);
         }
         return (long) bytes;
     }
@@ -92,6 +92,7 @@ final class SceneObjectFactory {
     RenderSettings settings(Props p, RenderSettings s) {
         RenderSettings.Builder sb = s.toBuilder();
         AdaptiveSettings adaptive = s.adaptive();
+        checkCacheWithinMemory(p);
         for (Prop pr : p.all) {
             Object v = pr.value();
             try {
@@ -109,8 +110,8 @@ final class SceneObjectFactory {
                     case "aov" -> sb.aovs(aovs((List<?>) v));
                     case "shutter" -> sb.shutter(((double[]) v)[0], ((double[]) v)[1]);
                     case "timesteps" -> sb.timeSteps((Integer) v);
-                    case "subdivmemory" -> sb.adaptive(adaptive = adaptive.withMemory(mebibytes((Double) v, true)));
-                    case "subdivcache" -> sb.adaptive(adaptive = adaptive.withCache(mebibytes((Double) v, false)));
+                    case "subdivmemory" -> sb.adaptive(adaptive = adaptive.withMemory(mebibytes("subdivmemory", (Double) v, true)));
+                    case "subdivcache" -> sb.adaptive(adaptive = adaptive.withCache(mebibytes("subdivcache", (Double) v, false)));
                     case "subdivpolicy" -> sb.adaptive(adaptive = adaptive.withLastTwoPatches("last-two".equals(v)));
                     case "subdivtarget" -> sb.adaptive(adaptive = adaptive.withTarget(AdaptiveSettings.checkTarget((Double) v)));
                     default -> throw unhandled(pr);
@@ -130,6 +131,26 @@ final class SceneObjectFactory {
         }
         return s;
     }
+
+    /**
+     * Refuses a subdivcache larger than a subdivmemory given beside it, in either order (the
+     * settings themselves would shrink the cache to a budget given after it, silently), at the
+     * later of the two keys.
+     */
+    private void checkCacheWithinMemory(Props p) {
+        Prop memory = p.prop("subdivmemory"), cache = p.prop("subdivcache");
+        if (memory == null || cache == null) return;
+        double m = (Double) memory.value(), c = (Double) cache.value();
+        if (m > 0 && c > m) {
+            Prop later = memory.at().line() > cache.at().line()
+                    || (memory.at().line() == cache.at().line() && memory.at().column() > cache.at().column()) ? memory : cache;
+            throw err.error(later.at(), "subdivcache (" + mib(c) + " MiB) must not exceed subdivmemory ("
+                    + mib(m) + " MiB): the cache is part of the subdivision memory");
+        }
+    }
+
+    /** A size in MiB as written: "64", "0.5". */
+    private static String mib(double v) { return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v); }
 
     private static Set<Aov> aovs(List<?> keywords) {
         Set<Aov> out = EnumSet.noneOf(Aov.class);

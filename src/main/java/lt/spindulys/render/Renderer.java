@@ -159,7 +159,10 @@ public final class Renderer {
                                      AovFrame aovs, Pass pass, int tilesX, int tiles, AtomicBoolean cancelled) throws InterruptedException {
         RenderSettings st = scene.settings();
         int w = st.width(), h = st.height();
-        int stride = spreadStride(tiles);
+        // Tiles spread over the frame keep the time estimate steady; but a scene that refines
+        // patches while it is traced takes them row by row, so that neighbouring tiles reuse the
+        // patches in its cache instead of evicting them (the image is the same in any order).
+        int stride = scene.refinesWhileTracing() ? 1 : spreadStride(tiles);
         AtomicInteger nextTile = new AtomicInteger();
         AtomicLong donePixels = new AtomicLong();
         AtomicReference<Throwable> failure = new AtomicReference<>();

@@ -92,8 +92,35 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
         name = s.name().equals(s.kind()) && source != null ? source.substring(Math.max(source.lastIndexOf('/'), source.lastIndexOf('\\')) + 1) : s.name();
     }
 
+    /**
+     * Heap a flat eager mesh needs per triangle at its peak, beyond the patches it is made from:
+     * its index arrays (positions, normals, uvs: 36 bytes), the joined vertex data (about 40), the
+     * structure (about 30) and the structure's build (bounds and order, about 60), with a margin.
+     */
+    static final long FLAT_BYTES_PER_TRIANGLE = 200;
+
+    /**
+     * Heap a lazy patch holds per triangle beyond {@link PatchRefiner#patchBytes}: the triangle,
+     * normal and uv index arrays (36 bytes) and its structure (about 30), with a margin.
+     */
+    static final long PATCH_BYTES_PER_TRIANGLE = 80;
+
+    /** Triangles of face {@code f}'s patch: a polygon's fan at level 0, else two per quad. */
+    private long triangles(int f) {
+        int n = refiner.faceSize(f), l = faceLevel[f];
+        return l == 0 ? n - 2 : 2L * n << (2 * (l - 1));
+    }
+
+    /** Heap face {@code f}'s patch holds, all told (what pinning it costs). */
+    private long patchCost(int f) {
+        return HeapBudget.sum(refiner.patchBytes(f, faceLevel[f], smooth), HeapBudget.product(triangles(f), PATCH_BYTES_PER_TRIANGLE));
+    }
+
     /** Records one placement (object to world over the shutter) of a surface using this tessellation. */
     synchronized void addPlacement(Placement p) { placements.add(p); }
+
+    /** True if some patch is refined on demand (not eager, not all pinned). */
+    boolean refinesWhileTracing() { return top != null && pinnedCount < faces.length; }
 
     /** The triangles as one mesh when eager, else null. */
     TriangleMesh mesh() { return mesh; }
@@ -109,13 +136,17 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
         for (int f = 0, k = 0; f < nf; f++) if (!refiner.isHole(f)) faces[k++] = f;
         used = method;
         if (method == AdaptiveSubdivisionSurface.Method.PROJECTED) {
-            long need = 0;
-            for (int f : faces) need = HeapBudget.sum(need, refiner.patchBytes(f, faceLevel[f], smooth));
-            // The flat mesh repeats what the patches hold, once, while it is made from them.
-            need = HeapBudget.product(need, 2);
+            long patches = 0, triangles = 0;
+            for (int f : faces) {
+                patches = HeapBudget.sum(patches, refiner.patchBytes(f, faceLevel[f], smooth));
+                triangles = HeapBudget.sum(triangles, triangles(f));
+            }
+            // The patches are held while the flat mesh is made from them; the mesh then holds its
+            // own arrays, and its structure's build its temporary ones.
+            long need = HeapBudget.sum(patches, HeapBudget.product(triangles, FLAT_BYTES_PER_TRIANGLE));
             if (HeapBudget.fits(need) && shared.takeEager(need)) {
                 buildEager(root);
-                eagerBytes = need / 2;
+                eagerBytes = need;
                 return;
             }
             // Does not fit: refine lazily instead, as the combined method does, within the budget.
@@ -305,7 +336,7 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
         long[] cost = new long[faces.length];
         Integer[] order = new Integer[faces.length];
         for (int i = 0; i < faces.length; i++) {
-            cost[i] = refiner.patchBytes(faces[i], faceLevel[faces[i]], smooth);
+            cost[i] = patchCost(faces[i]);
             order[i] = i;
         }
         Arrays.sort(order, (a, b) -> cost[a] != cost[b] ? Long.compare(cost[a], cost[b]) : Integer.compare(a, b));

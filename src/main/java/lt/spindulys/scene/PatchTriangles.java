@@ -87,13 +87,7 @@ final class PatchTriangles implements CachedPatch, PrimitiveSet {
     @Override public int size() { return triangleCount; }
 
     @Override
-    public void bounds(int i, double[] out) {
-        int a = 3 * tri[3 * i], b = 3 * tri[3 * i + 1], c = 3 * tri[3 * i + 2];
-        for (int k = 0; k < 3; k++) {
-            out[k] = Math.min(pos[a + k], Math.min(pos[b + k], pos[c + k]));
-            out[k + 3] = Math.max(pos[a + k], Math.max(pos[b + k], pos[c + k]));
-        }
-    }
+    public void bounds(int i, double[] out) { WatertightTriangles.bounds(tri, pos, i, out); }
 
     @Override
     public boolean intersect(int i, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {

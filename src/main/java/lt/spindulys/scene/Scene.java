@@ -107,6 +107,18 @@ public final class Scene {
     }
 
     /**
+     * True if some surface of the scene refines patches while it is traced (an adaptive surface by
+     * the lazy method, or the combined method beyond its eager budget): a renderer should then
+     * trace neighbouring pixels together, so that the patches they share stay in the cache.
+     *
+     * @return whether rendering builds patches on demand
+     */
+    public boolean refinesWhileTracing() {
+        for (AdaptiveTessellation t : adaptive) if (t.refinesWhileTracing()) return true;
+        return false;
+    }
+
+    /**
      * The settings the scene was built with (film size, sampling, shutter, structure kind).
      *
      * @return the render settings, never null

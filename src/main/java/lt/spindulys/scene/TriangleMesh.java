@@ -431,13 +431,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     @Override public int size() { return triangleCount; }
 
     @Override
-    public void bounds(int i, double[] out) {
-        int a = 3 * tri[3 * i], b = 3 * tri[3 * i + 1], c = 3 * tri[3 * i + 2];
-        for (int k = 0; k < 3; k++) {
-            out[k] = Math.min(pos[a + k], Math.min(pos[b + k], pos[c + k]));
-            out[k + 3] = Math.max(pos[a + k], Math.max(pos[b + k], pos[c + k]));
-        }
-    }
+    public void bounds(int i, double[] out) { WatertightTriangles.bounds(tri, pos, i, out); }
 
     /**
      * Puts the triangles in the structure's leaf order and numbers the vertices by first use in

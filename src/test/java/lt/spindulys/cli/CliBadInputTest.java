@@ -160,6 +160,35 @@ class CliBadInputTest {
         assertTrue(line.chars().allMatch(c -> c >= 0x20 && !(c >= 0x7F && c <= 0x9F) && c != 0x2028 && c != 0x2029), line);
     }
 
+    /** Adaptive subdivision options refused with one line naming the option; no image written. */
+    static Stream<List<String>> badSubdivOptions() {
+        return Stream.of(
+                List.of("--subdiv-target", "0", "render: --subdiv-target must be between 0.01 and 1000000, found 0"),
+                List.of("--subdiv-target", "NaN", "render: --subdiv-target must be between 0.01 and 1000000, found NaN"),
+                List.of("--subdiv-target", "-1", "render: --subdiv-target must be between 0.01 and 1000000, found -1"),
+                List.of("--subdiv-target", "fine", "render: --subdiv-target expects a number, found 'fine'"),
+                List.of("--subdiv-memory", "-1", "render: --subdiv-memory must be between 0 and 16777216, found -1"),
+                List.of("--subdiv-memory", "1e12", "render: --subdiv-memory must be between 0 and 16777216, found 1e12"),
+                List.of("--subdiv-cache", "0", "render: --subdiv-cache must be more than 0 (mebibytes of the lazy patches' cache), found 0"),
+                List.of("--subdiv-cache", "64", "--subdiv-memory", "16",
+                        "render: --subdiv-memory/--subdiv-cache: subdivision cache (64 MiB) must not exceed the subdivision memory (16 MiB)"));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("badSubdivOptions")
+    void badSubdivOptionFailsCleanly(List<String> c) throws IOException {
+        Path scene = dir.resolve("scene.dat");
+        Files.writeString(scene, "camera { eye 0 0 -5 lookat 0 0 0 }\nsubdiv { file \"cube.dat\"  method lazy }\n");
+        Files.copy(Path.of("scenes/models/cube.dat"), dir.resolve("cube.dat"));
+        Path out = dir.resolve("out.png");
+        List<String> args = new java.util.ArrayList<>(List.of(scene.toString(), "-o", out.toString(), "--quiet", "--width", "16"));
+        args.addAll(c.subList(0, c.size() - 1));
+        CliTest.Run r = CliTest.run(args.toArray(new String[0]));
+        assertEquals(2, r.status(), r.err());
+        assertEquals(c.get(c.size() - 1) + System.lineSeparator(), r.err());
+        assertFalse(Files.exists(out), "no image written");
+    }
+
     private void assertFailsCleanly(Path scene, String expected) throws IOException {
         Path out = dir.resolve("out.png");
         CliTest.Run r = CliTest.run(scene.toString(), "-o", out.toString(), "--quiet");

@@ -88,7 +88,7 @@ class SubdivideCommandTest {
     void badUsageIsOneLineExitsTwoAndWritesNothing() throws IOException {
         String in = CUBE_DAT.toString(), out = dir.resolve("o.obj").toString();
         String[][] cases = {
-                {"render: subdivide needs --level N (see render subdivide --help)", "subdivide", in, "-o", out},
+                {"render: subdivide needs --level N or --scene SCENE.dat (see render subdivide --help)", "subdivide", in, "-o", out},
                 {"render: subdivide needs an output file: -o OUT.obj (see render subdivide --help)", "subdivide", in, "--level", "1"},
                 {"render: no mesh given to subdivide (see render subdivide --help)", "subdivide", "--level", "1", "-o", out},
                 {"render: --level must be between 0 and 8, found 9", "subdivide", in, "--level", "9", "-o", out},
@@ -137,5 +137,117 @@ class SubdivideCommandTest {
         try (Stream<Path> files = Files.list(dir)) {
             assertTrue(files.noneMatch(p -> p.getFileName().toString().endsWith(".tmp")), "no temporary file left");
         }
+    }
+
+    // ---- --scene: the tessellation a scene renders ----
+
+    /** A scene beside a copy of the cube and its unwrap, the camera close to one corner so that levels differ per edge. */
+    private Path cubeScene(String subdivs) throws IOException {
+        Files.copy(CUBE_DAT, dir.resolve("cube.dat"));
+        Files.copy(CUBE_TEX, dir.resolve("cube.tex"));
+        Path scene = dir.resolve("close.dat");
+        Files.writeString(scene, "settings { width 160  height 120 }\ncamera { eye 0.9 1.1 -2.6  lookat 0 0 0  fov 60 }\n" + subdivs);
+        return scene;
+    }
+
+    /** Every edge of the faces is used by exactly two faces, once in each direction. */
+    static void assertCrackFree(MeshData m) {
+        java.util.Map<Long, int[]> uses = new java.util.HashMap<>();
+        int[] sizes = m.faceSizes(), vi = m.vertexIndex();
+        for (int f = 0, c = 0; f < sizes.length; c += sizes[f], f++) {
+            for (int k = 0; k < sizes[f]; k++) {
+                int a = vi[c + k], b = vi[c + (k + 1) % sizes[f]];
+                uses.computeIfAbsent(((long) Math.min(a, b) << 32) | Math.max(a, b), key -> new int[2])[a < b ? 0 : 1]++;
+            }
+        }
+        long bad = uses.values().stream().filter(u -> u[0] != 1 || u[1] != 1).count();
+        assertEquals(0, bad, bad + " of " + uses.size() + " edges are not shared by exactly two faces");
+    }
+
+    @Test
+    void sceneWritesTheAdaptiveTessellationCrackFree() throws IOException {
+        Path scene = cubeScene("subdiv { file \"cube.dat\"  uv \"cube.tex\"  method lazy  target 6  maxlevel 5 }\n");
+        Path out = dir.resolve("adaptive.obj");
+        CliTest.Run r = run("subdivide", dir.resolve("cube.dat").toString(), "--scene", scene.toString(), "-o", out.toString());
+        assertEquals(0, r.status(), r.err());
+        assertEquals("", r.err());
+        MeshData m = ObjReader.read(out);
+        assertCrackFree(m);
+        assertNotNull(m.uvs(), "vt written");
+        assertNotNull(m.normals(), "vn written");
+        for (int size : m.faceSizes()) assertEquals(3, size);
+        // The same triangles the scene renders, at mixed levels.
+        lt.spindulys.scene.Scene built = lt.spindulys.io.SceneParser.parse(scene).build();
+        lt.spindulys.scene.AdaptiveSubdivisionSurface s = (lt.spindulys.scene.AdaptiveSubdivisionSurface) built.objects().get(0);
+        MeshData t = s.tessellation();
+        assertArrayEquals(t.positions(), m.positions(), "positions read back exactly");
+        assertArrayEquals(t.vertexIndex(), m.vertexIndex());
+        int[] levels = s.edgeLevels();
+        assertTrue(java.util.Arrays.stream(levels).min().getAsInt() < java.util.Arrays.stream(levels).max().getAsInt(),
+                "mixed levels: " + java.util.Arrays.toString(levels));
+        String text = Files.readString(out);
+        assertTrue(text.startsWith("# tessellation of cube.dat as close.dat renders it (" + scene + ":3:1, method lazy)"), text.substring(0, 200));
+        assertTrue(text.contains("# control edges per level: level "), "levels histogram");
+        assertTrue(text.contains(" " + m.faceCount() + " triangles"), "triangle count");
+    }
+
+    @Test
+    void instancesShareOneTessellationAndDifferentOptionsAreNoted() throws IOException {
+        Path scene = cubeScene("subdiv { file \"cube.dat\"  method projected  target 4  maxlevel 4 }\n"
+                + "subdiv { file \"cube.dat\"  method projected  target 4  maxlevel 4  translate 3 0 0 }\n");
+        Path out = dir.resolve("two.obj");
+        CliTest.Run r = run("subdivide", dir.resolve("cube.dat").toString(), "--scene", scene.toString(), "-o", out.toString());
+        assertEquals(0, r.status(), r.err());
+        assertEquals("", r.err(), "instances: one tessellation, nothing to say");
+        assertCrackFree(ObjReader.read(out));
+
+        Files.writeString(scene, Files.readString(scene) + "subdiv { file \"cube.dat\"  method lazy  target 12 }\n");
+        r = run("subdivide", dir.resolve("cube.dat").toString(), "--scene", scene.toString(), "-o", out.toString());
+        assertEquals(0, r.status(), r.err());
+        assertEquals("note: 3 subdiv statements of " + scene + " refine " + dir.resolve("cube.dat") + " with different options; writing the tessellation of the first ("
+                + scene + ":3:1), not of " + scene + ":5:1" + System.lineSeparator(), r.err());
+    }
+
+    @Test
+    void aUniformSubdivWritesItsUniformRefinement() throws IOException {
+        Path scene = cubeScene("sphere { }\nsubdiv { file \"cube.dat\"  level 2 }\n");
+        Path out = dir.resolve("uniform.obj");
+        CliTest.Run r = run("subdivide", dir.resolve("cube.dat").toString(), "--scene", scene.toString(), "-o", out.toString());
+        assertEquals(0, r.status(), r.err());
+        RefinedMesh e = expected(2, false);
+        MeshData m = ObjReader.read(out);
+        assertArrayEquals(e.positions(), m.positions());
+        assertArrayEquals(e.faceVertices(), m.vertexIndex());
+        assertTrue(Files.readString(out).startsWith("# Catmull-Clark subdivision of cube.dat at level 2 as close.dat renders it"));
+    }
+
+    @Test
+    void sceneRefusals() throws IOException {
+        Path scene = cubeScene("subdiv { file \"cube.dat\"  method lazy }\n");
+        Path out = dir.resolve("x.obj");
+        String mesh = dir.resolve("cube.dat").toString();
+        record Bad(String[] args, String message) {}
+        for (Bad b : new Bad[] {
+            new Bad(new String[] {"subdivide", mesh, "--scene", scene.toString(), "--level", "2", "-o", out.toString()},
+                    "render: --level and --scene exclude each other: the scene's subdiv statement chooses the levels"),
+            new Bad(new String[] {"subdivide", mesh, "--scene", scene.toString(), "--limit", "-o", out.toString()},
+                    "render: --limit goes with --level, not --scene (the scene's tessellation is written as it renders it)"),
+            new Bad(new String[] {"subdivide", mesh, "-o", out.toString()}, "render: subdivide needs --level N or --scene SCENE.dat (see render subdivide --help)"),
+            new Bad(new String[] {"subdivide", CUBE_DAT.toString(), "--scene", scene.toString(), "-o", out.toString()},
+                    "render: " + scene + " has no subdiv statement whose file is " + CUBE_DAT + " (its subdiv files: " + mesh + ")"),
+            new Bad(new String[] {"subdivide", mesh, "--scene", dir.resolve("none.dat").toString(), "-o", out.toString()},
+                    dir.resolve("none.dat") + ": scene file not found"),
+        }) {
+            CliTest.Run r = run(b.args());
+            assertEquals(2, r.status(), r.err());
+            assertEquals(b.message() + System.lineSeparator(), r.err());
+            assertFalse(Files.exists(out), "nothing written");
+        }
+        // Bad input in the scene: the parser's one-line located error.
+        Files.writeString(scene, "subdiv { file \"cube.dat\"  method lazzy }\n");
+        CliTest.Run r = run("subdivide", mesh, "--scene", scene.toString(), "-o", out.toString());
+        assertEquals(2, r.status(), r.err());
+        assertEquals(scene + ":1:34: expected uniform, projected, lazy or combined for 'method', found 'lazzy' (did you mean 'lazy'?)" + System.lineSeparator(), r.err());
+        assertFalse(Files.exists(out));
     }
 }

@@ -298,32 +298,7 @@ class PatchRefinerTest {
         return 16 + ((n * (long) each + 7) & ~7L);
     }
 
-    // ---------------------------------------------------------------- speed (printed, not asserted)
-
-    @Test
-    void printPatchBuildTimes() {
-        ControlMesh torus = torusCage(32, 32, 1.0, 0.35);
-        PatchRefiner pr = new PatchRefiner(torus);
-        for (int level : new int[] {2, 4, 6}) {
-            int faces = level == 6 ? 16 : 128;
-            double best = Double.MAX_VALUE, uniform = Double.MAX_VALUE;
-            long tris = 0;
-            for (int round = 0; round < 4; round++) {
-                long t0 = System.nanoTime();
-                tris = 0;
-                for (int f = 0; f < faces; f++) tris += pr.refine((f * 37 + round) % pr.faceCount(), level, null, true).faceSizes().length;
-                best = Math.min(best, (System.nanoTime() - t0) / 1e3 / faces);
-                if (level < 6 || round < 2) {
-                    t0 = System.nanoTime();
-                    RefinedTriangles.triangles(CatmullClark.refine(torus, level), true);
-                    uniform = Math.min(uniform, (System.nanoTime() - t0) / 1e3 / torus.faceCount());
-                }
-            }
-            // Best of four rounds (the machine is shared); the uniform path's cost per coarse face beside it.
-            System.out.printf("patch build, 32x32 torus, level %d: %.1f us per face (%d triangles each); uniform path %.1f us per face%n",
-                    level, best, tris / faces, uniform);
-        }
-    }
+    // ---------------------------------------------------------------- shapes
 
     /** A u x v torus of quads (major radius R, minor r). */
     static ControlMesh torusCage(int nu, int nv, double big, double small) {
