@@ -343,7 +343,8 @@ final class AdaptiveBench {
      * Lazy (64 MiB cache) against projected (eager) at the same tessellation, on both views of
      * the close scene. Speed: renders in this JVM after two warm-up renders of each (so both run
      * compiled code; a new JVM renders a short lazy frame largely in unoptimised code), {@code runs}
-     * alternated pairs, the median of the pairs' ratios. Heap: one new JVM per method (-Xmx2048m).
+     * alternated pairs, the median of the pairs' ratios. Heap: one new JVM per method, with the close
+     * scene's heap ({@link #CLOSE_HEAP_MIB}), in which the eager tessellation stays eager.
      */
     void lazyVsEager() throws IOException {
         BenchTable t = new BenchTable("view", "face levels", "eager render s", "lazy render s", "speed lazy/eager", "eager cold wall s",
@@ -377,8 +378,9 @@ final class AdaptiveBench {
                 out.printf(Locale.ROOT, "    %s pair %d: eager render %.3f s, lazy render %.3f s: lazy %.2fx eager's speed%n", v.name(), i + 1, er[i], lr[i], speed[i]);
             }
             out.println("    " + lazyStats);
-            Cell e = run(new Spec("close", v, "projected", PAIR_WIDTH, PAIR_HEIGHT, 64, false));
-            Cell l = run(new Spec("close", v, "lazy", PAIR_WIDTH, PAIR_HEIGHT, 64, false));
+            // The close scene's heap, so that the eager tessellation fits its budget (a quarter of the heap) and stays eager.
+            Cell e = run(new Spec("close", v, "projected", PAIR_WIDTH, PAIR_HEIGHT, 64, false, CLOSE_HEAP_MIB));
+            Cell l = run(new Spec("close", v, "lazy", PAIR_WIDTH, PAIR_HEIGHT, 64, false, CLOSE_HEAP_MIB));
             for (Cell c : List.of(e, l)) {
                 out.printf(Locale.ROOT, "    %s: %s%n", c.spec().label(), c.failure() != null ? c.failure()
                         : String.format(Locale.ROOT, "wall %.2f s, render %.2f s, peak heap %.0f MiB, live %.0f MiB; %s", c.wall(), c.render(),
@@ -392,7 +394,7 @@ final class AdaptiveBench {
         t.print(out);
         out.printf(Locale.ROOT, "  close scene at %dx%d, target 1 px (both methods choose the same levels from the same view). Render s: in this JVM%n", PAIR_WIDTH, PAIR_HEIGHT);
         out.printf(Locale.ROOT, "  after 2 warm-up renders of each, %d alternated pairs, speed = median of eager s / lazy s (target: at least 0.8x).%n", runs);
-        out.println("  Heap and cold wall: one new JVM each (-Xmx2048m); peak: heap pools' peak; live: largest heap after a collection");
+        out.printf(Locale.ROOT, "  Heap and cold wall: one new JVM each (-Xmx%dm); peak: heap pools' peak; live: largest heap after a collection%n", CLOSE_HEAP_MIB);
         out.println("  (target: eager's at least 5x lazy's).");
     }
 
