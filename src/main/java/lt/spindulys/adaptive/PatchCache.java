@@ -219,14 +219,7 @@ public final class PatchCache {
         for (;;) {
             long room = budget - totals.pinnedBytes.get();
             if (b > room) return false;
-            long now = totals.bytes.get();
-            if (now + b <= room) {
-                if (totals.bytes.compareAndSet(now, now + b)) {
-                    totals.peakBytes.accumulateAndGet(now + b, Math::max);
-                    return true;
-                }
-                continue;
-            }
+            if (addWithin(b, room)) return true;
             if (evicting.compareAndSet(false, true)) {
                 try {
                     return reserveEvicting(b);
@@ -247,17 +240,22 @@ public final class PatchCache {
         for (int tries = 0; tries <= EVICTION_TRIES; tries++) {
             room = budget - totals.pinnedBytes.get();
             if (b > room) return false;
-            long now = totals.bytes.get();
-            if (now + b <= room) {
-                if (totals.bytes.compareAndSet(now, now + b)) {
-                    totals.peakBytes.accumulateAndGet(now + b, Math::max);
-                    return true;
-                }
-                continue;
-            }
+            if (addWithin(b, room)) return true;
             if (!evictDownTo(room - b)) return false;
         }
         return false;
+    }
+
+    /** Adds {@code b} to the cached bytes if they stay within {@code room} (retrying lost races); false if not. */
+    private boolean addWithin(long b, long room) {
+        for (;;) {
+            long now = totals.bytes.get();
+            if (now + b > room) return false;
+            if (totals.bytes.compareAndSet(now, now + b)) {
+                totals.peakBytes.accumulateAndGet(now + b, Math::max);
+                return true;
+            }
+        }
     }
 
     /**

@@ -61,7 +61,6 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
     private int[] edgeLevel, faceLevel;
     /** Non-hole faces: the top structure's primitives. */
     private int[] faces;
-    private double[] faceBounds;
     /**
      * Each face's box as float bits: its one-ring box until its patch is first built, then the
      * patch's own (tighter) box, so that a ray that misses a built patch is turned away before the
@@ -122,9 +121,6 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
     /** True if some patch is refined on demand (not eager, not all pinned). */
     boolean refinesWhileTracing() { return top != null && pinnedCount < faces.length; }
 
-    /** The triangles as one mesh when eager, else null. */
-    TriangleMesh mesh() { return mesh; }
-
     /** Chooses the levels and builds the eager part; called once, after every placement is known. */
     void finish(BuildShared shared, BuildContext root) {
         kind = root.accelerator();
@@ -154,15 +150,10 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
         }
         cache = shared.cache();
         table = cache.table(faces.length, name);
-        faceBounds = new double[6 * faces.length];
+        tight = new int[6 * faces.length];
         double[] box = new double[6];
         for (int i = 0; i < faces.length; i++) {
             refiner.oneRingBounds(faces[i], box);
-            System.arraycopy(box, 0, faceBounds, 6 * i, 6);
-        }
-        tight = new int[faceBounds.length];
-        for (int i = 0; i < faces.length; i++) {
-            System.arraycopy(faceBounds, 6 * i, box, 0, 6);
             BoxList.store(tight, i, box);
         }
         if (used == AdaptiveSubdivisionSurface.Method.COMBINED) pinWithinBudget(shared);
@@ -327,9 +318,6 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
     /** The level chosen for each control edge (indexed as the refiner numbers edges). */
     int[] edgeLevels() { return edgeLevel.clone(); }
 
-    /** The level of each coarse face: the finest of its edges. */
-    int[] faceLevels() { return faceLevel.clone(); }
-
     /** The combined method: the cheapest patches built and pinned while the eager budget lasts. */
     private void pinWithinBudget(BuildShared shared) {
         pinned = new PatchTriangles[faces.length];
@@ -351,16 +339,8 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
             PatchTriangles p = (PatchTriangles) build(i);
             pinned[i] = p;
         });
-        double[] box = new double[6];
-        for (int k = 0; k < take; k++) {
-            int i = chosen[k];
-            pinnedBytes += pinned[i].bytes();
-            // A built patch's own box is tighter than its one-ring's.
-            Arrays.fill(box, 0, 3, Double.POSITIVE_INFINITY);
-            Arrays.fill(box, 3, 6, Double.NEGATIVE_INFINITY);
-            pinned[i].include(box);
-            System.arraycopy(box, 0, faceBounds, 6 * i, 6);
-        }
+        // Built before the structure over the faces, so that it takes their own (tighter) boxes.
+        for (int k = 0; k < take; k++) pinnedBytes += pinned[chosen[k]].bytes();
         pinnedCount = take;
     }
 
@@ -404,7 +384,7 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
     @Override
     public CachedPatch build(int i) {
         int f = faces[i];
-        PatchTriangles p = new PatchTriangles(i, faceLevel[f], refine(f), kind);
+        PatchTriangles p = new PatchTriangles(i, refine(f), kind);
         if (table != null) table.stats().recordLevel(faceLevel[f]);
         double[] box = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
                 Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
@@ -418,7 +398,9 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
     @Override public int size() { return faces.length; }
 
     @Override
-    public void bounds(int i, double[] out) { System.arraycopy(faceBounds, 6 * i, out, 0, 6); }
+    public void bounds(int i, double[] out) {
+        for (int k = 0; k < 6; k++) out[k] = Float.intBitsToFloat(tight[6 * i + k]);
+    }
 
     @Override
     public boolean intersect(int i, Ray ray, PrimitiveHit hit, TraversalScratch s) {

@@ -21,7 +21,6 @@ import lt.spindulys.trace.TraceContext;
 final class PatchTriangles implements CachedPatch, PrimitiveSet {
     /** The top structure's primitive this patch refines (spans name it). */
     final int prim;
-    final int level;
     final int[] tri, triNormal, triUv;
     final double[] pos, normals, uvs;
     final int triangleCount;
@@ -31,9 +30,8 @@ final class PatchTriangles implements CachedPatch, PrimitiveSet {
     final PrimitiveVisitor crossingCollector = this::collectCrossing;
 
     /** Triangulates {@code d} (fans for polygons, as {@link TriangleMesh} does) and builds a structure of the given kind. */
-    PatchTriangles(int prim, int level, MeshData d, AcceleratorKind kind) {
+    PatchTriangles(int prim, MeshData d, AcceleratorKind kind) {
         this.prim = prim;
-        this.level = level;
         int[] sizes = d.faceSizes(), vi = d.vertexIndex(), ni = d.normalIndex(), ti = d.uvIndex();
         int n = 0;
         for (int s : sizes) n += s - 2;

@@ -109,15 +109,6 @@ public final class PatchRefiner {
      */
     public int faceSize(int face) { return cornerStart[face + 1] - cornerStart[face]; }
 
-    /**
-     * Whether every face's patches are exact against the uniform path. Always true: the one-ring
-     * construction holds for non-manifold vertices and edges too (the tests check every
-     * reference shape, the non-manifold ones included).
-     *
-     * @return true
-     */
-    public boolean isLocal() { return true; }
-
     /** {@return the number of control edges, numbered as the base level numbers them (Far's order)} */
     public int edgeCount() { return base.nE; }
 

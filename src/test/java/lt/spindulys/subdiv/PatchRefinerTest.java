@@ -49,7 +49,6 @@ class PatchRefinerTest {
 
     private static void checkExact(String name, ControlMesh m, int maxLevel) {
         PatchRefiner pr = new PatchRefiner(m);
-        assertTrue(pr.isLocal());
         RefinedMesh r = RefinedMesh.base(m);
         for (int level = 0; level <= maxLevel; level++) {
             if (level > 0) r = r.refine();
