@@ -23,8 +23,12 @@ module lt.spindulys {
     exports lt.spindulys.material;
     exports lt.spindulys.math;
     exports lt.spindulys.mesh;
+    exports lt.spindulys.plugin;
     exports lt.spindulys.render;
     exports lt.spindulys.scene;
     exports lt.spindulys.subdiv;
     exports lt.spindulys.texture;
+
+    // Output plugins of a viewer: the library's own are provided here, others found on the module path.
+    uses lt.spindulys.plugin.OutputPlugin;
 }

@@ -1,0 +1,72 @@
+package lt.spindulys.plugin;
+
+import java.util.Objects;
+
+import lt.spindulys.subdiv.ControlMesh;
+
+/**
+ * One surface a host displays: its control mesh and the subdivision the host applied to it.
+ *
+ * <p>The control mesh is built with {@link ControlMesh#builder(double[], int[], int[])}: vertex
+ * positions (x, y, z per vertex), the number of corners of each face (3 or more, any mix) and the
+ * 0-based vertex index of every face corner, faces one after another, counter-clockwise seen from
+ * outside; then, where the host has them, texture coordinates with their own indices per face
+ * corner ({@code uvs}: face-varying, so seams are kept), creases and corners with a sharpness
+ * (0 smooth, {@link ControlMesh#INFINITELY_SHARP} and above infinitely sharp), holes, and the
+ * scheme options (boundary rule, uv interpolation, creasing) in {@code options}.
+ * {@code build()} checks the mesh and names the face or vertex at fault; give the surface's name as
+ * its {@code source} so messages name it.
+ *
+ * <pre>{@code
+ * ControlMesh cage = ControlMesh.builder(positions, faceSizes, faceVertices)
+ *         .crease(0, 1, ControlMesh.INFINITELY_SHARP)
+ *         .options(SubdivOptions.DEFAULT.withBoundary(SubdivOptions.Boundary.EDGE_AND_CORNER))
+ *         .source("cube")
+ *         .build();
+ * DisplayedSurface s = new DisplayedSurface("cube", cage, DisplayedSurface.Scheme.CATMULL_CLARK, 3);
+ * }</pre>
+ *
+ * @param name    the name a user knows the surface by (a file name, for example); not blank
+ * @param control the control mesh as the host holds it, before the host's subdivision
+ * @param scheme  the subdivision the host applied
+ * @param level   how many times the host subdivided it, 0 to 8 (0 for {@link Scheme#NONE})
+ */
+public record DisplayedSurface(String name, ControlMesh control, Scheme scheme, int level) {
+    /** The most levels a host may report; {@code SubdivisionSurface.MAX_LEVEL}. */
+    public static final int MAX_LEVEL = 8;
+
+    /** The subdivision the host applies to the control mesh before showing it. */
+    public enum Scheme {
+        /** None: the host shows the control mesh itself, as a polyhedron. */
+        NONE,
+        /** Catmull-Clark subdivision (OpenSubdiv's {@code catmark}), with the control mesh's options. */
+        CATMULL_CLARK
+    }
+
+    /**
+     * Checks the name and level.
+     *
+     * @throws IllegalArgumentException if the name is blank, or the level is outside 0..8 (or not 0 with no subdivision)
+     */
+    public DisplayedSurface {
+        Objects.requireNonNull(name, "name");
+        Objects.requireNonNull(control, "control");
+        Objects.requireNonNull(scheme, "scheme");
+        if (name.isBlank()) throw new IllegalArgumentException("a displayed surface needs a name");
+        if (level < 0 || level > MAX_LEVEL) {
+            throw new IllegalArgumentException("surface " + name + ": subdivision level must be between 0 and " + MAX_LEVEL + ", found " + level);
+        }
+        if (scheme == Scheme.NONE && level != 0) {
+            throw new IllegalArgumentException("surface " + name + ": level " + level + " given without a subdivision scheme (use level 0)");
+        }
+    }
+
+    /**
+     * How the host describes what it did, for legends: "Catmull-Clark, level 3" or "control mesh".
+     *
+     * @return a short phrase
+     */
+    public String subdivisionLabel() {
+        return scheme == Scheme.NONE ? "control mesh" : "Catmull-Clark, level " + level;
+    }
+}
