@@ -265,6 +265,15 @@ class ObjExportPluginTest {
     }
 
     @Test
+    void theDocsExampleSaysWhatItWrote() throws Exception {
+        // docs/plugins.md: a cube at level 3 on the limit surface.
+        DisplayedSurface cube = new DisplayedSurface("cube", shape("catmark_cube.obj.gz"), DisplayedSurface.Scheme.CATMULL_CLARK, 3);
+        PluginResult r = OutputPlugins.find("obj").orElseThrow().run(new PluginRequest(List.of(cube), VIEW, Map.of("export", "limit surface"),
+                dir.resolve("cube-limit.obj"), PluginProgress.NONE));
+        assertEquals("limit surface, 386 vertices, 384 faces", r.summary());
+    }
+
+    @Test
     void siblingNamesAreSafeAndDistinct() {
         ControlMesh m = surfaces().get(0).control();
         List<DisplayedSurface> s = List.of(new DisplayedSurface("cube.obj", m, DisplayedSurface.Scheme.NONE, 0),
