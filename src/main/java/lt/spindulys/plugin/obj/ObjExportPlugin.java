@@ -64,6 +64,13 @@ public final class ObjExportPlugin implements OutputPlugin {
     /** {@link #EXPORT}: the refined vertices on the limit surface, with limit normals. */
     public static final String LIMIT = "limit surface";
 
+    /**
+     * Heap per refined face while refining, and added for limit positions and normals: the figures
+     * {@code render subdivide} checks with, measured for refinement alone (docs/performance.md,
+     * "Heap per refined face"); a scene's surface needs more, for its triangles and structure.
+     */
+    static final long BYTES_PER_FACE = 176, LIMIT_BYTES_PER_FACE = 64;
+
     /** A public no-argument constructor, for {@link java.util.ServiceLoader}. */
     public ObjExportPlugin() {}
 
@@ -154,8 +161,9 @@ public final class ObjExportPlugin implements OutputPlugin {
         for (int i : chosen) {
             DisplayedSurface s = surfaces.get(i);
             try {
-                // The heap check a scene's surface makes, before anything is refined.
-                SubdivisionSurface.checkLevel(s.level(), refinedFaces(s.control(), s.level()), SubdivisionSurface.BYTES_PER_FACE);
+                // The heap check render subdivide makes, before anything is refined (one surface is refined at a time).
+                SubdivisionSurface.checkLevel(s.level(), refinedFaces(s.control(), s.level()),
+                        limit ? BYTES_PER_FACE + LIMIT_BYTES_PER_FACE : BYTES_PER_FACE);
             } catch (IllegalArgumentException e) {
                 throw new IllegalArgumentException("surface " + s.name() + ": " + e.getMessage(), e);
             }

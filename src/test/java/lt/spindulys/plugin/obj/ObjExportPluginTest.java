@@ -23,6 +23,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 import lt.spindulys.io.ObjReader;
+import lt.spindulys.limits.HeapBudget;
 import lt.spindulys.io.ObjWriter;
 import lt.spindulys.math.Vec3;
 import lt.spindulys.mesh.MeshData;
@@ -262,6 +263,22 @@ class ObjExportPluginTest {
                 () -> run(List.of(new DisplayedSurface("far", far, DisplayedSurface.Scheme.NONE, 0)), Map.of(), out, PluginProgress.NONE));
         assertEquals("far: vertex 2 has the number 2.0E15, beyond the 1e15 an OBJ file may hold", e.getMessage());
         assertEquals(List.of(), files());
+    }
+
+    @Test
+    void aLevelTheHeapCannotHoldIsRefusedBeforeRefining() throws Exception {
+        // The cube at level 8: 393,216 faces, 176 bytes each (+64 on the limit surface), against a 16 MiB budget.
+        DisplayedSurface deep = new DisplayedSurface("deep cube", shape("catmark_cube.obj.gz"), DisplayedSurface.Scheme.CATMULL_CLARK, 8);
+        Path out = dir.resolve("deep.obj");
+        try (HeapBudget.Scope cap = HeapBudget.cap(16L << 20)) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                    () -> run(List.of(deep), Map.of("export", "limit surface"), out, PluginProgress.NONE));
+            assertTrue(e.getMessage().startsWith("surface deep cube: subdivision level 8 of this mesh (393216 faces;"), e.getMessage());
+            assertFalse(e.getMessage().contains("\n"));
+            // The control mesh needs no refining: it is written under the same budget.
+            run(List.of(deep), Map.of(), out, PluginProgress.NONE);
+        }
+        assertEquals(List.of("deep.obj"), files());
     }
 
     @Test
