@@ -113,7 +113,7 @@ final class SubdivideCommand {
         if (scene != null) return runScene(err);
         String name = input.toString();
         SubdivInput in = extension(input).equals("obj") ? ObjReader.readSubdiv(input) : SubdivInput.of(WorkframeReader.readMesh(input));
-        if (uv != null) in = in.withCornerUvs(WorkframeReader.readUnwrap(uv, in.mesh()));
+        if (uv != null) in = WorkframeReader.readTex(uv, in.mesh()).applyTo(in);
         try {
             SubdivisionSurface.checkLevel(level, in.refinedFaceCount(level), limit ? BYTES_PER_FACE + LIMIT_BYTES_PER_FACE : BYTES_PER_FACE);
         } catch (IllegalArgumentException e) {

@@ -223,7 +223,7 @@ final class SceneAssetCache {
         if (uv != null) {
             Path uvPath = existingFile(uv, "unwrap file");
             try {
-                input = input.withCornerUvs(WorkframeReader.readUnwrap(uvPath, input.mesh()));
+                input = WorkframeReader.readTex(uvPath, input.mesh()).applyTo(input);
             } catch (IOException e) {
                 throw err.error(uv.valueAt(), "cannot read unwrap file " + MessageText.quote((String) uv.value()) + ": " + e.getMessage());
             }
