@@ -160,6 +160,24 @@ class UnwrapFormsTest {
     }
 
     @Test
+    void theShippedSceneRendersAsWithTheCornerForm() throws Exception {
+        // scenes/tex-subdiv-cube.dat reads its middle cube's unwrap in the points form: the
+        // picture (and so its golden) is the one the corner form gives.
+        Path file = Path.of("scenes/tex-subdiv-cube.dat");
+        String text = Files.readString(file);
+        assertTrue(text.contains("uv \"models/cube-points.tex\""));
+        Path scenes = Path.of("scenes").toAbsolutePath();
+        FrameBuffer[] frames = new FrameBuffer[2];
+        String[] texts = {text, text.replace("cube-points.tex", "cube.tex")};
+        for (int i = 0; i < 2; i++) {
+            var b = SceneParser.parse(texts[i], file.toString(), scenes);
+            b.settings(b.settings().toBuilder().size(96, 72).samplesPerPixel(1).build());
+            frames[i] = Renderer.render(b.build(), 2, ProgressListener.NONE).frame();
+        }
+        assertArrayEquals(frames[1].data(), frames[0].data());
+    }
+
+    @Test
     void aSceneNamesTheUnwrapsLineAndColumn() throws IOException {
         Files.copy(CUBE_DAT, dir.resolve("cube.dat"));
         Files.writeString(dir.resolve("bad.tex"), Files.readString(CUBE_POINTS).replace("4  16 17 23 22", "4  16 17 24 22"));
