@@ -167,16 +167,19 @@ final class SubdivideCommand {
         } else if (!uniform.isEmpty()) {
             SubdivisionSurface first = uniform.get(0);
             List<String> differ = new ArrayList<>();
-            for (SubdivisionSurface s : uniform) if (s.refined() != first.refined()) differ.add(where(s));
+            for (SubdivisionSurface s : uniform) if (s.refined() != first.refined() || s.positions() != first.positions()) differ.add(where(s));
             if (!differ.isEmpty()) {
                 note = "note: " + uniform.size() + " subdiv statements of " + scene + " refine " + input + " differently; writing the first's ("
                         + where(first) + "), not " + String.join(", ", differ);
             }
             RefinedMesh refined = first.refined();
+            // positions limit renders the limit positions: written with the limit normals, as --limit writes them.
+            boolean limitPositions = first.positions() == SubdivisionSurface.Positions.LIMIT;
             String comment = "Catmull-Clark subdivision of " + input.getFileName() + " at level " + first.level() + " as " + scene.getFileName()
-                    + " renders it (" + where(first) + ", method uniform) (spindulys " + Main.version() + ")\n"
+                    + " renders it (" + where(first) + ", method uniform" + (limitPositions ? ", positions limit: limit positions and normals" : "")
+                    + ") (spindulys " + Main.version() + ")\n"
                     + refined.vertexCount() + " vertices, " + refined.faceCount() + " faces";
-            AtomicFile.write(output, os -> ObjWriter.write(refined, false, comment, os));
+            AtomicFile.write(output, os -> ObjWriter.write(refined, limitPositions, comment, os));
         } else {
             throw new UsageException(scene + " has no subdiv statement whose file is " + input
                     + (others.isEmpty() ? " (it has none)" : " (its subdiv files: " + String.join(", ", others) + ")"));
