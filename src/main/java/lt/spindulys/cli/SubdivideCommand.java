@@ -45,13 +45,15 @@ final class SubdivideCommand {
             scene's subdiv statement naming MESH chooses the method, levels (per edge, from its
             camera, for an adaptive method) and options; the patches are stitched and welded, so
             the triangles (v, vt, vn, f v/vt/vn) are crack-free. A uniform subdiv statement gives
-            its uniform refinement. The mesh formats are described in docs/mesh-formats.md.
+            its uniform refinement (at its limit positions with 'positions limit'). The mesh
+            formats are described in docs/mesh-formats.md.
 
               --level N          refinement level, 0 to 8 (this or --scene is required)
               --scene SCENE.dat  the tessellation SCENE.dat would render MESH with
               -o, --output OUT   the .obj file to write (required); written atomically
               --limit            write limit-surface positions, and vn limit normals (with --level)
-              --uv UNWRAP.tex    face-varying UVs from a Workframe unwrap (one u v per face corner; with --level)
+              --uv UNWRAP.tex    face-varying UVs from a Workframe unwrap (points and faces, or one u v per
+                                 face corner; with --level)
               --debug            stack traces on errors
             Exit status: 0 success, 2 bad usage or bad input, 1 failure while writing.""";
 
