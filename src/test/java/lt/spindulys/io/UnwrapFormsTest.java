@@ -126,6 +126,19 @@ class UnwrapFormsTest {
         assertFalse(java.util.Arrays.equals(cornerValues(seam), cornerValues(none)), "the seam changes the refined UVs");
     }
 
+    @Test
+    void aPointNoFaceUsesChangesNothing() throws IOException {
+        String net = Files.readString(NET_TEX);
+        String extra = net.replace("14 6\n", "15 6\n").replace("0.0 0.6666666666666666 0\n", "0.0 0.6666666666666666 0\n0.9 0.9 0\n");
+        assertNotEquals(net, extra);
+        MeshData m = WorkframeReader.readMesh(CUBE_DAT);
+        SubdivInput with = WorkframeReader.parseTex(extra, "extra.tex", m).applyTo(SubdivInput.of(m));
+        assertEquals(15, with.mesh().uvs().length / 2);
+        for (SubdivOptions.FaceVarying mode : SubdivOptions.FaceVarying.values()) {
+            assertSameRefinement(cube(NET_TEX, mode), with.withOptions(with.options().withFaceVarying(mode)), 2);
+        }
+    }
+
     private static double[] cornerValues(RefinedMesh r) {
         int[] f = r.faceUvs();
         double[] out = new double[2 * f.length];
