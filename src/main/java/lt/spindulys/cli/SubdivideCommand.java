@@ -178,7 +178,7 @@ final class SubdivideCommand {
             // positions limit renders the limit positions: written with the limit normals, as --limit writes them.
             boolean limitPositions = first.positions() == SubdivisionSurface.Positions.LIMIT;
             String comment = "Catmull-Clark subdivision of " + input.getFileName() + " at level " + first.level() + " as " + scene.getFileName()
-                    + " renders it (" + where(first) + ", method uniform" + (limitPositions ? ", positions limit: limit positions and normals" : "")
+                    + " renders it (" + where(first) + ", method uniform" + (limitPositions ? ", positions " + first.positions().word() + ": limit positions and normals" : "")
                     + ") (spindulys " + Main.version() + ")\n"
                     + refined.vertexCount() + " vertices, " + refined.faceCount() + " faces";
             AtomicFile.write(output, os -> ObjWriter.write(refined, limitPositions, comment, os));

@@ -110,10 +110,11 @@ public final class SubdivisionSurface extends GObject {
      *         faces do not fit in the heap
      */
     public SubdivisionSurface(ControlMesh control, int level, boolean smooth, Positions positions) {
+        Objects.requireNonNull(positions, "positions");
         checkLevel(level, refinedFaces(control, level), positions == Positions.LIMIT ? BYTES_PER_FACE + LIMIT_POSITION_BYTES_PER_FACE : BYTES_PER_FACE);
         this.level = level;
         this.smooth = smooth;
-        this.positions = Objects.requireNonNull(positions, "positions");
+        this.positions = positions;
         this.refined = CatmullClark.refine(control, level);
         this.mesh = new TriangleMesh(positions == Positions.LIMIT ? RefinedTriangles.triangles(refined, refined.limitPositions(), smooth)
                 : triangles(refined, smooth));
