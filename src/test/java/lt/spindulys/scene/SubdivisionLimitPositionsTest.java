@@ -52,6 +52,18 @@ class SubdivisionLimitPositionsTest {
     }
 
     @Test
+    void polygonsOfAnySizeAtLevelZero() {
+        // A square pyramid: at level 0 its triangles and quad are rendered as they are, corners on the limit surface.
+        ControlMesh pyramid = ObjReader.parseSubdiv("v -1 0 -1\nv 1 0 -1\nv 1 0 1\nv -1 0 1\nv 0 1.5 0\n"
+                + "f 1 2 3 4\nf 1 5 2\nf 2 5 3\nf 3 5 4\nf 4 5 1\n", "pyramid.obj").toControlMesh();
+        for (int level : new int[] {0, 2}) {
+            SubdivisionSurface s = new SubdivisionSurface(pyramid, level, true, SubdivisionSurface.Positions.LIMIT);
+            assertCornersAt(s.triangleData(), s.refined().limitPositions());
+            assertTrue(s.isClosed());
+        }
+    }
+
+    @Test
     void refinedIsTheDefaultAndKeepsTheRefinedPositions() {
         SubdivisionSurface s = new SubdivisionSurface(cube(""), 2);
         assertEquals(SubdivisionSurface.Positions.REFINED, s.positions());
