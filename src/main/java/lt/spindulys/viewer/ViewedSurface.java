@@ -24,6 +24,8 @@ public final class ViewedSurface {
     static final long OPEN_FACES = 150_000;
     /** Geometries kept per surface besides the one shown. */
     private static final int CACHED = 3;
+    /** And at most this fraction of the heap in them, so that deep levels once shown do not crowd out the next. */
+    private static final double CACHED_HEAP_FRACTION = 0.25;
 
     /**
      * What a geometry is built from.
@@ -158,10 +160,15 @@ public final class ViewedSurface {
     /** Keeps {@code g} as the geometry of {@code k}, dropping the least recently used beyond the cache's size. */
     void store(Key k, DisplayGeometry g) {
         cache.put(k, g);
-        Iterator<Key> it = cache.keySet().iterator();
-        while (cache.size() > CACHED + 1 && it.hasNext()) {
-            Key old = it.next();
-            if (!old.equals(shownKey) && !old.equals(k)) it.remove();
+        long bytes = 0;
+        for (DisplayGeometry d : cache.values()) bytes += d.bytes();
+        long cap = (long) (Runtime.getRuntime().maxMemory() * CACHED_HEAP_FRACTION);
+        Iterator<Map.Entry<Key, DisplayGeometry>> it = cache.entrySet().iterator();
+        while ((cache.size() > CACHED + 1 || bytes > cap) && it.hasNext()) {
+            Map.Entry<Key, DisplayGeometry> old = it.next();
+            if (old.getKey().equals(shownKey) || old.getKey().equals(k)) continue;
+            bytes -= old.getValue().bytes();
+            it.remove();
         }
     }
 
