@@ -98,9 +98,14 @@ public final class Rasterizer implements AutoCloseable {
     private float[] depth = new float[0];
     private float[] vx = new float[0], vy = new float[0], vz = new float[0], sx = new float[0], sy = new float[0], sz = new float[0];
     private float[] nl = new float[0];
-    private int[] vertexBase = new int[0], normalBase = new int[0];
+    private int[] vertexBase = new int[0], normalBase = new int[0], triangleBase = new int[0];
+    // Binning: each triangle's first and last band, counts and cursors per (chunk, band), and the
+    // triangles of every band in drawing order (band after band).
+    private int[] triangleBands = new int[0], binCounts = new int[0], binCursors = new int[0], bandStart = new int[1], binned = new int[0];
+    private int triangleTotal;
     private float[][] clip = new float[0][];
-    private final java.util.function.IntConsumer transformJob = this::transformChunk, bandJob = this::rasterBand;
+    private final java.util.function.IntConsumer transformJob = this::transformChunk, bandJob = this::rasterBand,
+            countJob = this::countChunk, fillJob = this::fillChunk;
 
     /** A rasterizer using every available processor. */
     public Rasterizer() {
@@ -144,15 +149,22 @@ public final class Rasterizer implements AutoCloseable {
             vertexBase = new int[items.size() + 1];
             normalBase = new int[items.size() + 1];
         }
+        if (triangleBase.length < items.size() + 1) triangleBase = new int[items.size() + 1];
+        int triangles = 0;
         for (int i = 0; i < items.size(); i++) {
             DisplayGeometry g = items.get(i).geometry();
             vertexBase[i] = vertices;
             normalBase[i] = normals;
+            triangleBase[i] = triangles;
             vertices += g.vertexCount();
             normals += g.normals().length / 3;
+            if (items.get(i).drawTriangles()) triangles += g.triangleCount();
         }
         vertexBase[items.size()] = vertices;
         normalBase[items.size()] = normals;
+        triangleBase[items.size()] = triangles;
+        triangleTotal = triangles;
+        if (triangleBands.length < triangles) triangleBands = new int[Math.max(triangles, triangleBands.length + triangleBands.length / 2)];
         if (vx.length < vertices) {
             int n = Math.max(vertices, vx.length + vx.length / 2);
             vx = new float[n]; vy = new float[n]; vz = new float[n]; sx = new float[n]; sy = new float[n]; sz = new float[n];
@@ -163,7 +175,26 @@ public final class Rasterizer implements AutoCloseable {
             clip = new float[bands][];
             for (int b = 0; b < bands; b++) clip[b] = new float[64];
         }
-        pool.run(pool.threads() * 4, transformJob);
+        int chunks = pool.threads() * 4;
+        if (binCounts.length < chunks * bands) {
+            binCounts = new int[chunks * bands];
+            binCursors = new int[chunks * bands];
+        }
+        if (bandStart.length < bands + 1) bandStart = new int[bands + 1];
+        pool.run(chunks, transformJob);
+        pool.run(chunks, countJob);
+        // Band b's list holds chunk 0's triangles in it, then chunk 1's, ...: the items' order.
+        int at = 0;
+        for (int b = 0; b < bands; b++) {
+            bandStart[b] = at;
+            for (int k = 0; k < chunks; k++) {
+                binCursors[k * bands + b] = at;
+                at += binCounts[k * bands + b];
+            }
+        }
+        bandStart[bands] = at;
+        if (binned.length < at) binned = new int[Math.max(at, binned.length + binned.length / 2)];
+        pool.run(chunks, fillJob);
         pool.run(bands, bandJob);
         this.items = null;
         this.frame = null;
@@ -220,7 +251,55 @@ public final class Rasterizer implements AutoCloseable {
         }
     }
 
-    /** Band {@code b}: clears its rows, then draws every item's triangles, then every item's edges. */
+    /** The bands triangle {@code g} (global number) may cover, packed first | last << 16; -1 for none. */
+    private int bandsOf(int g, int item) {
+        int[] t = items.get(item).geometry().triangles();
+        int k = 3 * (g - triangleBase[item]), vb = vertexBase[item];
+        int a = vb + t[k], c = vb + t[k + 1], d = vb + t[k + 2];
+        float za = vz[a], zc = vz[c], zd = vz[d];
+        if (za >= near && zc >= near && zd >= near) {
+            float xa = sx[a], xc = sx[c], xd = sx[d];
+            if (Math.max(xa, Math.max(xc, xd)) < 0 || Math.min(xa, Math.min(xc, xd)) > width) return -1;
+            float ya = sy[a], yc = sy[c], yd = sy[d];
+            // The rows whose centres it can reach, as the scanline loop finds them.
+            int first = Math.max(0, (int) Math.ceil(Math.min(ya, Math.min(yc, yd)) - 0.5f));
+            int last = Math.min(height, (int) Math.ceil(Math.max(ya, Math.max(yc, yd)) - 0.5f));
+            if (first >= last) return -1;
+            return first / BAND_ROWS | (last - 1) / BAND_ROWS << 16;
+        }
+        if (za >= near || zc >= near || zd >= near) return (bands - 1) << 16; // cut at the near plane: every band
+        return -1;
+    }
+
+    /** Chunk {@code k} of the triangles: the bands of each, counted per band. */
+    private void countChunk(int k) {
+        int chunks = pool.threads() * 4, g0 = (int) ((long) triangleTotal * k / chunks), g1 = (int) ((long) triangleTotal * (k + 1) / chunks);
+        int[] counts = binCounts;
+        int base = k * bands;
+        java.util.Arrays.fill(counts, base, base + bands, 0);
+        int item = 0;
+        for (int g = g0; g < g1; g++) {
+            while (g >= triangleBase[item + 1]) item++;
+            int r = bandsOf(g, item);
+            triangleBands[g] = r;
+            if (r < 0) continue;
+            for (int b = r & 0xffff, last = r >>> 16; b <= last; b++) counts[base + b]++;
+        }
+    }
+
+    /** Chunk {@code k} of the triangles: each written into the lists of its bands, in order. */
+    private void fillChunk(int k) {
+        int chunks = pool.threads() * 4, g0 = (int) ((long) triangleTotal * k / chunks), g1 = (int) ((long) triangleTotal * (k + 1) / chunks);
+        int[] cursor = binCursors;
+        int base = k * bands;
+        for (int g = g0; g < g1; g++) {
+            int r = triangleBands[g];
+            if (r < 0) continue;
+            for (int b = r & 0xffff, last = r >>> 16; b <= last; b++) binned[cursor[base + b]++] = g;
+        }
+    }
+
+    /** Band {@code b}: clears its rows, then draws its triangles in the items' order, then every item's edges. */
     private void rasterBand(int b) {
         int y0 = b * BAND_ROWS, y1 = Math.min(height, y0 + BAND_ROWS);
         int w = width;
@@ -228,34 +307,36 @@ public final class Rasterizer implements AutoCloseable {
             java.util.Arrays.fill(frame, y * w, y * w + w, background[y]);
             java.util.Arrays.fill(depth, y * w, y * w + w, 0f);
         }
-        float top = y0, bottom = y1;
-        for (int i = 0; i < items.size(); i++) {
-            Item it = items.get(i);
-            if (!it.drawTriangles()) continue;
-            int[] t = it.geometry().triangles(), cn = it.geometry().cornerNormals();
-            int vb = vertexBase[i], nb = normalBase[i];
-            for (int k = 0; k < t.length; k += 3) {
-                int a = vb + t[k], c = vb + t[k + 1], d = vb + t[k + 2];
-                float za = vz[a], zc = vz[c], zd = vz[d];
-                if (za >= near && zc >= near && zd >= near) {
-                    float ya = sy[a], yc = sy[c], yd = sy[d];
-                    // Rows are sampled at their centres: a triangle wholly above or below them covers none.
-                    if (Math.max(ya, Math.max(yc, yd)) < top || Math.min(ya, Math.min(yc, yd)) > bottom) continue;
-                    float xa = sx[a], xc = sx[c], xd = sx[d];
-                    if (Math.max(xa, Math.max(xc, xd)) < 0 || Math.min(xa, Math.min(xc, xd)) > w) continue;
-                    triangle(xa, ya, sz[a], nl[nb + cn[k]], xc, yc, sz[c], nl[nb + cn[k + 1]], xd, yd, sz[d], nl[nb + cn[k + 2]],
-                            it, y0, y1);
-                } else if (za >= near || zc >= near || zd >= near) {
-                    clipped(a, nl[nb + cn[k]], c, nl[nb + cn[k + 1]], d, nl[nb + cn[k + 2]], it, b, y0, y1);
-                }
+        int item = -1, itemEnd = 0, vb = 0, nb = 0, tb = 0;
+        int[] t = null, cn = null;
+        Item it = null;
+        for (int j = bandStart[b], end = bandStart[b + 1]; j < end; j++) {
+            int g = binned[j];
+            if (g >= itemEnd) {
+                do item++; while (g >= triangleBase[item + 1]);
+                it = items.get(item);
+                t = it.geometry().triangles();
+                cn = it.geometry().cornerNormals();
+                vb = vertexBase[item];
+                nb = normalBase[item];
+                tb = triangleBase[item];
+                itemEnd = triangleBase[item + 1];
+            }
+            int k = 3 * (g - tb);
+            int a = vb + t[k], c = vb + t[k + 1], d = vb + t[k + 2];
+            if (vz[a] >= near && vz[c] >= near && vz[d] >= near) {
+                triangle(sx[a], sy[a], sz[a], nl[nb + cn[k]], sx[c], sy[c], sz[c], nl[nb + cn[k + 1]], sx[d], sy[d], sz[d], nl[nb + cn[k + 2]],
+                        it, y0, y1);
+            } else {
+                clipped(a, nl[nb + cn[k]], c, nl[nb + cn[k + 1]], d, nl[nb + cn[k + 2]], it, b, y0, y1);
             }
         }
         for (int i = 0; i < items.size(); i++) {
-            Item it = items.get(i);
-            if (!it.drawEdges()) continue;
-            int[] e = it.geometry().edges();
-            int vb = vertexBase[i];
-            for (int k = 0; k < e.length; k += 2) line(vb + e[k], vb + e[k + 1], it.lineArgb(), b, y0, y1);
+            Item e = items.get(i);
+            if (!e.drawEdges()) continue;
+            int[] ed = e.geometry().edges();
+            int base = vertexBase[i];
+            for (int k = 0; k < ed.length; k += 2) line(base + ed[k], base + ed[k + 1], e.lineArgb(), b, y0, y1);
         }
     }
 
