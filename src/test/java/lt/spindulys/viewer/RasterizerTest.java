@@ -151,6 +151,18 @@ class RasterizerTest {
         assertTrue(count(one, 0xff000000 | GREEN) > 0);
     }
 
+    @Test
+    void edgesAreDrawnAfterEveryFaceWhateverTheItemsOrder() {
+        DisplayGeometry sq = square(1, 0, true), front = square(0.5, 0.5, false);
+        Rasterizer.Item edges = Rasterizer.Item.edges(sq, GREEN), faces = Rasterizer.Item.faces(sq, RED, BLUE), near = Rasterizer.Item.faces(front, BLUE, RED);
+        try (Rasterizer r = new Rasterizer(2)) {
+            int[] a = render(r, List.of(edges, faces, near), front());
+            int[] b = render(r, List.of(faces, near, edges), front());
+            assertArrayEquals(b, a);
+            assertTrue(count(a, 0xff000000 | GREEN) > 40);
+        }
+    }
+
     static int count(int[] frame, int argb) {
         int n = 0;
         for (int v : frame) if (v == argb) n++;
