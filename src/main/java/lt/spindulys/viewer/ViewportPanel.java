@@ -39,6 +39,10 @@ final class ViewportPanel extends JComponent {
             @Override public void mouseReleased(MouseEvent e) { input.release(); }
             @Override public void mouseWheelMoved(MouseWheelEvent e) { input.wheel(e.getPreciseWheelRotation()); }
         };
+        // The model fits and pans for the viewport's size, known before the first paint.
+        addComponentListener(new java.awt.event.ComponentAdapter() {
+            @Override public void componentResized(java.awt.event.ComponentEvent e) { model.viewport(getWidth(), getHeight()); }
+        });
         addMouseListener(mouse);
         addMouseMotionListener(mouse);
         addMouseWheelListener(mouse);
