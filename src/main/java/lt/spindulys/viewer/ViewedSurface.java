@@ -110,6 +110,14 @@ public final class ViewedSurface {
         level = l;
     }
 
+    /** Takes the settings of {@code k} back (its geometry could not be built; the one shown is {@code k}'s). */
+    void settle(Key k) {
+        level = k.level();
+        boundary = k.boundary();
+        if (mode != DisplayMode.LATTICE) mode = k.smooth() ? DisplayMode.SMOOTHED : DisplayMode.POLYHEDRON;
+        requested = k;
+    }
+
     /** Replaces the mesh's UVs (an unwrap attached); the geometry does not change. */
     void unwrap(SubdivInput withUvs, Path tex) {
         synchronized (this) {
@@ -148,8 +156,11 @@ public final class ViewedSurface {
      *
      * @param k what to build
      * @return the geometry
+     * @throws IllegalArgumentException if the heap no longer allows the level
      */
     DisplayGeometry build(Key k) {
+        // Checked again here: other surfaces may have taken the heap since the level was set.
+        SubdivisionSurface.checkLevel(k.level(), input.refinedFaceCount(k.level()));
         var r = CatmullClark.refine(control(k.boundary()), k.level());
         return k.smooth() ? DisplayGeometry.smoothed(r) : DisplayGeometry.polyhedron(r);
     }

@@ -315,7 +315,11 @@ public final class ViewerModel {
             try {
                 g = s.build(k);
             } catch (Throwable t) {
-                ui.execute(() -> building.remove(job));
+                ui.execute(() -> {
+                    building.remove(job);
+                    // What is on screen stays, and the settings go back to what it shows.
+                    if (surfaces.contains(s) && k.equals(s.wanted()) && s.shownKey() != null) s.settle(s.shownKey());
+                });
                 fail(t);
                 return;
             }

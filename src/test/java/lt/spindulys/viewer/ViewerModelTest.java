@@ -301,6 +301,34 @@ class ViewerModelTest {
     }
 
     @Test
+    void aBuildThatFailsKeepsWhatIsShownAndTakesTheSettingsBack() throws IOException {
+        ArrayDeque<Runnable> work = new ArrayDeque<>();
+        ViewerModel m = new ViewerModel(work::add, Runnable::run, new ViewerModel.Listener() {
+            @Override public void changed() { changes++; }
+            @Override public void error(String message) { errors.add(message); }
+        });
+        m.open(List.of(write("cube.obj", CUBE_OBJ)));
+        while (!work.isEmpty()) work.poll().run();
+        DisplayGeometry level3 = faces(m);
+        m.level(6);
+        assertEquals(6, m.selected().level());
+        // By the time the build runs, the heap has gone (as if other surfaces had taken it).
+        try (var cap = lt.spindulys.limits.HeapBudget.cap(1 << 20)) {
+            work.poll().run();
+        }
+        assertEquals(1, errors.size());
+        assertTrue(errors.get(0).startsWith("subdivision level 6 of this mesh (24576 faces"), errors.get(0));
+        assertEquals(3, m.selected().level(), "back to the level on screen");
+        assertSame(level3, faces(m));
+        assertTrue(m.selected().upToDate());
+        assertEquals(0, m.pending());
+        m.levelUp();
+        while (!work.isEmpty()) work.poll().run();
+        assertEquals(4, m.selected().level(), "and it goes on from there");
+        assertEquals(2 * 6 * 256, faces(m).triangleCount());
+    }
+
+    @Test
     void keysAndMouseDriveTheModel() throws IOException {
         ViewerModel m = model();
         m.viewport(640, 480);
