@@ -2,6 +2,7 @@ package lt.spindulys.viewer;
 
 import lt.spindulys.math.Bounds;
 import lt.spindulys.mesh.MeshData;
+import lt.spindulys.subdiv.CatmullClark;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.RefinedMesh;
 import lt.spindulys.subdiv.RefinedTriangles;
@@ -117,7 +118,7 @@ public record DisplayGeometry(float[] positions, float[] normals, int[] triangle
      * @return the geometry, without triangles
      */
     public static DisplayGeometry lattice(ControlMesh control) {
-        RefinedMesh base = lt.spindulys.subdiv.CatmullClark.refine(control, 0);
+        RefinedMesh base = CatmullClark.refine(control, 0);
         return new DisplayGeometry(toFloats(control.positions()), NO_FLOATS, NONE, NONE, base.edgeVertices());
     }
 
