@@ -223,6 +223,16 @@ class ViewerModelTest {
     }
 
     @Test
+    void aMeshWithoutFacesIsRefusedWhenOpened() throws IOException {
+        ViewerModel m = model();
+        Path points = write("points.obj", "v 0 0 0\nv 1 0 0\n");
+        m.open(List.of(points));
+        assertEquals(List.of(points + ": the mesh has no faces"), errors);
+        assertEquals(0, m.surfaces().size());
+        assertEquals(List.of(), m.drawList());
+    }
+
+    @Test
     void anUnwrapWithNothingOpenIsAnError() {
         ViewerModel m = model();
         m.open(List.of(CUBE_TEX));
