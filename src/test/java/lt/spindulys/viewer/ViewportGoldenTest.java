@@ -21,9 +21,9 @@ import lt.spindulys.math.Vec3;
  * whose faces wind clockwise so that its outside shows the back tint, and the open sheet seen
  * from above and below), one smoothed with its cage, one as a polyhedron, rendered by the
  * rasterizer and compared with a golden PNG. Regenerate it after an intended change with
- * {@code mvn test -Dtest=ViewerFrameGoldenTest -Dgolden.update=true} and look at it first.
+ * {@code mvn test -Dtest=ViewportGoldenTest -Dgolden.update=true} and look at it first.
  */
-class ViewerFrameGoldenTest {
+class ViewportGoldenTest {
     static final Path GOLDEN = Path.of("src/test/resources/golden/viewer/gourd-sheet.png"), OUT = Path.of("target/regression");
     static final int W = 240, H = 160;
 
@@ -54,7 +54,7 @@ class ViewerFrameGoldenTest {
             Files.createDirectories(GOLDEN.getParent());
             ImageIO.write(actual, "png", GOLDEN.toFile());
         }
-        assertTrue(Files.exists(GOLDEN), "no golden " + GOLDEN + "; create it with mvn test -Dtest=ViewerFrameGoldenTest -Dgolden.update=true");
+        assertTrue(Files.exists(GOLDEN), "no golden " + GOLDEN + "; create it with mvn test -Dtest=ViewportGoldenTest -Dgolden.update=true");
         BufferedImage golden = ImageIO.read(GOLDEN.toFile());
         int[] expected = golden.getRGB(0, 0, W, H, null, 0, W);
         int[] got = actual.getRGB(0, 0, W, H, null, 0, W);
