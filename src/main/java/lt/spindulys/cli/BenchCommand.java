@@ -35,7 +35,8 @@ final class BenchCommand {
             usage: render bench [--only NAME] [--runs N] [--accel A] [--cell-timeout S] [--list]
 
               --only NAME   run only the row NAME, or the rows of the group NAME (see --list); the group
-                            'adaptive' (issue 16's rows, long: each cell is a new JVM) runs only when asked for
+                            'adaptive' (issue 16's rows, long: each cell is a new JVM) and the group 'viewer' (the
+                            viewer's frame rate) run only when asked for
               --runs N      timed runs per row after the warm-up (default 5); the median is reported
                             (adaptive rows: alternated pairs of new JVMs; Table 1 cells run once each)
               --cell-timeout S  stop an adaptive-row cell after S seconds (default 600) and report it as stopped
@@ -59,6 +60,8 @@ final class BenchCommand {
 
     /** The group of the issue-16 rows. */
     static final String ADAPTIVE = "adaptive";
+    /** The group of the viewer's row (issue 17). */
+    static final String VIEWER = "viewer";
 
     private static final List<Row> ROWS = List.of(
             new Row("refine-bishop", "Subdivision",
@@ -92,7 +95,11 @@ final class BenchCommand {
             peerVariant("1k", "lazy", "the 1k cage as a lazy adaptive subdiv, target 1 px (beside Cycles' adaptive subdivision, dicing rate 1 px)"),
             peerVariant("1k", "combined", "the 1k cage as a combined adaptive subdiv, target 1 px (beside Cycles' adaptive subdivision)"),
             peerVariant("1k", "level2", "the 1k cage as a uniform subdiv at level 2 (beside Embree's subdivision at edge level 4)"),
-            peerVariant("1k", "level2-lazy", "the 1k cage as a lazy subdiv at fixed level 2 (beside Embree's subdivision at edge level 4)"));
+            peerVariant("1k", "level2-lazy", "the 1k cage as a lazy subdiv at fixed level 2 (beside Embree's subdivision at edge level 4)"),
+            new Row("viewer", "Viewer",
+                    "the viewer's rasterizer: offscreen 1280x720 frames of a 102,400-quad torus (a 400-quad cage at level 4) orbited, "
+                            + BenchCommand.THREADS + " threads; median frames/s smoothed, polyhedron and smoothed with the cage (target: 30)",
+                    (b, out) -> ViewerBench.run(out, b.runs, BenchCommand.THREADS), VIEWER));
 
     /** A peer-scene row whose torus is a subdivision surface: scenes/bench/torus-SIZE-VARIANT.dat. */
     private static Row peerVariant(String size, String variant, String what) {
@@ -133,7 +140,7 @@ final class BenchCommand {
                     only = args[i];
                     if (ROWS.stream().noneMatch(r -> r.name().equals(only) || only.equals(r.group()))) {
                         throw new UsageException("unknown bench row '" + only + "' (rows: " + String.join(", ", ROWS.stream().map(Row::name).toList())
-                                + "; group: " + ADAPTIVE + ")");
+                                + "; groups: " + ADAPTIVE + ", " + VIEWER + ")");
                     }
                 }
                 case "--runs" -> {

@@ -11,7 +11,8 @@ import lt.spindulys.limits.MessageText;
 
 /**
  * The {@code render} command line: {@code render SCENE.dat ...} renders ({@link RenderCommand}),
- * {@code render subdivide ...} refines a mesh ({@link SubdivideCommand}). {@link #run} does the work and returns the exit status, so
+ * {@code render subdivide ...} refines a mesh ({@link SubdivideCommand}), {@code render view ...} opens the viewer
+ * ({@link ViewCommand}). {@link #run} does the work and returns the exit status, so
  * tests call it in-process; {@link #main} only exits with that status. Bad usage and bad input
  * print one line to stderr and exit 2; a failure while rendering or writing exits 1. Stack traces
  * appear only with {@code --debug}.
@@ -37,6 +38,14 @@ public final class Main {
                     return 0;
                 }
                 return new SubdivideCommand(rest.toArray(new String[0])).run(out, err);
+            }
+            if (!rest.isEmpty() && rest.get(0).equals("view")) {
+                rest.remove(0);
+                if (rest.contains("--help") || rest.contains("-h")) {
+                    out.println(ViewCommand.USAGE);
+                    return 0;
+                }
+                return new ViewCommand(rest.toArray(new String[0])).run(out, err);
             }
             if (!rest.isEmpty() && rest.get(0).equals("bench")) {
                 rest.remove(0);

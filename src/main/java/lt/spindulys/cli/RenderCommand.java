@@ -43,6 +43,7 @@ final class RenderCommand {
                                     [--quality Q] [--stats] [--quiet] [--debug]
                    render subdivide MESH.obj|MESH.dat --level N|--scene SCENE.dat -o OUT.obj [...]   (see render subdivide --help)
                    render bench [--only NAME] [--runs N] [--accel A] [--list]      (see render bench --help)
+                   render view [MESH.obj|MESH.dat|UNWRAP.tex ...]                  (see render view --help)
                    render --help | --version
 
               -o, --output OUT   image to write: .png .jpg .jpeg .tga .pfm (default: SCENE.png here)

@@ -217,12 +217,13 @@ class CliTest {
         assertTrue(list.out().startsWith("refine-bishop "), list.out());
         assertTrue(list.out().contains(System.lineSeparator() + "torus-1m "), list.out());
         assertTrue(list.out().contains(System.lineSeparator() + "adaptive-close         [adaptive] "), list.out());
+        assertTrue(list.out().contains(System.lineSeparator() + "viewer                 [viewer] "), list.out());
         assertEquals(2, run("bench", "--cell-timeout", "0").status());
         Run unknown = run("bench", "--only", "nope");
         assertEquals(2, unknown.status());
         assertEquals("render: unknown bench row 'nope' (rows: refine-bishop, torus-1k, torus-16k, torus-250k, torus-1m, csg-subdiv, motion-blur, "
-                + "adaptive-close, adaptive-huge, adaptive-lazy, adaptive-cache, torus-1k-lazy, torus-1k-combined, torus-1k-level2, torus-1k-level2-lazy; "
-                + "group: adaptive)" + System.lineSeparator(), unknown.err());
+                + "adaptive-close, adaptive-huge, adaptive-lazy, adaptive-cache, torus-1k-lazy, torus-1k-combined, torus-1k-level2, torus-1k-level2-lazy, viewer; "
+                + "groups: adaptive, viewer)" + System.lineSeparator(), unknown.err());
         Run badRuns = run("bench", "--runs", "0");
         assertEquals(2, badRuns.status());
         Run badAccel = run("bench", "--accel", "kdtree");

@@ -1,0 +1,82 @@
+package lt.spindulys.cli;
+
+import java.awt.GraphicsEnvironment;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
+import java.io.PrintStream;
+import java.lang.reflect.InvocationTargetException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import java.util.function.BooleanSupplier;
+
+import javax.swing.SwingUtilities;
+
+import lt.spindulys.viewer.ViewerFrame;
+
+/**
+ * {@code render view [MESH...]}: opens the viewer's window with the meshes given and returns when
+ * it is closed. Without a display it prints one line saying so and fails, instead of the JDK's
+ * HeadlessException.
+ */
+final class ViewCommand {
+    static final String USAGE = """
+            usage: render view [MESH.obj|MESH.dat|UNWRAP.tex ...]
+
+              Opens the subdivision-surface viewer (a desktop window) with the meshes given; more can be
+              opened with File > Open or dropped on the window. A .dat mesh takes the .tex unwrap of the
+              same name beside it; a .tex given on its own is attached to the surface opened before it.
+              Mouse: left drag orbits, right (or shift) drag pans, the wheel zooms.
+              Keys: arrows orbit, + and - zoom, F fits, 1 2 3 polyhedron / lattice / smoothed,
+              C cage over the surface, Page Up / Page Down subdivision level.
+            See README.md (Viewer).""";
+
+    private final List<Path> files = new ArrayList<>();
+    private final BooleanSupplier headless;
+
+    /**
+     * Parses the arguments.
+     *
+     * @param args the mesh files
+     * @param headless true when there is no display (GraphicsEnvironment::isHeadless, or a test's answer)
+     */
+    ViewCommand(String[] args, BooleanSupplier headless) throws UsageException {
+        this.headless = headless;
+        for (String a : args) {
+            if (a.startsWith("-")) throw new UsageException("unknown view option '" + a + "' (see render view --help)");
+            files.add(Path.of(a));
+        }
+    }
+
+    ViewCommand(String[] args) throws UsageException {
+        this(args, GraphicsEnvironment::isHeadless);
+    }
+
+    int run(PrintStream out, PrintStream err) throws InterruptedException {
+        if (headless.getAsBoolean()) {
+            err.println("render view: the viewer needs a display, and there is none (no DISPLAY, or java.awt.headless is set); "
+                    + "run it on a desktop or under a virtual X server");
+            return 1;
+        }
+        CountDownLatch closed = new CountDownLatch(1);
+        try {
+            SwingUtilities.invokeAndWait(() -> {
+                ViewerFrame f = new ViewerFrame();
+                f.addWindowListener(new WindowAdapter() {
+                    @Override public void windowClosed(WindowEvent e) { closed.countDown(); }
+                });
+                f.setLocationByPlatform(true);
+                f.setVisible(true);
+                if (!files.isEmpty()) f.open(files);
+            });
+        } catch (InvocationTargetException e) {
+            Throwable c = e.getCause();
+            if (c instanceof RuntimeException r) throw r;
+            if (c instanceof Error x) throw x;
+            throw new IllegalStateException(c);
+        }
+        closed.await();
+        return 0;
+    }
+}

@@ -1,0 +1,139 @@
+package lt.spindulys.viewer;
+
+import lt.spindulys.math.Bounds;
+import lt.spindulys.mesh.MeshData;
+import lt.spindulys.subdiv.CatmullClark;
+import lt.spindulys.subdiv.ControlMesh;
+import lt.spindulys.subdiv.RefinedMesh;
+import lt.spindulys.subdiv.RefinedTriangles;
+
+/**
+ * What the rasterizer draws of one surface, as flat arrays: positions, shading normals,
+ * triangles with a normal index per corner, and edges as index pairs into the positions. Floats,
+ * because the display needs no more and the arrays are half the size. Immutable by convention.
+ *
+ * @param positions x, y, z per vertex
+ * @param normals x, y, z per shading normal (unit length)
+ * @param triangles three vertex indices per triangle
+ * @param cornerNormals a normal index per triangle corner, parallel to {@code triangles}
+ * @param edges two vertex indices per edge
+ */
+public record DisplayGeometry(float[] positions, float[] normals, int[] triangles, int[] cornerNormals, int[] edges) {
+    private static final int[] NONE = new int[0];
+    private static final float[] NO_FLOATS = new float[0];
+
+    /** {@return the number of vertices} */
+    public int vertexCount() { return positions.length / 3; }
+    /** {@return the number of triangles} */
+    public int triangleCount() { return triangles.length / 3; }
+    /** {@return the number of edges} */
+    public int edgeCount() { return edges.length / 2; }
+
+    /** {@return the bytes of the arrays, for keeping the cache's size in check} */
+    public long bytes() {
+        return 4L * (positions.length + normals.length + triangles.length + cornerNormals.length + edges.length);
+    }
+
+    /** {@return the box around the vertices (empty without any)} */
+    public Bounds bounds() {
+        Bounds b = Bounds.EMPTY;
+        for (int i = 0; i < positions.length; i += 3) b = b.union(positions[i], positions[i + 1], positions[i + 2]);
+        return b;
+    }
+
+    /**
+     * The polyhedron: every face of the refined mesh (the control mesh at level 0) flat shaded
+     * with its own normal (Newell's, so a non-planar face still gets one normal), fanned into
+     * triangles; holes left out.
+     *
+     * @param r the refined mesh
+     * @return the geometry, without edges
+     */
+    public static DisplayGeometry polyhedron(RefinedMesh r) {
+        double[] p = r.positions();
+        int[] sizes = r.faceSizes(), fv = r.faceVertices();
+        int tris = 0, faces = 0;
+        for (int f = 0; f < sizes.length; f++) {
+            if (r.isHole(f)) continue;
+            tris += sizes[f] - 2;
+            faces++;
+        }
+        int[] t = new int[3 * tris], cn = new int[3 * tris];
+        float[] n = new float[3 * faces];
+        int k = 0, nf = 0;
+        for (int f = 0, c = 0; f < sizes.length; c += sizes[f], f++) {
+            if (r.isHole(f)) continue;
+            int s = sizes[f];
+            double x = 0, y = 0, z = 0;
+            for (int j = 0; j < s; j++) {
+                int a = 3 * fv[c + j], b = 3 * fv[c + (j + 1) % s];
+                x += (p[a + 1] - p[b + 1]) * (p[a + 2] + p[b + 2]);
+                y += (p[a + 2] - p[b + 2]) * (p[a] + p[b]);
+                z += (p[a] - p[b]) * (p[a + 1] + p[b + 1]);
+            }
+            putUnit(n, nf, x, y, z);
+            for (int j = 1; j + 1 < s; j++) {
+                t[k] = fv[c]; t[k + 1] = fv[c + j]; t[k + 2] = fv[c + j + 1];
+                cn[k] = cn[k + 1] = cn[k + 2] = nf;
+                k += 3;
+            }
+            nf++;
+        }
+        return new DisplayGeometry(toFloats(p), n, t, cn, NONE);
+    }
+
+    /**
+     * The smoothed surface: the refined mesh's triangles as the ray tracer makes them
+     * ({@link RefinedTriangles}: quads split along the shorter diagonal, holes left out), shaded
+     * with the limit normals (split where sharp edges meet at a vertex).
+     *
+     * @param r the refined mesh
+     * @return the geometry, without edges
+     */
+    public static DisplayGeometry smoothed(RefinedMesh r) {
+        MeshData m = RefinedTriangles.triangles(r, true);
+        int[] sizes = m.faceSizes(), vi = m.vertexIndex(), ni = m.normalIndex();
+        int tris = 0;
+        for (int s : sizes) tris += s - 2;
+        int[] t = new int[3 * tris], cn = new int[3 * tris];
+        int k = 0;
+        for (int f = 0, c = 0; f < sizes.length; c += sizes[f], f++) {
+            for (int j = 1; j + 1 < sizes[f]; j++) {
+                t[k] = vi[c]; t[k + 1] = vi[c + j]; t[k + 2] = vi[c + j + 1];
+                cn[k] = ni[c]; cn[k + 1] = ni[c + j]; cn[k + 2] = ni[c + j + 1];
+                k += 3;
+            }
+        }
+        double[] nd = m.normals();
+        float[] n = new float[nd.length];
+        for (int i = 0; i < nd.length; i += 3) putUnit(n, i / 3, nd[i], nd[i + 1], nd[i + 2]);
+        return new DisplayGeometry(toFloats(m.positions()), n, t, cn, NONE);
+    }
+
+    /**
+     * The lattice: every edge of the control cage once (a non-manifold edge once per instance,
+     * as the control mesh numbers it), holes' edges included.
+     *
+     * @param control the control mesh
+     * @return the geometry, without triangles
+     */
+    public static DisplayGeometry lattice(ControlMesh control) {
+        RefinedMesh base = CatmullClark.refine(control, 0);
+        return new DisplayGeometry(toFloats(control.positions()), NO_FLOATS, NONE, NONE, base.edgeVertices());
+    }
+
+    private static void putUnit(float[] n, int i, double x, double y, double z) {
+        double len = Math.sqrt(x * x + y * y + z * z);
+        // A degenerate face or normal shades as if facing the viewer's light at a right angle: dark, not NaN.
+        if (!(len > 0) || !Double.isFinite(len)) return;
+        n[3 * i] = (float) (x / len);
+        n[3 * i + 1] = (float) (y / len);
+        n[3 * i + 2] = (float) (z / len);
+    }
+
+    private static float[] toFloats(double[] d) {
+        float[] f = new float[d.length];
+        for (int i = 0; i < d.length; i++) f[i] = (float) d[i];
+        return f;
+    }
+}
