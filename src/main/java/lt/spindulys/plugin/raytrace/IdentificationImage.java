@@ -89,28 +89,35 @@ record IdentificationImage(int width, int height, int[] rgb) {
                 region[y * w + x] = c;
             }
         }
+        // Two lines a surface: what it is in the viewer, then how it was rendered.
         for (int i = 0; i < n; i++) {
             DisplayedSurface s = surfaces.get(i);
-            lines.add(SceneDescription.oneLine(s.name()) + ": " + s.subdivisionLabel() + "; rendered as " + rendered.get(i)
-                    + (pixels[i] == 0 ? " (not visible)" : ""));
+            lines.add(SceneDescription.oneLine(s.name()) + ": " + s.subdivisionLabel() + (pixels[i] == 0 ? " (not visible)" : ""));
+            lines.add("rendered as " + rendered.get(i));
         }
-        // The legend's size follows the picture's: larger text under larger pictures.
-        int scale = w >= 480 ? 2 : 1;
-        int pad = 4 * scale, swatch = BitmapFont.GLYPH_HEIGHT * scale, row = BitmapFont.LINE_HEIGHT * scale + 2 * scale;
+        // Larger text under larger pictures, where it fits; the panel widens only for text too long at the smallest size.
         int textWidth = 0;
-        for (String l : lines) textWidth = Math.max(textWidth, BitmapFont.width(l, scale));
-        int width = Math.max(w, pad + swatch + pad + textWidth + pad);
-        int height = h + pad + n * row + pad;
+        for (String l : lines) textWidth = Math.max(textWidth, BitmapFont.width(l, 1));
+        int scale = w >= 480 && legendWidth(textWidth * 2, 2) <= w ? 2 : 1;
+        int pad = 4 * scale, swatch = BitmapFont.GLYPH_HEIGHT * scale, line = BitmapFont.LINE_HEIGHT * scale, entry = 2 * line + 2 * scale;
+        int width = Math.max(w, legendWidth(textWidth * scale, scale));
+        int height = h + pad + n * entry + pad;
         int[] rgb = new int[width * height];
         java.util.Arrays.fill(rgb, PANEL);
         for (int y = 0; y < h; y++) System.arraycopy(region, y * w, rgb, y * width, w);
         for (int i = 0; i < n; i++) {
-            int top = h + pad + i * row;
+            int top = h + pad + i * entry;
             for (int y = 0; y < swatch; y++) {
                 for (int x = 0; x < swatch; x++) rgb[(top + y) * width + pad + x] = colours[i];
             }
-            BitmapFont.draw(rgb, width, pad + swatch + pad, top, lines.get(i), TEXT, scale);
+            BitmapFont.draw(rgb, width, pad + swatch + pad, top, lines.get(2 * i), TEXT, scale);
+            BitmapFont.draw(rgb, width, pad + swatch + pad, top + line, lines.get(2 * i + 1), TEXT, scale);
         }
         return new IdentificationImage(width, height, rgb);
+    }
+
+    /** The legend's width for text this wide: padding, swatch, padding, text, padding. */
+    private static int legendWidth(int text, int scale) {
+        return 4 * scale + BitmapFont.GLYPH_HEIGHT * scale + 4 * scale + text + 4 * scale;
     }
 }

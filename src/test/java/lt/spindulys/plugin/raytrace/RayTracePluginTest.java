@@ -444,19 +444,21 @@ class RayTracePluginTest {
         assertEquals(Set.of(IdentificationImage.FLOOR, IdentificationImage.colour(0), IdentificationImage.colour(1)), seen,
                 "both surfaces and the floor show (the view looks down: the floor hides the background)");
         assertNotEquals(IdentificationImage.colour(0), IdentificationImage.colour(1));
-        // The legend: a swatch and a line per surface, in the built-in font.
-        String[] lines = {"cube: Catmull-Clark, level 2; rendered as level 2", "small cube: Catmull-Clark, level 1; rendered as adaptive (1 px edges)"};
-        assertEquals(Math.max(64, 4 + 7 + 4 + BitmapFont.width(lines[1], 1) + 4), img.getWidth());
-        assertEquals(48 + 4 + 2 * 11 + 4, img.getHeight());
+        // The legend: a swatch and two lines per surface, in the built-in font.
+        String[] lines = {"cube: Catmull-Clark, level 2", "rendered as level 2", "small cube: Catmull-Clark, level 1", "rendered as adaptive (1 px edges)"};
+        int textWidth = Stream.of(lines).mapToInt(l -> BitmapFont.width(l, 1)).max().orElseThrow();
+        assertEquals(Math.max(64, 4 + 7 + 4 + textWidth + 4), img.getWidth(), "the panel widens for text longer than the picture");
+        assertEquals(48 + 4 + 2 * 20 + 4, img.getHeight());
         for (int i = 0; i < 2; i++) {
-            int top = 48 + 4 + 11 * i;
+            int top = 48 + 4 + 20 * i;
             assertEquals(IdentificationImage.colour(i), img.getRGB(4 + 3, top + 3) & 0xFFFFFF, "swatch " + i);
-            int[] expected = new int[img.getWidth() * 7];
+            int[] expected = new int[img.getWidth() * 16];
             java.util.Arrays.fill(expected, IdentificationImage.PANEL);
-            BitmapFont.draw(expected, img.getWidth(), 15, 0, lines[i], IdentificationImage.TEXT, 1);
-            for (int y = 0; y < 7; y++) {
+            BitmapFont.draw(expected, img.getWidth(), 15, 0, lines[2 * i], IdentificationImage.TEXT, 1);
+            BitmapFont.draw(expected, img.getWidth(), 15, 9, lines[2 * i + 1], IdentificationImage.TEXT, 1);
+            for (int y = 0; y < 16; y++) {
                 for (int x = 15; x < img.getWidth(); x++) {
-                    assertEquals(expected[y * img.getWidth() + x], img.getRGB(x, top + y) & 0xFFFFFF, "legend line " + i + " at " + x + "," + y);
+                    assertEquals(expected[y * img.getWidth() + x], img.getRGB(x, top + y) & 0xFFFFFF, "legend of surface " + i + " at " + x + "," + y);
                 }
             }
         }
