@@ -7,6 +7,7 @@ import java.util.Set;
 
 import lt.spindulys.image.AovFrame;
 import lt.spindulys.image.BitmapFont;
+import lt.spindulys.limits.MessageText;
 import lt.spindulys.plugin.DisplayedSurface;
 
 /**
@@ -92,7 +93,7 @@ record IdentificationImage(int width, int height, int[] rgb) {
         // Two lines a surface: what it is in the viewer, then how it was rendered.
         for (int i = 0; i < n; i++) {
             DisplayedSurface s = surfaces.get(i);
-            lines.add(SceneDescription.oneLine(s.name()) + ": " + s.subdivisionLabel() + (pixels[i] == 0 ? " (not visible)" : ""));
+            lines.add(MessageText.cut(SceneDescription.oneLine(s.name())) + ": " + s.subdivisionLabel() + (pixels[i] == 0 ? " (not visible)" : ""));
             lines.add("rendered as " + rendered.get(i));
         }
         // Larger text under larger pictures, where it fits; the panel widens only for text too long at the smallest size.

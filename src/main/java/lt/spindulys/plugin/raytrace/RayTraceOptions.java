@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 
+import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
 import lt.spindulys.plugin.DisplayedSurface;
@@ -94,7 +95,7 @@ final class RayTraceOptions {
         Set<String> names = new HashSet<>();
         for (int i = 0; i < surfaces.size(); i++) {
             DisplayedSurface s = surfaces.get(i);
-            String group = SceneDescription.oneLine(s.name());
+            String group = MessageText.cut(SceneDescription.oneLine(s.name()));
             if (!names.add(group)) group = group + " (surface " + i + ")";
             boolean subdivided = s.scheme() == DisplayedSurface.Scheme.CATMULL_CLARK;
             o.add(PluginOption.choice(surfaceKey(i, MATERIAL), "Material", group, "opaque", MATERIALS,
@@ -156,7 +157,7 @@ final class RayTraceOptions {
             SceneDescription.TextureSpec tex = null;
             if (!texture.isEmpty()) {
                 if (mapping.equals("uv") && s.control().uvs() == null) {
-                    throw new IllegalArgumentException(byKey.get(surfaceKey(i, MAPPING)).describe() + " is uv, but surface '" + name
+                    throw new IllegalArgumentException(byKey.get(surfaceKey(i, MAPPING)).describe() + " is uv, but surface '" + MessageText.cut(name)
                             + "' has no texture coordinates; choose planar, spherical or cylindrical");
                 }
                 tex = texture(Path.of(texture), mapping, Bounds.of(s.control()), f, right, worldUp);

@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Objects;
 
 import lt.spindulys.camera.PinholeCamera;
+import lt.spindulys.limits.MessageText;
 import lt.spindulys.material.Material;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
@@ -132,7 +133,7 @@ record SceneDescription(ImageSpec image, CameraSpec camera, List<LightSpec> ligh
                     t = new ImageTexture(textures.load(s.texture.image), Filter.BILINEAR, Wrap.REPEAT);
                 } catch (IOException | IllegalArgumentException e) {
                     throw new IllegalArgumentException(RayTraceOptions.describe(RayTraceOptions.surfaceKey(s.index, RayTraceOptions.TEXTURE))
-                            + " of surface '" + s.name + "' cannot be used: " + e.getMessage(), e);
+                            + " of surface '" + MessageText.cut(s.name) + "' cannot be used: " + e.getMessage(), e);
                 }
                 mb.texture(Channel.DIFFUSE, t, mapping(s.texture));
             }

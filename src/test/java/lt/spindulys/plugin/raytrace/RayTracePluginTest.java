@@ -175,6 +175,23 @@ class RayTracePluginTest {
     }
 
     @Test
+    void oddSurfaceNamesSurviveTheSavedSceneAndTheLegend() throws Exception {
+        String odd = "a \"quoted\" \\ name \u00e9\nsecond line " + "x".repeat(200);
+        List<DisplayedSurface> shown = List.of(new DisplayedSurface(odd, cube(), DisplayedSurface.Scheme.CATMULL_CLARK, 1));
+        Map<String, String> o = Map.of("width", "16", "height", "12", "samples", "1", "save-scene", "true", "identify", "true");
+        Path out = dir.resolve("odd.png");
+        PluginResult r = new RayTracePlugin().run(new PluginRequest(shown, view(), o, out, PluginProgress.NONE));
+        String text = Files.readString(dir.resolve("odd.dat"));
+        assertTrue(text.contains("name \"a \\\"quoted\\\" \\\\ name \u00e9 second line x"), text);
+        Path again = dir.resolve("odd-again.png");
+        RenderJob.of(dir.resolve("odd.dat")).output(again).run();
+        assertArrayEquals(Files.readAllBytes(out), Files.readAllBytes(again));
+        assertTrue(r.files().get(3).getFileName().toString().startsWith("odd.0-a__quoted___"), r.files().toString());
+        BufferedImage id = ImageIO.read(dir.resolve("odd.surfaces.png").toFile());
+        assertTrue(id.getWidth() < 16 + 6 * 80, "the legend shows a long name cut: " + id.getWidth());
+    }
+
+    @Test
     void everyFileExtensionIsWritten() throws Exception {
         for (String ext : List.of("jpg", "png", "tga")) {
             Path out = dir.resolve("out." + ext);
