@@ -122,12 +122,12 @@ public final class ImageWriter {
     public static void write(FrameBuffer fb, Path out, ImageOptions opts, AovFrame aovs) throws IOException {
         Objects.requireNonNull(fb, "fb");
         Objects.requireNonNull(opts, "opts");
-        AtomicFile.Body image = encoder(fb, out, opts);
+        IoConsumer<OutputStream> image = encoder(fb, out, opts);
         if (aovs != null && aovs.passes().contains(Aov.NORMAL)) checkFinite(aovs.width(), aovs.normalData(), 3);
         List<Path> files = new ArrayList<>();
         List<AtomicFile.Body> bodies = new ArrayList<>();
         files.add(out);
-        bodies.add(image);
+        bodies.add(image::accept);
         if (aovs != null) {
             for (Aov a : aovs.passes()) {
                 files.add(a.fileBeside(out));
@@ -148,8 +148,8 @@ public final class ImageWriter {
 
     /**
      * What writes {@code fb} in the format {@code out}'s extension names, for a caller that writes
-     * it together with other files in one {@link AtomicFile#writeAll} group (the output plugin
-     * writes its image, scene and meshes so). The checks of {@link #write(FrameBuffer, Path,
+     * it together with other files in one atomic group (the output plugin writes its image, scene
+     * and meshes so, as {@link #write(FrameBuffer, Path, ImageOptions, AovFrame)} writes passes). The checks of {@link #write(FrameBuffer, Path,
      * ImageOptions)} are made now, before anything is written.
      *
      * @param fb   the image
@@ -159,7 +159,7 @@ public final class ImageWriter {
      * @throws IllegalArgumentException if the extension names no format, or a TGA is too large
      * @throws NonFinitePixelException  if a pixel is NaN or infinite as a float
      */
-    public static AtomicFile.Body encoder(FrameBuffer fb, Path out, ImageOptions opts) {
+    public static IoConsumer<OutputStream> encoder(FrameBuffer fb, Path out, ImageOptions opts) {
         Objects.requireNonNull(fb, "fb");
         Objects.requireNonNull(opts, "opts");
         ImageFormat format = checkFormat(out);
@@ -179,14 +179,14 @@ public final class ImageWriter {
 
     /**
      * What writes 8-bit pixels as a PNG as they are (no encoding curve), for a picture made
-     * directly in 8 bits, such as a legend, written in an {@link AtomicFile#writeAll} group.
+     * directly in 8 bits, such as a legend, written in an atomic group.
      *
      * @param width  the width, at least 1
      * @param height the height, at least 1
      * @param rgb    {@code width * height} pixels 0xRRGGBB (higher bits ignored), rows from the top
      * @return the body that encodes the PNG into a stream
      */
-    public static AtomicFile.Body pngEncoder(int width, int height, int[] rgb) {
+    public static IoConsumer<OutputStream> pngEncoder(int width, int height, int[] rgb) {
         if (width < 1 || height < 1 || rgb.length != (long) width * height) {
             throw new IllegalArgumentException(rgb.length + " pixels do not make a " + width + "x" + height + " image");
         }

@@ -107,11 +107,11 @@ public final class RayTracePlugin implements OutputPlugin {
 
         progress.progress(0, "writing");
         List<AtomicFile.Body> bodies = new ArrayList<>();
-        bodies.add(ImageWriter.encoder(result.frame(), out, new ImageOptions(true, ImageOptions.DEFAULT.jpegQuality())));
+        bodies.add(ImageWriter.encoder(result.frame(), out, new ImageOptions(true, ImageOptions.DEFAULT.jpegQuality()))::accept);
         if (identification != null) {
             List<String> rendered = scene.surfaces().stream().map(SceneDescription.SurfaceSpec::renderedAs).toList();
             IdentificationImage id = IdentificationImage.of(result.passes().orElseThrow(), request.surfaces(), rendered);
-            bodies.add(ImageWriter.pngEncoder(id.width(), id.height(), id.rgb()));
+            bodies.add(ImageWriter.pngEncoder(id.width(), id.height(), id.rgb())::accept);
         }
         if (saved != null) bodies.addAll(saved.bodies(request.surfaces()));
         checkCancelled(progress);
