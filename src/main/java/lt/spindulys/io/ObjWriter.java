@@ -37,45 +37,113 @@ public final class ObjWriter {
      * @param comment a comment for the first lines (may hold several lines), or null
      */
     public static void write(RefinedMesh mesh, boolean limit, String comment, OutputStream out) throws IOException {
-        Writer w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), 1 << 16);
-        if (comment != null) {
-            for (String line : comment.split("\\R", -1)) w.write("# " + line + "\n");
+        ObjectFile file = new ObjectFile(out, comment);
+        file.add(null, mesh, limit, null);
+        file.finish();
+    }
+
+    /**
+     * Several refined meshes in one OBJ file, each an object ({@code o NAME}) with its own
+     * vertices, uvs, normals and faces, as {@link #write(RefinedMesh, boolean, String, OutputStream)}
+     * writes one: OBJ's indices count through the whole file, so each object's faces index past
+     * the elements of the objects before it. Meshes are added one at a time, so only the one being
+     * written need be in memory. (Subdivision tags cannot be given per object: they and the scheme
+     * options belong to the whole file; a control mesh with tags is written one per file by
+     * {@link ObjWriter#write(ControlMesh, String, String, OutputStream)}.)
+     */
+    public static final class ObjectFile {
+        private final Writer w;
+        private final StringBuilder line = new StringBuilder(64);
+        /** Elements written so far: the next object's indices start after them. */
+        private long vertices, uvs, normals;
+
+        /**
+         * Starts the file with a comment.
+         *
+         * @param out     the stream (flushed by {@link #finish()}, not closed)
+         * @param comment a comment for the first lines (may hold several lines), or null
+         * @throws IOException if writing fails
+         */
+        public ObjectFile(OutputStream out, String comment) throws IOException {
+            w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), 1 << 16);
+            header(w, comment, null);
         }
-        double[] p = limit ? mesh.limitPositions() : mesh.positions();
-        for (int i = 0; i < p.length; i += 3) triple(w, "v ", p, i);
-        double[] uvs = mesh.uvs();
-        int[] faceUvs = mesh.faceUvs();
-        boolean withUv = uvs != null && faceUvs != null;
-        if (withUv) {
-            for (int i = 0; i < uvs.length; i += 2) {
-                w.write("vt ");
-                w.write(number(uvs[i]));
-                w.write(' ');
-                w.write(number(uvs[i + 1]));
-                w.write('\n');
+
+        /**
+         * Writes one mesh as an object: {@code o NAME}, {@code v} (refined or limit positions),
+         * {@code vt} when the mesh has UVs, {@code vn} limit normals with {@code limit}, and one
+         * {@code f} per face that is not a hole.
+         *
+         * @param name     the object's name, or null for no {@code o} line
+         * @param mesh     the refined mesh
+         * @param limit    write the limit positions and limit normals instead of the refined positions
+         * @param progress told the fraction of this mesh written (0 to 1, every few thousand lines),
+         *                 may throw an unchecked exception (a cancellation) to stop; or null
+         * @throws IOException              if writing fails
+         * @throws IllegalArgumentException if a number is beyond {@link Ranges#MAX_NUMBER} (OBJ readers
+         *                                  here refuse it), naming the object and the vertex
+         */
+        public void add(String name, RefinedMesh mesh, boolean limit, DoubleConsumer progress) throws IOException {
+            double[] p = limit ? mesh.limitPositions() : mesh.positions();
+            String source = name != null ? name : mesh.controlMesh().source();
+            checkRange(p, "vertex", 3, source);
+            double[] uv = mesh.uvs();
+            int[] faceUvs = mesh.faceUvs();
+            boolean withUv = uv != null && faceUvs != null;
+            if (withUv) checkRange(uv, "uv", 2, source);
+            int[] sizes = mesh.faceSizes(), fv = mesh.faceVertices();
+            int nv = p.length / 3;
+            Lines lines = new Lines((limit ? 2L : 1L) * nv + (withUv ? uv.length / 2 : 0) + sizes.length, progress);
+            if (name != null) w.write("o " + objectName(name) + "\n");
+            for (int i = 0; i < p.length; i += 3) {
+                triple(w, "v ", p, i);
+                lines.done();
             }
-        }
-        if (limit) {
-            double[] n = mesh.limitNormals();
-            for (int i = 0; i < n.length; i += 3) triple(w, "vn ", n, i);
-        }
-        int[] sizes = mesh.faceSizes(), fv = mesh.faceVertices();
-        StringBuilder line = new StringBuilder(64);
-        for (int f = 0, c = 0; f < sizes.length; c += sizes[f], f++) {
-            if (mesh.isHole(f)) continue;
-            line.setLength(0);
-            line.append('f');
-            for (int j = 0; j < sizes[f]; j++) {
-                int v = fv[c + j] + 1;
-                line.append(' ').append(v);
-                // Normals are per vertex, so a vertex's normal has the vertex's own index.
-                if (withUv) line.append('/').append(faceUvs[c + j] + 1);
-                if (limit) line.append(withUv ? "/" : "//").append(v);
+            if (withUv) {
+                for (int i = 0; i < uv.length; i += 2) {
+                    pair(w, uv, i);
+                    lines.done();
+                }
             }
-            line.append('\n');
-            w.append(line);
+            if (limit) {
+                double[] n = mesh.limitNormals();
+                for (int i = 0; i < n.length; i += 3) {
+                    triple(w, "vn ", n, i);
+                    lines.done();
+                }
+            }
+            long vBase = vertices + 1, tBase = uvs + 1, nBase = normals + 1;
+            for (int f = 0, c = 0; f < sizes.length; c += sizes[f], f++) {
+                if (mesh.isHole(f)) {
+                    lines.done();
+                    continue;
+                }
+                line.setLength(0);
+                line.append('f');
+                for (int j = 0; j < sizes[f]; j++) {
+                    line.append(' ').append(fv[c + j] + vBase);
+                    // Normals are per vertex, so a vertex's normal has the vertex's own index in this object.
+                    if (withUv) line.append('/').append(faceUvs[c + j] + tBase);
+                    if (limit) line.append(withUv ? "/" : "//").append(fv[c + j] + nBase);
+                }
+                line.append('\n');
+                w.append(line);
+                lines.done();
+            }
+            vertices += nv;
+            if (withUv) uvs += uv.length / 2;
+            if (limit) normals += nv;
+            lines.finish();
         }
-        w.flush();
+
+        /**
+         * Flushes what was written.
+         *
+         * @throws IOException if writing fails
+         */
+        public void finish() throws IOException {
+            w.flush();
+        }
     }
 
     /**
