@@ -12,6 +12,7 @@ import java.util.concurrent.CancellationException;
 
 import lt.spindulys.files.AtomicFile;
 import lt.spindulys.image.Aov;
+import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.image.ImageOptions;
 import lt.spindulys.image.ImageWriter;
 import lt.spindulys.plugin.DisplayedSurface;
@@ -88,8 +89,14 @@ public final class RayTracePlugin implements OutputPlugin {
         ImageWriter.checkOutput(out);
         for (Path f : files.subList(1, files.size())) AtomicFile.checkWritable(f);
 
-        TextureCache textures = new TextureCache();
         int w = scene.image().width(), h = scene.image().height();
+        try {
+            // Checked here too (RenderJob checks it again) so that the message names the options.
+            FrameBuffer.checkHeap(w, h, identification != null ? EnumSet.of(Aov.OBJECT) : EnumSet.noneOf(Aov.class));
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("Image width (width) and height (height): " + e.getMessage(), e);
+        }
+        TextureCache textures = new TextureCache();
         // A coarse preview first: a quarter of the size, one sample, from a scene of its own so
         // that nothing refined for it is shared with the full render.
         checkCancelled(progress);

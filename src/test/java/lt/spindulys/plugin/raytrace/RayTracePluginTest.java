@@ -111,6 +111,7 @@ class RayTracePluginTest {
     void serviceLoaderFindsThePlugin() {
         List<OutputPlugin> all = OutputPlugins.available();
         assertTrue(all.stream().anyMatch(p -> p instanceof RayTracePlugin), "found: " + all);
+        assertEquals(Set.of("obj", "raytrace"), new HashSet<>(all.stream().map(OutputPlugin::id).toList()), "both of the library's plugins");
         OutputPlugin p = OutputPlugins.find("raytrace").orElseThrow();
         assertEquals("Ray tracer", p.name());
         assertEquals(List.of("jpg", "png", "tga"), p.fileExtensions());
@@ -370,9 +371,14 @@ class RayTracePluginTest {
             assertTrue(e.getMessage().startsWith(c.getValue()), e.getMessage());
             assertFalse(e.getMessage().contains("\n"), e.getMessage());
         }
+        Map<String, String> huge = new HashMap<>(handOptions());
+        huge.put("width", "32768");
+        huge.put("height", "32768");
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> run(huge, out, PluginProgress.NONE));
+        assertTrue(e.getMessage().startsWith("Image width (width) and height (height): the 32768x32768 frame needs "), e.getMessage());
         Map<String, String> unknown = new HashMap<>(handOptions());
         unknown.put("surface.0.colour", "1 0 0");
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> run(unknown, out, PluginProgress.NONE));
+        e = assertThrows(IllegalArgumentException.class, () -> run(unknown, out, PluginProgress.NONE));
         assertTrue(e.getMessage().startsWith("unknown option 'surface.0.colour'"), e.getMessage());
         // A texture that is not an image, and uv mapping on a surface without texture coordinates.
         Path notImage = Files.writeString(dir.resolve("notes.png"), "not a picture");
