@@ -348,6 +348,32 @@ class RayTracePluginTest {
         assertFalse(flat.isSmooth());
     }
 
+    @Test
+    void aHostLevelTooLargeToRefineWholeIsRenderedByTheCombinedMethodAtThatLevel() {
+        // A 32 x 32 grid of quads at level 8: 4096 corners, 4096 * 4^7 = 67 million faces, past SubdivisionSurface.MAX_FACES.
+        int n = 32;
+        double[] p = new double[3 * (n + 1) * (n + 1)];
+        for (int j = 0, k = 0; j <= n; j++) for (int i = 0; i <= n; i++) { p[k++] = i; p[k++] = 0; p[k++] = j; }
+        int[] sizes = new int[n * n], corners = new int[4 * n * n];
+        for (int j = 0, f = 0; j < n; j++) {
+            for (int i = 0; i < n; i++, f++) {
+                sizes[f] = 4;
+                int a = j * (n + 1) + i;
+                corners[4 * f] = a;
+                corners[4 * f + 1] = a + n + 1;
+                corners[4 * f + 2] = a + n + 2;
+                corners[4 * f + 3] = a + 1;
+            }
+        }
+        ControlMesh grid = ControlMesh.builder(p, sizes, corners).build();
+        List<DisplayedSurface> shown = List.of(new DisplayedSurface("grid", grid, DisplayedSurface.Scheme.CATMULL_CLARK, 8));
+        SceneDescription d = RayTraceOptions.resolve(shown, view(), Map.of("surface.0.rendering", "host-level")).scene();
+        assertEquals("level 8 (combined method: too large to refine whole)", d.surfaces().get(0).renderedAs());
+        AdaptiveSubdivisionSurface s = assertInstanceOf(AdaptiveSubdivisionSurface.class, d.toBuilder(new TextureCache()).objects().get(0));
+        assertEquals(8, s.fixedLevel());
+        assertTrue(d.toText(List.of("grid.obj"), dir, "test").contains("subdiv { file \"grid.obj\"  method combined  level 8\n"));
+    }
+
     private static SceneBuilder builder(Map<String, String> values) {
         return RayTraceOptions.resolve(surfaces(), view(), values).scene().toBuilder(new TextureCache());
     }
