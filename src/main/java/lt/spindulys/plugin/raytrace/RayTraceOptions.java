@@ -43,9 +43,8 @@ final class RayTraceOptions {
     /** Target edge length in pixels of the adaptive rendering (the thesis's one pixel). */
     static final double ADAPTIVE_TARGET = 1;
     /**
-     * Target of the limit rendering: half a pixel, so the refined surface is within a fraction
-     * of a pixel of the limit everywhere. Used until uniform refinement can place its vertices at
-     * their limit positions.
+     * Target of the limit rendering of a surface too large to refine uniformly: half a pixel, so
+     * the refined surface is within a fraction of a pixel of the limit everywhere.
      */
     static final double LIMIT_TARGET = 0.5;
 
@@ -176,26 +175,49 @@ final class RayTraceOptions {
     private static SceneDescription.SurfaceSpec surface(int i, String name, DisplayedSurface s, String rendering, boolean smooth,
                                                         SceneDescription.MaterialSpec m, SceneDescription.TextureSpec tex) {
         ControlMesh c = s.control();
+        boolean shownRefined = s.scheme() == DisplayedSurface.Scheme.CATMULL_CLARK;
         return switch (rendering) {
-            case "limit" -> new SceneDescription.SurfaceSpec(i, name, c, SceneDescription.Method.COMBINED, -1, LIMIT_TARGET, smooth, m, tex,
-                    "limit surface (adaptive, " + LIMIT_TARGET + " px edges)");
-            case "adaptive" -> new SceneDescription.SurfaceSpec(i, name, c, SceneDescription.Method.COMBINED, -1, ADAPTIVE_TARGET, smooth, m, tex,
+            case "limit" -> {
+                // The host's level with every vertex on the limit surface; a surface the host shows
+                // unrefined gets a few levels, else its "limit" would be its own cage shrunk.
+                int level = shownRefined ? s.level() : LIMIT_LEVEL_OF_A_POLYHEDRON;
+                if (fits(c, level, SubdivisionSurface.BYTES_PER_FACE + SubdivisionSurface.LIMIT_POSITION_BYTES_PER_FACE)) {
+                    yield new SceneDescription.SurfaceSpec(i, name, c, SceneDescription.Method.UNIFORM, level, Double.NaN, true, smooth, m, tex,
+                            "limit surface (level " + level + ", vertices at their limit positions)");
+                }
+                // Limit positions need uniform refinement; too large for it, the surface is refined
+                // adaptively to half-pixel edges instead, which the eye cannot tell from the limit.
+                yield new SceneDescription.SurfaceSpec(i, name, c, SceneDescription.Method.COMBINED, -1, LIMIT_TARGET, false, smooth, m, tex,
+                        "limit surface (adaptive, " + LIMIT_TARGET + " px edges: level " + level + " is too large to refine whole)");
+            }
+            case "adaptive" -> new SceneDescription.SurfaceSpec(i, name, c, SceneDescription.Method.COMBINED, -1, ADAPTIVE_TARGET, false, smooth, m, tex,
                     "adaptive (" + (int) ADAPTIVE_TARGET + " px edges)");
             case "host-level" -> {
-                int level = s.scheme() == DisplayedSurface.Scheme.NONE ? 0 : s.level();
+                int level = shownRefined ? s.level() : 0;
                 String what = level == 0 ? "control mesh" : "level " + level;
-                try {
-                    SubdivisionSurface.checkLevel(level, refinedFaces(c, level));
-                    yield new SceneDescription.SurfaceSpec(i, name, c, SceneDescription.Method.UNIFORM, level, Double.NaN, smooth, m, tex, what);
-                } catch (IllegalArgumentException tooLarge) {
-                    // As the scene parser does: a level too large to refine whole is rendered by the
-                    // combined method at the same level, the same triangles within the memory budget.
-                    yield new SceneDescription.SurfaceSpec(i, name, c, SceneDescription.Method.COMBINED, level, Double.NaN, smooth, m, tex,
-                            what + " (combined method: too large to refine whole)");
+                if (fits(c, level, SubdivisionSurface.BYTES_PER_FACE)) {
+                    yield new SceneDescription.SurfaceSpec(i, name, c, SceneDescription.Method.UNIFORM, level, Double.NaN, false, smooth, m, tex, what);
                 }
+                // As the scene parser does: a level too large to refine whole is rendered by the
+                // combined method at the same level, the same triangles within the memory budget.
+                yield new SceneDescription.SurfaceSpec(i, name, c, SceneDescription.Method.COMBINED, level, Double.NaN, false, smooth, m, tex,
+                        what + " (combined method: too large to refine whole)");
             }
             default -> throw new IllegalStateException("rendering without a method: " + rendering);
         };
+    }
+
+    /** Levels of the limit rendering of a surface the host shows without subdivision. */
+    static final int LIMIT_LEVEL_OF_A_POLYHEDRON = 3;
+
+    /** Whether uniform refinement to {@code level} fits the face limit and the heap. */
+    private static boolean fits(ControlMesh c, int level, long bytesPerFace) {
+        try {
+            SubdivisionSurface.checkLevel(level, refinedFaces(c, level), bytesPerFace);
+            return true;
+        } catch (IllegalArgumentException tooLarge) {
+            return false;
+        }
     }
 
     /** Faces after {@code level} uniform refinements (as SubdivInput counts them), saturating far past any limit. */

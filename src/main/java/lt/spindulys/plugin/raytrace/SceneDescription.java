@@ -91,12 +91,13 @@ record SceneDescription(ImageSpec image, CameraSpec camera, List<LightSpec> ligh
      * @param method     uniform or combined
      * @param level      the uniform (or fixed adaptive) level, or -1 to choose from the view
      * @param target     the adaptive target edge length in pixels, or NaN when a level is fixed
+     * @param limitPositions with the uniform method: the refined vertices at their limit positions
      * @param smooth     limit normals interpolated, or flat facets
      * @param material   its material
      * @param texture    its texture, or null
      * @param renderedAs how it was rendered, for legends ("limit surface (adaptive, 0.5 px edges)")
      */
-    record SurfaceSpec(int index, String name, ControlMesh control, Method method, int level, double target, boolean smooth,
+    record SurfaceSpec(int index, String name, ControlMesh control, Method method, int level, double target, boolean limitPositions, boolean smooth,
                        MaterialSpec material, TextureSpec texture, String renderedAs) {}
 
     /** The render settings the description gives. */
@@ -119,7 +120,8 @@ record SceneDescription(ImageSpec image, CameraSpec camera, List<LightSpec> ligh
         for (SurfaceSpec s : surfaces) {
             GObject o;
             if (s.method == Method.UNIFORM) {
-                o = new SubdivisionSurface(s.control, s.level, s.smooth);
+                o = new SubdivisionSurface(s.control, s.level, s.smooth,
+                        s.limitPositions ? SubdivisionSurface.Positions.LIMIT : SubdivisionSurface.Positions.REFINED);
             } else {
                 AdaptiveSubdivisionSurface a = new AdaptiveSubdivisionSurface(s.control, AdaptiveSubdivisionSurface.Method.COMBINED, s.smooth);
                 a.level(s.level);
@@ -200,6 +202,7 @@ record SceneDescription(ImageSpec image, CameraSpec camera, List<LightSpec> ligh
             t.append("subdiv { file ").append(string(meshFiles.get(i)));
             if (s.method == Method.UNIFORM) {
                 t.append("  level ").append(s.level);
+                if (s.limitPositions) t.append("  positions limit");
             } else {
                 t.append("  method combined");
                 if (s.level >= 0) t.append("  level ").append(s.level);

@@ -171,6 +171,7 @@ class RayTracePluginTest {
         Path limitOut = dir.resolve("limit.png");
         run(limit, limitOut, PluginProgress.NONE);
         Path limitAgain = dir.resolve("limit-again.png");
+        assertTrue(Files.readString(dir.resolve("limit.dat")).contains("subdiv { file \"limit.0-cube.obj\"  level 2  positions limit"));
         RenderJob.of(dir.resolve("limit.dat")).output(limitAgain).run();
         assertArrayEquals(Files.readAllBytes(limitOut), Files.readAllBytes(limitAgain));
     }
@@ -338,14 +339,22 @@ class RayTracePluginTest {
         assertEquals(1.0, adaptive.target());
         assertEquals(-1, adaptive.fixedLevel());
         assertTrue(adaptive.isSmooth());
-        AdaptiveSubdivisionSurface limit = assertInstanceOf(AdaptiveSubdivisionSurface.class, builder(Map.of("surface.0.rendering", "limit")).objects().get(0));
-        assertEquals(0.5, limit.target());
+        // The limit surface: the host's level with the vertices at their limit positions.
+        SubdivisionSurface limit = assertInstanceOf(SubdivisionSurface.class, builder(Map.of("surface.0.rendering", "limit")).objects().get(0));
+        assertEquals(2, limit.level());
+        assertEquals(SubdivisionSurface.Positions.LIMIT, limit.positions());
+        assertEquals(SubdivisionSurface.Positions.REFINED, host.positions());
         // A polyhedron at the host's level is its control mesh.
         List<DisplayedSurface> cage = List.of(new DisplayedSurface("cage", cube(), DisplayedSurface.Scheme.NONE, 0));
         SubdivisionSurface flat = assertInstanceOf(SubdivisionSurface.class,
                 RayTraceOptions.resolve(cage, view(), Map.of()).scene().toBuilder(new TextureCache()).objects().get(0));
         assertEquals(0, flat.level());
         assertFalse(flat.isSmooth());
+        // Its limit surface is refined a few levels: at level 0 it would be the cage shrunk.
+        SubdivisionSurface cageLimit = assertInstanceOf(SubdivisionSurface.class,
+                RayTraceOptions.resolve(cage, view(), Map.of("surface.0.rendering", "limit")).scene().toBuilder(new TextureCache()).objects().get(0));
+        assertEquals(RayTraceOptions.LIMIT_LEVEL_OF_A_POLYHEDRON, cageLimit.level());
+        assertEquals(SubdivisionSurface.Positions.LIMIT, cageLimit.positions());
     }
 
     @Test
@@ -372,6 +381,12 @@ class RayTracePluginTest {
         AdaptiveSubdivisionSurface s = assertInstanceOf(AdaptiveSubdivisionSurface.class, d.toBuilder(new TextureCache()).objects().get(0));
         assertEquals(8, s.fixedLevel());
         assertTrue(d.toText(List.of("grid.obj"), dir, "test").contains("subdiv { file \"grid.obj\"  method combined  level 8\n"));
+        // Limit positions need uniform refinement: too large for it, the limit is approximated to half-pixel edges.
+        SceneDescription limit = RayTraceOptions.resolve(shown, view(), Map.of("surface.0.rendering", "limit")).scene();
+        assertEquals("limit surface (adaptive, 0.5 px edges: level 8 is too large to refine whole)", limit.surfaces().get(0).renderedAs());
+        AdaptiveSubdivisionSurface a = assertInstanceOf(AdaptiveSubdivisionSurface.class, limit.toBuilder(new TextureCache()).objects().get(0));
+        assertEquals(0.5, a.target());
+        assertEquals(-1, a.fixedLevel());
     }
 
     private static SceneBuilder builder(Map<String, String> values) {
