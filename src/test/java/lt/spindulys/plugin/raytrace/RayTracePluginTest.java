@@ -437,6 +437,20 @@ class RayTracePluginTest {
     }
 
     @Test
+    void anUnwritableOutputFailsBeforeRendering() {
+        Map<String, String> o = new HashMap<>(handOptions());
+        o.put("save-scene", "true");
+        int[] reports = {0};
+        PluginProgress counting = new PluginProgress() {
+            @Override public void progress(double fraction, String stage) { reports[0]++; }
+            @Override public boolean isCancelled() { return false; }
+        };
+        IOException e = assertThrows(IOException.class, () -> run(o, dir.resolve("missing").resolve("out.jpg"), counting));
+        assertTrue(e.getMessage().contains("missing"), e.getMessage());
+        assertEquals(0, reports[0], "nothing rendered");
+    }
+
+    @Test
     void aCancelledRenderWritesNothingAndKeepsAnExistingFile() throws Exception {
         for (int cancelAfter : new int[] {0, 1, 3}) {
             Path out = Files.writeString(dir.resolve("keep" + cancelAfter + ".png"), "old content");
