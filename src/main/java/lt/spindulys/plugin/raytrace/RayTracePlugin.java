@@ -38,8 +38,9 @@ import lt.spindulys.texture.TextureCache;
  * identifies each surface by colour with a legend. The options are listed in docs/plugins.md.
  *
  * <p>A run renders a quarter-size preview with one sample first and hands it to
- * {@link PluginProgress#preview}, then the full picture; all files are written together and
- * atomically at the end, so a cancelled or failed run writes nothing.
+ * {@link PluginProgress#preview}, then the full picture, previewed as its tiles finish (over the
+ * coarse preview, at most four times a second); all files are written together and atomically
+ * at the end, so a cancelled or failed run writes nothing.
  */
 public final class RayTracePlugin implements OutputPlugin {
     /** The plugin's identifier. */
@@ -48,8 +49,20 @@ public final class RayTracePlugin implements OutputPlugin {
     /** The files a run writes beside its main output: the identification picture's suffix. */
     public static final String IDENTIFICATION_SUFFIX = ".surfaces.png";
 
+    /** Least time between two previews of the picture as its tiles finish. */
+    static final long PREVIEW_INTERVAL_NANOS = 250_000_000L;
+
+    private final long previewIntervalNanos;
+
     /** A plugin; it keeps no state between runs. */
-    public RayTracePlugin() {}
+    public RayTracePlugin() {
+        this(PREVIEW_INTERVAL_NANOS);
+    }
+
+    /** A plugin that previews the picture as often as this (tests: 0, at every tile). */
+    RayTracePlugin(long previewIntervalNanos) {
+        this.previewIntervalNanos = previewIntervalNanos;
+    }
 
     @Override public String id() { return ID; }
 
@@ -103,10 +116,12 @@ public final class RayTracePlugin implements OutputPlugin {
         int pw = Math.max(1, w / 4), ph = Math.max(1, h / 4);
         RenderJob previewJob = RenderJob.of(scene.toBuilder(textures)).settings(s -> s.toBuilder().size(pw, ph).samplesPerPixel(1).build());
         RenderResult preview = render(previewJob, progress, "rendering the preview");
-        progress.preview(pw, ph, argb(preview.image()), false);
+        int[] coarse = argb(preview.image());
+        progress.preview(pw, ph, coarse, false);
 
         checkCancelled(progress);
-        RenderJob job = RenderJob.of(scene.toBuilder(textures));
+        RenderJob job = RenderJob.of(scene.toBuilder(textures))
+                .tiles(new TilePreview(w, h, coarse, pw, ph, progress, previewIntervalNanos));
         // The object pass is one more ray per pixel and leaves the picture as it is.
         if (identification != null) job.settings(s -> s.toBuilder().aovs(EnumSet.of(Aov.OBJECT)).build());
         RenderResult result = render(job, progress, "rendering");

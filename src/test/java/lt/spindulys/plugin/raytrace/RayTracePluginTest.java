@@ -486,14 +486,37 @@ class RayTracePluginTest {
             }
         };
         Path out = dir.resolve("p.png");
-        run(handOptions(), out, p);
-        assertEquals(List.of(false, true), last);
+        // Previews at every tile: the coarse one, one per tile of the 64 x 48 picture (16-pixel tiles), the final picture.
+        new RayTracePlugin(0).run(new PluginRequest(surfaces(), view(), handOptions(), out, p));
+        assertEquals(1 + 4 * 3 + 1, last.size());
         assertArrayEquals(new int[] {16, 12}, sizes.get(0));
-        assertArrayEquals(new int[] {64, 48}, sizes.get(1));
+        for (int i = 1; i < sizes.size(); i++) {
+            assertArrayEquals(new int[] {64, 48}, sizes.get(i));
+            assertEquals(i == sizes.size() - 1, last.get(i));
+        }
         BufferedImage written = ImageIO.read(out.toFile());
-        assertArrayEquals(written.getRGB(0, 0, 64, 48, null, 0, 64), pixels.get(1), "the final preview is the written picture");
+        int[] picture = written.getRGB(0, 0, 64, 48, null, 0, 64);
+        assertArrayEquals(picture, pixels.get(pixels.size() - 1), "the final preview is the written picture");
+        assertArrayEquals(picture, pixels.get(pixels.size() - 2), "the last tile completes it");
+        // The first tile preview is the coarse preview scaled up, but for one tile of the picture (where they differ).
+        int[] first = pixels.get(1), coarse = pixels.get(0);
+        int differ = 0;
+        for (int y = 0; y < 48; y++) {
+            for (int x = 0; x < 64; x++) {
+                if (first[y * 64 + x] != coarse[(y / 4) * 16 + x / 4]) {
+                    differ++;
+                    assertEquals(picture[y * 64 + x], first[y * 64 + x]);
+                }
+            }
+        }
+        assertTrue(differ <= 16 * 16, differ + " pixels, at most one tile");
         assertTrue(fractions.contains(1.0));
         for (double f : fractions) assertTrue(f >= 0 && f <= 1, "fraction " + f);
+        // At the default pace a small picture goes straight from the coarse preview to the final one.
+        last.clear();
+        run(handOptions(), dir.resolve("q.png"), p);
+        assertEquals(Boolean.FALSE, last.get(0));
+        assertEquals(Boolean.TRUE, last.get(last.size() - 1));
     }
 
     @Test
