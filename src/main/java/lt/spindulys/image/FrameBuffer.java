@@ -192,7 +192,16 @@ public final class FrameBuffer {
         return fb;
     }
 
-    private static int to8(double v, boolean srgb) {
+    /**
+     * One channel as {@link #toRgb8} converts it: clamped to [0, 1] (NaN counts as 0), encoded
+     * with the sRGB curve if {@code srgb}, scaled by 255 and rounded to nearest; for code that
+     * converts part of a frame, such as a tile just rendered.
+     *
+     * @param v    a linear value
+     * @param srgb whether to encode with the sRGB curve (else linear)
+     * @return 0 to 255
+     */
+    public static int to8(double v, boolean srgb) {
         // The negated comparison also catches NaN.
         if (!(v > 0)) return 0;
         if (v >= 1) return 255;

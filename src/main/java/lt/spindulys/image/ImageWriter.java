@@ -122,24 +122,12 @@ public final class ImageWriter {
     public static void write(FrameBuffer fb, Path out, ImageOptions opts, AovFrame aovs) throws IOException {
         Objects.requireNonNull(fb, "fb");
         Objects.requireNonNull(opts, "opts");
-        ImageFormat format = checkFormat(out);
-        // The last line of defence: the scene's ranges keep pixels finite, so one that is not is a bug.
-        checkFinite(fb.width(), fb.data(), 3);
+        IoConsumer<OutputStream> image = encoder(fb, out, opts);
         if (aovs != null && aovs.passes().contains(Aov.NORMAL)) checkFinite(aovs.width(), aovs.normalData(), 3);
-        if (format == ImageFormat.TGA && (fb.width() > 0xFFFF || fb.height() > 0xFFFF)) {
-            throw new IllegalArgumentException("TGA images are at most 65535x65535 pixels, got "
-                    + fb.width() + "x" + fb.height());
-        }
         List<Path> files = new ArrayList<>();
         List<AtomicFile.Body> bodies = new ArrayList<>();
         files.add(out);
-        switch (format) {
-            case TGA: bodies.add(os -> writeTga(fb, opts.srgb(), os)); break;
-            case PNG: bodies.add(os -> writeImageIo(fb.width(), fb.height(), fb.toRgb8(opts.srgb()), opts, "png", os)); break;
-            case JPEG: bodies.add(os -> writeImageIo(fb.width(), fb.height(), fb.toRgb8(opts.srgb()), opts, "jpeg", os)); break;
-            case PFM: bodies.add(os -> writePfm(fb, os)); break;
-            default: throw new AssertionError(format);
-        }
+        bodies.add(image::accept);
         if (aovs != null) {
             for (Aov a : aovs.passes()) {
                 files.add(a.fileBeside(out));
@@ -156,6 +144,53 @@ public final class ImageWriter {
             }
         }
         AtomicFile.writeAll(files, bodies);
+    }
+
+    /**
+     * What writes {@code fb} in the format {@code out}'s extension names, for a caller that writes
+     * it together with other files in one atomic group (the output plugin writes its image, scene
+     * and meshes so, as {@link #write(FrameBuffer, Path, ImageOptions, AovFrame)} writes passes). The checks of {@link #write(FrameBuffer, Path,
+     * ImageOptions)} are made now, before anything is written.
+     *
+     * @param fb   the image
+     * @param out  the output path; its extension names the format
+     * @param opts the encoding options
+     * @return the body that encodes the image into a stream
+     * @throws IllegalArgumentException if the extension names no format, or a TGA is too large
+     * @throws NonFinitePixelException  if a pixel is NaN or infinite as a float
+     */
+    public static IoConsumer<OutputStream> encoder(FrameBuffer fb, Path out, ImageOptions opts) {
+        Objects.requireNonNull(fb, "fb");
+        Objects.requireNonNull(opts, "opts");
+        ImageFormat format = checkFormat(out);
+        // The last line of defence: the scene's ranges keep pixels finite, so one that is not is a bug.
+        checkFinite(fb.width(), fb.data(), 3);
+        if (format == ImageFormat.TGA && (fb.width() > 0xFFFF || fb.height() > 0xFFFF)) {
+            throw new IllegalArgumentException("TGA images are at most 65535x65535 pixels, got "
+                    + fb.width() + "x" + fb.height());
+        }
+        return switch (format) {
+            case TGA -> os -> writeTga(fb, opts.srgb(), os);
+            case PNG -> os -> writeImageIo(fb.width(), fb.height(), fb.toRgb8(opts.srgb()), opts, "png", os);
+            case JPEG -> os -> writeImageIo(fb.width(), fb.height(), fb.toRgb8(opts.srgb()), opts, "jpeg", os);
+            case PFM -> os -> writePfm(fb, os);
+        };
+    }
+
+    /**
+     * What writes 8-bit pixels as a PNG as they are (no encoding curve), for a picture made
+     * directly in 8 bits, such as a legend, written in an atomic group.
+     *
+     * @param width  the width, at least 1
+     * @param height the height, at least 1
+     * @param rgb    {@code width * height} pixels 0xRRGGBB (higher bits ignored), rows from the top
+     * @return the body that encodes the PNG into a stream
+     */
+    public static IoConsumer<OutputStream> pngEncoder(int width, int height, int[] rgb) {
+        if (width < 1 || height < 1 || rgb.length != (long) width * height) {
+            throw new IllegalArgumentException(rgb.length + " pixels do not make a " + width + "x" + height + " image");
+        }
+        return os -> writeImageIo(width, height, rgb, ImageOptions.DEFAULT, "png", os);
     }
 
     /**

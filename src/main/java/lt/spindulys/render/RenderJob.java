@@ -70,6 +70,7 @@ public final class RenderJob {
     private double jpegQuality = ImageOptions.DEFAULT.jpegQuality();
     private int threads = Runtime.getRuntime().availableProcessors();
     private ProgressListener progress;
+    private TileListener tiles;
     private final AtomicBoolean cancelled = new AtomicBoolean();
     private final AtomicBoolean started = new AtomicBoolean();
     private volatile Stage stage = Stage.READY;
@@ -201,6 +202,18 @@ public final class RenderJob {
         return this;
     }
 
+    /**
+     * Sets who is shown each finished tile, for a picture that fills in as the render goes.
+     *
+     * @param listener called from render threads as tiles finish; null: nobody
+     * @return this job
+     */
+    public RenderJob tiles(TileListener listener) {
+        configurable(false);
+        tiles = listener;
+        return this;
+    }
+
     /** Asks the job to stop: a running render stops between tiles, and the run throws {@link CancellationException}. */
     public void cancel() { cancelled.set(true); }
 
@@ -290,7 +303,7 @@ public final class RenderJob {
             if (output != null) ImageWriter.checkPassOutputs(output, s.aovs()); // the image itself was checked first
         }
         enter(Stage.RENDER);
-        RenderResult result = Renderer.render(built, threads, progress, cancelled).withTimes(load, build);
+        RenderResult result = Renderer.render(built, threads, progress, cancelled, tiles).withTimes(load, build);
         if (output != null) {
             enter(Stage.WRITE);
             result.write(output, jpegQuality);

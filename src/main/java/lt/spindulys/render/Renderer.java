@@ -113,6 +113,11 @@ public final class Renderer {
      * never).
      */
     static RenderResult render(Scene scene, int threads, ProgressListener listener, AtomicBoolean cancelled) throws InterruptedException {
+        return render(scene, threads, listener, cancelled, null);
+    }
+
+    /** {@link #render(Scene, int, ProgressListener, AtomicBoolean)}, telling {@code tileListener} (null: nobody) of each finished tile. */
+    static RenderResult render(Scene scene, int threads, ProgressListener listener, AtomicBoolean cancelled, TileListener tileListener) throws InterruptedException {
         ProgressListener progress = listener != null ? listener : ProgressListener.NONE;
         if (threads < 1) throw new IllegalArgumentException("threads must be at least 1, found " + threads);
         RenderSettings st = scene.settings();
@@ -131,7 +136,8 @@ public final class Renderer {
                     : new Pass(st.samplesPerPixel() / steps, passSeed(st.seed(), k), st.shutterTime((k + 0.5) / steps), k > 0, k == steps - 1 ? steps : 1);
             long done = (long) k * w * h, total = (long) steps * w * h;
             ProgressListener p = (pixels, all) -> progress.progress(done + pixels, total);
-            long[] c = renderPass(scene, threads, p, integrator, fb, k == 0 ? aovs : null, pass, tilesX, tiles, cancelled);
+            long[] c = renderPass(scene, threads, p, integrator, fb, k == 0 ? aovs : null, pass, tilesX, tiles, cancelled,
+                    k == steps - 1 ? tileListener : null);
             for (int i = 0; i < 4; i++) sum[i] += c[i];
         }
         double seconds = (System.nanoTime() - start) / 1e9;
@@ -156,7 +162,8 @@ public final class Renderer {
 
     /** Renders one pass on {@code threads} threads; returns its ray counts (camera, shadow, reflection, refraction). */
     private static long[] renderPass(Scene scene, int threads, ProgressListener progress, WhittedIntegrator integrator, FrameBuffer fb,
-                                     AovFrame aovs, Pass pass, int tilesX, int tiles, AtomicBoolean cancelled) throws InterruptedException {
+                                     AovFrame aovs, Pass pass, int tilesX, int tiles, AtomicBoolean cancelled, TileListener tileListener)
+            throws InterruptedException {
         RenderSettings st = scene.settings();
         int w = st.width(), h = st.height();
         // Tiles spread over the frame keep the time estimate steady; but a scene that refines
@@ -183,6 +190,7 @@ public final class Renderer {
                         int x0 = (t % tilesX) * TILE, y0 = (t / tilesX) * TILE;
                         int x1 = Math.min(x0 + TILE, w), y1 = Math.min(y0 + TILE, h);
                         renderTile(scene.camera(), integrator, st, pass, sampler, scratch, ray, colour, fb, aovs, x0, y0, x1, y1);
+                        if (tileListener != null) tileListener.tileDone(fb, x0, y0, x1, y1);
                         progress.progress(donePixels.addAndGet((long) (x1 - x0) * (y1 - y0)), (long) w * h);
                     }
                 } catch (Throwable e) {

@@ -74,7 +74,7 @@ public final class MeshLoader {
     }
 
     /**
-     * The mesh with the (u, v) of a {@code .tex} unwrap on its corners.
+     * The mesh with the texture coordinates of a {@code .tex} unwrap (either form).
      *
      * @param in the mesh
      * @param tex the unwrap
