@@ -36,6 +36,7 @@ import javax.swing.JSpinner;
 import javax.swing.JTextField;
 import javax.swing.KeyStroke;
 import javax.swing.SpinnerNumberModel;
+import javax.swing.SwingUtilities;
 import javax.swing.event.DocumentEvent;
 import javax.swing.event.DocumentListener;
 import javax.swing.filechooser.FileNameExtensionFilter;
@@ -56,6 +57,7 @@ public final class PluginDialog extends JDialog {
     private final JButton ok = new JButton("OK");
     private final JTextField output;
     private PluginForm.Accepted accepted;
+    private boolean refreshPending;
 
     /**
      * Builds the dialog over a form; {@link #ask()} shows it.
@@ -122,10 +124,11 @@ public final class PluginDialog extends JDialog {
             @Override public void actionPerformed(ActionEvent e) { dispose(); }
         });
         refresh();
-        pack();
         // A plugin with many surfaces asks many questions: keep the dialog on the screen and scroll.
+        // (Sized without pack(), which would map the window before it is placed; see RenderWindow.)
+        Dimension wanted = getPreferredSize();
         Dimension screen = getGraphicsConfiguration().getBounds().getSize();
-        setSize(Math.min(getWidth() + 24, screen.width * 9 / 10), Math.min(getHeight(), screen.height * 9 / 10));
+        setSize(Math.min(wanted.width + 24, screen.width * 9 / 10), Math.min(wanted.height + 8, screen.height * 9 / 10));
         setLocationRelativeTo(owner);
     }
 
@@ -152,6 +155,20 @@ public final class PluginDialog extends JDialog {
             show(UserMessages.of(e));
             ok.setEnabled(false);
         }
+    }
+
+    /**
+     * Refreshes once the current event is over: a field that replaces its text (a spinner
+     * committing on focus loss) passes through an empty text, and disabling OK for that instant
+     * would swallow the click that moved the focus to OK.
+     */
+    private void refreshLater() {
+        if (refreshPending) return;
+        refreshPending = true;
+        SwingUtilities.invokeLater(() -> {
+            refreshPending = false;
+            refresh();
+        });
     }
 
     private void refresh() {
@@ -275,7 +292,7 @@ public final class PluginDialog extends JDialog {
             @Override public void changedUpdate(DocumentEvent e) { changed(); }
             private void changed() {
                 set.accept(t.getText());
-                refresh();
+                refreshLater();
             }
         });
     }

@@ -95,14 +95,16 @@ public final class RenderWindow extends JDialog implements PluginRun.Listener {
         if (!SwingUtilities.isEventDispatchThread()) throw new IllegalStateException("RenderWindow.start must be called on the event thread");
         Dimension size = new Dimension(form.view().width(), form.view().height());
         RenderWindow w = new RenderWindow(owner, form.plugin().name(), accepted.output(), size);
-        w.pack();
+        // Sized and placed before the window has a peer: packing first would map it at the origin,
+        // and without a window manager (a virtual X server) that early placement can win over ours.
+        Dimension wanted = w.getPreferredSize();
         GraphicsConfiguration gc = owner != null ? owner.getGraphicsConfiguration() : w.getGraphicsConfiguration();
         Rectangle screen = gc.getBounds();
         Insets insets = Toolkit.getDefaultToolkit().getScreenInsets(gc);
         screen = new Rectangle(screen.x + insets.left, screen.y + insets.top,
                 screen.width - insets.left - insets.right, screen.height - insets.top - insets.bottom);
         Rectangle ownerBounds = owner != null ? owner.getBounds() : new Rectangle(screen.x, screen.y, 0, 0);
-        w.setBounds(WindowPlacement.beside(ownerBounds, w.getSize(), screen));
+        w.setBounds(WindowPlacement.beside(ownerBounds, wanted, screen));
         w.setVisible(true);
         w.run = PluginRun.start(form.plugin(), form.surfaces(), form.view(), accepted, SwingUtilities::invokeLater, w);
         return w;
