@@ -13,6 +13,7 @@ import java.awt.event.KeyEvent;
 import java.io.File;
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -33,6 +34,7 @@ import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
 import javax.swing.JSpinner;
+import javax.swing.JTabbedPane;
 import javax.swing.JTextField;
 import javax.swing.KeyStroke;
 import javax.swing.SpinnerNumberModel;
@@ -43,6 +45,7 @@ import javax.swing.filechooser.FileNameExtensionFilter;
 import javax.swing.text.DefaultFormatter;
 import javax.swing.text.JTextComponent;
 
+import lt.spindulys.plugin.DisplayedSurface;
 import lt.spindulys.plugin.PluginOption;
 
 /**
@@ -71,34 +74,62 @@ public final class PluginDialog extends JDialog {
         setName("pluginDialog");
         setDefaultCloseOperation(DISPOSE_ON_CLOSE);
 
-        JPanel fields = new JPanel();
-        fields.setLayout(new BoxLayout(fields, BoxLayout.Y_AXIS));
-        JLabel description = new JLabel(form.plugin().description());
-        description.setBorder(BorderFactory.createEmptyBorder(0, 0, 6, 0));
-        description.setAlignmentX(LEFT_ALIGNMENT);
-        fields.add(description);
+        // Options that concern the whole picture in a column; each surface's (grouped under its
+        // name, as the plugin interface asks) on a tab of its own, so many surfaces stay compact.
+        JPanel general = new JPanel();
+        general.setLayout(new BoxLayout(general, BoxLayout.Y_AXIS));
+        JTabbedPane tabs = new JTabbedPane();
+        tabs.setName("surfaces");
+        Map<String, String> surfaceLabels = new LinkedHashMap<>();
+        for (DisplayedSurface surface : form.surfaces()) surfaceLabels.putIfAbsent(surface.name(), surface.subdivisionLabel());
         for (Map.Entry<String, List<PluginOption>> group : form.groups().entrySet()) {
             JPanel box = new JPanel(new GridBagLayout());
-            box.setBorder(BorderFactory.createTitledBorder(group.getKey()));
-            box.setAlignmentX(LEFT_ALIGNMENT);
             int row = 0;
             for (PluginOption o : group.getValue()) addRow(box, row++, o.label(), field(o), o.help());
-            fields.add(box);
+            if (surfaceLabels.containsKey(group.getKey())) {
+                box.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
+                JPanel top = new JPanel(new BorderLayout());
+                top.add(box, BorderLayout.NORTH);
+                tabs.addTab(group.getKey(), null, top, group.getKey() + ": " + surfaceLabels.get(group.getKey()));
+            } else {
+                box.setBorder(BorderFactory.createTitledBorder(group.getKey()));
+                box.setAlignmentX(LEFT_ALIGNMENT);
+                general.add(box);
+            }
         }
-        output = new JTextField(form.output(), 32);
+        output = new JTextField(form.output(), 28);
         output.setName("output");
         onEdit(output, form::setOutput);
         JButton browse = new JButton("Browse...");
         browse.setName("outputBrowse");
         browse.addActionListener(e -> browseOutput());
         JPanel out = new JPanel(new GridBagLayout());
-        out.setBorder(BorderFactory.createTitledBorder("Output"));
+        out.setBorder(BorderFactory.createTitledBorder("Output file"));
         out.setAlignmentX(LEFT_ALIGNMENT);
         addRow(out, 0, "File", withButton(output, browse),
                 "The file to write: " + String.join(", ", form.extensions().stream().map(x -> "." + x).toList()) + ".");
-        fields.add(out);
+        general.add(out);
 
-        JScrollPane scroll = new JScrollPane(fields);
+        JPanel fields = new JPanel(new GridBagLayout());
+        GridBagConstraints c = new GridBagConstraints();
+        c.anchor = GridBagConstraints.FIRST_LINE_START;
+        c.fill = GridBagConstraints.HORIZONTAL;
+        c.weightx = 1;
+        c.weighty = 1;
+        c.insets = new Insets(0, 0, 0, 8);
+        fields.add(general, c);
+        if (tabs.getTabCount() > 0) {
+            c.gridx = 1;
+            c.insets = new Insets(6, 0, 0, 0);
+            fields.add(tabs, c);
+        }
+        JLabel description = new JLabel(form.plugin().description());
+        description.setBorder(BorderFactory.createEmptyBorder(0, 0, 6, 0));
+        JPanel content = new JPanel(new BorderLayout());
+        content.add(description, BorderLayout.NORTH);
+        content.add(fields, BorderLayout.CENTER);
+
+        JScrollPane scroll = new JScrollPane(content);
         scroll.setBorder(BorderFactory.createEmptyBorder(8, 8, 0, 8));
         scroll.getVerticalScrollBar().setUnitIncrement(16);
 
@@ -246,23 +277,36 @@ public final class PluginDialog extends JDialog {
         return s;
     }
 
+    /** The colour's text, a swatch showing it (empty while the text names no colour) and a chooser. */
     private JComponent colour(PluginOption o) {
         JTextField t = text(o, 12);
-        JButton swatch = new JButton("Choose...");
-        swatch.setName("colour:" + o.key());
+        JLabel swatch = new JLabel();
+        swatch.setName("swatch:" + o.key());
+        swatch.setOpaque(true);
+        swatch.setPreferredSize(new Dimension(28, 18));
+        swatch.setBorder(BorderFactory.createLineBorder(Color.GRAY));
         Runnable paint = () -> {
             Color c = parseColour(t.getText());
-            swatch.setBackground(c);
             swatch.setOpaque(c != null);
+            swatch.setBackground(c);
+            swatch.repaint();
         };
         paint.run();
         onEdit(t, v -> paint.run());
-        swatch.addActionListener(e -> {
+        JButton choose = new JButton("Choose...");
+        choose.setName("colour:" + o.key());
+        choose.addActionListener(e -> {
             Color start = parseColour(t.getText());
             Color chosen = JColorChooser.showDialog(this, o.label(), start != null ? start : Color.WHITE);
             if (chosen != null) t.setText(formatColour(chosen));
         });
-        return withButton(t, swatch);
+        JPanel buttons = new JPanel(new BorderLayout(4, 0));
+        buttons.add(swatch, BorderLayout.WEST);
+        buttons.add(choose, BorderLayout.CENTER);
+        JPanel p = new JPanel(new BorderLayout(4, 0));
+        p.add(t, BorderLayout.CENTER);
+        p.add(buttons, BorderLayout.EAST);
+        return p;
     }
 
     private void browseOutput() {

@@ -14,6 +14,11 @@ import java.awt.Window;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.awt.image.BufferedImage;
+import java.awt.image.ColorModel;
+import java.awt.image.DataBufferInt;
+import java.awt.image.DirectColorModel;
+import java.awt.image.Raster;
+import java.awt.image.WritableRaster;
 import java.nio.file.Path;
 import java.util.stream.Collectors;
 
@@ -129,9 +134,11 @@ public final class RenderWindow extends JDialog implements PluginRun.Listener {
 
     @Override
     public void preview(int width, int height, int[] argb, boolean last) {
-        BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_ARGB);
-        image.setRGB(0, 0, width, height, argb, 0, width);
-        picture.show(image);
+        // The array is ours after the call: wrap it rather than copy a full picture on the event thread.
+        DirectColorModel argbModel = (DirectColorModel) ColorModel.getRGBdefault();
+        WritableRaster raster = Raster.createPackedRaster(new DataBufferInt(argb, argb.length), width, height, width,
+                argbModel.getMasks(), null);
+        picture.show(new BufferedImage(argbModel, raster, false, null));
     }
 
     @Override
