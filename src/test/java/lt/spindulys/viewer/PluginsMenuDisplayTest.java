@@ -95,6 +95,15 @@ class PluginsMenuDisplayTest {
         Path missing = dir.resolve("missing").resolve("out.png");
         Driver.onEdtDo(() -> output.setText(missing.toString()));
         driver.waitFor("the missing folder to be refused", () -> problem.getText().endsWith("directory '" + missing.getParent() + "' does not exist") && !ok.isEnabled());
+        if (Files.isDirectory(Path.of("/proc/self"))) {
+            // A folder that exists but takes no new file (even for root): OK is refused there, in one line.
+            Driver.onEdtDo(() -> output.setText("/proc/square.png"));
+            driver.waitFor("/proc to pass the live check", ok::isEnabled);
+            driver.click(ok);
+            driver.waitFor("OK to be refused for /proc", () -> problem.getText().startsWith(
+                    "render: cannot write '/proc/square.png': cannot create a file in '/proc': ") && !ok.isEnabled());
+            assertTrue(onEdt(dialog::isShowing), "the dialog stays open");
+        }
         Path out = dir.resolve("square.png");
         Driver.onEdtDo(() -> output.setText(out.toString()));
         driver.waitFor("the output to be accepted", ok::isEnabled);
