@@ -76,9 +76,14 @@ final class Driver {
 
     /** The showing component of this type and name in any showing window, waiting for it to appear. */
     <T extends Component> T find(Class<T> type, String name) {
+        return find(type, "'" + name + "'", c -> name.equals(c.getName()));
+    }
+
+    /** The showing component of this type that passes {@code test} (run on the event thread), waiting for it. */
+    <T extends Component> T find(Class<T> type, String what, Predicate<T> test) {
         AtomicReference<T> found = new AtomicReference<>();
-        waitFor(type.getSimpleName() + " '" + name + "' to show", () -> {
-            found.set(search(type, c -> name.equals(c.getName())));
+        waitFor(type.getSimpleName() + " " + what + " to show", () -> {
+            found.set(search(type, test));
             return found.get() != null;
         });
         return found.get();

@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.awt.Color;
 import java.awt.Point;
 import java.awt.Rectangle;
+import java.awt.Window;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -18,13 +19,17 @@ import java.util.stream.Stream;
 
 import javax.imageio.ImageIO;
 import javax.swing.JButton;
+import javax.swing.JColorChooser;
 import javax.swing.JComponent;
 import javax.swing.JDialog;
+import javax.swing.JFileChooser;
 import javax.swing.JFrame;
 import javax.swing.JLabel;
 import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
 import javax.swing.JTextField;
+import javax.swing.SwingUtilities;
+import javax.swing.filechooser.FileNameExtensionFilter;
 
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
@@ -138,6 +143,36 @@ class PluginsMenuDisplayTest {
         driver.click(driver.find(JButton.class, "cancel")); // now Close
         driver.waitFor("the render window to close", () -> !window.isShowing());
         assertTrue(onEdt(frame::isShowing), "the viewer keeps running");
+    }
+
+    @Test
+    void browseAndChooseFillTheFields() {
+        choosePlugin();
+        driver.window(PluginDialog.class);
+        JTextField output = driver.find(JTextField.class, "output");
+
+        driver.click(driver.find(JButton.class, "outputBrowse"));
+        JFileChooser chooser = driver.find(JFileChooser.class, "a file chooser", c -> true);
+        FileNameExtensionFilter filter = onEdt(() -> (FileNameExtensionFilter) chooser.getFileFilter());
+        assertEquals(List.of("png"), List.of(filter.getExtensions()), "only the plugin's extensions");
+        assertEquals(dir.resolve("cube.png").toFile(), onEdt(chooser::getSelectedFile), "starts at the current output");
+        Driver.onEdtDo(() -> {
+            chooser.setSelectedFile(dir.resolve("picture").toFile()); // a name typed without an extension
+            chooser.approveSelection();
+        });
+        driver.waitFor("the chosen file in the output field", () -> output.getText().equals(dir.resolve("picture.png").toString()));
+
+        JTextField colour = driver.find(JTextField.class, "option:color");
+        driver.click(driver.find(JButton.class, "colour:color"));
+        JColorChooser colours = driver.find(JColorChooser.class, "a colour chooser", c -> true);
+        assertEquals(Color.GREEN, onEdt(colours::getColor), "starts at the field's colour");
+        Driver.onEdtDo(() -> colours.setColor(new Color(255, 128, 0)));
+        Window colourDialog = onEdt(() -> SwingUtilities.getWindowAncestor(colours));
+        driver.click(driver.find(JButton.class, "the colour dialog's OK",
+                b -> "OK".equals(b.getText()) && SwingUtilities.getWindowAncestor(b) == colourDialog));
+        driver.waitFor("the chosen colour in the field", () -> colour.getText().equals("1 0.502 0"));
+        JLabel swatch = driver.find(JLabel.class, "swatch:color");
+        assertEquals(new Color(255, 128, 0), onEdt(swatch::getBackground));
     }
 
     @Test
