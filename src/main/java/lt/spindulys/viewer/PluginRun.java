@@ -120,8 +120,9 @@ public final class PluginRun {
             ui.execute(() -> listener.finished(result));
         } catch (CancellationException e) {
             ui.execute(() -> listener.failed(UserMessages.CANCELLED, true));
-        } catch (Exception | OutOfMemoryError | StackOverflowError e) {
-            // Anything else ends the run, not the viewer: the user reads the message and carries on.
+        } catch (Throwable e) {
+            // Anything else ends the run, not the viewer: a third-party plugin's missing class or
+            // assertion is reported like any failure rather than leaving the window waiting forever.
             String message = UserMessages.of(e);
             boolean byUser = cancelled.get() && e instanceof InterruptedException;
             ui.execute(() -> listener.failed(byUser ? UserMessages.CANCELLED : message, byUser));

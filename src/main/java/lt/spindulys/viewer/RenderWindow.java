@@ -103,15 +103,18 @@ public final class RenderWindow extends JDialog implements PluginRun.Listener {
         // Sized and placed before the window has a peer: packing first would map it at the origin,
         // and without a window manager (a virtual X server) that early placement can win over ours.
         Dimension wanted = w.getPreferredSize();
-        GraphicsConfiguration gc = owner != null ? owner.getGraphicsConfiguration() : w.getGraphicsConfiguration();
+        GraphicsConfiguration gc = owner != null && owner.getGraphicsConfiguration() != null
+                ? owner.getGraphicsConfiguration() : w.getGraphicsConfiguration();
         Rectangle screen = gc.getBounds();
         Insets insets = Toolkit.getDefaultToolkit().getScreenInsets(gc);
         screen = new Rectangle(screen.x + insets.left, screen.y + insets.top,
                 screen.width - insets.left - insets.right, screen.height - insets.top - insets.bottom);
         Rectangle ownerBounds = owner != null ? owner.getBounds() : new Rectangle(screen.x, screen.y, 0, 0);
         w.setBounds(WindowPlacement.beside(ownerBounds, wanted, screen));
-        w.setVisible(true);
+        // Started before it shows, so a request that cannot be made leaves no window; the run's
+        // reports are posted to this (the event) thread, so none arrives before the window shows.
         w.run = PluginRun.start(form.plugin(), form.surfaces(), form.view(), accepted, SwingUtilities::invokeLater, w);
+        w.setVisible(true);
         return w;
     }
 

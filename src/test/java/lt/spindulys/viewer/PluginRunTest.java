@@ -111,6 +111,16 @@ class PluginRunTest {
         assertEquals("failed surface cube: face 3 has 2 corners", end(new IllegalArgumentException("surface cube: face 3 has 2 corners")));
         assertEquals("failed render: internal error: java.lang.IllegalStateException: broken", end(new IllegalStateException("broken")));
         assertEquals("failed render: /x/y.png", end(new NoSuchFileException("/x/y.png")));
+        OutputPlugin broken = new Stub() {
+            @Override public PluginResult run(PluginRequest r) { throw new NoClassDefFoundError("com/example/Missing"); }
+        };
+        Queue ui = new Queue();
+        Events events = new Events();
+        PluginRun run = PluginRun.start(broken, Fixtures.surfaces(), Fixtures.view(8, 8), accepted(Map.of(), "x.png"), ui, events);
+        assertTrue(run.await(10, TimeUnit.SECONDS));
+        ui.drain();
+        assertEquals(List.of("failed render: internal error: java.lang.NoClassDefFoundError: com/example/Missing"), events.seen,
+                "an error of a plugin's own ends its run with a message, not silently");
     }
 
     @Test
