@@ -28,7 +28,12 @@ import lt.spindulys.plugin.PluginView;
  * last check (that a file can be created in the output's folder) before the run.
  */
 public final class PluginForm {
-    /** What the user accepted: the option values and the file to write. */
+    /**
+     * What the user accepted.
+     *
+     * @param values every option's text, key to text
+     * @param output the file to write
+     */
     public record Accepted(Map<String, String> values, Path output) {
         /** Copies the values. */
         public Accepted {
