@@ -31,4 +31,6 @@ module lt.spindulys {
 
     // Output plugins of a viewer: the library's own are provided here, others found on the module path.
     uses lt.spindulys.plugin.OutputPlugin;
+    provides lt.spindulys.plugin.OutputPlugin with
+            lt.spindulys.plugin.obj.ObjExportPlugin;
 }

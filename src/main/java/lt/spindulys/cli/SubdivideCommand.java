@@ -45,13 +45,15 @@ final class SubdivideCommand {
             scene's subdiv statement naming MESH chooses the method, levels (per edge, from its
             camera, for an adaptive method) and options; the patches are stitched and welded, so
             the triangles (v, vt, vn, f v/vt/vn) are crack-free. A uniform subdiv statement gives
-            its uniform refinement. The mesh formats are described in docs/mesh-formats.md.
+            its uniform refinement (at its limit positions with 'positions limit'). The mesh
+            formats are described in docs/mesh-formats.md.
 
               --level N          refinement level, 0 to 8 (this or --scene is required)
               --scene SCENE.dat  the tessellation SCENE.dat would render MESH with
               -o, --output OUT   the .obj file to write (required); written atomically
               --limit            write limit-surface positions, and vn limit normals (with --level)
-              --uv UNWRAP.tex    face-varying UVs from a Workframe unwrap (one u v per face corner; with --level)
+              --uv UNWRAP.tex    face-varying UVs from a Workframe unwrap (points and faces, or one u v per
+                                 face corner; with --level)
               --debug            stack traces on errors
             Exit status: 0 success, 2 bad usage or bad input, 1 failure while writing.""";
 
@@ -113,7 +115,7 @@ final class SubdivideCommand {
         if (scene != null) return runScene(err);
         String name = input.toString();
         SubdivInput in = extension(input).equals("obj") ? ObjReader.readSubdiv(input) : SubdivInput.of(WorkframeReader.readMesh(input));
-        if (uv != null) in = in.withCornerUvs(WorkframeReader.readUnwrap(uv, in.mesh()));
+        if (uv != null) in = WorkframeReader.readTex(uv, in.mesh()).applyTo(in);
         try {
             SubdivisionSurface.checkLevel(level, in.refinedFaceCount(level), limit ? BYTES_PER_FACE + LIMIT_BYTES_PER_FACE : BYTES_PER_FACE);
         } catch (IllegalArgumentException e) {
@@ -167,16 +169,19 @@ final class SubdivideCommand {
         } else if (!uniform.isEmpty()) {
             SubdivisionSurface first = uniform.get(0);
             List<String> differ = new ArrayList<>();
-            for (SubdivisionSurface s : uniform) if (s.refined() != first.refined()) differ.add(where(s));
+            for (SubdivisionSurface s : uniform) if (s.refined() != first.refined() || s.positions() != first.positions()) differ.add(where(s));
             if (!differ.isEmpty()) {
                 note = "note: " + uniform.size() + " subdiv statements of " + scene + " refine " + input + " differently; writing the first's ("
                         + where(first) + "), not " + String.join(", ", differ);
             }
             RefinedMesh refined = first.refined();
+            // positions limit renders the limit positions: written with the limit normals, as --limit writes them.
+            boolean limitPositions = first.positions() == SubdivisionSurface.Positions.LIMIT;
             String comment = "Catmull-Clark subdivision of " + input.getFileName() + " at level " + first.level() + " as " + scene.getFileName()
-                    + " renders it (" + where(first) + ", method uniform) (spindulys " + Main.version() + ")\n"
+                    + " renders it (" + where(first) + ", method uniform" + (limitPositions ? ", positions " + first.positions().word() + ": limit positions and normals" : "")
+                    + ") (spindulys " + Main.version() + ")\n"
                     + refined.vertexCount() + " vertices, " + refined.faceCount() + " faces";
-            AtomicFile.write(output, os -> ObjWriter.write(refined, false, comment, os));
+            AtomicFile.write(output, os -> ObjWriter.write(refined, limitPositions, comment, os));
         } else {
             throw new UsageException(scene + " has no subdiv statement whose file is " + input
                     + (others.isEmpty() ? " (it has none)" : " (its subdiv files: " + String.join(", ", others) + ")"));

@@ -122,7 +122,12 @@ final class SceneAssetCache {
             throw err.wrap(levelAt, e);
         }
         String method = (String) p.get("method");
-        Prop target = p.prop("target"), levels = p.prop("levels"), maxLevel = p.prop("maxlevel");
+        Prop target = p.prop("target"), levels = p.prop("levels"), maxLevel = p.prop("maxlevel"), positionsProp = p.prop("positions");
+        SubdivisionSurface.Positions positions = "limit".equals(p.get("positions")) ? SubdivisionSurface.Positions.LIMIT : SubdivisionSurface.Positions.REFINED;
+        if (positionsProp != null && !method.equals("uniform")) {
+            throw err.error(positionsProp.at(), "'positions' needs method uniform: the adaptive methods (projected, lazy, combined) place the vertices"
+                    + " where the refinement puts them");
+        }
         if (method.equals("uniform")) {
             for (Prop adaptiveOnly : new Prop[] {target, levels, maxLevel}) {
                 if (adaptiveOnly != null) {
@@ -139,21 +144,25 @@ final class SceneAssetCache {
         Prop uvProp = p.prop("uv");
         boolean smooth = "smooth".equals(p.get("shading"));
         SubdivKey key = new SubdivKey(path, uvProp != null ? existingFile(uvProp, "unwrap file") : null, level,
-                smooth, (String) p.get("boundary"), (String) p.get("uvinterpolation"),
+                smooth, positions, (String) p.get("boundary"), (String) p.get("uvinterpolation"),
                 (String) p.get("creasing"), (String) p.get("triangles"));
         if (method.equals("uniform")) {
             SubdivisionSurface same = surfaces.get(key);
             if (same != null) return same.instance(); // the same surface again: refined once, placed twice
             SubdivInput input = readSurface(p, f, rel, path);
+            boolean limit = positions == SubdivisionSurface.Positions.LIMIT;
             try {
-                SubdivisionSurface.checkLevel(level, input.refinedFaceCount(level));
+                SubdivisionSurface.checkLevel(level, input.refinedFaceCount(level),
+                        limit ? SubdivisionSurface.BYTES_PER_FACE + SubdivisionSurface.LIMIT_POSITION_BYTES_PER_FACE : SubdivisionSurface.BYTES_PER_FACE);
             } catch (IllegalArgumentException e) {
                 if (!(e instanceof InsufficientMemoryException) && input.refinedFaceCount(level) <= SubdivisionSurface.MAX_FACES) throw err.wrap(levelAt, e);
+                // The combined method has no limit positions: the level is refused rather than rendered otherwise.
+                if (limit) throw err.error(levelAt, e.getMessage() + "; positions limit needs uniform refinement (the adaptive methods, which render such levels otherwise, have no limit positions)");
                 // Too large to refine whole: the combined method gives the same triangles within the budget.
                 return adaptive(p, f, key, input, AdaptiveSubdivisionSurface.Method.COMBINED, level, null, null, null, smooth);
             }
             try {
-                SubdivisionSurface made = new SubdivisionSurface(input.toControlMesh(), level, smooth);
+                SubdivisionSurface made = new SubdivisionSurface(input.toControlMesh(), level, smooth, positions);
                 surfaces.put(key, made);
                 return made;
             } catch (IllegalArgumentException e) {
@@ -172,7 +181,7 @@ final class SceneAssetCache {
     /** An adaptive surface; statements naming the same control mesh and scheme share its refiner. */
     private GObject adaptive(Props p, Prop f, SubdivKey key, SubdivInput read, AdaptiveSubdivisionSurface.Method method, int level,
                              Prop target, Prop levels, Prop maxLevel, boolean smooth) {
-        SubdivKey shared = new SubdivKey(key.file(), key.uv(), -1, key.smooth(), key.boundary(), key.uvinterpolation(), key.creasing(), key.triangles());
+        SubdivKey shared = new SubdivKey(key.file(), key.uv(), -1, key.smooth(), key.positions(), key.boundary(), key.uvinterpolation(), key.creasing(), key.triangles());
         AdaptiveSubdivisionSurface first = adaptiveSurfaces.get(shared);
         AdaptiveSubdivisionSurface s;
         if (first != null) {
@@ -203,8 +212,8 @@ final class SceneAssetCache {
         return s;
     }
 
-    /** What makes two subdiv statements the same surface: file, unwrap, level, shading and scheme words. */
-    private record SubdivKey(Path file, Path uv, int level, boolean smooth, String boundary, String uvinterpolation,
+    /** What makes two subdiv statements the same surface: file, unwrap, level, shading, vertex positions and scheme words. */
+    private record SubdivKey(Path file, Path uv, int level, boolean smooth, SubdivisionSurface.Positions positions, String boundary, String uvinterpolation,
                              String creasing, String triangles) {}
 
     /** The control mesh of a subdiv block, with its unwrap and the block's scheme keys. */
@@ -223,7 +232,7 @@ final class SceneAssetCache {
         if (uv != null) {
             Path uvPath = existingFile(uv, "unwrap file");
             try {
-                input = input.withCornerUvs(WorkframeReader.readUnwrap(uvPath, input.mesh()));
+                input = WorkframeReader.readTex(uvPath, input.mesh()).applyTo(input);
             } catch (IOException e) {
                 throw err.error(uv.valueAt(), "cannot read unwrap file " + MessageText.quote((String) uv.value()) + ": " + e.getMessage());
             }

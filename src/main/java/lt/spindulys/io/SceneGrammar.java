@@ -259,7 +259,8 @@ final class SceneGrammar {
             choice("creasing", null, "uniform", "chaikin"),
             choice("triangles", null, "catmark", "smooth"),
             choice("shading", "smooth", "smooth", "flat"),
-            opt("uv", Kind.STRING));
+            opt("uv", Kind.STRING),
+            choice("positions", "refined", "refined", "limit"));
 
     // CSG: only the common keys; the operands are the object statements nested in the block.
     static final Block UNION = new Block("union", Category.CSG, true, OBJECT_COMMON);

@@ -17,13 +17,15 @@ import lt.spindulys.mesh.MeshData;
 
 /**
  * Reads the two files of the thesis's modeller (Workframe): a {@code .dat} polygon mesh and a
- * {@code .tex} unwrap with one texture point per face corner. Both are line based: blank lines and
- * {@code #} comments are skipped, and every other line holds whitespace-separated numbers.
+ * {@code .tex} unwrap. Both are line based: blank lines and {@code #} comments are skipped, and
+ * every other line holds whitespace-separated numbers. An unwrap comes in two forms, told apart by
+ * its header: the thesis's, texture points with faces of their own (the face-varying data of
+ * OpenSubdiv), or one texture point per face corner.
  *
  * <pre>
- * mesh (.dat):  point_count face_count          unwrap (.tex):  corner_count
- *               x y z            (point_count lines)             u v   (corner_count lines, face after face)
- *               n i0 i1 ... i(n-1)  (face_count lines, 0-based)
+ * mesh (.dat):  point_count face_count       unwrap (.tex):  point_count face_count   or  corner_count
+ *               x y z   (point_count lines)                  u v [w]  (point_count)       u v  (corner_count lines,
+ *               n i0 i1 ... i(n-1)  (face_count lines, 0-based)  n t0 ... t(n-1) (face_count)   face after face)
  * </pre>
  *
  * The full description is in docs/mesh-formats.md. Errors are {@link SceneException}s naming
@@ -139,7 +141,45 @@ public final class WorkframeReader {
     }
 
     /**
-     * Reads a {@code .tex} unwrap for {@code mesh}: (u, v) for every face corner of it, face after face.
+     * Reads a {@code .tex} unwrap for {@code mesh}, in either form (told apart by the header):
+     * texture points with faces of their own, or one point per face corner.
+     *
+     * @param file the file
+     * @param mesh the mesh it unwraps
+     * @return the texture coordinates; {@link Unwrap#applyTo} gives them to the control mesh
+     * @throws IOException if the file cannot be read
+     */
+    public static Unwrap readTex(Path file, MeshData mesh) throws IOException {
+        return parseTex(readText(file, "unwrap"), file.toString(), mesh);
+    }
+
+    /**
+     * Parses {@code .tex} unwrap text for {@code mesh}; see {@link #readTex}.
+     *
+     * @param text the file's content
+     * @param fileName the name for messages
+     * @param mesh the mesh it unwraps
+     * @return the texture coordinates
+     */
+    public static Unwrap parseTex(String text, String fileName, MeshData mesh) {
+        Lines in = new Lines(text, fileName);
+        Line header = in.next();
+        if (header == null) {
+            throw in.errorAtEnd("empty unwrap file: expected the header 'point_count face_count' (texture points and faces) or 'corner_count' (one point per face corner)");
+        }
+        // The form is the header's: two integers for points and faces (as a .dat mesh), one for corners.
+        if (header.size() == 2) return parsePointsAndFaces(in, header, mesh);
+        if (header.size() != 1) {
+            throw in.error(header.at(2), "expected the header 'point_count face_count' (two integers: texture points and faces) or 'corner_count' "
+                    + "(one integer: one point per face corner), found " + header.describe());
+        }
+        return new Unwrap(parseCorners(in, header, mesh), null);
+    }
+
+    /**
+     * Reads a {@code .tex} unwrap for {@code mesh} as one (u, v) per face corner, face after face,
+     * whichever form the file has. A points-and-faces unwrap is expanded, which drops its own
+     * sharing of points; {@link #readTex} keeps it.
      *
      * @param file the file
      * @param mesh the mesh it unwraps
@@ -147,7 +187,7 @@ public final class WorkframeReader {
      * @throws IOException if the file cannot be read
      */
     public static double[] readUnwrap(Path file, MeshData mesh) throws IOException {
-        return parseUnwrap(readText(file, "unwrap"), file.toString(), mesh);
+        return readTex(file, mesh).cornerUvs();
     }
 
     /**
@@ -159,17 +199,15 @@ public final class WorkframeReader {
      * @return (u, v) pairs, two doubles per face corner
      */
     public static double[] parseUnwrap(String text, String fileName, MeshData mesh) {
-        Lines in = new Lines(text, fileName);
+        return parseTex(text, fileName, mesh).cornerUvs();
+    }
+
+    /** The one-point-per-corner form after its header: (u, v) for every face corner. */
+    private static double[] parseCorners(Lines in, Line header, MeshData mesh) {
         int expected = mesh.vertexIndex().length;
-        Line header = in.next();
-        if (header == null) throw in.errorAtEnd("empty unwrap file: expected the header 'corner_count'");
-        if (header.size() != 1) {
-            throw in.error(header.size() > 1 ? header.at(1) : header.end(), "expected the header 'corner_count' (one integer), found " + header.describe());
-        }
         int count = in.count(header, 0, "corner count", 0);
         if (count != expected) {
-            String meshName = mesh.source() == null ? "the mesh" : "the mesh " + mesh.source();
-            throw in.error(header.at(0), "the unwrap has " + plural(count, "corner") + " but " + meshName + " has " + plural(expected, "face corner")
+            throw in.error(header.at(0), "the unwrap has " + plural(count, "corner") + " but " + meshName(mesh) + " has " + plural(expected, "face corner")
                     + " (one 'u v' per corner, face after face)");
         }
         // As for a mesh: the array is sized by what the rest of the file can hold ('0 0' and a line break).
@@ -191,6 +229,114 @@ public final class WorkframeReader {
                     + " corners the header announces (at " + header.position(0) + ")");
         }
         return uv;
+    }
+
+    /**
+     * The thesis's form after its header: texture points ({@code u v}, or {@code u v w} with w
+     * ignored, as Workframe kept them in a mesh's point structure), then one face per face of the
+     * mesh, of the same size, whose indices name texture points.
+     */
+    private static Unwrap parsePointsAndFaces(Lines in, Line header, MeshData mesh) {
+        int[] meshSizes = mesh.faceSizes();
+        int points = in.count(header, 0, "texture point count", 1);
+        int faces = in.count(header, 1, "face count", 1);
+        if (faces != meshSizes.length) {
+            throw in.error(header.at(1), "the unwrap has " + plural(faces, "face") + " but " + meshName(mesh) + " has " + meshSizes.length
+                    + " (one texture face per face of the mesh, in the same order)");
+        }
+        // As for a mesh, the header is not trusted with memory: refused if the rest of the file has
+        // no room for its lines, and the points array sized by what the rest can hold ('0 0' and a
+        // line break). The corner indices are as many as the mesh's corners, already in memory.
+        long rest = in.remaining(), room = (rest + 1) / 2;
+        if (points > room || (long) points + faces > room) {
+            throw in.error(header.at(points > room ? 0 : 1), "the header announces " + plural(points, "texture point") + " and " + plural(faces, "face")
+                    + ", but the rest of the file (" + plural(rest, "character") + ") has room for at most " + plural(room, "line"));
+        }
+        int corners = mesh.vertexIndex().length;
+        int pointRoom = (int) Math.min(points, (rest + 1) / MIN_CORNER_LINE);
+        try {
+            HeapBudget.require(HeapBudget.sum(HeapBudget.product(pointRoom, 2 * 8), HeapBudget.product(corners, 4)),
+                    "the unwrap's " + plural(points, "texture point") + " and " + plural(corners, "face corner"));
+        } catch (IllegalArgumentException e) {
+            throw in.error(header.at(0), e.getMessage());
+        }
+
+        double[] uv = new double[2 * pointRoom];
+        int arity = 0; // numbers per point, set by the first: every point 'u v' or every point 'u v w'
+        Line first = null;
+        for (int i = 0; i < points; i++) {
+            if (2 * i == uv.length) uv = Arrays.copyOf(uv, 2 * (int) Math.min(points, 2L * i + 16));
+            Line l = in.next();
+            if (l == null) {
+                throw in.errorAtEnd("the file ends after " + i + " of the " + points + " texture points the header announces (at " + header.position(0) + ")");
+            }
+            if (l.size() != 2 && l.size() != 3) {
+                String what = "texture point " + i + " has " + plural(l.size(), "number") + ", expected 2 (u v) or 3 (u v w, w ignored)";
+                if (i > 0 && looksLikeFace(l)) {
+                    throw in.error(l.at(0), what + "; this looks like a face: does the header at " + header.position(0) + " count too many points?");
+                }
+                throw in.error(l.size() > 3 ? l.at(3) : l.end(), what);
+            }
+            if (first == null) {
+                first = l;
+                arity = l.size();
+            } else if (l.size() != arity) {
+                throw in.error(l.size() > arity ? l.at(arity) : l.end(), "texture point " + i + " has " + plural(l.size(), "number") + " but point 0 (at "
+                        + first.position(0) + ") has " + arity + " (every point 'u v', or every point 'u v w')");
+            }
+            uv[2 * i] = in.number(l, 0, "texture point " + i + " u");
+            uv[2 * i + 1] = in.number(l, 1, "texture point " + i + " v");
+            if (arity == 3) in.number(l, 2, "texture point " + i + " w"); // checked, not kept
+        }
+
+        int[] index = new int[corners];
+        for (int f = 0, c = 0; f < faces; f++) {
+            Line l = in.next();
+            if (l == null) throw in.errorAtEnd("the file ends after " + f + " of the " + faces + " faces the header announces (at " + header.position(1) + ")");
+            // Two or three numbers are no face (a face has at least 3 indices): a point too many,
+            // unless they start as the face should (its corner count, then indices): a short face.
+            if (f == 0 && l.size() <= 3 && allNumbers(in, l) && !(allIntegers(l) && l.text(0).replace("+", "").equals(String.valueOf(meshSizes[0])))) {
+                throw in.error(l.at(0), "expected face 0 ('n i0 i1 ...'), found a point: does the header at " + header.position(0)
+                        + " count too few points?");
+            }
+            long n = in.integer(l, 0, "face " + f + " corner count");
+            if (n != meshSizes[f]) {
+                throw in.error(l.at(0), "face " + f + " has " + plural(n, "corner") + " but face " + f + " of " + meshName(mesh) + " has " + meshSizes[f]
+                        + " (a texture face has the corners of its mesh face, in the same order)");
+            }
+            if (l.size() - 1 != n) {
+                throw in.error(l.size() - 1 > n ? l.at((int) n + 1) : l.end(),
+                        "face " + f + " says " + n + " corners but lists " + plural(l.size() - 1, "index", "indices"));
+            }
+            for (int j = 1; j <= n; j++, c++) {
+                long t = in.integer(l, j, "face " + f + " texture point index");
+                if (t < 0 || t >= points) {
+                    throw in.error(l.at(j), "face " + f + " uses texture point " + t + ", out of range (the unwrap has " + plural(points, "point")
+                            + ", numbered from 0)");
+                }
+                index[c] = (int) t;
+            }
+        }
+        Line extra = in.next();
+        if (extra != null) {
+            throw in.error(extra.at(0), "unexpected " + extra.describe() + " after the last of the " + faces
+                    + " faces the header announces (at " + header.position(1) + ")");
+        }
+        return new Unwrap(uv.length == 2 * points ? uv : Arrays.copyOf(uv, 2 * points), index);
+    }
+
+    private static String meshName(MeshData mesh) {
+        return mesh.source() == null ? "the mesh" : "the mesh " + mesh.source();
+    }
+
+    private static boolean allIntegers(Line l) {
+        for (int i = 0; i < l.size(); i++) if (!INTEGER.matcher(l.text(i)).matches()) return false;
+        return true;
+    }
+
+    private static boolean allNumbers(Lines in, Line l) {
+        for (int i = 0; i < l.size(); i++) if (!in.isNumber(l, i)) return false;
+        return true;
     }
 
     /** n followed by n integers, n at least 3. */

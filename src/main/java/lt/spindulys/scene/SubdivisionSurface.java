@@ -1,5 +1,7 @@
 package lt.spindulys.scene;
 
+import java.util.Objects;
+
 import lt.spindulys.trace.Hit;
 import lt.spindulys.trace.TraceContext;
 import lt.spindulys.trace.ShadingData;
@@ -25,7 +27,9 @@ import lt.spindulys.material.Material;
  * quad is split into two triangles along its shorter diagonal. Smooth shading interpolates the
  * limit-surface normals of the refined vertices, which makes even a low level look round (at a
  * sharp edge, where the limit surface has a tangent plane on either side, each side keeps its own
- * normal); flat shading uses each triangle's own normal and shows the facets.
+ * normal); flat shading uses each triangle's own normal and shows the facets. The triangles'
+ * corners are the refined vertices where the refinement puts them, or, with
+ * {@link Positions#LIMIT}, their limit-surface positions, so that every corner lies on the surface.
  *
  * <p>The triangles are an ordinary {@link TriangleMesh} (positions of the refined vertices, limit
  * normals, refined face-varying UVs), and every query is delegated to it: the surface hits,
@@ -36,8 +40,38 @@ public final class SubdivisionSurface extends GObject {
     /** The deepest level: a quad becomes 4^8 = 65,536 quads. */
     public static final int MAX_LEVEL = 8;
 
+    /**
+     * Where the refined vertices are placed, and so the corners of the rendered triangles.
+     * Uniform refinement only: an adaptive surface ({@link AdaptiveSubdivisionSurface}) places
+     * its vertices at their refined positions.
+     */
+    public enum Positions {
+        /** Where the level's refinement puts them: the triangles approximate the limit surface from the control side. */
+        REFINED("refined"),
+        /**
+         * On the limit surface ({@link RefinedMesh#limitPositions()}, OpenSubdiv's limit
+         * evaluation): every triangle corner lies exactly on the surface the level approximates.
+         */
+        LIMIT("limit");
+
+        private final String word;
+
+        Positions(String word) { this.word = word; }
+
+        /** {@return the scene file's word for it: "refined" or "limit"} */
+        public String word() { return word; }
+    }
+
+    /**
+     * Heap each refined face costs with {@link Positions#LIMIT}, on top of {@link #BYTES_PER_FACE}:
+     * the limit positions, three doubles per refined vertex (about one vertex per face, a few more
+     * along boundaries).
+     */
+    public static final long LIMIT_POSITION_BYTES_PER_FACE = 32;
+
     private final int level;
     private final boolean smooth;
+    private final Positions positions;
     private final RefinedMesh refined;
     private final TriangleMesh mesh;
 
@@ -60,11 +94,30 @@ public final class SubdivisionSurface extends GObject {
      * @throws IllegalArgumentException if the level is not between 0 and {@link #MAX_LEVEL}
      */
     public SubdivisionSurface(ControlMesh control, int level, boolean smooth) {
-        checkLevel(level, refinedFaces(control, level));
+        this(control, level, smooth, Positions.REFINED);
+    }
+
+    /**
+     * Refines {@code control} {@code level} times and builds the triangles with their corners at
+     * the refined vertices' {@code positions}: where the refinement puts them, or on the limit
+     * surface.
+     *
+     * @param control the control mesh to refine
+     * @param level times to refine, 0 to {@link #MAX_LEVEL}
+     * @param smooth limit normals interpolated (true) or flat facets
+     * @param positions where the refined vertices are placed
+     * @throws IllegalArgumentException if the level is not between 0 and {@link #MAX_LEVEL}, or its
+     *         faces do not fit in the heap
+     */
+    public SubdivisionSurface(ControlMesh control, int level, boolean smooth, Positions positions) {
+        Objects.requireNonNull(positions, "positions");
+        checkLevel(level, refinedFaces(control, level), positions == Positions.LIMIT ? BYTES_PER_FACE + LIMIT_POSITION_BYTES_PER_FACE : BYTES_PER_FACE);
         this.level = level;
         this.smooth = smooth;
+        this.positions = positions;
         this.refined = CatmullClark.refine(control, level);
-        this.mesh = new TriangleMesh(triangles(refined, smooth));
+        this.mesh = new TriangleMesh(positions == Positions.LIMIT ? RefinedTriangles.triangles(refined, refined.limitPositions(), smooth)
+                : triangles(refined, smooth));
         mesh.smooth(smooth);
     }
 
@@ -72,6 +125,7 @@ public final class SubdivisionSurface extends GObject {
     private SubdivisionSurface(SubdivisionSurface p, TriangleMesh mesh) {
         level = p.level;
         smooth = p.smooth;
+        positions = p.positions;
         refined = p.refined;
         this.mesh = mesh;
         mesh.smooth(smooth);
@@ -242,11 +296,26 @@ public final class SubdivisionSurface extends GObject {
      */
     public boolean isSmooth() { return smooth; }
     /**
-     * The refined mesh the triangles come from (holes included).
+     * Where the refined vertices, the triangles' corners, are placed.
+     *
+     * @return {@link Positions#REFINED} (the default) or {@link Positions#LIMIT}
+     */
+    public Positions positions() { return positions; }
+    /**
+     * The refined mesh the triangles come from (holes included); with {@link Positions#LIMIT} the
+     * triangles' corners are its {@link RefinedMesh#limitPositions()}, not its positions.
      *
      * @return the refined mesh, shared with instances
      */
     public RefinedMesh refined() { return refined; }
+    /**
+     * The triangles rendered ({@link TriangleMesh#data()}): corners at the refined or the limit
+     * positions ({@link #positions()}), normals and UVs, sharing the mesh's arrays. Once the scene
+     * is built, the vertices are in the order of the acceleration structure.
+     *
+     * @return the triangles, sharing this surface's arrays (do not modify them)
+     */
+    public MeshData triangleData() { return mesh.data(); }
     /**
      * Triangles rendered: two per refined quad, holes left out.
      *

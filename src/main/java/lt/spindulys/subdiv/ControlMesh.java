@@ -28,6 +28,8 @@ public final class ControlMesh {
     private final int[] faceUvIndices;
     private final SubdivOptions options;
     private final String source;
+    /** The tags as given to the builder, for writing the mesh back out (the level holds them as applied). */
+    private final SubdivTags tags;
     /** Level-0 topology with its tags. */
     final Level base;
     /** Level-0 UV value mesh, or null without UVs. */
@@ -41,6 +43,9 @@ public final class ControlMesh {
         this.faceUvIndices = b.faceUvs;
         this.options = b.options;
         this.source = b.source;
+        this.tags = new SubdivTags(Arrays.copyOf(b.creases, 2 * b.creaseCount), Arrays.copyOf(b.creaseSharp, b.creaseCount),
+                Arrays.copyOf(b.corners, b.cornerCount), Arrays.copyOf(b.cornerSharp, b.cornerCount),
+                Arrays.copyOf(b.holes, b.holeCount), b.options, java.util.List.of());
         this.base = base;
         this.uvChannel = uvChannel;
     }
@@ -101,6 +106,18 @@ public final class ControlMesh {
 
     /** {@return the scheme options} */
     public SubdivOptions options() { return options; }
+
+    /**
+     * The creases, corners and holes as they were given to the builder, in that order (a later
+     * value for the same edge or vertex, which replaced the earlier, is listed after it), with
+     * the options: what a writer needs to write the mesh back out. The level the mesh refines
+     * from applies them; boundary rules and non-manifold topology may sharpen more vertices
+     * there, which is not listed here, since it follows from the mesh again. Arrays are the
+     * mesh's own: do not modify.
+     *
+     * @return the tags
+     */
+    public SubdivTags tags() { return tags; }
 
     /**
      * The name given with {@link Builder#source}, or null.
@@ -317,6 +334,14 @@ public final class ControlMesh {
             Builder frozen = new Builder(pos, sizes, verts);
             frozen.options = options;
             frozen.source = source;
+            frozen.creases = creases;
+            frozen.creaseSharp = creaseSharp;
+            frozen.creaseCount = creaseCount;
+            frozen.corners = corners;
+            frozen.cornerSharp = cornerSharp;
+            frozen.cornerCount = cornerCount;
+            frozen.holes = holes;
+            frozen.holeCount = holeCount;
             FaceVarying.Channel channel = null;
             if (uvs != null) {
                 frozen.uvs = uvs.clone();

@@ -23,7 +23,27 @@ public final class RefinedTriangles {
      * @return the triangles
      */
     public static MeshData triangles(RefinedMesh r, boolean smooth) {
-        return build(r, 0, r.faceCount(), smooth, null);
+        return build(r, r.positions(), 0, r.faceCount(), smooth, null);
+    }
+
+    /**
+     * The triangles of every face of a refined mesh with its vertices at other positions, such as
+     * {@link RefinedMesh#limitPositions()} (the corners then lie on the limit surface). The quads'
+     * diagonals and the sector normals at sharp edges are taken from these positions, as
+     * {@link #triangles(RefinedMesh, boolean)} takes them from the refined ones; the MeshData
+     * shares {@code positions} and the mesh's UVs.
+     *
+     * @param r the refined mesh
+     * @param positions x, y, z of every vertex of {@code r}
+     * @param smooth a normal per corner (true) or none (flat shading)
+     * @return the triangles
+     * @throws IllegalArgumentException if {@code positions} does not hold three numbers per vertex
+     */
+    public static MeshData triangles(RefinedMesh r, double[] positions, boolean smooth) {
+        if (positions.length != 3 * r.vertexCount()) {
+            throw new IllegalArgumentException(positions.length + " position numbers for " + r.vertexCount() + " vertices (three each)");
+        }
+        return build(r, positions, 0, r.faceCount(), smooth, null);
     }
 
     /**
@@ -35,12 +55,11 @@ public final class RefinedTriangles {
      *                  {@code r.vertexCount()})
      */
     static MeshData triangles(RefinedMesh r, int f0, int f1, boolean smooth, int[] vertexMap) {
-        return build(r, f0, f1, smooth, vertexMap);
+        return build(r, r.positions(), f0, f1, smooth, vertexMap);
     }
 
-    /** Compact when {@code vmap} is given, else the whole mesh sharing its arrays. */
-    private static MeshData build(RefinedMesh r, int f0, int f1, boolean smooth, int[] vmap) {
-        double[] p = r.positions();
+    /** Compact when {@code vmap} is given, else the whole mesh sharing its arrays; vertices at {@code p}. */
+    private static MeshData build(RefinedMesh r, double[] p, int f0, int f1, boolean smooth, int[] vmap) {
         int[] sizes = r.faceSizes(), fv = r.faceVertices(), fuv = r.faceUvs();
         double[] uvs = r.uvs();
         boolean withUv = uvs != null && fuv != null;
@@ -76,7 +95,7 @@ public final class RefinedTriangles {
             }
         }
         int[] outN = smooth ? new int[corners] : null;
-        double[] normals = !smooth ? null : vmap != null ? rangeNormals(r, f0, f1, outN) : cornerNormals(r, f0, f1, outN, false);
+        double[] normals = !smooth ? null : vmap != null ? rangeNormals(r, f0, f1, outN) : cornerNormals(r, p, f0, f1, outN, false);
         if (vmap == null) return new MeshData(p, normals, withUv ? uvs : null, outSizes, outV, outN, outUv, null);
         // Compact: vertices and UVs renumbered in order of first use, values copied unchanged.
         Arrays.fill(vmap, -1);
@@ -123,8 +142,8 @@ public final class RefinedTriangles {
      * range gets the values the whole mesh gets. Compact: only the normals the range uses, in
      * order of first use; otherwise every limit normal first (index = vertex), then the sectors'.
      */
-    private static double[] cornerNormals(RefinedMesh r, int f0, int f1, int[] outN, boolean compact) {
-        double[] p = r.positions(), limit = r.limitNormals();
+    private static double[] cornerNormals(RefinedMesh r, double[] p, int f0, int f1, int[] outN, boolean compact) {
+        double[] limit = r.limitNormals();
         int[] sizes = r.faceSizes(), fv = r.faceVertices(), twin = r.cornerTwins();
         boolean[] sharp = r.sharpEdges();
         int nv = p.length / 3, nf = sizes.length, nc = fv.length;
