@@ -103,6 +103,23 @@ final class Driver {
         return found.get();
     }
 
+    /**
+     * Closes a dialog of the JDK's (a message, a colour chooser) with Enter, its default button, as
+     * a user may: those dialogs are packed before they are placed, and without a window manager
+     * Java can then believe them elsewhere than they are (see docs/plugin-host.md), so a click at
+     * the button's believed place could miss; the keyboard goes to the focused window wherever it is.
+     */
+    void enter(Window dialog) {
+        awaitFocus(dialog);
+        key(KeyEvent.VK_ENTER, 0);
+        waitFor("window '" + dialog.getName() + "' to close", () -> !dialog.isShowing());
+    }
+
+    /** Waits until a window the test found has the focus, that is, until the window system has mapped it (see {@link #window}). */
+    void awaitFocus(Window w) {
+        waitFor("window '" + w.getName() + "' to have the focus", () -> w.isShowing() && w.isFocused());
+    }
+
     /** The message of the showing option pane (a message dialog), waiting for it. */
     JDialog messageDialog() {
         AtomicReference<JDialog> found = new AtomicReference<>();

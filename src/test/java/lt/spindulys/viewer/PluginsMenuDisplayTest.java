@@ -8,7 +8,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.awt.Color;
 import java.awt.Point;
 import java.awt.Rectangle;
-import java.awt.Window;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -167,9 +166,7 @@ class PluginsMenuDisplayTest {
         JColorChooser colours = driver.find(JColorChooser.class, "a colour chooser", c -> true);
         assertEquals(Color.GREEN, onEdt(colours::getColor), "starts at the field's colour");
         Driver.onEdtDo(() -> colours.setColor(new Color(255, 128, 0)));
-        Window colourDialog = onEdt(() -> SwingUtilities.getWindowAncestor(colours));
-        driver.click(driver.find(JButton.class, "the colour dialog's OK",
-                b -> "OK".equals(b.getText()) && SwingUtilities.getWindowAncestor(b) == colourDialog));
+        driver.enter(onEdt(() -> SwingUtilities.getWindowAncestor(colours)));
         driver.waitFor("the chosen colour in the field", () -> colour.getText().equals("1 0.502 0"));
         JLabel swatch = driver.find(JLabel.class, "swatch:color");
         assertEquals(new Color(255, 128, 0), onEdt(swatch::getBackground));
@@ -185,8 +182,7 @@ class PluginsMenuDisplayTest {
         driver.click(driver.find(JButton.class, "cancel"));
         JDialog message = driver.messageDialog();
         assertEquals("cancelled; nothing written", Driver.message(message));
-        driver.click(driver.find(JButton.class, "OptionPane.button"));
-        driver.waitFor("the message to close", () -> !message.isShowing());
+        driver.enter(message);
         assertTrue(window.run().await(10, TimeUnit.SECONDS));
         assertEquals("cancelled; nothing written", onEdt(window::status));
         try (Stream<Path> files = Files.list(dir)) {
@@ -204,8 +200,7 @@ class PluginsMenuDisplayTest {
         plugin.release();
         JDialog message = driver.messageDialog();
         assertEquals("render: cannot write 'x.png': disk full", Driver.message(message));
-        driver.click(driver.find(JButton.class, "OptionPane.button"));
-        driver.waitFor("the message to close", () -> !message.isShowing());
+        driver.enter(message);
         assertFalse(Files.exists(dir.resolve("cube.png")));
         assertTrue(onEdt(frame::isShowing), "the viewer keeps running");
     }
@@ -216,8 +211,7 @@ class PluginsMenuDisplayTest {
         choosePlugin();
         JDialog message = driver.messageDialog();
         assertEquals(PluginForm.NO_SURFACE, Driver.message(message));
-        driver.click(driver.find(JButton.class, "OptionPane.button"));
-        driver.waitFor("the message to close", () -> !message.isShowing());
+        driver.enter(message);
     }
 
     /** Waits until the screen shows {@code expected} in the middle of {@code picture}: what a user sees, not the model. */
