@@ -31,8 +31,17 @@ class CiRunScriptTest {
 
     private static final String XVFB_RUN = """
             #!/bin/bash
-            echo "xvfb-run $1 $2 $3" >> "$LOG"
-            shift 3
+            # Logs its options (the authority file as AUTH, after checking it exists), then runs the command.
+            line="xvfb-run"
+            while [ "${1#-}" != "$1" ]; do
+                case "$1" in
+                    -a) line="$line -a"; shift ;;
+                    -f) [ -f "$2" ] || { echo "no authority file $2" >&2; exit 6; }; line="$line -f AUTH"; shift 2 ;;
+                    -s) line="$line -s $2"; shift 2 ;;
+                    *) echo "unexpected option $1" >&2; exit 6 ;;
+                esac
+            done
+            echo "$line" >> "$LOG"
             [ "${FAKE_XVFB_START:-ok}" = fail ] && exit 1
             DISPLAY=:99 "$@"
             status=$?
@@ -118,7 +127,11 @@ class CiRunScriptTest {
         withXvfb();
         Run r = run(Map.of());
         assertEquals(0, r.status, r.stderr);
-        assertEquals(List.of("xvfb-run -a -s -screen 0 1600x1000x24", "mvn -B test DISPLAY=:99", "library-example"), r.log);
+        assertEquals(List.of("xvfb-run -a -f AUTH -s -screen 0 1600x1000x24", "mvn -B test DISPLAY=:99", "library-example"), r.log);
+        try (java.util.stream.Stream<Path> left = Files.list(stage)) {
+            assertEquals(List.of(), left.map(p -> p.getFileName().toString()).filter(n -> n.startsWith("tmp.")).toList(),
+                    "the status and authority files are removed");
+        }
     }
 
     @Test
@@ -126,7 +139,7 @@ class CiRunScriptTest {
         withXvfb();
         Run failed = run(Map.of("FAKE_MVN_EXIT", "1"));
         assertEquals(1, failed.status);
-        assertEquals(List.of("xvfb-run -a -s -screen 0 1600x1000x24", "mvn -B test DISPLAY=:99"), failed.log, "no library example after a failure");
+        assertEquals(List.of("xvfb-run -a -f AUTH -s -screen 0 1600x1000x24", "mvn -B test DISPLAY=:99"), failed.log, "no library example after a failure");
         Files.delete(log);
         Run both = run(Map.of("FAKE_MVN_EXIT", "1", "FAKE_XVFB_CLEANUP", "fail"));
         assertEquals(1, both.status, "the tests' status, not xvfb-run's");
@@ -153,10 +166,10 @@ class CiRunScriptTest {
                 "apt-get install -y -q --no-install-recommends xvfb xauth",
                 "apt-get update -q",
                 "apt-get install -y -q --no-install-recommends xvfb xauth",
-                "xvfb-run -a -s -screen 0 1600x1000x24", "mvn -B test DISPLAY=:99", "library-example"), r.log);
+                "xvfb-run -a -f AUTH -s -screen 0 1600x1000x24", "mvn -B test DISPLAY=:99", "library-example"), r.log);
         Files.delete(log);
         Run again = run(Map.of());
-        assertEquals(List.of("xvfb-run -a -s -screen 0 1600x1000x24", "mvn -B test DISPLAY=:99", "library-example"), again.log,
+        assertEquals(List.of("xvfb-run -a -f AUTH -s -screen 0 1600x1000x24", "mvn -B test DISPLAY=:99", "library-example"), again.log,
                 "installed once, used from then on");
     }
 
@@ -196,7 +209,7 @@ class CiRunScriptTest {
         Run noServer = run(Map.of("FAKE_XVFB_START", "fail", "FAKE_MVN_EXIT", "3"));
         assertEquals(3, noServer.status, "a failing suite still fails without the server");
         assertTrue(noServer.stderr.contains("the virtual X server did not start (xvfb-run exited with 1)"), noServer.stderr);
-        assertEquals(List.of("xvfb-run -a -s -screen 0 1600x1000x24", "mvn -B test DISPLAY="), noServer.log);
+        assertEquals(List.of("xvfb-run -a -f AUTH -s -screen 0 1600x1000x24", "mvn -B test DISPLAY="), noServer.log);
     }
 
     @Test
