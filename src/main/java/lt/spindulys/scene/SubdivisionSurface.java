@@ -111,7 +111,7 @@ public final class SubdivisionSurface extends GObject {
      */
     public SubdivisionSurface(ControlMesh control, int level, boolean smooth, Positions positions) {
         Objects.requireNonNull(positions, "positions");
-        checkLevel(level, refinedFaces(control, level), positions == Positions.LIMIT ? BYTES_PER_FACE + LIMIT_POSITION_BYTES_PER_FACE : BYTES_PER_FACE);
+        checkLevel(level, control.refinedFaceCount(level), positions == Positions.LIMIT ? BYTES_PER_FACE + LIMIT_POSITION_BYTES_PER_FACE : BYTES_PER_FACE);
         this.level = level;
         this.smooth = smooth;
         this.positions = positions;
@@ -240,14 +240,6 @@ public final class SubdivisionSurface extends GObject {
         HeapBudget.require(HeapBudget.product(refinedFaces, bytesPerFace), "subdivision level " + level + " of this mesh ("
                 + refinedFaces + " faces; uniform refinement; choose a lower level, give more heap, or refine adaptively)");
         return level;
-    }
-
-    /** The faces {@code control} has after {@code level} refinements (each n-gon gives n quads, each quad 4). */
-    static long refinedFaces(ControlMesh control, int level) {
-        if (level <= 0) return control.faceCount();
-        long corners = control.faceVertices().length;
-        for (int l = 1; l < level && corners < (1L << 60); l++) corners *= 4;
-        return corners;
     }
 
     /**

@@ -70,6 +70,30 @@ public final class ControlMesh {
     public int faceCount() { return faceSizes.length; }
 
     /**
+     * Faces the mesh has after {@code level} uniform refinements: its own at level 0, then one quad
+     * per face corner, four times more each further level. For refusing levels too deep for memory.
+     *
+     * @param level refinements, at least 0
+     * @return the face count; past 2^60 it stops growing (already far too many)
+     */
+    public long refinedFaceCount(int level) { return refinedFaceCount(faceSizes.length, faceVertices.length, level); }
+
+    /**
+     * {@link #refinedFaceCount(int)} of a mesh with these counts, before it is built.
+     *
+     * @param faces   the mesh's faces
+     * @param corners the mesh's face corners
+     * @param level   refinements, at least 0
+     * @return the face count, saturating past 2^60
+     */
+    public static long refinedFaceCount(int faces, long corners, int level) {
+        if (level <= 0) return faces;
+        // Saturate rather than overflow: at 2^62 the answer is "far too many" either way.
+        for (int l = 1; l < level && corners < (1L << 60); l++) corners *= 4;
+        return corners;
+    }
+
+    /**
      * x, y, z per vertex (the mesh's own array: do not modify).
      *
      * @return the positions

@@ -111,11 +111,7 @@ public record SubdivInput(MeshData mesh, SubdivTags tags) {
      * @return the face count; past 2^60 it stops growing (already far too many)
      */
     public long refinedFaceCount(int level) {
-        if (level <= 0) return mesh.faceCount();
-        long corners = mesh.vertexIndex().length;
-        // Saturate rather than overflow: at 2^62 the answer is "far too many" either way.
-        for (int l = 1; l < level && corners < (1L << 60); l++) corners *= 4;
-        return corners;
+        return ControlMesh.refinedFaceCount(mesh.faceCount(), mesh.vertexIndex().length, level);
     }
 
     /**

@@ -162,7 +162,7 @@ public final class ObjExportPlugin implements OutputPlugin {
             DisplayedSurface s = surfaces.get(i);
             try {
                 // The heap check render subdivide makes, before anything is refined (one surface is refined at a time).
-                SubdivisionSurface.checkLevel(s.level(), refinedFaces(s.control(), s.level()),
+                SubdivisionSurface.checkLevel(s.level(), s.control().refinedFaceCount(s.level()),
                         limit ? BYTES_PER_FACE + LIMIT_BYTES_PER_FACE : BYTES_PER_FACE);
             } catch (IllegalArgumentException e) {
                 throw new IllegalArgumentException("surface " + s.name() + ": " + e.getMessage(), e);
@@ -198,14 +198,6 @@ public final class ObjExportPlugin implements OutputPlugin {
         }
         report.accept(1);
         return r;
-    }
-
-    /** The faces {@code control} has after {@code level} refinements (each n-gon gives n quads, each quad 4). */
-    private static long refinedFaces(ControlMesh control, int level) {
-        if (level <= 0) return control.faceCount();
-        long corners = control.faceVertices().length;
-        for (int l = 1; l < level && corners < (1L << 60); l++) corners *= 4;
-        return corners;
     }
 
     /**

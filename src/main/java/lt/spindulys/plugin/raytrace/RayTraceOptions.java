@@ -213,19 +213,11 @@ final class RayTraceOptions {
     /** Whether uniform refinement to {@code level} fits the face limit and the heap. */
     private static boolean fits(ControlMesh c, int level, long bytesPerFace) {
         try {
-            SubdivisionSurface.checkLevel(level, refinedFaces(c, level), bytesPerFace);
+            SubdivisionSurface.checkLevel(level, c.refinedFaceCount(level), bytesPerFace);
             return true;
         } catch (IllegalArgumentException tooLarge) {
             return false;
         }
-    }
-
-    /** Faces after {@code level} uniform refinements (as SubdivInput counts them), saturating far past any limit. */
-    static long refinedFaces(ControlMesh c, int level) {
-        if (level <= 0) return c.faceCount();
-        long corners = c.faceVertices().length;
-        for (int l = 1; l < level && corners < (1L << 60); l++) corners *= 4;
-        return corners;
     }
 
     private static SceneDescription.MaterialSpec material(String kind, Color colour, boolean textured, double ior, Color tint,
