@@ -33,6 +33,7 @@ import javax.swing.SwingUtilities;
 import javax.swing.TransferHandler;
 import javax.swing.filechooser.FileNameExtensionFilter;
 
+import lt.spindulys.limits.FailureMessage;
 import lt.spindulys.subdiv.SubdivOptions;
 
 /**
@@ -275,7 +276,7 @@ public final class ViewerFrame extends JFrame {
                 open(files);
                 return true;
             } catch (java.awt.datatransfer.UnsupportedFlavorException | java.io.IOException e) {
-                showError(MeshLoader.message(e));
+                showError(FailureMessage.of(e));
                 return false;
             }
         }
