@@ -42,6 +42,49 @@ public record DisplayGeometry(float[] positions, float[] normals, int[] triangle
     }
 
     /**
+     * The volume the triangles enclose, signed: the sum over triangles of det(p0, p1, p2) / 6,
+     * positive when a closed surface's faces wind counter-clockwise seen from outside, negative
+     * when they wind clockwise. Only meaningful for a closed surface.
+     *
+     * @return the signed volume
+     */
+    public double signedVolume() {
+        float[] p = positions;
+        double v = 0;
+        for (int i = 0; i < triangles.length; i += 3) {
+            int a = 3 * triangles[i], b = 3 * triangles[i + 1], c = 3 * triangles[i + 2];
+            double ax = p[a], ay = p[a + 1], az = p[a + 2], bx = p[b], by = p[b + 1], bz = p[b + 2], cx = p[c], cy = p[c + 1], cz = p[c + 2];
+            v += ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx);
+        }
+        return v / 6;
+    }
+
+    /**
+     * Whether a mesh is closed, so that it has an inside: no holes, and every edge shared by
+     * exactly two faces. The faces' winding need not agree across an edge (a file may wind a few
+     * faces the other way round); what is closed still encloses a volume.
+     *
+     * @param r the mesh (the control mesh refined 0 times will do: refinement keeps it closed or open)
+     * @return true if closed
+     */
+    public static boolean closed(RefinedMesh r) {
+        int[] sizes = r.faceSizes(), fv = r.faceVertices();
+        if (r.hasHoles() || fv.length == 0) return false;
+        long[] edges = new long[fv.length];
+        for (int f = 0, c = 0; f < sizes.length; c += sizes[f], f++) {
+            for (int j = 0; j < sizes[f]; j++) {
+                long a = fv[c + j], b = fv[c + (j + 1) % sizes[f]];
+                edges[c + j] = Math.min(a, b) << 32 | Math.max(a, b);
+            }
+        }
+        java.util.Arrays.sort(edges);
+        for (int i = 0; i < edges.length; i += 2) {
+            if (i + 1 >= edges.length || edges[i] != edges[i + 1] || (i + 2 < edges.length && edges[i + 2] == edges[i])) return false;
+        }
+        return true;
+    }
+
+    /**
      * The polyhedron: every face of the refined mesh (the control mesh at level 0) flat shaded
      * with its own normal (Newell's, so a non-planar face still gets one normal), fanned into
      * triangles; holes left out.

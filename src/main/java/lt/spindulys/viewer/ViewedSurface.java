@@ -46,6 +46,8 @@ public final class ViewedSurface {
     private int level;
     private SubdivOptions.Boundary boundary;
     private final DisplayGeometry lattice;
+    /** Whether the surface has an inside (its topology: the same at every level and under every boundary rule). */
+    private final boolean closed;
     private final Map<SubdivOptions.Boundary, ControlMesh> controls = new EnumMap<>(SubdivOptions.Boundary.class);
     private final LinkedHashMap<Key, DisplayGeometry> cache = new LinkedHashMap<>(8, 0.75f, true);
     private DisplayGeometry shown;
@@ -72,6 +74,7 @@ public final class ViewedSurface {
         this.level = l;
         ControlMesh c = control(boundary);
         this.lattice = DisplayGeometry.lattice(c);
+        this.closed = DisplayGeometry.closed(CatmullClark.refine(c, 0));
     }
 
     /** {@return the name shown in the surface list} */
@@ -92,6 +95,8 @@ public final class ViewedSurface {
     public SubdivOptions.Boundary boundary() { return boundary; }
     /** {@return its colour (0xRRGGBB)} */
     public int rgb() { return rgb; }
+    /** {@return whether the surface is closed: no holes, every edge between two faces} */
+    public boolean closed() { return closed; }
     /** {@return the control cage's edges} */
     DisplayGeometry lattice() { return lattice; }
 
@@ -201,10 +206,20 @@ public final class ViewedSurface {
         return w == null || w.equals(shownKey);
     }
 
-    /** The faces to draw (those last built while newer ones are being built), or null. */
+    /**
+     * The faces to draw (those last built while newer ones are being built), or null. The back
+     * tint marks faces seen from the inside: for a closed surface the outside is where the
+     * enclosed volume says it is, so a mesh wound clockwise (as some files are) still shows its
+     * outside in its colour; an open surface has no inside, so its winding order decides.
+     */
     Rasterizer.Item facesItem() {
         if (mode == DisplayMode.LATTICE || shown == null) return null;
-        if (facesItem == null) facesItem = Rasterizer.Item.faces(shown, rgb, backTint(rgb));
+        if (facesItem == null) {
+            // The rasterizer lights a face seen from behind with the flipped normal; normals follow the
+            // winding, so swapping the tints is all a clockwise surface needs.
+            boolean inward = closed && shown.signedVolume() < 0;
+            facesItem = inward ? Rasterizer.Item.faces(shown, backTint(rgb), rgb) : Rasterizer.Item.faces(shown, rgb, backTint(rgb));
+        }
         return facesItem;
     }
 
