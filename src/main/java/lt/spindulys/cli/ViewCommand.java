@@ -14,7 +14,6 @@ import java.util.function.BooleanSupplier;
 import javax.swing.SwingUtilities;
 
 import lt.spindulys.plugin.OutputPlugins;
-import lt.spindulys.viewer.PluginAdapter;
 import lt.spindulys.viewer.ViewerFrame;
 
 /**
@@ -64,9 +63,8 @@ final class ViewCommand {
         CountDownLatch closed = new CountDownLatch(1);
         try {
             SwingUtilities.invokeAndWait(() -> {
-                ViewerFrame f = new ViewerFrame();
                 // Outputs go to the working folder until the user picks another, as the command line's do.
-                f.addMenu(PluginAdapter.menu(f, OutputPlugins.available(), Path.of("")));
+                ViewerFrame f = ViewerFrame.withPlugins(OutputPlugins.available(), Path.of(""));
                 f.addWindowListener(new WindowAdapter() {
                     @Override public void windowClosed(WindowEvent e) { closed.countDown(); }
                 });

@@ -106,6 +106,20 @@ public final class ViewerFrame extends JFrame {
     }
 
     /**
+     * The viewer as {@code render view} opens it: with a Plugins menu over {@code plugins}, which
+     * hands a chosen plugin what the viewer displays ({@link PluginAdapter}). Call on the event thread.
+     *
+     * @param plugins the output plugins, usually {@code OutputPlugins.available()}
+     * @param folder  where outputs go until the user picks another folder
+     * @return the window, not yet visible
+     */
+    public static ViewerFrame withPlugins(List<lt.spindulys.plugin.OutputPlugin> plugins, Path folder) {
+        ViewerFrame f = new ViewerFrame();
+        f.addMenu(PluginAdapter.menu(f, plugins, folder));
+        return f;
+    }
+
+    /**
      * Opens files as File > Open does: meshes (.obj, .dat) become surfaces, a .tex is attached to
      * the selected one. Errors are shown in a dialog.
      *
