@@ -4,6 +4,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 
+import lt.spindulys.math.Vec3;
 import lt.spindulys.plugin.DisplayedSurface;
 import lt.spindulys.plugin.OutputPlugin;
 import lt.spindulys.plugin.PluginView;
@@ -36,14 +37,17 @@ public final class PluginAdapter {
     }
 
     /**
-     * The viewer's camera and viewport.
+     * The viewer's camera and viewport. The up direction handed over is the world's, +y, about
+     * which the viewer orbits (its pitch stops short of the poles, so it is never along the view):
+     * the picture is the same as with the image's own up, and a plugin that puts a floor under the
+     * surfaces (the ray tracer) puts it level in the world rather than tilted with the camera.
      *
      * @param snapshot what is displayed
      * @return the view
      */
     public static PluginView view(ViewerSnapshot snapshot) {
         ViewerSnapshot.View v = snapshot.view();
-        return new PluginView(v.eye(), v.target(), v.up(), v.fovDegrees(), v.width(), v.height());
+        return new PluginView(v.eye(), v.target(), Vec3.Y, v.fovDegrees(), v.width(), v.height());
     }
 
     /**

@@ -69,7 +69,13 @@ class PluginAdapterTest {
         PluginView v = PluginAdapter.view(snap);
         assertEquals(new Vec3(1.2, 0, 6), v.eye());
         assertEquals(new Vec3(1.2, 0, 0), v.target());
-        assertEquals(m.camera().up(), v.up());
+        assertEquals(Vec3.Y, v.up(), "the world's up, so a floor lies level");
+        // Looking down from above: still the world's up, and the same picture as the image's up would give.
+        m.camera().set(new Vec3(1.2, 0, 0), 6, 0.3, 0.6);
+        PluginView tilted = PluginAdapter.view(m.snapshot());
+        assertEquals(Vec3.Y, tilted.up());
+        assertTrue(m.camera().up().dot(Vec3.Y) < 0.9, "the image's up is tilted");
+        assertEquals(m.camera().eye(), tilted.eye());
         assertEquals(45, v.fovDegrees());
         assertEquals(64, v.width());
         assertEquals(48, v.height());
