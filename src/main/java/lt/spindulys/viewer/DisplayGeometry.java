@@ -60,6 +60,90 @@ public record DisplayGeometry(float[] positions, float[] normals, int[] triangle
     }
 
     /**
+     * This closed surface with every triangle wound counter-clockwise seen from outside: the
+     * triangles are made to agree with their neighbours across each edge (a file may wind a few
+     * faces the other way round, as gourd.obj's end caps are), and then all turned round if the
+     * volume they enclose is negative (a file wound clockwise). A turned triangle gets its
+     * normals negated, so it is lit as before from its new front. Only for a closed surface
+     * (see {@link #closed}); a surface already wound so is returned as it is.
+     *
+     * @return the geometry wound outwards (this one if nothing needs turning)
+     */
+    public DisplayGeometry outward() {
+        int t = triangleCount(), halves = 3 * t;
+        if (t == 0) return this;
+        // Half-edges matched across their edge by an open-addressing table over the edge's two vertex indices.
+        int cap = Integer.highestOneBit(Math.max(4, 2 * halves - 1)) << 1;
+        long[] keys = new long[cap];
+        int[] slot = new int[cap];
+        java.util.Arrays.fill(keys, -1);
+        int[] twin = new int[halves];
+        java.util.Arrays.fill(twin, -1);
+        long nv = vertexCount();
+        for (int h = 0; h < halves; h++) {
+            int a = triangles[h], b = triangles[h - h % 3 + (h % 3 + 1) % 3];
+            long key = Math.min(a, b) * nv + Math.max(a, b);
+            int i = (int) (key * 0x9E3779B97F4A7C15L >>> 40) & (cap - 1);
+            while (keys[i] != -1 && keys[i] != key) i = (i + 1) & (cap - 1);
+            if (keys[i] == -1) {
+                keys[i] = key;
+                slot[i] = h;
+            } else if (twin[slot[i]] == -1 && slot[i] / 3 != h / 3) {
+                twin[slot[i]] = h;
+                twin[h] = slot[i];
+            } // a third triangle on an edge (non-manifold): left unmatched
+        }
+        // Flood each connected piece from its first triangle: a neighbour that runs the shared
+        // edge the same way round is turned relative to the triangle it was reached from.
+        boolean[] flip = new boolean[t], seen = new boolean[t];
+        int[] queue = new int[t];
+        for (int start = 0; start < t; start++) {
+            if (seen[start]) continue;
+            seen[start] = true;
+            int head = 0, tail = 0;
+            queue[tail++] = start;
+            while (head < tail) {
+                int u = queue[head++];
+                for (int c = 0; c < 3; c++) {
+                    int h = 3 * u + c, o = twin[h];
+                    if (o < 0 || seen[o / 3]) continue;
+                    boolean sameWay = triangles[o] == triangles[h];
+                    flip[o / 3] = flip[u] ^ sameWay;
+                    seen[o / 3] = true;
+                    queue[tail++] = o / 3;
+                }
+            }
+        }
+        float[] p = positions;
+        double v = 0;
+        for (int i = 0; i < t; i++) {
+            int a = 3 * triangles[3 * i], b = 3 * triangles[3 * i + 1], c = 3 * triangles[3 * i + 2];
+            double d = p[a] * ((double) p[b + 1] * p[c + 2] - (double) p[b + 2] * p[c + 1])
+                    - p[a + 1] * ((double) p[b] * p[c + 2] - (double) p[b + 2] * p[c])
+                    + p[a + 2] * ((double) p[b] * p[c + 1] - (double) p[b + 1] * p[c]);
+            v += flip[i] ? -d : d;
+        }
+        boolean all = v < 0;
+        boolean any = false;
+        for (int i = 0; i < t && !any; i++) any = flip[i] != all;
+        if (!any) return this;
+        int n = normals.length / 3;
+        float[] nn = java.util.Arrays.copyOf(normals, 2 * normals.length);
+        for (int i = 0; i < normals.length; i++) nn[normals.length + i] = -normals[i];
+        int[] tt = triangles.clone(), cn = cornerNormals.clone();
+        for (int i = 0; i < t; i++) {
+            if (flip[i] == all) continue;
+            int k = 3 * i;
+            tt[k + 1] = triangles[k + 2];
+            tt[k + 2] = triangles[k + 1];
+            cn[k] = cornerNormals[k] + n;
+            cn[k + 1] = cornerNormals[k + 2] + n;
+            cn[k + 2] = cornerNormals[k + 1] + n;
+        }
+        return new DisplayGeometry(positions, nn, tt, cn, edges);
+    }
+
+    /**
      * Whether a mesh is closed, so that it has an inside: no holes, and every edge shared by
      * exactly two faces. The faces' winding need not agree across an edge (a file may wind a few
      * faces the other way round); what is closed still encloses a volume.

@@ -167,7 +167,10 @@ public final class ViewedSurface {
         // Checked again here: other surfaces may have taken the heap since the level was set.
         SubdivisionSurface.checkLevel(k.level(), input.refinedFaceCount(k.level()));
         var r = CatmullClark.refine(control(k.boundary()), k.level());
-        return k.smooth() ? DisplayGeometry.smoothed(r) : DisplayGeometry.polyhedron(r);
+        DisplayGeometry g = k.smooth() ? DisplayGeometry.smoothed(r) : DisplayGeometry.polyhedron(r);
+        // The back tint marks faces seen from the inside: a closed surface has one, found from the
+        // volume it encloses whatever the file's winding; an open surface's winding decides.
+        return closed ? g.outward() : g;
     }
 
     /** {@return the cached geometry of {@code k}, or null} */
@@ -206,20 +209,10 @@ public final class ViewedSurface {
         return w == null || w.equals(shownKey);
     }
 
-    /**
-     * The faces to draw (those last built while newer ones are being built), or null. The back
-     * tint marks faces seen from the inside: for a closed surface the outside is where the
-     * enclosed volume says it is, so a mesh wound clockwise (as some files are) still shows its
-     * outside in its colour; an open surface has no inside, so its winding order decides.
-     */
+    /** The faces to draw (those last built while newer ones are being built), or null. */
     Rasterizer.Item facesItem() {
         if (mode == DisplayMode.LATTICE || shown == null) return null;
-        if (facesItem == null) {
-            // The rasterizer lights a face seen from behind with the flipped normal; normals follow the
-            // winding, so swapping the tints is all a clockwise surface needs.
-            boolean inward = closed && shown.signedVolume() < 0;
-            facesItem = inward ? Rasterizer.Item.faces(shown, backTint(rgb), rgb) : Rasterizer.Item.faces(shown, rgb, backTint(rgb));
-        }
+        if (facesItem == null) facesItem = Rasterizer.Item.faces(shown, rgb, backTint(rgb));
         return facesItem;
     }
 
