@@ -151,6 +151,22 @@ class ViewerDisplayTest {
     }
 
     @Test
+    void renderViewOpensTheMeshWithThePluginsMenuAndReturnsWhenClosed() throws Exception {
+        java.io.ByteArrayOutputStream err = new java.io.ByteArrayOutputStream();
+        java.util.concurrent.CompletableFuture<Integer> status = java.util.concurrent.CompletableFuture.supplyAsync(() ->
+                lt.spindulys.cli.Main.run(new String[] {"view", "scenes/models/crease-cube.obj"},
+                        new java.io.PrintStream(new java.io.ByteArrayOutputStream()), new java.io.PrintStream(err, true)));
+        frame = driver.window(ViewerFrame.class);
+        driver.waitFor("crease-cube.obj open", () -> frame.model().surfaces().size() == 1);
+        driver.click(driver.find(PluginsMenu.class, "pluginsMenu"));
+        assertNotNull(driver.find(JMenuItem.class, "plugin:raytrace"), "the ray tracer in the Plugins menu");
+        assertNotNull(driver.find(JMenuItem.class, "plugin:obj"), "and the OBJ export");
+        driver.key(KeyEvent.VK_ESCAPE, 0);
+        Driver.onEdtDo(frame::dispose);
+        assertEquals(0, status.get(10, TimeUnit.SECONDS), "render view returns when its window closes: " + err);
+    }
+
+    @Test
     void modesAndLevelsByKeysAndMenusShowAsTheGoldens() throws IOException {
         launch(Path.of("scenes/models/crease-cube.obj"));
         ViewedSurface s = onEdt(() -> frame.model().selected());
