@@ -7,6 +7,7 @@ import java.util.List;
 
 import lt.spindulys.image.NonFinitePixelException;
 import lt.spindulys.io.SceneException;
+import lt.spindulys.limits.FailureMessage;
 import lt.spindulys.limits.MessageText;
 
 /**
@@ -69,26 +70,17 @@ public final class Main {
             return 2;
         } catch (SceneException | RenderCommand.NoSuchFileException | IllegalArgumentException e) {
             // Bad input: the message already names the place (file:line:column or the object).
-            line(err, e.getMessage());
+            line(err, e instanceof RenderCommand.NoSuchFileException ? e.getMessage() : FailureMessage.of(e));
             if (debug) e.printStackTrace(err);
             return 2;
-        } catch (InterruptedException e) {
-            line(err, "render: interrupted; no image written");
-            return 1;
-        } catch (java.io.IOException e) {
-            line(err, "render: " + e.getMessage());
-            if (debug) e.printStackTrace(err);
-            return 1;
-        } catch (NonFinitePixelException e) {
-            // Unreachable from any input the readers accept (their ranges keep pixels finite): a bug.
-            line(err, "render: internal error: " + e.getMessage());
-            if (debug) e.printStackTrace(err);
-            return 1;
-        } catch (OutOfMemoryError e) {
-            line(err, "render: out of memory (give the JVM more with -Xmx, or lower the resolution)");
+        } catch (InterruptedException | java.io.IOException | NonFinitePixelException | OutOfMemoryError e) {
+            // The same line the viewer shows for the same failure (FailureMessage); a non-finite
+            // pixel is unreachable from any input the readers accept (their ranges keep pixels finite): a bug.
+            line(err, FailureMessage.of(e));
+            if (debug && !(e instanceof InterruptedException) && !(e instanceof OutOfMemoryError)) e.printStackTrace(err);
             return 1;
         } catch (RuntimeException e) {
-            line(err, "render: internal error: " + e + (debug ? "" : " (run with --debug for details)"));
+            line(err, FailureMessage.of(e) + (debug ? "" : " (run with --debug for details)"));
             if (debug) e.printStackTrace(err);
             return 1;
         }

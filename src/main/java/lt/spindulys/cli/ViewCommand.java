@@ -13,12 +13,13 @@ import java.util.function.BooleanSupplier;
 
 import javax.swing.SwingUtilities;
 
+import lt.spindulys.plugin.OutputPlugins;
 import lt.spindulys.viewer.ViewerFrame;
 
 /**
- * {@code render view [MESH...]}: opens the viewer's window with the meshes given and returns when
- * it is closed. Without a display it prints one line saying so and fails, instead of the JDK's
- * HeadlessException.
+ * {@code render view [MESH...]}: opens the viewer's window with the meshes given, with a Plugins
+ * menu of every output plugin found, and returns when it is closed. Without a display it prints
+ * one line saying so and fails, instead of the JDK's HeadlessException.
  */
 final class ViewCommand {
     static final String USAGE = """
@@ -62,7 +63,8 @@ final class ViewCommand {
         CountDownLatch closed = new CountDownLatch(1);
         try {
             SwingUtilities.invokeAndWait(() -> {
-                ViewerFrame f = new ViewerFrame();
+                // Outputs go to the working folder until the user picks another, as the command line's do.
+                ViewerFrame f = ViewerFrame.withPlugins(OutputPlugins.available(), Path.of(""));
                 f.addWindowListener(new WindowAdapter() {
                     @Override public void windowClosed(WindowEvent e) { closed.countDown(); }
                 });

@@ -15,8 +15,8 @@ import lt.spindulys.subdiv.SubdivInput;
  * Reads what the viewer opens: OBJ meshes with OpenSubdiv tags ({@link ObjReader#readSubdiv}),
  * Workframe {@code .dat} meshes ({@link WorkframeReader#readMesh}) with the {@code .tex} unwrap of
  * the same base name beside them when there is one, and {@code .tex} unwraps on their own, for
- * a surface already open. Errors are the exceptions the readers throw, whose messages
- * {@link #message(Throwable)} turns into the line the command line prints.
+ * a surface already open. Errors are the exceptions the readers throw, which
+ * {@link lt.spindulys.limits.FailureMessage#of} turns into the line the command line prints.
  */
 public final class MeshLoader {
     private MeshLoader() {}
@@ -102,22 +102,5 @@ public final class MeshLoader {
         String name = n == null ? "" : n.toString();
         int dot = name.lastIndexOf('.');
         return dot < 0 ? "" : name.substring(dot + 1).toLowerCase(Locale.ROOT);
-    }
-
-    /**
-     * The one line the command line ({@code render}) prints for the same failure: bad input as
-     * its own message (it names the file and place), a file that cannot be read as
-     * "render: ...", escaped so that it stays one line.
-     *
-     * @param t the failure
-     * @return the message
-     */
-    public static String message(Throwable t) {
-        String m;
-        if (t instanceof SceneException || t instanceof IllegalArgumentException) m = t.getMessage();
-        else if (t instanceof IOException) m = "render: " + t.getMessage();
-        else if (t instanceof OutOfMemoryError) m = "render: out of memory (give the JVM more with -Xmx, or choose a lower level)";
-        else m = "render: internal error: " + t;
-        return MessageText.escape(m);
     }
 }

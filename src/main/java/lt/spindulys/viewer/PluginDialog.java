@@ -45,6 +45,7 @@ import javax.swing.filechooser.FileNameExtensionFilter;
 import javax.swing.text.DefaultFormatter;
 import javax.swing.text.JTextComponent;
 
+import lt.spindulys.limits.FailureMessage;
 import lt.spindulys.plugin.DisplayedSurface;
 import lt.spindulys.plugin.PluginOption;
 
@@ -183,7 +184,7 @@ public final class PluginDialog extends JDialog {
             dispose();
         } catch (IOException | IllegalArgumentException e) {
             // An output folder that will not take a file: say so and let the user pick another.
-            show(UserMessages.of(e));
+            show(FailureMessage.of(e));
             ok.setEnabled(false);
         }
     }

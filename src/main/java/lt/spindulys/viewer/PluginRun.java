@@ -9,6 +9,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicReference;
 
+import lt.spindulys.limits.FailureMessage;
 import lt.spindulys.plugin.DisplayedSurface;
 import lt.spindulys.plugin.OutputPlugin;
 import lt.spindulys.plugin.PluginProgress;
@@ -47,7 +48,7 @@ public final class PluginRun {
         void finished(PluginResult result);
 
         /**
-         * @param message   one line for the user ({@link UserMessages#of})
+         * @param message   one line for the user ({@link FailureMessage#of})
          * @param cancelled true if the run ended because the user cancelled it
          */
         void failed(String message, boolean cancelled);
@@ -119,13 +120,13 @@ public final class PluginRun {
             Objects.requireNonNull(result, "plugin " + plugin.id() + " returned no result");
             ui.execute(() -> listener.finished(result));
         } catch (CancellationException e) {
-            ui.execute(() -> listener.failed(UserMessages.CANCELLED, true));
+            ui.execute(() -> listener.failed(FailureMessage.CANCELLED, true));
         } catch (Throwable e) {
             // Anything else ends the run, not the viewer: a third-party plugin's missing class or
             // assertion is reported like any failure rather than leaving the window waiting forever.
-            String message = UserMessages.of(e);
+            String message = FailureMessage.of(e);
             boolean byUser = cancelled.get() && e instanceof InterruptedException;
-            ui.execute(() -> listener.failed(byUser ? UserMessages.CANCELLED : message, byUser));
+            ui.execute(() -> listener.failed(byUser ? FailureMessage.CANCELLED : message, byUser));
         } finally {
             ended.countDown();
         }

@@ -10,6 +10,7 @@ import javax.swing.JMenu;
 import javax.swing.JMenuItem;
 import javax.swing.JOptionPane;
 
+import lt.spindulys.limits.FailureMessage;
 import lt.spindulys.plugin.DisplayedSurface;
 import lt.spindulys.plugin.OutputPlugin;
 import lt.spindulys.plugin.PluginView;
@@ -76,7 +77,7 @@ public final class PluginsMenu extends JMenu {
             form = new PluginForm(plugin, shown, view.get(), folder);
         } catch (RuntimeException e) {
             // A plugin that rejects the surfaces (IllegalArgumentException) or fails: one line, and the viewer goes on.
-            JOptionPane.showMessageDialog(owner, UserMessages.of(e), plugin.name(), JOptionPane.ERROR_MESSAGE);
+            JOptionPane.showMessageDialog(owner, FailureMessage.of(e), plugin.name(), JOptionPane.ERROR_MESSAGE);
             return null;
         }
         PluginForm.Accepted accepted = new PluginDialog(owner, form).ask();

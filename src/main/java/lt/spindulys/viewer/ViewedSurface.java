@@ -46,6 +46,8 @@ public final class ViewedSurface {
     private int level;
     private SubdivOptions.Boundary boundary;
     private final DisplayGeometry lattice;
+    /** Whether the surface has an inside (its topology: the same at every level and under every boundary rule). */
+    private final boolean closed;
     private final Map<SubdivOptions.Boundary, ControlMesh> controls = new EnumMap<>(SubdivOptions.Boundary.class);
     private final LinkedHashMap<Key, DisplayGeometry> cache = new LinkedHashMap<>(8, 0.75f, true);
     private DisplayGeometry shown;
@@ -72,6 +74,7 @@ public final class ViewedSurface {
         this.level = l;
         ControlMesh c = control(boundary);
         this.lattice = DisplayGeometry.lattice(c);
+        this.closed = DisplayGeometry.closed(CatmullClark.refine(c, 0));
     }
 
     /** {@return the name shown in the surface list} */
@@ -92,6 +95,8 @@ public final class ViewedSurface {
     public SubdivOptions.Boundary boundary() { return boundary; }
     /** {@return its colour (0xRRGGBB)} */
     public int rgb() { return rgb; }
+    /** {@return whether the surface is closed: no holes, every edge between two faces} */
+    public boolean closed() { return closed; }
     /** {@return the control cage's edges} */
     DisplayGeometry lattice() { return lattice; }
 
@@ -162,7 +167,10 @@ public final class ViewedSurface {
         // Checked again here: other surfaces may have taken the heap since the level was set.
         SubdivisionSurface.checkLevel(k.level(), input.refinedFaceCount(k.level()));
         var r = CatmullClark.refine(control(k.boundary()), k.level());
-        return k.smooth() ? DisplayGeometry.smoothed(r) : DisplayGeometry.polyhedron(r);
+        DisplayGeometry g = k.smooth() ? DisplayGeometry.smoothed(r) : DisplayGeometry.polyhedron(r);
+        // The back tint marks faces seen from the inside: a closed surface has one, found from the
+        // volume it encloses whatever the file's winding; an open surface's winding decides.
+        return closed ? g.outward() : g;
     }
 
     /** {@return the cached geometry of {@code k}, or null} */

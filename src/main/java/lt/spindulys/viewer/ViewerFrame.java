@@ -33,6 +33,7 @@ import javax.swing.SwingUtilities;
 import javax.swing.TransferHandler;
 import javax.swing.filechooser.FileNameExtensionFilter;
 
+import lt.spindulys.limits.FailureMessage;
 import lt.spindulys.subdiv.SubdivOptions;
 
 /**
@@ -102,6 +103,20 @@ public final class ViewerFrame extends JFrame {
         });
         pack();
         update();
+    }
+
+    /**
+     * The viewer as {@code render view} opens it: with a Plugins menu over {@code plugins}, which
+     * hands a chosen plugin what the viewer displays ({@link PluginAdapter}). Call on the event thread.
+     *
+     * @param plugins the output plugins, usually {@code OutputPlugins.available()}
+     * @param folder  where outputs go until the user picks another folder
+     * @return the window, not yet visible
+     */
+    public static ViewerFrame withPlugins(List<lt.spindulys.plugin.OutputPlugin> plugins, Path folder) {
+        ViewerFrame f = new ViewerFrame();
+        f.addMenu(PluginAdapter.menu(f, plugins, folder));
+        return f;
     }
 
     /**
@@ -275,7 +290,7 @@ public final class ViewerFrame extends JFrame {
                 open(files);
                 return true;
             } catch (java.awt.datatransfer.UnsupportedFlavorException | java.io.IOException e) {
-                showError(MeshLoader.message(e));
+                showError(FailureMessage.of(e));
                 return false;
             }
         }

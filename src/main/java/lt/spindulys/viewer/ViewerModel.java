@@ -8,6 +8,7 @@ import java.util.List;
 import java.util.Set;
 import java.util.concurrent.Executor;
 
+import lt.spindulys.limits.FailureMessage;
 import lt.spindulys.math.Bounds;
 import lt.spindulys.subdiv.SubdivInput;
 import lt.spindulys.subdiv.SubdivOptions;
@@ -140,7 +141,7 @@ public final class ViewerModel {
             pending--;
             ViewedSurface s = selected();
             if (s == null) {
-                listener.error(MeshLoader.message(new IllegalArgumentException(tex + ": an unwrap (.tex) is attached to the selected surface, but no surface is open")));
+                listener.error(FailureMessage.of(new IllegalArgumentException(tex + ": an unwrap (.tex) is attached to the selected surface, but no surface is open")));
                 return;
             }
             SubdivInput in = s.input();
@@ -167,7 +168,7 @@ public final class ViewerModel {
 
     /** Reports a background failure on the owning thread. */
     private void fail(Throwable t) {
-        String m = MeshLoader.message(t);
+        String m = FailureMessage.of(t);
         ui.execute(() -> {
             pending--;
             listener.error(m);
@@ -271,7 +272,7 @@ public final class ViewerModel {
         try {
             s.level(l);
         } catch (IllegalArgumentException e) {
-            listener.error(MeshLoader.message(e));
+            listener.error(FailureMessage.of(e));
             return;
         }
         refresh(s);

@@ -182,10 +182,10 @@ final class Driver {
             robot.mouseMove(p.x + c.getWidth() / 2, p.y + c.getHeight() / 2);
             return c.getMousePosition() != null;
         });
-        robot.waitForIdle();
+        // No Robot.waitForIdle here or below: under a virtual X server without a window manager it
+        // can stall for seconds at a time; callers wait for what the click does instead.
         robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
         robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
-        robot.waitForIdle();
     }
 
     /** Clicks into a text field, waits for its focus, and replaces its text by typing. */
@@ -194,18 +194,25 @@ final class Driver {
         waitFor("the focus in " + field.getName(), field::isFocusOwner);
         key(KeyEvent.VK_A, InputEvent.CTRL_DOWN_MASK);
         key(KeyEvent.VK_DELETE, 0);
+        type(text);
+        if (field instanceof javax.swing.text.JTextComponent t) waitFor("'" + text + "' in " + field.getName(), () -> t.getText().equals(text));
+    }
+
+    /** Types {@code text} into whatever has the focus, key by key, as a user would. */
+    void type(String text) {
         for (char ch : text.toCharArray()) {
             switch (ch) {
                 case ' ' -> key(KeyEvent.VK_SPACE, 0);
                 case '.' -> key(KeyEvent.VK_PERIOD, 0);
                 case '-' -> key(KeyEvent.VK_MINUS, 0);
+                case '/' -> key(KeyEvent.VK_SLASH, 0);
+                case '_' -> key(KeyEvent.VK_MINUS, InputEvent.SHIFT_DOWN_MASK);
                 default -> {
                     if (Character.isDigit(ch) || (ch >= 'a' && ch <= 'z')) key(KeyEvent.getExtendedKeyCodeForChar(ch), 0);
-                    else throw new IllegalArgumentException("the driver types digits, small letters, space, '.' and '-', not '" + ch + "'");
+                    else throw new IllegalArgumentException("the driver types digits, small letters, space, '.', '-', '/' and '_', not '" + ch + "'");
                 }
             }
         }
-        robot.waitForIdle();
     }
 
     /** Presses and releases a key, with modifiers (only Ctrl and Shift). */
@@ -216,6 +223,12 @@ final class Driver {
         robot.keyRelease(code);
         if ((modifiers & InputEvent.SHIFT_DOWN_MASK) != 0) robot.keyRelease(KeyEvent.VK_SHIFT);
         if ((modifiers & InputEvent.CTRL_DOWN_MASK) != 0) robot.keyRelease(KeyEvent.VK_CONTROL);
+    }
+
+    /** What the screen shows of a showing component: its rectangle captured from the screen. */
+    java.awt.image.BufferedImage capture(Component c) {
+        java.awt.Rectangle r = onEdt(() -> new java.awt.Rectangle(c.getLocationOnScreen(), c.getSize()));
+        return robot.createScreenCapture(r);
     }
 
     /** The colour on the screen at the middle of a showing component. */

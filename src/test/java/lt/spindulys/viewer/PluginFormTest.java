@@ -16,6 +16,8 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+import lt.spindulys.limits.FailureMessage;
+
 class PluginFormTest {
     @TempDir
     Path dir;
@@ -88,7 +90,7 @@ class PluginFormTest {
             assertNull(f.problem(), "the folder exists, so the live check lets it pass");
             IOException e = assertThrows(IOException.class, f::accept);
             assertTrue(e.getMessage().startsWith("cannot write '/proc/picture.png': cannot create a file in '/proc': "), e.getMessage());
-            assertEquals("render: " + e.getMessage(), UserMessages.of(e));
+            assertEquals("render: " + e.getMessage(), FailureMessage.of(e));
         }
     }
 

@@ -18,7 +18,7 @@ import lt.spindulys.math.Vec3;
 
 /**
  * The viewport's picture, headless: two meshes of scenes/models opened in the model (the gourd,
- * whose faces wind clockwise so that its outside shows the back tint, and the open sheet seen
+ * whose faces wind clockwise but whose outside shows in its colour, closed as it is, and the open sheet seen
  * from above and below), one smoothed with its cage, one as a polyhedron, rendered by the
  * rasterizer and compared with a golden PNG. Regenerate it after an intended change with
  * {@code mvn test -Dtest=ViewportGoldenTest -Dgolden.update=true} and look at it first.
