@@ -16,7 +16,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-import lt.spindulys.limits.FailureMessage;
+import lt.spindulys.render.FailureMessage;
 
 class PluginFormTest {
     @TempDir

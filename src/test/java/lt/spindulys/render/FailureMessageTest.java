@@ -1,4 +1,4 @@
-package lt.spindulys.limits;
+package lt.spindulys.render;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 

@@ -1,10 +1,11 @@
-package lt.spindulys.limits;
+package lt.spindulys.render;
 
 import java.io.IOException;
 import java.util.concurrent.CancellationException;
 
 import lt.spindulys.image.NonFinitePixelException;
 import lt.spindulys.io.SceneException;
+import lt.spindulys.limits.MessageText;
 
 /**
  * The one line a user is shown for a failure, in every front end: {@code render} prints it on
