@@ -23,15 +23,17 @@ import lt.spindulys.subdiv.ControlMesh;
  *         .options(SubdivOptions.DEFAULT.withBoundary(SubdivOptions.Boundary.EDGE_AND_CORNER))
  *         .source("cube")
  *         .build();
- * DisplayedSurface s = new DisplayedSurface("cube", cage, DisplayedSurface.Scheme.CATMULL_CLARK, 3);
+ * DisplayedSurface s = new DisplayedSurface("cube", cage, DisplayedSurface.Scheme.CATMULL_CLARK, 3,
+ *         DisplayedSurface.Shading.SMOOTH);
  * }</pre>
  *
  * @param name    the name a user knows the surface by (a file name, for example); not blank
  * @param control the control mesh as the host holds it, before the host's subdivision
  * @param scheme  the subdivision the host applied
  * @param level   how many times the host subdivided it, 0 to 8 (0 for {@link Scheme#NONE})
+ * @param shading how the host shades it: a plugin that makes a picture shades it alike unless told otherwise
  */
-public record DisplayedSurface(String name, ControlMesh control, Scheme scheme, int level) {
+public record DisplayedSurface(String name, ControlMesh control, Scheme scheme, int level, Shading shading) {
     /** The most levels a host may report; {@code SubdivisionSurface.MAX_LEVEL}. */
     public static final int MAX_LEVEL = 8;
 
@@ -43,6 +45,27 @@ public record DisplayedSurface(String name, ControlMesh control, Scheme scheme, 
         CATMULL_CLARK
     }
 
+    /** How the host shades the surface it shows. */
+    public enum Shading {
+        /** Smooth: normals interpolated across the faces (the limit surface's, where the host has them). */
+        SMOOTH,
+        /** Flat facets: each face with its own normal, as a polyhedron. */
+        FLAT
+    }
+
+    /**
+     * A surface shaded as hosts usually show it: flat facets for the control mesh itself
+     * ({@link Scheme#NONE}), smooth when subdivided.
+     *
+     * @param name    the name a user knows the surface by
+     * @param control the control mesh
+     * @param scheme  the subdivision the host applied
+     * @param level   how many times the host subdivided it
+     */
+    public DisplayedSurface(String name, ControlMesh control, Scheme scheme, int level) {
+        this(name, control, scheme, level, scheme == Scheme.NONE ? Shading.FLAT : Shading.SMOOTH);
+    }
+
     /**
      * Checks the name and level.
      *
@@ -52,6 +75,7 @@ public record DisplayedSurface(String name, ControlMesh control, Scheme scheme, 
         Objects.requireNonNull(name, "name");
         Objects.requireNonNull(control, "control");
         Objects.requireNonNull(scheme, "scheme");
+        Objects.requireNonNull(shading, "shading");
         if (name.isBlank()) throw new IllegalArgumentException("a displayed surface needs a name");
         if (level < 0 || level > MAX_LEVEL) {
             throw new IllegalArgumentException("surface " + name + ": subdivision level must be between 0 and " + MAX_LEVEL + ", found " + level);

@@ -58,6 +58,8 @@ class PluginAdapterTest {
         assertEquals(2, ds.get(0).level());
         assertEquals(DisplayedSurface.Scheme.NONE, ds.get(1).scheme(), "level 0: the control mesh itself");
         assertEquals(0, ds.get(1).level());
+        assertEquals(DisplayedSurface.Shading.SMOOTH, ds.get(0).shading(), "a lattice stands for the smooth surface");
+        assertEquals(DisplayedSurface.Shading.FLAT, ds.get(1).shading(), "a polyhedron shows facets");
         for (int i = 0; i < 2; i++) {
             ViewedSurface s = m.surfaces().get(i);
             assertSame(s.control(s.boundary()), ds.get(i).control(), "the control mesh the viewer holds, not a copy");
@@ -86,6 +88,9 @@ class PluginAdapterTest {
         DisplayedSurface again = PluginAdapter.surfaces(m.snapshot()).get(1);
         assertEquals(DisplayedSurface.Scheme.CATMULL_CLARK, again.scheme());
         assertEquals(1, again.level());
+        assertEquals(DisplayedSurface.Shading.FLAT, again.shading());
+        m.mode(DisplayMode.SMOOTHED);
+        assertEquals(DisplayedSurface.Shading.SMOOTH, PluginAdapter.surfaces(m.snapshot()).get(1).shading());
     }
 
     @Test

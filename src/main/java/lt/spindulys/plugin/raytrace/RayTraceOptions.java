@@ -97,6 +97,7 @@ final class RayTraceOptions {
             String group = MessageText.cut(SceneDescription.oneLine(s.name()));
             if (!names.add(group)) group = group + " (surface " + i + ")";
             boolean subdivided = s.scheme() == DisplayedSurface.Scheme.CATMULL_CLARK;
+            boolean smooth = s.shading() == DisplayedSurface.Shading.SMOOTH;
             o.add(PluginOption.choice(surfaceKey(i, MATERIAL), "Material", group, "opaque", MATERIALS,
                     "opaque: coloured; transparent: glass with an index of refraction and a tint; mirror: reflects."));
             o.add(PluginOption.of(surfaceKey(i, COLOR), "Colour", group, PluginOption.Kind.COLOR, colourText(COLOURS[i % COLOURS.length]),
@@ -110,9 +111,9 @@ final class RayTraceOptions {
                     "An image (PNG, JPEG, TGA) to colour the surface with; empty for none."));
             o.add(PluginOption.choice(surfaceKey(i, MAPPING), "Texture mapping", group, s.control().uvs() != null ? "uv" : "spherical", MAPPINGS,
                     "How the texture is laid on the surface: its own texture coordinates (uv), or projected around its bounds."));
-            o.add(PluginOption.choice(surfaceKey(i, RENDERING), "Rendering", group, subdivided ? "limit" : "host-level", RENDERINGS,
+            o.add(PluginOption.choice(surfaceKey(i, RENDERING), "Rendering", group, subdivided && smooth ? "limit" : "host-level", RENDERINGS,
                     "limit: the smooth limit surface; host-level: subdivided as the viewer shows it; adaptive: refined to one-pixel edges."));
-            o.add(PluginOption.choice(surfaceKey(i, SHADING), "Shading", group, subdivided ? "smooth" : "flat", SHADINGS,
+            o.add(PluginOption.choice(surfaceKey(i, SHADING), "Shading", group, smooth ? "smooth" : "flat", SHADINGS,
                     "smooth: limit-surface normals; flat: each facet's own normal."));
         }
         return o;

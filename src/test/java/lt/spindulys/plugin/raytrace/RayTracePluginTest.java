@@ -223,6 +223,18 @@ class RayTracePluginTest {
         List<PluginOption> p = new RayTracePlugin().options(polyhedron, view());
         assertEquals("host-level", option(p, "surface.0.rendering").defaultValue());
         assertEquals("flat", option(p, "surface.0.shading").defaultValue());
+        // The host's shading decides: facets of a subdivided surface stay facets at the host's level,
+        // and a control mesh the host shades smoothly is shaded smoothly.
+        List<DisplayedSurface> facets = List.of(new DisplayedSurface("cage", cube(), DisplayedSurface.Scheme.CATMULL_CLARK, 2,
+                DisplayedSurface.Shading.FLAT));
+        List<PluginOption> f = new RayTracePlugin().options(facets, view());
+        assertEquals("host-level", option(f, "surface.0.rendering").defaultValue());
+        assertEquals("flat", option(f, "surface.0.shading").defaultValue());
+        List<DisplayedSurface> roundCage = List.of(new DisplayedSurface("cage", cube(), DisplayedSurface.Scheme.NONE, 0,
+                DisplayedSurface.Shading.SMOOTH));
+        List<PluginOption> r = new RayTracePlugin().options(roundCage, view());
+        assertEquals("host-level", option(r, "surface.0.rendering").defaultValue());
+        assertEquals("smooth", option(r, "surface.0.shading").defaultValue());
         PluginView below = new PluginView(new Vec3(0, -5, -5), Vec3.ZERO, Vec3.Y, 40, 64, 48);
         assertEquals("none", option(new RayTracePlugin().options(surfaces(), below), "floor").defaultValue());
         // Every option's default resolves (the whole default scene builds).
