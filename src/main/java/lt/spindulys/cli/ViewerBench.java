@@ -77,13 +77,45 @@ final class ViewerBench {
             for (int k = 0; k < cases.length; k++) {
                 double[] s = fps[k].clone();
                 Arrays.sort(s);
-                double med = s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
+                double med = median(s);
                 t.add((String) cases[k][0], String.format(Locale.ROOT, "%.1f", med), String.format(Locale.ROOT, "%.1f", 1000 / med),
                         String.format(Locale.ROOT, "%.1f", s[0]));
             }
         }
         t.print(out);
         out.println("  target (issue 17): at least 30 frames/s for a 100,000-quad surface at 1280x720 on 2 cores");
+        levelChange(out, cage, runs);
+    }
+
+    /**
+     * How long the viewer takes to show the surface at a new level (its background work before the
+     * first frame): refining the cage, making the smoothed triangles, and winding them outwards
+     * (the torus is closed). Medians over the runs, after one untimed warm-up.
+     */
+    private static void levelChange(PrintStream out, ControlMesh cage, int runs) {
+        double[][] ms = new double[3][runs];
+        for (int i = -1; i < runs; i++) {
+            long t0 = System.nanoTime();
+            RefinedMesh r = CatmullClark.refine(cage, LEVEL);
+            long t1 = System.nanoTime();
+            DisplayGeometry g = DisplayGeometry.smoothed(r);
+            long t2 = System.nanoTime();
+            g.outward();
+            long t3 = System.nanoTime();
+            if (i < 0) continue;
+            ms[0][i] = (t1 - t0) / 1e6;
+            ms[1][i] = (t2 - t1) / 1e6;
+            ms[2][i] = (t3 - t2) / 1e6;
+        }
+        double refine = median(ms[0]), geometry = median(ms[1]), outward = median(ms[2]);
+        out.printf(Locale.ROOT, "  a level change to this surface (off the event thread): refine %.0f ms + smoothed triangles %.0f ms"
+                + " + outward winding %.0f ms = %.0f ms (median)%n", refine, geometry, outward, refine + geometry + outward);
+    }
+
+    private static double median(double[] v) {
+        double[] s = v.clone();
+        Arrays.sort(s);
+        return s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
     }
 
     @SuppressWarnings("unchecked")
