@@ -294,6 +294,8 @@ public final class ViewerModel {
     private void refresh(ViewedSurface s) {
         ViewedSurface.Key k = s.wanted();
         if (k == null || s.cached(k) != null) {
+            // Also what is requested now, so that a queued build of an older setting is skipped.
+            s.requested(k);
             if (k != null) s.show(k);
             changed();
             return;
@@ -309,6 +311,9 @@ public final class ViewerModel {
                 ui.execute(() -> {
                     pending--;
                     building.remove(job);
+                    // Asked for again after this job was skipped but before it left the set: that
+                    // request found the job still "building" and queued nothing, so queue it now.
+                    if (surfaces.contains(s) && k.equals(s.wanted()) && s.cached(k) == null) refresh(s);
                 });
                 return;
             }
