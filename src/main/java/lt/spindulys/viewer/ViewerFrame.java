@@ -55,6 +55,8 @@ public final class ViewerFrame extends JFrame {
     private final JCheckBoxMenuItem cageItem = new JCheckBoxMenuItem("Cage over surface   C");
     private final JMenuBar menuBar = new JMenuBar();
     private boolean updating;
+    /** The plugin menus added (their runs are waited for when the viewer closes). */
+    private final List<PluginsMenu> pluginMenus = new java.util.concurrent.CopyOnWriteArrayList<>();
 
     /**
      * Makes the window (not yet visible). Call on the event thread.
@@ -136,6 +138,7 @@ public final class ViewerFrame extends JFrame {
      * @param menu the menu
      */
     public void addMenu(JMenu menu) {
+        if (menu instanceof PluginsMenu p) pluginMenus.add(p);
         menuBar.add(menu);
         menuBar.revalidate();
         menuBar.repaint();
@@ -149,6 +152,25 @@ public final class ViewerFrame extends JFrame {
      */
     public ViewerSnapshot displayed() {
         return model.snapshot();
+    }
+
+    /**
+     * Waits for the plugin runs started from this viewer's plugin menus to end. Closing the viewer
+     * cancels them (its render windows close with it); a host that exits when the viewer closes
+     * calls this first, so that no run is cut off between its temporary file and the rename.
+     * Any thread but the event thread.
+     *
+     * @param timeout how long at most, in all
+     * @param unit    its unit
+     * @return whether every run ended in time
+     * @throws InterruptedException if interrupted while waiting
+     */
+    public boolean awaitPluginRuns(long timeout, java.util.concurrent.TimeUnit unit) throws InterruptedException {
+        long deadline = System.nanoTime() + unit.toNanos(timeout);
+        for (PluginsMenu p : pluginMenus) {
+            if (!p.awaitRuns(Math.max(0, deadline - System.nanoTime()), java.util.concurrent.TimeUnit.NANOSECONDS)) return false;
+        }
+        return true;
     }
 
     /** {@return the viewer's logic, for hosts that act on it (on the event thread)} */
