@@ -5,6 +5,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 
+import lt.spindulys.files.FileNames;
 import lt.spindulys.io.ObjReader;
 import lt.spindulys.io.SceneException;
 import lt.spindulys.io.WorkframeReader;
@@ -38,7 +39,7 @@ public final class MeshLoader {
      * @return whether it is an unwrap
      */
     public static boolean isUnwrap(Path file) {
-        return extension(file).equals("tex");
+        return FileNames.extension(file).equals("tex");
     }
 
     /**
@@ -53,7 +54,7 @@ public final class MeshLoader {
      * @throws IllegalArgumentException naming the mesh and the face or vertex that cannot be refined
      */
     public static Loaded load(Path file) throws IOException {
-        String ext = extension(file);
+        String ext = FileNames.extension(file);
         SubdivInput in;
         Path unwrap = null;
         switch (ext) {
@@ -95,12 +96,5 @@ public final class MeshLoader {
             if (Files.isRegularFile(p)) return p;
         }
         return null;
-    }
-
-    private static String extension(Path file) {
-        Path n = file.getFileName();
-        String name = n == null ? "" : n.toString();
-        int dot = name.lastIndexOf('.');
-        return dot < 0 ? "" : name.substring(dot + 1).toLowerCase(Locale.ROOT);
     }
 }
