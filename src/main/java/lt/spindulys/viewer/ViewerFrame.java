@@ -55,6 +55,8 @@ public final class ViewerFrame extends JFrame {
     private final JCheckBoxMenuItem cageItem = new JCheckBoxMenuItem("Cage over surface   C");
     private final JMenuBar menuBar = new JMenuBar();
     private boolean updating;
+    /** Where File > Open last found its files; null until it has been used. */
+    private File openFolder;
     /** The plugin menus added (their runs are waited for when the viewer closes). */
     private final List<PluginsMenu> pluginMenus = new java.util.concurrent.CopyOnWriteArrayList<>();
 
@@ -68,7 +70,12 @@ public final class ViewerFrame extends JFrame {
             t.setDaemon(true);
             return t;
         });
-        model = new ViewerModel(background, SwingUtilities::invokeLater, new ViewerModel.Listener() {
+        // Work handed over on the event thread (the only caller) after the window closed, when
+        // a result still arriving asks for more, is dropped rather than refused with an exception.
+        java.util.concurrent.Executor work = task -> {
+            if (!background.isShutdown()) background.execute(task);
+        };
+        model = new ViewerModel(work, SwingUtilities::invokeLater, new ViewerModel.Listener() {
             @Override public void changed() { update(); }
             @Override public void error(String message) { showError(message); }
         });
@@ -235,10 +242,12 @@ public final class ViewerFrame extends JFrame {
     }
 
     private void chooseFiles() {
-        JFileChooser c = new JFileChooser(new File(System.getProperty("user.dir")));
+        JFileChooser c = new JFileChooser(openFolder != null ? openFolder : new File(System.getProperty("user.dir")));
         c.setMultiSelectionEnabled(true);
         c.setFileFilter(new FileNameExtensionFilter("Meshes and unwraps (.obj, .dat, .tex)", "obj", "dat", "tex"));
         if (c.showOpenDialog(this) != JFileChooser.APPROVE_OPTION) return;
+        // The next Open starts where this one ended, as a user opening a series of meshes expects.
+        openFolder = c.getCurrentDirectory();
         List<Path> files = new ArrayList<>();
         for (File f : c.getSelectedFiles()) files.add(f.toPath());
         open(files);
