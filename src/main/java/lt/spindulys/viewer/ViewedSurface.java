@@ -152,7 +152,11 @@ public final class ViewedSurface {
 
     /** {@return the input with the viewer's boundary rule in its options} */
     public synchronized SubdivInput inputWithBoundary(SubdivOptions.Boundary b) {
-        return input.options().boundary() == b ? input : input.withOptions(input.options().withBoundary(b));
+        return withBoundary(input, b);
+    }
+
+    private static SubdivInput withBoundary(SubdivInput in, SubdivOptions.Boundary b) {
+        return in.options().boundary() == b ? in : in.withOptions(in.options().withBoundary(b));
     }
 
     /**
@@ -161,8 +165,22 @@ public final class ViewedSurface {
      * @param b the rule
      * @return the control mesh
      */
-    synchronized ControlMesh control(SubdivOptions.Boundary b) {
-        return controls.computeIfAbsent(b, k -> inputWithBoundary(k).toControlMesh());
+    ControlMesh control(SubdivOptions.Boundary b) {
+        SubdivInput from;
+        synchronized (this) {
+            ControlMesh c = controls.get(b);
+            if (c != null) return c;
+            from = input;
+        }
+        // Built outside the lock: the event thread reads the input (a snapshot for a plugin) while
+        // a large mesh's control mesh is built in the background, and must not wait for it.
+        ControlMesh built = withBoundary(from, b).toControlMesh();
+        synchronized (this) {
+            // Kept only if no unwrap replaced the input meanwhile (its UVs would be missing).
+            if (input != from) return built;
+            ControlMesh raced = controls.putIfAbsent(b, built);
+            return raced != null ? raced : built;
+        }
     }
 
     void requested(Key k) { requested = k; }
