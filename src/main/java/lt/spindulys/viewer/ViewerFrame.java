@@ -77,6 +77,8 @@ public final class ViewerFrame extends JFrame {
         };
         model = new ViewerModel(work, SwingUtilities::invokeLater, new ViewerModel.Listener() {
             @Override public void changed() { update(); }
+            // The list, the menus and the status line do not show the camera.
+            @Override public void viewChanged() { viewport.repaint(); }
             @Override public void error(String message) { showError(message); }
         });
         viewport = new ViewportPanel(model, rasterizer);

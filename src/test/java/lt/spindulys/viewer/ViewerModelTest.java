@@ -363,6 +363,27 @@ class ViewerModelTest {
     }
 
     @Test
+    void movingTheCameraKeepsTheDrawListAndSaysOnlyTheViewChanged() throws IOException {
+        int[] views = {0};
+        ViewerModel m = new ViewerModel(Runnable::run, Runnable::run, new ViewerModel.Listener() {
+            @Override public void changed() { changes++; }
+            @Override public void error(String message) { errors.add(message); }
+            @Override public void viewChanged() { views[0]++; }
+        });
+        m.open(List.of(write("cube.obj", CUBE_OBJ)));
+        List<Rasterizer.Item> before = m.drawList();
+        int changesBefore = changes;
+        m.orbit(10, 5);
+        m.pan(3, -2);
+        m.zoom(1.2);
+        assertSame(before, m.drawList(), "nothing is rebuilt (or allocated) for a frame while orbiting");
+        assertEquals(3, views[0]);
+        assertEquals(changesBefore, changes);
+        m.toggleCage();
+        assertNotSame(before, m.drawList());
+    }
+
+    @Test
     void aBuildThatFailsKeepsWhatIsShownAndTakesTheSettingsBack() throws IOException {
         ArrayDeque<Runnable> work = new ArrayDeque<>();
         ViewerModel m = new ViewerModel(work::add, Runnable::run, new ViewerModel.Listener() {
