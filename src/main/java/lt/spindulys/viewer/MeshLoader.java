@@ -9,6 +9,7 @@ import lt.spindulys.files.FileNames;
 import lt.spindulys.io.ObjReader;
 import lt.spindulys.io.SceneException;
 import lt.spindulys.io.WorkframeReader;
+import lt.spindulys.limits.InputFiles;
 import lt.spindulys.limits.MessageText;
 import lt.spindulys.subdiv.SubdivInput;
 
@@ -67,8 +68,12 @@ public final class MeshLoader {
                     unwrap = tex;
                 }
             }
-            default -> throw new SceneException(file.toString(), 0, 0, "the viewer opens .obj and .dat meshes and .tex unwraps, found "
-                    + (ext.isEmpty() ? "a file without an extension" : "a ." + MessageText.cut(ext) + " file"));
+            default -> {
+                // A folder dropped on the window is named as a folder, not as a file of the wrong kind.
+                String problem = InputFiles.problem(file);
+                throw new SceneException(file.toString(), 0, 0, "the viewer opens .obj and .dat meshes and .tex unwraps, found "
+                        + (problem != null ? (problem.startsWith("is ") ? "a path that " + problem : "nothing there (" + problem + ")") : ext.isEmpty() ? "a file without an extension" : "a ." + MessageText.cut(ext) + " file"));
+            }
         }
         in.toControlMesh();
         return new Loaded(file.getFileName() == null ? file.toString() : file.getFileName().toString(), file, in, unwrap);

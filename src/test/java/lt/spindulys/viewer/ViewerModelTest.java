@@ -384,6 +384,17 @@ class ViewerModelTest {
     }
 
     @Test
+    void aFolderOrNothingWithoutAKnownExtensionIsNamedForWhatItIs() throws IOException {
+        ViewerModel m = model();
+        Path folder = Files.createDirectory(dir.resolve("meshes")), missing = dir.resolve("gone");
+        m.open(List.of(folder, missing));
+        assertEquals(List.of(folder + ": the viewer opens .obj and .dat meshes and .tex unwraps, found a path that is a directory, not a regular file",
+                missing + ": the viewer opens .obj and .dat meshes and .tex unwraps, found nothing there (not found)"), errors);
+        assertEquals(0, m.surfaces().size());
+        assertEquals(0, m.pending());
+    }
+
+    @Test
     void aBuildThatFailsKeepsWhatIsShownAndTakesTheSettingsBack() throws IOException {
         ArrayDeque<Runnable> work = new ArrayDeque<>();
         ViewerModel m = new ViewerModel(work::add, Runnable::run, new ViewerModel.Listener() {
