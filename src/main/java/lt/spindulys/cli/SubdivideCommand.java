@@ -6,9 +6,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 
 import lt.spindulys.files.AtomicFile;
+import lt.spindulys.files.FileNames;
 import lt.spindulys.io.ObjReader;
 import lt.spindulys.io.ObjWriter;
 import lt.spindulys.limits.MessageText;
@@ -90,7 +90,7 @@ final class SubdivideCommand {
             }
         }
         if (input == null) throw new UsageException("no mesh given to subdivide (see render subdivide --help)");
-        String ext = extension(input);
+        String ext = FileNames.extension(input);
         if (!ext.equals("obj") && !ext.equals("dat")) {
             throw new UsageException("the mesh to subdivide must be an .obj or a .dat file, found '" + input + "'");
         }
@@ -102,7 +102,7 @@ final class SubdivideCommand {
             throw new UsageException("subdivide needs --level N or --scene SCENE.dat (see render subdivide --help)");
         }
         if (output == null) throw new UsageException("subdivide needs an output file: -o OUT.obj (see render subdivide --help)");
-        if (!extension(output).equals("obj")) throw new UsageException("the output of subdivide must be an .obj file, found '" + output + "'");
+        if (!FileNames.extension(output).equals("obj")) throw new UsageException("the output of subdivide must be an .obj file, found '" + output + "'");
     }
 
     /** Runs the command; returns the exit status. Bad input surfaces as exceptions handled by {@link Main}. */
@@ -114,7 +114,7 @@ final class SubdivideCommand {
         }
         if (scene != null) return runScene(err);
         String name = input.toString();
-        SubdivInput in = extension(input).equals("obj") ? ObjReader.readSubdiv(input) : SubdivInput.of(WorkframeReader.readMesh(input));
+        SubdivInput in = FileNames.extension(input).equals("obj") ? ObjReader.readSubdiv(input) : SubdivInput.of(WorkframeReader.readMesh(input));
         if (uv != null) in = WorkframeReader.readTex(uv, in.mesh()).applyTo(in);
         try {
             SubdivisionSurface.checkLevel(level, in.refinedFaceCount(level), limit ? BYTES_PER_FACE + LIMIT_BYTES_PER_FACE : BYTES_PER_FACE);
@@ -247,11 +247,5 @@ final class SubdivideCommand {
     private static String value(String[] args, int i, String option) throws UsageException {
         if (i >= args.length) throw new UsageException("option " + option + " needs a value");
         return args[i];
-    }
-
-    private static String extension(Path p) {
-        String n = p.getFileName() == null ? "" : p.getFileName().toString();
-        int dot = n.lastIndexOf('.');
-        return dot < 0 ? "" : n.substring(dot + 1).toLowerCase(Locale.ROOT);
     }
 }

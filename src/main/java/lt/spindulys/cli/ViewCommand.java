@@ -9,6 +9,8 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
 
 import javax.swing.SwingUtilities;
@@ -32,6 +34,9 @@ final class ViewCommand {
               Keys: arrows orbit, + and - zoom, F fits, 1 2 3 polyhedron / lattice / smoothed,
               C cage over the surface, Page Up / Page Down subdivision level.
             See README.md (Viewer).""";
+
+    /** How long a closing viewer waits for cancelled plugin runs to stop (they check often; this is a backstop). */
+    static final long RUNS_GRACE_SECONDS = 30;
 
     private final List<Path> files = new ArrayList<>();
     private final BooleanSupplier headless;
@@ -61,10 +66,12 @@ final class ViewCommand {
             return 1;
         }
         CountDownLatch closed = new CountDownLatch(1);
+        AtomicReference<ViewerFrame> frame = new AtomicReference<>();
         try {
             SwingUtilities.invokeAndWait(() -> {
                 // Outputs go to the working folder until the user picks another, as the command line's do.
                 ViewerFrame f = ViewerFrame.withPlugins(OutputPlugins.available(), Path.of(""));
+                frame.set(f);
                 f.addWindowListener(new WindowAdapter() {
                     @Override public void windowClosed(WindowEvent e) { closed.countDown(); }
                 });
@@ -79,6 +86,11 @@ final class ViewCommand {
             throw new IllegalStateException(c);
         }
         closed.await();
+        // Main exits the JVM next: plugin runs (cancelled as their windows closed with the viewer)
+        // end first, so none is killed between its temporary file and the rename.
+        if (!frame.get().awaitPluginRuns(RUNS_GRACE_SECONDS, TimeUnit.SECONDS)) {
+            err.println("render view: a plugin run did not stop within " + RUNS_GRACE_SECONDS + " s of the viewer closing; it was ended with the viewer");
+        }
         return 0;
     }
 }

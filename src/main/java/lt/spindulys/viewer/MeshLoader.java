@@ -5,9 +5,11 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 
+import lt.spindulys.files.FileNames;
 import lt.spindulys.io.ObjReader;
 import lt.spindulys.io.SceneException;
 import lt.spindulys.io.WorkframeReader;
+import lt.spindulys.limits.InputFiles;
 import lt.spindulys.limits.MessageText;
 import lt.spindulys.subdiv.SubdivInput;
 
@@ -38,7 +40,7 @@ public final class MeshLoader {
      * @return whether it is an unwrap
      */
     public static boolean isUnwrap(Path file) {
-        return extension(file).equals("tex");
+        return FileNames.extension(file).equals("tex");
     }
 
     /**
@@ -53,7 +55,7 @@ public final class MeshLoader {
      * @throws IllegalArgumentException naming the mesh and the face or vertex that cannot be refined
      */
     public static Loaded load(Path file) throws IOException {
-        String ext = extension(file);
+        String ext = FileNames.extension(file);
         SubdivInput in;
         Path unwrap = null;
         switch (ext) {
@@ -66,8 +68,12 @@ public final class MeshLoader {
                     unwrap = tex;
                 }
             }
-            default -> throw new SceneException(file.toString(), 0, 0, "the viewer opens .obj and .dat meshes and .tex unwraps, found "
-                    + (ext.isEmpty() ? "a file without an extension" : "a ." + MessageText.cut(ext) + " file"));
+            default -> {
+                // A folder dropped on the window is named as a folder, not as a file of the wrong kind.
+                String problem = InputFiles.problem(file);
+                throw new SceneException(file.toString(), 0, 0, "the viewer opens .obj and .dat meshes and .tex unwraps, found "
+                        + (problem != null ? (problem.startsWith("is ") ? "a path that " + problem : "nothing there (" + problem + ")") : ext.isEmpty() ? "a file without an extension" : "a ." + MessageText.cut(ext) + " file"));
+            }
         }
         in.toControlMesh();
         return new Loaded(file.getFileName() == null ? file.toString() : file.getFileName().toString(), file, in, unwrap);
@@ -95,12 +101,5 @@ public final class MeshLoader {
             if (Files.isRegularFile(p)) return p;
         }
         return null;
-    }
-
-    private static String extension(Path file) {
-        Path n = file.getFileName();
-        String name = n == null ? "" : n.toString();
-        int dot = name.lastIndexOf('.');
-        return dot < 0 ? "" : name.substring(dot + 1).toLowerCase(Locale.ROOT);
     }
 }

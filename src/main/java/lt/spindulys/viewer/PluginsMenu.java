@@ -4,6 +4,8 @@ import java.awt.Window;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Objects;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.TimeUnit;
 import java.util.function.Supplier;
 
 import javax.swing.JMenu;
@@ -27,6 +29,8 @@ public final class PluginsMenu extends JMenu {
     private final Supplier<PluginView> view;
     /** Where the next output goes by default: the folder of the last one, so a series of pictures lands together. */
     private Path folder;
+    /** The runs started and not yet seen to end; read by the thread that waits for them when the viewer closes. */
+    private final List<PluginRun> runs = new CopyOnWriteArrayList<>();
 
     /**
      * A menu over {@code plugins}, usually {@code OutputPlugins.available()}.
@@ -84,6 +88,26 @@ public final class PluginsMenu extends JMenu {
         if (accepted == null) return null;
         Path parent = accepted.output().toAbsolutePath().getParent();
         if (parent != null) folder = parent;
-        return RenderWindow.start(owner, form, accepted);
+        RenderWindow window = RenderWindow.start(owner, form, accepted);
+        runs.removeIf(PluginRun::isDone);
+        runs.add(window.run());
+        return window;
+    }
+
+    /**
+     * Waits for the runs this menu started to end (closing their windows, or the viewer that owns
+     * them, cancels them), so that a host about to exit does not cut a plugin off mid-file.
+     *
+     * @param timeout how long at most, in all
+     * @param unit    its unit
+     * @return whether every run ended in time
+     * @throws InterruptedException if interrupted while waiting
+     */
+    public boolean awaitRuns(long timeout, TimeUnit unit) throws InterruptedException {
+        long deadline = System.nanoTime() + unit.toNanos(timeout);
+        for (PluginRun r : runs) {
+            if (!r.await(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS)) return false;
+        }
+        return true;
     }
 }

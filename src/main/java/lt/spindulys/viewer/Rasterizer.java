@@ -411,12 +411,18 @@ public final class Rasterizer implements AutoCloseable {
         int w = width;
         float[] zb = depth;
         int[] px = frame;
-        float longSlope = (cxv - ax) / (cyv - ay);
+        // Every edge is evaluated the same way, from its upper end with its own slope, whichever
+        // role (long or short side) it has here: the triangle across it evaluates it to the very
+        // same float, so a pixel centre on a shared edge goes to exactly one of the two. (The short
+        // sides computed as (yc - ay) * dx / dy rounded differently from the long side's
+        // (yc - ay) * slope, and a centre on a shared diagonal could fall in neither: a pinhole.)
+        // A slope across a flat side is infinite or NaN but never used: no row centre lies in it.
+        float longSlope = (cxv - ax) / (cyv - ay), upperSlope = (bx - ax) / (by - ay), lowerSlope = (cxv - bx) / (cyv - by);
         for (int y = first; y < last; y++) {
             float yc = y + 0.5f;
             float xl = ax + (yc - ay) * longSlope, xr;
-            if (yc < by) xr = ax + (yc - ay) * (bx - ax) / (by - ay);
-            else xr = bx + (yc - by) * (cxv - bx) / (cyv - by);
+            if (yc < by) xr = ax + (yc - ay) * upperSlope;
+            else xr = bx + (yc - by) * lowerSlope;
             if (xr < xl) { t = xl; xl = xr; xr = t; }
             int xs = Math.max(0, (int) Math.ceil(xl - 0.5f)), xe = Math.min(w, (int) Math.ceil(xr - 0.5f));
             if (xs >= xe) continue;

@@ -85,6 +85,12 @@ public final class RenderWindow extends JDialog implements PluginRun.Listener {
                 if (run != null && !ended) run.cancel();
                 dispose();
             }
+
+            @Override public void windowClosed(WindowEvent e) {
+                // Also when the viewer closes and disposes the windows it owns (no windowClosing
+                // then): the run stops before it writes, rather than dying with the JVM mid-file.
+                if (run != null && !ended) run.cancel();
+            }
         });
     }
 

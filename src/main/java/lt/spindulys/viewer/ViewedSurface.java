@@ -22,6 +22,13 @@ public final class ViewedSurface {
     /** The level a surface opens at: the deepest up to this whose faces stay under {@link #OPEN_FACES}. */
     static final int OPEN_LEVEL = 3;
     static final long OPEN_FACES = 150_000;
+    /**
+     * The most faces the viewer shows of one surface. The scene's limit ({@link SubdivisionSurface#MAX_FACES})
+     * is for an offline render; the rasterizer draws about ten million quads a second, so past
+     * this a frame takes longer than a tenth of a second, and refining to it takes minutes:
+     * the level is refused at once instead (the ray-tracing plugin still renders the limit surface).
+     */
+    static final long MAX_SHOWN_FACES = 1L << 20;
     /** Geometries kept per surface besides the one shown. */
     private static final int CACHED = 3;
     /** And at most this fraction of the heap in them, so that deep levels once shown do not crowd out the next. */
@@ -69,6 +76,7 @@ public final class ViewedSurface {
         this.unwrap = loaded.unwrap();
         this.rgb = rgb;
         this.boundary = input.options().boundary();
+        checkShown(0);
         int l = OPEN_LEVEL;
         while (l > 0 && input.refinedFaceCount(l) > OPEN_FACES) l--;
         this.level = l;
@@ -112,7 +120,17 @@ public final class ViewedSurface {
      */
     void level(int l) {
         SubdivisionSurface.checkLevel(l, input.refinedFaceCount(l));
+        checkShown(l);
         level = l;
+    }
+
+    /** Refuses a level with more faces than the viewer can draw smoothly ({@link #MAX_SHOWN_FACES}). */
+    private void checkShown(int l) {
+        long faces = input.refinedFaceCount(l);
+        if (faces > MAX_SHOWN_FACES) {
+            throw new IllegalArgumentException(source + ": subdivision level " + l + " would show " + faces
+                    + " faces, more than the " + MAX_SHOWN_FACES + " the viewer draws (choose a lower level; the ray-tracing plugin renders the limit surface)");
+        }
     }
 
     /** Takes the settings of {@code k} back (its geometry could not be built; the one shown is {@code k}'s). */
@@ -134,7 +152,11 @@ public final class ViewedSurface {
 
     /** {@return the input with the viewer's boundary rule in its options} */
     public synchronized SubdivInput inputWithBoundary(SubdivOptions.Boundary b) {
-        return input.options().boundary() == b ? input : input.withOptions(input.options().withBoundary(b));
+        return withBoundary(input, b);
+    }
+
+    private static SubdivInput withBoundary(SubdivInput in, SubdivOptions.Boundary b) {
+        return in.options().boundary() == b ? in : in.withOptions(in.options().withBoundary(b));
     }
 
     /**
@@ -143,8 +165,22 @@ public final class ViewedSurface {
      * @param b the rule
      * @return the control mesh
      */
-    synchronized ControlMesh control(SubdivOptions.Boundary b) {
-        return controls.computeIfAbsent(b, k -> inputWithBoundary(k).toControlMesh());
+    ControlMesh control(SubdivOptions.Boundary b) {
+        SubdivInput from;
+        synchronized (this) {
+            ControlMesh c = controls.get(b);
+            if (c != null) return c;
+            from = input;
+        }
+        // Built outside the lock: the event thread reads the input (a snapshot for a plugin) while
+        // a large mesh's control mesh is built in the background, and must not wait for it.
+        ControlMesh built = withBoundary(from, b).toControlMesh();
+        synchronized (this) {
+            // Kept only if no unwrap replaced the input meanwhile (its UVs would be missing).
+            if (input != from) return built;
+            ControlMesh raced = controls.putIfAbsent(b, built);
+            return raced != null ? raced : built;
+        }
     }
 
     void requested(Key k) { requested = k; }

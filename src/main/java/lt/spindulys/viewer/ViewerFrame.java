@@ -55,6 +55,10 @@ public final class ViewerFrame extends JFrame {
     private final JCheckBoxMenuItem cageItem = new JCheckBoxMenuItem("Cage over surface   C");
     private final JMenuBar menuBar = new JMenuBar();
     private boolean updating;
+    /** Where File > Open last found its files; null until it has been used. */
+    private File openFolder;
+    /** The plugin menus added (their runs are waited for when the viewer closes). */
+    private final List<PluginsMenu> pluginMenus = new java.util.concurrent.CopyOnWriteArrayList<>();
 
     /**
      * Makes the window (not yet visible). Call on the event thread.
@@ -66,8 +70,15 @@ public final class ViewerFrame extends JFrame {
             t.setDaemon(true);
             return t;
         });
-        model = new ViewerModel(background, SwingUtilities::invokeLater, new ViewerModel.Listener() {
+        // Work handed over on the event thread (the only caller) after the window closed, when
+        // a result still arriving asks for more, is dropped rather than refused with an exception.
+        java.util.concurrent.Executor work = task -> {
+            if (!background.isShutdown()) background.execute(task);
+        };
+        model = new ViewerModel(work, SwingUtilities::invokeLater, new ViewerModel.Listener() {
             @Override public void changed() { update(); }
+            // The list, the menus and the status line do not show the camera.
+            @Override public void viewChanged() { viewport.repaint(); }
             @Override public void error(String message) { showError(message); }
         });
         viewport = new ViewportPanel(model, rasterizer);
@@ -136,6 +147,7 @@ public final class ViewerFrame extends JFrame {
      * @param menu the menu
      */
     public void addMenu(JMenu menu) {
+        if (menu instanceof PluginsMenu p) pluginMenus.add(p);
         menuBar.add(menu);
         menuBar.revalidate();
         menuBar.repaint();
@@ -149,6 +161,25 @@ public final class ViewerFrame extends JFrame {
      */
     public ViewerSnapshot displayed() {
         return model.snapshot();
+    }
+
+    /**
+     * Waits for the plugin runs started from this viewer's plugin menus to end. Closing the viewer
+     * cancels them (its render windows close with it); a host that exits when the viewer closes
+     * calls this first, so that no run is cut off between its temporary file and the rename.
+     * Any thread but the event thread.
+     *
+     * @param timeout how long at most, in all
+     * @param unit    its unit
+     * @return whether every run ended in time
+     * @throws InterruptedException if interrupted while waiting
+     */
+    public boolean awaitPluginRuns(long timeout, java.util.concurrent.TimeUnit unit) throws InterruptedException {
+        long deadline = System.nanoTime() + unit.toNanos(timeout);
+        for (PluginsMenu p : pluginMenus) {
+            if (!p.awaitRuns(Math.max(0, deadline - System.nanoTime()), java.util.concurrent.TimeUnit.NANOSECONDS)) return false;
+        }
+        return true;
     }
 
     /** {@return the viewer's logic, for hosts that act on it (on the event thread)} */
@@ -213,10 +244,12 @@ public final class ViewerFrame extends JFrame {
     }
 
     private void chooseFiles() {
-        JFileChooser c = new JFileChooser(new File(System.getProperty("user.dir")));
+        JFileChooser c = new JFileChooser(openFolder != null ? openFolder : new File(System.getProperty("user.dir")));
         c.setMultiSelectionEnabled(true);
         c.setFileFilter(new FileNameExtensionFilter("Meshes and unwraps (.obj, .dat, .tex)", "obj", "dat", "tex"));
         if (c.showOpenDialog(this) != JFileChooser.APPROVE_OPTION) return;
+        // The next Open starts where this one ended, as a user opening a series of meshes expects.
+        openFolder = c.getCurrentDirectory();
         List<Path> files = new ArrayList<>();
         for (File f : c.getSelectedFiles()) files.add(f.toPath());
         open(files);

@@ -28,6 +28,12 @@ public final class ViewerModel {
         void changed();
 
         /**
+         * Only the camera moved (orbit, pan, zoom): a repaint is enough. Called for every mouse
+         * drag step, so a host keeps it cheap; by default it is {@link #changed()}.
+         */
+        default void viewChanged() { changed(); }
+
+        /**
          * An action failed.
          *
          * @param message the one-line message
@@ -202,7 +208,7 @@ public final class ViewerModel {
      */
     public void orbit(double dx, double dy) {
         camera.orbit(dx, dy);
-        changed();
+        viewChanged();
     }
 
     /**
@@ -213,7 +219,7 @@ public final class ViewerModel {
      */
     public void pan(double dx, double dy) {
         camera.pan(dx, dy, height);
-        changed();
+        viewChanged();
     }
 
     /**
@@ -223,7 +229,7 @@ public final class ViewerModel {
      */
     public void zoom(double factor) {
         camera.zoom(factor);
-        changed();
+        viewChanged();
     }
 
     // ---- the selected surface ----
@@ -294,6 +300,8 @@ public final class ViewerModel {
     private void refresh(ViewedSurface s) {
         ViewedSurface.Key k = s.wanted();
         if (k == null || s.cached(k) != null) {
+            // Also what is requested now, so that a queued build of an older setting is skipped.
+            s.requested(k);
             if (k != null) s.show(k);
             changed();
             return;
@@ -309,6 +317,9 @@ public final class ViewerModel {
                 ui.execute(() -> {
                     pending--;
                     building.remove(job);
+                    // Asked for again after this job was skipped but before it left the set: that
+                    // request found the job still "building" and queued nothing, so queue it now.
+                    if (surfaces.contains(s) && k.equals(s.wanted()) && s.cached(k) == null) refresh(s);
                 });
                 return;
             }
@@ -338,6 +349,11 @@ public final class ViewerModel {
     private void changed() {
         drawList = null;
         listener.changed();
+    }
+
+    /** The camera moved: what is drawn (the draw list) stays, so a frame while orbiting allocates nothing. */
+    private void viewChanged() {
+        listener.viewChanged();
     }
 
     /**

@@ -45,6 +45,7 @@ class PluginsMenuDisplayTest {
 
     private Driver driver;
     private JFrame frame;
+    private PluginsMenu menu;
     private final FakePlugin plugin = new FakePlugin();
     private volatile List<DisplayedSurface> shown = Fixtures.surfaces();
 
@@ -54,7 +55,8 @@ class PluginsMenuDisplayTest {
         frame = onEdt(() -> {
             JFrame f = new JFrame("viewer");
             JMenuBar bar = new JMenuBar();
-            bar.add(new PluginsMenu(f, List.of(plugin), () -> shown, () -> Fixtures.view(320, 240), dir));
+            menu = new PluginsMenu(f, List.of(plugin), () -> shown, () -> Fixtures.view(320, 240), dir);
+            bar.add(menu);
             f.setJMenuBar(bar);
             f.setBounds(10, 10, 500, 400);
             f.setVisible(true);
@@ -189,6 +191,25 @@ class PluginsMenuDisplayTest {
             assertEquals(List.of(), files.toList(), "no output and no temporary file");
         }
         assertTrue(onEdt(frame::isShowing), "the viewer keeps running");
+    }
+
+    @Test
+    void closingTheViewerCancelsItsRunsAndTheHostCanWaitForThem() throws Exception {
+        choosePlugin();
+        driver.window(PluginDialog.class);
+        driver.click(driver.find(JButton.class, "ok"));
+        RenderWindow window = driver.window(RenderWindow.class);
+        assertTrue(plugin.waiting.await(10, TimeUnit.SECONDS));
+        // The viewer closes (File > Quit disposes it): its render window goes with it, without windowClosing.
+        onEdt(() -> {
+            frame.dispose();
+            return null;
+        });
+        assertTrue(menu.awaitRuns(10, TimeUnit.SECONDS), "the run was cancelled and ended");
+        assertTrue(window.run().isCancelled());
+        try (Stream<Path> files = Files.list(dir)) {
+            assertEquals(List.of(), files.toList(), "no output and no temporary file");
+        }
     }
 
     @Test

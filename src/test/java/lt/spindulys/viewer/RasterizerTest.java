@@ -60,6 +60,66 @@ class RasterizerTest {
         }
     }
 
+    @Test
+    void pixelsOnBandBoundariesAndFrameEdgesAreCoveredAsTheirCentresSay() {
+        // A frame of many 32-row bands and odd sizes; squares whose rims fall across bands and
+        // past the frame's edges: every pixel whose centre is clearly in is drawn, clearly out is not.
+        int w = 203, h = 171;
+        double f = h / 2.0 / Math.tan(Math.toRadians(45) / 2);
+        int[] empty = new int[w * h];
+        try (Rasterizer r = new Rasterizer(3)) {
+            r.render(List.of(), front(), empty, w, h);
+            for (double s : new double[] {0.37, 1.0, 1.47, 2.9, 40}) {
+                double half = s * f / 10;
+                int[] frame = new int[w * h];
+                r.render(List.of(Rasterizer.Item.faces(square(s, 0, false), RED, BLUE)), front(), frame, w, h);
+                for (int y = 0; y < h; y++) {
+                    for (int x = 0; x < w; x++) {
+                        boolean drawn = frame[y * w + x] != empty[y * w + x];
+                        double d = Math.max(Math.abs(x + 0.5 - w / 2.0), Math.abs(y + 0.5 - h / 2.0));
+                        if (d < half - 0.01) assertTrue(drawn, "s " + s + ": pixel " + x + "," + y + " inside");
+                        if (d > half + 0.01) assertFalse(drawn, "s " + s + ": pixel " + x + "," + y + " outside");
+                    }
+                }
+            }
+        }
+    }
+
+    @Test
+    void aMeshOfSharedEdgesHasNoPinholes() {
+        // A jittered 40 x 30 grid of triangles, split along alternating diagonals, filling more
+        // than the view: every pixel centre lies in some triangle, so none may show the background.
+        int nx = 40, ny = 30, w = 257, h = 193;
+        float[] p = new float[3 * (nx + 1) * (ny + 1)];
+        java.util.Random rnd = new java.util.Random(17);
+        for (int j = 0; j <= ny; j++) {
+            for (int i = 0; i <= nx; i++) {
+                int v = j * (nx + 1) + i;
+                boolean rim = i == 0 || j == 0 || i == nx || j == ny;
+                p[3 * v] = -10 + 20f * i / nx + (rim ? 0 : (rnd.nextFloat() - 0.5f) * 0.3f);
+                p[3 * v + 1] = -8 + 16f * j / ny + (rim ? 0 : (rnd.nextFloat() - 0.5f) * 0.3f);
+            }
+        }
+        int[] t = new int[6 * nx * ny];
+        int k = 0;
+        for (int j = 0; j < ny; j++) {
+            for (int i = 0; i < nx; i++) {
+                int a = j * (nx + 1) + i, b = a + 1, c = a + nx + 2, d = a + nx + 1;
+                int[] tri = (i + j) % 2 == 0 ? new int[] {a, b, c, a, c, d} : new int[] {a, b, d, b, c, d};
+                for (int x : tri) t[k++] = x;
+            }
+        }
+        DisplayGeometry g = new DisplayGeometry(p, new float[] {0, 0, 1}, t, new int[t.length], new int[0]);
+        int[] empty = new int[w * h], frame = new int[w * h];
+        try (Rasterizer r = new Rasterizer(2)) {
+            r.render(List.of(), front(), empty, w, h);
+            r.render(List.of(Rasterizer.Item.faces(g, RED, BLUE)), front(), frame, w, h);
+        }
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) assertNotEquals(empty[y * w + x], frame[y * w + x], "pinhole at " + x + "," + y);
+        }
+    }
+
     private static int[] background;
 
     private static boolean isBackgroundRow(int[] frame, int x, int y) {

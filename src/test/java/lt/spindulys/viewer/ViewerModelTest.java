@@ -311,6 +311,90 @@ class ViewerModelTest {
     }
 
     @Test
+    void aLevelAskedForAgainWhileItsSkippedBuildIsStillQueuedIsBuilt() throws IOException {
+        ArrayDeque<Runnable> work = new ArrayDeque<>(), ui = new ArrayDeque<>();
+        ViewerModel m = new ViewerModel(work::add, ui::add, new ViewerModel.Listener() {
+            @Override public void changed() { changes++; }
+            @Override public void error(String message) { errors.add(message); }
+        });
+        m.open(List.of(write("cube.obj", CUBE_OBJ)));
+        while (!work.isEmpty() || !ui.isEmpty()) (work.isEmpty() ? ui : work).poll().run();
+        m.levelUp();
+        m.levelUp();
+        // Level 4's build starts while 5 is wanted: skipped, its end posted to the event thread...
+        work.poll().run();
+        // ...where the user has gone back to 4 before that end arrives.
+        m.levelDown();
+        while (!work.isEmpty() || !ui.isEmpty()) (work.isEmpty() ? ui : work).poll().run();
+        assertEquals(List.of(), errors);
+        assertEquals(4, m.selected().level());
+        assertEquals(0, m.pending());
+        assertTrue(m.selected().upToDate(), "level 4 is built and shown, not left asked for forever");
+        assertEquals(2 * 6 * 256, faces(m).triangleCount());
+    }
+
+    @Test
+    void aLevelWithMoreFacesThanTheViewerDrawsIsRefusedAtOnce() throws IOException {
+        // A 5 x 4 grid: 20 faces, 20 * 4^7 = 327,680 at level 7, 1,310,720 at level 8.
+        StringBuilder obj = new StringBuilder();
+        for (int y = 0; y <= 4; y++) for (int x = 0; x <= 5; x++) obj.append("v ").append(x).append(' ').append(y).append(" 0\n");
+        for (int y = 0; y < 4; y++) {
+            for (int x = 0; x < 5; x++) {
+                int a = y * 6 + x + 1;
+                obj.append("f ").append(a).append(' ').append(a + 1).append(' ').append(a + 7).append(' ').append(a + 6).append('\n');
+            }
+        }
+        Path grid = write("grid.obj", obj.toString());
+        ArrayDeque<Runnable> work = new ArrayDeque<>();
+        ViewerModel m = new ViewerModel(work::add, Runnable::run, new ViewerModel.Listener() {
+            @Override public void changed() { changes++; }
+            @Override public void error(String message) { errors.add(message); }
+        });
+        m.open(List.of(grid));
+        while (!work.isEmpty()) work.poll().run();
+        m.level(7);
+        assertEquals(7, m.selected().level());
+        work.clear();
+        m.levelUp();
+        assertEquals(List.of(grid + ": subdivision level 8 would show 1310720 faces, more than the 1048576 the viewer draws"
+                + " (choose a lower level; the ray-tracing plugin renders the limit surface)"), errors);
+        assertEquals(7, m.selected().level());
+        assertTrue(work.isEmpty(), "nothing is refined for a refused level");
+    }
+
+    @Test
+    void movingTheCameraKeepsTheDrawListAndSaysOnlyTheViewChanged() throws IOException {
+        int[] views = {0};
+        ViewerModel m = new ViewerModel(Runnable::run, Runnable::run, new ViewerModel.Listener() {
+            @Override public void changed() { changes++; }
+            @Override public void error(String message) { errors.add(message); }
+            @Override public void viewChanged() { views[0]++; }
+        });
+        m.open(List.of(write("cube.obj", CUBE_OBJ)));
+        List<Rasterizer.Item> before = m.drawList();
+        int changesBefore = changes;
+        m.orbit(10, 5);
+        m.pan(3, -2);
+        m.zoom(1.2);
+        assertSame(before, m.drawList(), "nothing is rebuilt (or allocated) for a frame while orbiting");
+        assertEquals(3, views[0]);
+        assertEquals(changesBefore, changes);
+        m.toggleCage();
+        assertNotSame(before, m.drawList());
+    }
+
+    @Test
+    void aFolderOrNothingWithoutAKnownExtensionIsNamedForWhatItIs() throws IOException {
+        ViewerModel m = model();
+        Path folder = Files.createDirectory(dir.resolve("meshes")), missing = dir.resolve("gone");
+        m.open(List.of(folder, missing));
+        assertEquals(List.of(folder + ": the viewer opens .obj and .dat meshes and .tex unwraps, found a path that is a directory, not a regular file",
+                missing + ": the viewer opens .obj and .dat meshes and .tex unwraps, found nothing there (not found)"), errors);
+        assertEquals(0, m.surfaces().size());
+        assertEquals(0, m.pending());
+    }
+
+    @Test
     void aBuildThatFailsKeepsWhatIsShownAndTakesTheSettingsBack() throws IOException {
         ArrayDeque<Runnable> work = new ArrayDeque<>();
         ViewerModel m = new ViewerModel(work::add, Runnable::run, new ViewerModel.Listener() {

@@ -11,6 +11,7 @@ import java.util.Locale;
 import java.util.concurrent.CancellationException;
 
 import lt.spindulys.files.AtomicFile;
+import lt.spindulys.files.FileNames;
 import lt.spindulys.image.Aov;
 import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.image.ImageOptions;
@@ -84,7 +85,7 @@ public final class RayTracePlugin implements OutputPlugin {
     public PluginResult run(PluginRequest request) throws IOException, InterruptedException {
         long start = System.nanoTime();
         Path out = request.output();
-        String ext = extension(out);
+        String ext = FileNames.extension(out);
         if (!fileExtensions().contains(ext)) {
             throw new IllegalArgumentException("the ray tracer writes .jpg, .png or .tga files, not '" + SceneDescription.oneLine(out.toString()) + "'");
         }
@@ -189,14 +190,6 @@ public final class RayTracePlugin implements OutputPlugin {
     /** Pixels of a TYPE_INT_RGB image as opaque 0xAARRGGBB, rows from the top. */
     private static int[] argb(BufferedImage img) {
         return img.getRGB(0, 0, img.getWidth(), img.getHeight(), null, 0, img.getWidth());
-    }
-
-    /** The extension of a file name, lower case, without the dot; empty if it has none. */
-    static String extension(Path p) {
-        Path name = p.getFileName();
-        String s = name == null ? "" : name.toString();
-        int dot = s.lastIndexOf('.');
-        return dot < 0 ? "" : s.substring(dot + 1).toLowerCase(Locale.ROOT);
     }
 
     /** The file beside {@code out} with its extension replaced by {@code suffix}: out.jpg and ".dat" give out.dat. */
