@@ -129,10 +129,15 @@ public final class OrbitCamera {
         distance = clampDistance(distance / factor);
     }
 
+    /** The share of the image's half width and half height a fitted box may fill. */
+    static final double FIT_FILL = 0.9;
+
     /**
-     * Looks at the centre of {@code bounds} from the current direction, from just far enough
-     * that its bounding sphere (so the whole box, whatever the direction) fits in the image both
-     * across and up.
+     * Looks at the centre of {@code bounds} from the current direction, from just far enough that
+     * all eight corners of the box (so everything inside it) project into the image, within
+     * {@link #FIT_FILL} of its half width and half height. Fitting the box as seen from this
+     * direction, rather than its bounding sphere, makes the surface fill the view as a user
+     * expects after F; orbiting afterwards may turn a corner out of view, as in other modellers.
      *
      * @param bounds what must be visible; an empty or infinite box leaves the camera as it is
      * @param aspect the viewport's width over its height
@@ -140,14 +145,22 @@ public final class OrbitCamera {
     public void fit(Bounds bounds, double aspect) {
         if (bounds.isEmpty() || !bounds.isFinite()) return;
         Vec3 c = new Vec3((bounds.minX() + bounds.maxX()) / 2, (bounds.minY() + bounds.maxY()) / 2, (bounds.minZ() + bounds.maxZ()) / 2);
-        double r = new Vec3(bounds.maxX() - bounds.minX(), bounds.maxY() - bounds.minY(), bounds.maxZ() - bounds.minZ()).length() / 2;
-        if (!(r > 0)) r = 1;
-        double halfV = Math.toRadians(fov) / 2;
-        double halfH = Math.atan(Math.tan(halfV) * (aspect > 0 && Double.isFinite(aspect) ? aspect : 1));
-        // A sphere of radius r seen from distance d fills a half angle asin(r / d).
-        double half = Math.min(halfV, halfH);
+        double tanV = Math.tan(Math.toRadians(fov) / 2) * FIT_FILL;
+        double tanH = Math.tan(Math.toRadians(fov) / 2) * (aspect > 0 && Double.isFinite(aspect) ? aspect : 1) * FIT_FILL;
+        Vec3 r = right(), u = up(), f = forward();
+        // A corner q (from the centre) at depth d + q.f from the eye projects inside when
+        // |q.r| <= tanH (d + q.f) and |q.u| <= tanV (d + q.f): each gives a least distance d.
+        double d = 0;
+        for (int k = 0; k < 8; k++) {
+            Vec3 q = new Vec3((k & 1) == 0 ? bounds.minX() : bounds.maxX(), (k & 2) == 0 ? bounds.minY() : bounds.maxY(),
+                    (k & 4) == 0 ? bounds.minZ() : bounds.maxZ()).minus(c);
+            double z = q.dot(f);
+            d = Math.max(d, Math.max(Math.abs(q.dot(r)) / tanH, Math.abs(q.dot(u)) / tanV) - z);
+        }
+        // A flat or point-like box still gets a distance (a point: one unit).
+        double size = new Vec3(bounds.maxX() - bounds.minX(), bounds.maxY() - bounds.minY(), bounds.maxZ() - bounds.minZ()).length();
         target = c;
-        distance = clampDistance(1.02 * r / Math.sin(half));
+        distance = clampDistance(d > 0 ? d : size > 0 ? size : 1);
     }
 
     private static double clampPitch(double p) { return Math.max(-MAX_PITCH, Math.min(MAX_PITCH, p)); }
