@@ -3,6 +3,7 @@ package lt.spindulys.cli;
 import java.awt.GraphicsEnvironment;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
+import java.io.IOException;
 import java.io.PrintStream;
 import java.lang.reflect.InvocationTargetException;
 import java.nio.file.Path;
@@ -15,6 +16,7 @@ import java.util.function.BooleanSupplier;
 
 import javax.swing.SwingUtilities;
 
+import lt.spindulys.plugin.OutputPlugin;
 import lt.spindulys.plugin.OutputPlugins;
 import lt.spindulys.viewer.ViewerFrame;
 
@@ -25,7 +27,7 @@ import lt.spindulys.viewer.ViewerFrame;
  */
 final class ViewCommand {
     static final String USAGE = """
-            usage: render view [MESH.obj|MESH.dat|UNWRAP.tex ...]
+            usage: render view [--plugins FOLDER]... [MESH.obj|MESH.dat|UNWRAP.tex ...]
 
               Opens the subdivision-surface viewer (a desktop window) with the meshes given; more can be
               opened with File > Open or dropped on the window. A .dat mesh takes the .tex unwrap of the
@@ -33,12 +35,15 @@ final class ViewCommand {
               Mouse: left drag orbits, right (or shift) drag pans, the wheel zooms.
               Keys: arrows orbit, + and - zoom, F fits, 1 2 3 polyhedron / lattice / smoothed,
               C cage over the surface, Page Up / Page Down subdivision level.
+              --plugins FOLDER  also list the output plugins of the jars in FOLDER in the Plugins menu
+                                (see docs/plugins.md, Writing a plugin); may be given several times.
             See README.md (Viewer).""";
 
     /** How long a closing viewer waits for cancelled plugin runs to stop (they check often; this is a backstop). */
     static final long RUNS_GRACE_SECONDS = 30;
 
     private final List<Path> files = new ArrayList<>();
+    private final List<Path> pluginFolders = new ArrayList<>();
     private final BooleanSupplier headless;
 
     /**
@@ -49,9 +54,16 @@ final class ViewCommand {
      */
     ViewCommand(String[] args, BooleanSupplier headless) throws UsageException {
         this.headless = headless;
-        for (String a : args) {
-            if (a.startsWith("-")) throw new UsageException("unknown view option '" + a + "' (see render view --help)");
-            files.add(Path.of(a));
+        for (int i = 0; i < args.length; i++) {
+            String a = args[i];
+            if (a.equals("--plugins")) {
+                if (i + 1 == args.length) throw new UsageException("--plugins needs a folder (see render view --help)");
+                pluginFolders.add(Path.of(args[++i]));
+            } else if (a.startsWith("-")) {
+                throw new UsageException("unknown view option '" + a + "' (see render view --help)");
+            } else {
+                files.add(Path.of(a));
+            }
         }
     }
 
@@ -65,12 +77,23 @@ final class ViewCommand {
                     + "run it on a desktop or under a virtual X server");
             return 1;
         }
+        // Found before the window opens, so a bad plugin folder is one line on the terminal.
+        List<OutputPlugin> plugins;
+        try {
+            plugins = OutputPlugins.available(pluginFolders);
+        } catch (IOException e) {
+            err.println("render view: cannot list a plugin folder: " + e.getMessage());
+            return 1;
+        } catch (IllegalArgumentException e) {
+            err.println("render view: " + e.getMessage());
+            return 1;
+        }
         CountDownLatch closed = new CountDownLatch(1);
         AtomicReference<ViewerFrame> frame = new AtomicReference<>();
         try {
             SwingUtilities.invokeAndWait(() -> {
                 // Outputs go to the working folder until the user picks another, as the command line's do.
-                ViewerFrame f = ViewerFrame.withPlugins(OutputPlugins.available(), Path.of(""));
+                ViewerFrame f = ViewerFrame.withPlugins(plugins, Path.of(""));
                 frame.set(f);
                 f.addWindowListener(new WindowAdapter() {
                     @Override public void windowClosed(WindowEvent e) { closed.countDown(); }

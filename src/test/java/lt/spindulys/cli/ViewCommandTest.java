@@ -49,4 +49,15 @@ class ViewCommandTest {
         assertEquals(0, Main.run(new String[] {"--help"}, new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(err)));
         assertTrue(out.toString(StandardCharsets.UTF_8).contains("render view [MESH"), "the main usage lists view");
     }
+
+    @Test
+    void aBadPluginFolderIsOneLineBeforeAnyWindow() throws Exception {
+        assertThrows(UsageException.class, () -> new ViewCommand(new String[] {"--plugins"}, () -> false));
+        ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
+        // Not headless: the folder is looked at before the window would open.
+        int status = new ViewCommand(new String[] {"--plugins", "no/such/folder", "scenes/models/cube.dat"}, () -> false)
+                .run(new PrintStream(out, true, "UTF-8"), new PrintStream(err, true, "UTF-8"));
+        assertEquals(1, status);
+        assertEquals("render view: plugin folder no/such/folder is missing\n", err.toString("UTF-8"));
+    }
 }
