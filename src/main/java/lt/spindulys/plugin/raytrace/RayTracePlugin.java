@@ -137,8 +137,18 @@ public final class RayTracePlugin implements OutputPlugin {
             bodies.add(ImageWriter.pngEncoder(id.width(), id.height(), id.rgb())::accept);
         }
         if (saved != null) bodies.addAll(saved.bodies(request.surfaces()));
-        checkCancelled(progress);
-        AtomicFile.writeAll(files, bodies);
+        // Encoding a large picture takes a while: a cancel during it still wins, as every file is
+        // checked before and after it is written, and writeAll deletes its temporary files when
+        // a body throws, before anything is renamed.
+        List<AtomicFile.Body> cancellable = new ArrayList<>(bodies.size());
+        for (AtomicFile.Body b : bodies) {
+            cancellable.add(os -> {
+                checkCancelled(progress);
+                b.write(os);
+                checkCancelled(progress);
+            });
+        }
+        AtomicFile.writeAll(files, cancellable);
         progress.progress(1, "writing");
         progress.preview(w, h, argb(result.image()), true);
         double seconds = (System.nanoTime() - start) / 1e9;

@@ -483,6 +483,26 @@ class RayTracePluginTest {
     }
 
     @Test
+    void aCancelWhileTheFilesAreWrittenStillWritesNothing() throws Exception {
+        Path out = Files.writeString(dir.resolve("late.png"), "old content");
+        Map<String, String> o = new HashMap<>(handOptions());
+        o.put("identify", "true");
+        o.put("save-scene", "true");
+        // The user cancels just after the picture is encoded, before the other files are.
+        java.util.concurrent.atomic.AtomicBoolean writing = new java.util.concurrent.atomic.AtomicBoolean();
+        java.util.concurrent.atomic.AtomicInteger askedWhileWriting = new java.util.concurrent.atomic.AtomicInteger();
+        PluginProgress late = new PluginProgress() {
+            @Override public void progress(double fraction, String stage) { if (stage.equals("writing")) writing.set(true); }
+            @Override public boolean isCancelled() { return writing.get() && askedWhileWriting.incrementAndGet() >= 2; }
+        };
+        assertThrows(CancellationException.class, () -> run(o, out, late));
+        assertEquals("old content", Files.readString(out));
+        try (Stream<Path> left = Files.list(dir)) {
+            assertEquals(List.of(out), left.toList(), "no other file, no temporary file");
+        }
+    }
+
+    @Test
     void aPreviewComesFirstThenTheFinalPicture() throws Exception {
         List<int[]> sizes = new ArrayList<>();
         List<Boolean> last = new ArrayList<>();
