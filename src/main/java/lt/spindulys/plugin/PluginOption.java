@@ -20,9 +20,13 @@ import java.util.Set;
  * @param min          for {@link Kind#INTEGER} and {@link Kind#NUMBER}: the least value; else 0
  * @param max          for {@link Kind#INTEGER} and {@link Kind#NUMBER}: the greatest value; else 0
  * @param help         one sentence for a tooltip
+ * @param when         the key of the option this one depends on, or null: it matters only while that
+ *                     option's value is one of {@code whenValues} (a host may disable its field otherwise;
+ *                     its value is still checked and handed over)
+ * @param whenValues   the values of {@code when} under which this option matters; empty without {@code when}
  */
 public record PluginOption(String key, String label, String group, Kind kind, String defaultValue,
-                           List<String> choices, double min, double max, String help) {
+                           List<String> choices, double min, double max, String help, String when, List<String> whenValues) {
     /** The form of a value. */
     public enum Kind {
         /** A whole number in [min, max], in decimal: {@code 16}. */
@@ -42,9 +46,28 @@ public record PluginOption(String key, String label, String group, Kind kind, St
     }
 
     /**
-     * Copies the choices and checks that the default is valid.
+     * An option that always matters.
      *
-     * @throws IllegalArgumentException if the default does not pass {@link #check(String)}
+     * @param key the key
+     * @param label the label
+     * @param group the heading
+     * @param kind the kind
+     * @param defaultValue the default
+     * @param choices the allowed values of a CHOICE
+     * @param min the least value of a number
+     * @param max the greatest value of a number
+     * @param help a sentence
+     */
+    public PluginOption(String key, String label, String group, Kind kind, String defaultValue,
+                        List<String> choices, double min, double max, String help) {
+        this(key, label, group, kind, defaultValue, choices, min, max, help, null, List.of());
+    }
+
+    /**
+     * Copies the lists and checks that the default is valid.
+     *
+     * @throws IllegalArgumentException if the default does not pass {@link #check(String)}, or
+     *                                  {@code when} and {@code whenValues} do not go together
      */
     public PluginOption {
         Objects.requireNonNull(key, "key");
@@ -54,6 +77,10 @@ public record PluginOption(String key, String label, String group, Kind kind, St
         Objects.requireNonNull(defaultValue, "defaultValue");
         choices = List.copyOf(choices);
         Objects.requireNonNull(help, "help");
+        whenValues = List.copyOf(whenValues);
+        if ((when == null) != whenValues.isEmpty()) {
+            throw new IllegalArgumentException("option " + key + ": a condition needs both the option it depends on and its values");
+        }
         if (kind == Kind.CHOICE && choices.isEmpty()) throw new IllegalArgumentException("option " + key + " has no choices");
         if (kind != Kind.FILE) {
             String problem = problem(kind, defaultValue, choices, min, max);
@@ -121,6 +148,34 @@ public record PluginOption(String key, String label, String group, Kind kind, St
      */
     public static PluginOption of(String key, String label, String group, Kind kind, String defaultValue, String help) {
         return new PluginOption(key, label, group, kind, defaultValue, List.of(), 0, 0, help);
+    }
+
+    /**
+     * The same option, mattering only while option {@code key} has one of {@code values} (for
+     * example the index of refraction only for a transparent material).
+     *
+     * @param key    the option this one depends on
+     * @param values its values under which this one matters
+     * @return the conditional option
+     */
+    public PluginOption onlyWhen(String key, String... values) {
+        Objects.requireNonNull(key, "key");
+        if (values.length == 0) throw new IllegalArgumentException("option " + this.key + ": a condition needs at least one value");
+        return new PluginOption(this.key, label, group, kind, defaultValue, choices, min, max, help, key, List.of(values));
+    }
+
+    /**
+     * Whether this option matters with these answers: it has no condition, or the option it
+     * depends on has (or defaults to) one of the values named.
+     *
+     * @param options the plugin's options (for the default of the option depended on)
+     * @param values  the answers, key to text
+     * @return true if the option matters
+     */
+    public boolean applies(List<PluginOption> options, Map<String, String> values) {
+        if (when == null) return true;
+        for (PluginOption o : options) if (o.key().equals(when)) return whenValues.contains(o.valueIn(values).strip());
+        return whenValues.contains(values.get(when));
     }
 
     /**

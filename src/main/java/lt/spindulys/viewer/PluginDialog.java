@@ -62,6 +62,8 @@ public final class PluginDialog extends JDialog {
     private final JTextField output;
     private PluginForm.Accepted accepted;
     private boolean refreshPending;
+    /** The label and field of each option that matters only for some values of another. */
+    private final Map<String, JComponent[]> conditional = new LinkedHashMap<>();
 
     /**
      * Builds the dialog over a form; {@link #ask()} shows it.
@@ -86,7 +88,11 @@ public final class PluginDialog extends JDialog {
         for (Map.Entry<String, List<PluginOption>> group : form.groups().entrySet()) {
             JPanel box = new JPanel(new GridBagLayout());
             int row = 0;
-            for (PluginOption o : group.getValue()) addRow(box, row++, o.label(), field(o), o.help());
+            for (PluginOption o : group.getValue()) {
+                JComponent f = field(o);
+                JLabel l = addRow(box, row++, o.label(), f, o.help());
+                if (o.when() != null) conditional.put(o.key(), new JComponent[] {l, f});
+            }
             if (surfaceLabels.containsKey(group.getKey())) {
                 box.setBorder(BorderFactory.createEmptyBorder(4, 4, 4, 4));
                 JPanel top = new JPanel(new BorderLayout());
@@ -204,6 +210,10 @@ public final class PluginDialog extends JDialog {
     }
 
     private void refresh() {
+        for (Map.Entry<String, JComponent[]> e : conditional.entrySet()) {
+            boolean on = form.applies(e.getKey());
+            for (JComponent c : e.getValue()) enable(c, on);
+        }
         String p = form.problem();
         show(p);
         ok.setEnabled(p == null);
@@ -349,7 +359,13 @@ public final class PluginDialog extends JDialog {
         return p;
     }
 
-    private static void addRow(JPanel panel, int row, String label, JComponent field, String help) {
+    /** Enables or disables a field with everything inside it (a text field and its button). */
+    private static void enable(java.awt.Component c, boolean on) {
+        c.setEnabled(on);
+        if (c instanceof java.awt.Container k) for (java.awt.Component child : k.getComponents()) enable(child, on);
+    }
+
+    private static JLabel addRow(JPanel panel, int row, String label, JComponent field, String help) {
         GridBagConstraints c = new GridBagConstraints();
         c.gridy = row;
         c.insets = new Insets(2, 4, 2, 4);
@@ -362,6 +378,7 @@ public final class PluginDialog extends JDialog {
         c.weightx = 1;
         c.fill = GridBagConstraints.HORIZONTAL;
         panel.add(field, c);
+        return l;
     }
 
     /** The colour a COLOR value names, or null if it names none. */

@@ -124,6 +124,19 @@ public final class PluginForm {
     }
 
     /**
+     * Whether an option matters with the values as they stand ({@link PluginOption#applies}): the
+     * dialog disables the field of one that does not, such as the index of refraction of an
+     * opaque surface.
+     *
+     * @param key the option's key
+     * @return true if it matters
+     * @throws IllegalArgumentException if no option has the key
+     */
+    public boolean applies(String key) {
+        return option(key).applies(options, values);
+    }
+
+    /**
      * Sets an option's text as the user typed it; it is checked by {@link #problem()}.
      *
      * @param key  the option's key

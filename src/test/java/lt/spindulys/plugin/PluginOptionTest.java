@@ -1,6 +1,7 @@
 package lt.spindulys.plugin;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -53,5 +54,20 @@ class PluginOptionTest {
         assertThrows(IllegalArgumentException.class, () -> new PluginView(Vec3.ZERO, Vec3.Y, Vec3.Y, 45, 10, 10));
         assertThrows(IllegalArgumentException.class, () -> new PluginView(Vec3.ZERO, Vec3.X, Vec3.Y, 180, 10, 10));
         assertThrows(IllegalArgumentException.class, () -> new PluginView(Vec3.ZERO, Vec3.X, Vec3.Y, 45, 0, 10));
+    }
+
+    @Test
+    void anOptionMayMatterOnlyForSomeValuesOfAnother() {
+        PluginOption material = PluginOption.choice("material", "Material", "cube", "opaque", List.of("opaque", "transparent", "mirror"), "the look");
+        PluginOption ior = PluginOption.number("ior", "Index of refraction", "cube", 1.5, 1, 4, "").onlyWhen("material", "transparent");
+        List<PluginOption> all = List.of(material, ior);
+        assertEquals("material", ior.when());
+        assertFalse(ior.applies(all, Map.of()), "the default material is opaque");
+        assertTrue(ior.applies(all, Map.of("material", "transparent")));
+        assertTrue(material.applies(all, Map.of()), "no condition");
+        // Its value is still checked whether or not it matters.
+        assertEquals("Index of refraction (ior) must be a number, found 'x'", PluginOption.check(all, Map.of("ior", "x")));
+        assertThrows(IllegalArgumentException.class, () -> material.onlyWhen("ior"));
+        assertThrows(IllegalArgumentException.class, () -> new PluginOption("k", "K", "g", PluginOption.Kind.TEXT, "", List.of(), 0, 0, "", "other", List.of()));
     }
 }

@@ -127,4 +127,22 @@ class PluginFormTest {
         m.put("a", "2");
         assertEquals("1", a.values().get("a"));
     }
+
+    @Test
+    void fieldsThatDoNotMatterForTheChosenMaterialAreToldApart() {
+        PluginForm f = new PluginForm(new lt.spindulys.plugin.raytrace.RayTracePlugin(), Fixtures.surfaces(), Fixtures.view(48, 30), dir);
+        assertEquals("opaque", f.value("surface.0.material"));
+        assertTrue(f.applies("surface.0.color"));
+        assertFalse(f.applies("surface.0.ior"), "no index of refraction for an opaque surface");
+        assertFalse(f.applies("surface.0.reflectivity"));
+        assertTrue(f.applies("samples"), "unconditional");
+        f.set("surface.0.material", "transparent");
+        assertTrue(f.applies("surface.0.ior"));
+        assertTrue(f.applies("surface.0.tint"));
+        assertFalse(f.applies("surface.0.color"), "a transparent surface is coloured by its tint");
+        f.set("surface.0.material", "mirror");
+        assertTrue(f.applies("surface.0.reflectivity"));
+        assertTrue(f.applies("surface.0.color"));
+        assertFalse(f.applies("surface.0.attenuation"));
+    }
 }

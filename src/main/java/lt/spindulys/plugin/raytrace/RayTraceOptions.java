@@ -101,12 +101,16 @@ final class RayTraceOptions {
             o.add(PluginOption.choice(surfaceKey(i, MATERIAL), "Material", group, "opaque", MATERIALS,
                     "opaque: coloured; transparent: glass with an index of refraction and a tint; mirror: reflects."));
             o.add(PluginOption.of(surfaceKey(i, COLOR), "Colour", group, PluginOption.Kind.COLOR, colourText(COLOURS[i % COLOURS.length]),
-                    "Colour of an opaque or mirror surface (white under a texture)."));
-            o.add(PluginOption.number(surfaceKey(i, IOR), "Index of refraction", group, 1.5, 1, 5, "Of a transparent surface: glass 1.5, water 1.33."));
-            o.add(PluginOption.of(surfaceKey(i, TINT), "Tint", group, PluginOption.Kind.COLOR, "1 1 1", "Colour a transparent surface gives the light passing through it."));
+                    "Colour of an opaque or mirror surface (white under a texture).").onlyWhen(surfaceKey(i, MATERIAL), "opaque", "mirror"));
+            o.add(PluginOption.number(surfaceKey(i, IOR), "Index of refraction", group, 1.5, 1, 5, "Of a transparent surface: glass 1.5, water 1.33.")
+                    .onlyWhen(surfaceKey(i, MATERIAL), "transparent"));
+            o.add(PluginOption.of(surfaceKey(i, TINT), "Tint", group, PluginOption.Kind.COLOR, "1 1 1", "Colour a transparent surface gives the light passing through it.")
+                    .onlyWhen(surfaceKey(i, MATERIAL), "transparent"));
             o.add(PluginOption.number(surfaceKey(i, ATTENUATION), "Attenuation", group, 0, 0, 1000,
-                    "Of a transparent surface: absorption per unit of distance inside it (Beer's law); 0 for none."));
-            o.add(PluginOption.number(surfaceKey(i, REFLECTIVITY), "Reflectivity", group, 0.8, 0, 1, "Of a mirror surface: the share of light it reflects."));
+                    "Of a transparent surface: absorption per unit of distance inside it (Beer's law); 0 for none.")
+                    .onlyWhen(surfaceKey(i, MATERIAL), "transparent"));
+            o.add(PluginOption.number(surfaceKey(i, REFLECTIVITY), "Reflectivity", group, 0.8, 0, 1, "Of a mirror surface: the share of light it reflects.")
+                    .onlyWhen(surfaceKey(i, MATERIAL), "mirror"));
             o.add(PluginOption.of(surfaceKey(i, TEXTURE), "Texture image", group, PluginOption.Kind.FILE, "",
                     "An image (PNG, JPEG, TGA) to colour the surface with; empty for none."));
             o.add(PluginOption.choice(surfaceKey(i, MAPPING), "Texture mapping", group, s.control().uvs() != null ? "uv" : "spherical", MAPPINGS,
