@@ -100,6 +100,33 @@ public final class Bvh implements Accelerator {
         return m;
     }
 
+    /**
+     * The tree's surface-area-heuristic cost, with a box test and a primitive test both costing
+     * one: the sum over inner nodes of their box area, plus over leaves of area times primitive
+     * count, all over the root's area. Lower is a better tree for rays from everywhere; it is
+     * how a faster build shows that it kept (or improved) the tree's quality.
+     *
+     * @return the cost, or 0 for an empty tree
+     */
+    public double sahCost() {
+        if (nodeCount == 0) return 0;
+        double root = nodeArea(0), sum = 0;
+        if (!(root > 0)) return 0;
+        for (int i = 0; i < nodeCount; i++) {
+            int count = node[8 * i + 7];
+            sum += nodeArea(i) * (count > 0 ? count : 1);
+        }
+        return sum / root;
+    }
+
+    /** Half the surface area of node i's float box, in double. */
+    private double nodeArea(int i) {
+        double dx = (double) Float.intBitsToFloat(node[8 * i + 3]) - Float.intBitsToFloat(node[8 * i]);
+        double dy = (double) Float.intBitsToFloat(node[8 * i + 4]) - Float.intBitsToFloat(node[8 * i + 1]);
+        double dz = (double) Float.intBitsToFloat(node[8 * i + 5]) - Float.intBitsToFloat(node[8 * i + 2]);
+        return dx * dy + dy * dz + dz * dx;
+    }
+
     /** Bounds of everything indexed ({@link Bounds#EMPTY} when nothing is). */
     public Bounds bounds() { return bounds; }
 
@@ -361,18 +388,25 @@ public final class Bvh implements Accelerator {
                 // A pool of our own: forks must not land in the common pool, whose size is not ours to choose.
                 ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
                 try {
-                    root = pool.invoke(new Task(this, 0, n, 0));
+                    root = pool.invoke(new Task(this, 0, n, 0, rootBounds()));
                 } finally {
                     pool.shutdown();
                 }
             } else {
                 Chunk c = new Chunk(pb, perm, leafSize);
-                c.build(0, n, 0);
+                c.build(0, n, 0, rootBounds());
                 root = new Part(c);
             }
             count = root.nodes;
             node = new int[8 * count];
             place(root, 0);
+        }
+
+        /** The root's box and centroid bounds, twelve floats as {@link Splitter#bounds} writes them. */
+        private float[] rootBounds() {
+            float[] bc = new float[12];
+            new Splitter(pb, perm).bounds(0, perm.length, bc, 0);
+            return bc;
         }
 
         /** Writes part p with its first node at index at (depth-first, left child next). */
@@ -421,26 +455,28 @@ public final class Bvh implements Accelerator {
     private static final class Task extends RecursiveTask<Part> {
         private final Builder b;
         private final int s, e, d;
+        /** The range's box and centroid bounds (twelve floats), computed by the parent's split. */
+        private final float[] bc;
 
-        Task(Builder b, int s, int e, int d) { this.b = b; this.s = s; this.e = e; this.d = d; }
+        Task(Builder b, int s, int e, int d, float[] bc) { this.b = b; this.s = s; this.e = e; this.d = d; this.bc = bc; }
 
         @Override
         protected Part compute() {
             if (e - s < Builder.PARALLEL_GRAIN) {
                 Chunk c = new Chunk(b.pb, b.perm, b.leafSize);
-                c.build(s, e, d);
+                c.build(s, e, d, bc);
                 return new Part(c);
             }
             Splitter sp = new Splitter(b.pb, b.perm);
-            float[] nb = new float[6], cb = new float[6];
-            sp.bounds(s, e, nb, 0, cb);
-            long split = sp.split(s, e, nb, 0, cb, d);
+            float[] lr = new float[24];
+            long split = sp.split(s, e, bc, 0, d, lr, 0);
             int mid = (int) (split >> 2), axis = (int) (split & 3);
-            Task left = new Task(b, s, mid, d + 1), right = new Task(b, mid, e, d + 1);
+            Task left = new Task(b, s, mid, d + 1, java.util.Arrays.copyOfRange(lr, 0, 12));
+            Task right = new Task(b, mid, e, d + 1, java.util.Arrays.copyOfRange(lr, 12, 24));
             right.fork();
             Part l = left.compute();
             Part r = right.join();
-            return new Part(nb, axis, d, l, r);
+            return new Part(java.util.Arrays.copyOf(bc, 6), axis, d, l, r);
         }
     }
 
@@ -457,16 +493,22 @@ public final class Bvh implements Accelerator {
             this.leafSize = leafSize;
         }
 
-        void build(int s0, int e0, int d0) {
+        /** Builds slots [s0, e0) at depth d0, whose box and centroid bounds are bc0[0..11]. */
+        void build(int s0, int e0, int d0, float[] bc0) {
             int cap = Math.max(1, 2 * ((e0 - s0) / Math.max(1, leafSize)) + 1);
             box = new float[6 * cap];
             node = new int[2 * cap];
             // Pending right subtrees: start, end, the parent whose right-child link to patch, depth.
             int[] tasks = new int[4 * 64];
             int nt = 0;
+            // Each pending task's box and centroid bounds, twelve floats, found by its parent's split.
+            float[] taskBounds = new float[12 * 64];
             tasks[nt++] = s0; tasks[nt++] = e0; tasks[nt++] = -1; tasks[nt++] = d0;
-            float[] cb = new float[6];
+            System.arraycopy(bc0, 0, taskBounds, 0, 12);
+            // The current node's bounds (0..11) and its split's children's (12..23, 24..35).
+            float[] cur = new float[36];
             while (nt > 0) {
+                System.arraycopy(taskBounds, 12 * (nt / 4 - 1), cur, 0, 12);
                 int d = tasks[--nt], parent = tasks[--nt], e = tasks[--nt], s = tasks[--nt];
                 while (true) {
                     int n = count++;
@@ -476,18 +518,23 @@ public final class Bvh implements Accelerator {
                     }
                     if (parent >= 0) node[2 * parent] = n;
                     parent = -1;
-                    sp.bounds(s, e, box, 6 * n, cb);
+                    System.arraycopy(cur, 0, box, 6 * n, 6);
                     if (d > maxDepth) maxDepth = d;
                     if (e - s <= leafSize) {
                         node[2 * n] = s;
                         node[2 * n + 1] = e - s;
                         break;
                     }
-                    long split = sp.split(s, e, box, 6 * n, cb, d);
+                    long split = sp.split(s, e, cur, 0, d, cur, 12);
                     int mid = (int) (split >> 2), axis = (int) (split & 3);
                     node[2 * n + 1] = -1 - axis;
-                    if (nt + 4 > tasks.length) tasks = java.util.Arrays.copyOf(tasks, 2 * tasks.length);
+                    if (nt + 4 > tasks.length) {
+                        tasks = java.util.Arrays.copyOf(tasks, 2 * tasks.length);
+                        taskBounds = java.util.Arrays.copyOf(taskBounds, 2 * taskBounds.length);
+                    }
+                    System.arraycopy(cur, 24, taskBounds, 12 * (nt / 4), 12);
                     tasks[nt++] = mid; tasks[nt++] = e; tasks[nt++] = n; tasks[nt++] = d + 1;
+                    System.arraycopy(cur, 12, cur, 0, 12);
                     e = mid;
                     d++;
                 }
@@ -503,8 +550,9 @@ public final class Bvh implements Accelerator {
         final float[] pb;
         final int[] perm;
         // Binning scratch, reused for every node: per axis and bin, a count and bounds.
-        final int[] binCount = new int[3 * BINS];
-        final float[] binBox = new float[3 * BINS * 6];
+        // Two sets of 3 * BINS (see sahSplit), merged into the first before the sweep.
+        final int[] binCount = new int[2 * 3 * BINS];
+        final float[] binBox = new float[2 * 3 * BINS * 6];
         final double[] rightArea = new double[BINS];
         final int[] rightCount = new int[BINS];
 
@@ -522,8 +570,11 @@ public final class Bvh implements Accelerator {
             }
         }
 
-        /** Writes the bounds of slots [s, e) to out[o..o+5] and of their doubled centroids to cb. */
-        void bounds(int s, int e, float[] out, int o, float[] cb) {
+        /**
+         * Writes the bounds of slots [s, e) to out[o..o+5] and of their doubled centroids to
+         * out[o+6..o+11].
+         */
+        void bounds(int s, int e, float[] out, int o) {
             float x0 = Float.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Float.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
             float cx0 = x0, cy0 = x0, cz0 = x0, cx1 = x1, cy1 = x1, cz1 = x1;
             final float[] p = pb;
@@ -545,7 +596,7 @@ public final class Bvh implements Accelerator {
                 if (mz > cz1) cz1 = mz;
             }
             out[o] = x0; out[o + 1] = y0; out[o + 2] = z0; out[o + 3] = x1; out[o + 4] = y1; out[o + 5] = z1;
-            cb[0] = cx0; cb[1] = cy0; cb[2] = cz0; cb[3] = cx1; cb[4] = cy1; cb[5] = cz1;
+            out[o + 6] = cx0; out[o + 7] = cy0; out[o + 8] = cz0; out[o + 9] = cx1; out[o + 10] = cy1; out[o + 11] = cz1;
         }
 
         private static double area(double dx, double dy, double dz) {
@@ -558,53 +609,84 @@ public final class Bvh implements Accelerator {
         }
 
         /**
-         * Chooses and performs the split of slots [s, e) whose bounds are box[o..o+5]: returns
-         * (mid << 2) | axis with both halves non-empty. Binned SAH over the centroid bounds; the
-         * median of the widest centroid axis when SAH finds no split cheaper than keeping the
-         * node whole, or below the depth limit.
+         * Chooses and performs the split of slots [s, e) whose box and centroid bounds are
+         * bc[o..o+11] ({@link #bounds}): returns (mid << 2) | axis with both halves non-empty, and
+         * writes the left half's bounds to out[oo..oo+11] and the right half's to
+         * out[oo+12..oo+23], so that no child needs a pass of its own to find them. Binned SAH
+         * over the centroid bounds; the median of the widest centroid axis when SAH finds no
+         * split cheaper than keeping the node whole, or below the depth limit.
          */
-        long split(int s, int e, float[] box, int o, float[] cb, int d) {
+        long split(int s, int e, float[] bc, int o, int d, float[] out, int oo) {
             int wide = 0;
             float wideExtent = -1;
             for (int a = 0; a < 3; a++) {
-                float ext = cb[3 + a] - cb[a];
+                float ext = bc[o + 9 + a] - bc[o + 6 + a];
                 if (ext > wideExtent) { wideExtent = ext; wide = a; }
             }
+            int mid;
             if (!(wideExtent > 0)) {
                 // Every centroid coincides: no ordering helps, any halving is as good as another.
-                return ((long) ((s + e) >>> 1) << 2) | wide;
+                mid = (s + e) >>> 1;
+            } else {
+                if (d < SAH_DEPTH_LIMIT) {
+                    long sah = sahSplit(s, e, bc, o, out, oo);
+                    if (sah >= 0) return sah;
+                }
+                mid = (s + e) >>> 1;
+                select(s, e, mid, wide);
             }
-            if (d < SAH_DEPTH_LIMIT) {
-                long sah = sahSplit(s, e, box, o, cb);
-                if (sah >= 0) return sah;
-            }
-            int mid = (s + e) >>> 1;
-            select(s, e, mid, wide);
+            bounds(s, mid, out, oo);
+            bounds(mid, e, out, oo + 12);
             return ((long) mid << 2) | wide;
         }
 
-        /** Binned SAH; -1 when no split is better than the unsplit node. */
-        private long sahSplit(int s, int e, float[] box, int o6, float[] cb) {
+        /**
+         * Binned SAH; -1 when no split is better than the unsplit node. The halves' boxes are the
+         * unions of their bins' boxes, and their centroid bounds are gathered while partitioning,
+         * so a split reads its range twice (bin, partition) rather than three times.
+         */
+        private long sahSplit(int s, int e, float[] bc, int o6, float[] out, int oo) {
             final int[] cnt0 = binCount;
             final float[] bb = binBox;
             // Small ranges get as many bins as primitives: more would be mostly empty, and
             // clearing and sweeping them would dominate the many small nodes near the leaves.
             final int nb = Math.min(BINS, e - s);
-            for (int a = 0; a < 3; a++) {
-                for (int i = a * BINS, end = i + nb; i < end; i++) {
-                    int o = 6 * i;
-                    cnt0[i] = 0;
-                    bb[o] = bb[o + 1] = bb[o + 2] = Float.POSITIVE_INFINITY;
-                    bb[o + 3] = bb[o + 4] = bb[o + 5] = Float.NEGATIVE_INFINITY;
+            for (int set = 0; set < 2; set++) {
+                for (int a = 0; a < 3; a++) {
+                    for (int i = (3 * set + a) * BINS, end = i + nb; i < end; i++) {
+                        int o = 6 * i;
+                        cnt0[i] = 0;
+                        bb[o] = bb[o + 1] = bb[o + 2] = Float.POSITIVE_INFINITY;
+                        bb[o + 3] = bb[o + 4] = bb[o + 5] = Float.NEGATIVE_INFINITY;
+                    }
                 }
             }
             // An axis whose centroids all coincide gets scale 0: everything lands in its bin 0,
             // and the sweep below finds no split with both sides non-empty on it.
-            float ex = cb[3] - cb[0], ey = cb[4] - cb[1], ez = cb[5] - cb[2];
+            float ex = bc[o6 + 9] - bc[o6 + 6], ey = bc[o6 + 10] - bc[o6 + 7], ez = bc[o6 + 11] - bc[o6 + 8];
             float sx = ex > 0 ? nb / ex : 0, sy = ey > 0 ? nb / ey : 0, sz = ez > 0 ? nb / ez : 0;
-            float mx = cb[0], my = cb[1], mz = cb[2];
+            float mx = bc[o6 + 6], my = bc[o6 + 7], mz = bc[o6 + 8];
             final float[] p = pb;
-            for (int k = s; k < e; k++) {
+            // Neighbouring primitives mostly fall in the same bins; alternating between two sets
+            // of bins halves the chains of loads waiting on the previous primitive's stores.
+            // Min and max are exact, so merging the two sets gives the very same bin boxes.
+            int k = s;
+            for (int pairEnd = e - 1; k < pairEnd; k += 2) {
+                int q = 6 * k;
+                float x0 = p[q], y0 = p[q + 1], z0 = p[q + 2], x1 = p[q + 3], y1 = p[q + 4], z1 = p[q + 5];
+                float u0 = p[q + 6], v0 = p[q + 7], w0 = p[q + 8], u1 = p[q + 9], v1 = p[q + 10], w1 = p[q + 11];
+                int bx = bin(x0 + x1, mx, sx, nb), by = BINS + bin(y0 + y1, my, sy, nb), bz = 2 * BINS + bin(z0 + z1, mz, sz, nb);
+                int cx = 3 * BINS + bin(u0 + u1, mx, sx, nb), cy = 4 * BINS + bin(v0 + v1, my, sy, nb), cz = 5 * BINS + bin(w0 + w1, mz, sz, nb);
+                cnt0[bx]++; cnt0[by]++; cnt0[bz]++;
+                cnt0[cx]++; cnt0[cy]++; cnt0[cz]++;
+                grow(bb, 6 * bx, x0, y0, z0, x1, y1, z1);
+                grow(bb, 6 * cx, u0, v0, w0, u1, v1, w1);
+                grow(bb, 6 * by, x0, y0, z0, x1, y1, z1);
+                grow(bb, 6 * cy, u0, v0, w0, u1, v1, w1);
+                grow(bb, 6 * bz, x0, y0, z0, x1, y1, z1);
+                grow(bb, 6 * cz, u0, v0, w0, u1, v1, w1);
+            }
+            if (k < e) {
                 int q = 6 * k;
                 float x0 = p[q], y0 = p[q + 1], z0 = p[q + 2], x1 = p[q + 3], y1 = p[q + 4], z1 = p[q + 5];
                 int bx = bin(x0 + x1, mx, sx, nb), by = BINS + bin(y0 + y1, my, sy, nb), bz = 2 * BINS + bin(z0 + z1, mz, sz, nb);
@@ -613,12 +695,17 @@ public final class Bvh implements Accelerator {
                 grow(bb, 6 * by, x0, y0, z0, x1, y1, z1);
                 grow(bb, 6 * bz, x0, y0, z0, x1, y1, z1);
             }
-            double leafCost = (double) (e - s) * area((double) box[o6 + 3] - box[o6], (double) box[o6 + 4] - box[o6 + 1], (double) box[o6 + 5] - box[o6 + 2]);
+            for (int i = 0, end = 3 * BINS; i < end; i++) {
+                int j = i + 3 * BINS;
+                if (i % BINS >= nb || cnt0[j] == 0) continue; // bins past nb hold stale values
+                cnt0[i] += cnt0[j];
+                grow(bb, 6 * i, bb[6 * j], bb[6 * j + 1], bb[6 * j + 2], bb[6 * j + 3], bb[6 * j + 4], bb[6 * j + 5]);
+            }
+            double leafCost = (double) (e - s) * area((double) bc[o6 + 3] - bc[o6], (double) bc[o6 + 4] - bc[o6 + 1], (double) bc[o6 + 5] - bc[o6 + 2]);
             double best = leafCost;
             int bestAxis = -1, bestBin = -1;
-            float[] scale = {sx, sy, sz};
             for (int a = 0; a < 3; a++) {
-                if (scale[a] == 0) continue;
+                if ((a == 0 ? sx : a == 1 ? sy : sz) == 0) continue;
                 // Sweep from the right: area and count of bins i+1..nb-1 for a split after bin i.
                 float x0 = Float.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Float.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
                 int cnt = 0;
@@ -647,18 +734,46 @@ public final class Bvh implements Accelerator {
                 }
             }
             if (bestAxis < 0) return -1;
-            // Partition in place: primitives whose centroid bin is <= bestBin go left.
-            float min = cb[bestAxis], sc = scale[bestAxis];
+            // The halves' boxes: the unions of bins 0..bestBin and of the rest on the chosen axis.
+            unionBins(bestAxis * BINS, bestAxis * BINS + bestBin + 1, out, oo);
+            unionBins(bestAxis * BINS + bestBin + 1, bestAxis * BINS + nb, out, oo + 12);
+            // Partition in place: primitives whose centroid bin is <= bestBin go left. Each
+            // primitive is read once where its side becomes final, and its centroid joins that
+            // side's centroid bounds.
+            float min = bestAxis == 0 ? mx : bestAxis == 1 ? my : mz, sc = bestAxis == 0 ? sx : bestAxis == 1 ? sy : sz;
+            float lx0 = Float.POSITIVE_INFINITY, ly0 = lx0, lz0 = lx0, lx1 = Float.NEGATIVE_INFINITY, ly1 = lx1, lz1 = lx1;
+            float rx0 = lx0, ry0 = lx0, rz0 = lx0, rx1 = lx1, ry1 = lx1, rz1 = lx1;
             int i = s, j = e - 1;
             while (i <= j) {
-                if (bin(centroid(i, bestAxis), min, sc, nb) <= bestBin) {
+                int q = 6 * i;
+                float cx = p[q] + p[q + 3], cy = p[q + 1] + p[q + 4], cz = p[q + 2] + p[q + 5];
+                if (bin(bestAxis == 0 ? cx : bestAxis == 1 ? cy : cz, min, sc, nb) <= bestBin) {
+                    lx0 = Math.min(lx0, cx); ly0 = Math.min(ly0, cy); lz0 = Math.min(lz0, cz);
+                    lx1 = Math.max(lx1, cx); ly1 = Math.max(ly1, cy); lz1 = Math.max(lz1, cz);
                     i++;
                 } else {
+                    rx0 = Math.min(rx0, cx); ry0 = Math.min(ry0, cy); rz0 = Math.min(rz0, cz);
+                    rx1 = Math.max(rx1, cx); ry1 = Math.max(ry1, cy); rz1 = Math.max(rz1, cz);
                     swap(i, j);
                     j--;
                 }
             }
+            out[oo + 6] = lx0; out[oo + 7] = ly0; out[oo + 8] = lz0; out[oo + 9] = lx1; out[oo + 10] = ly1; out[oo + 11] = lz1;
+            out[oo + 18] = rx0; out[oo + 19] = ry0; out[oo + 20] = rz0; out[oo + 21] = rx1; out[oo + 22] = ry1; out[oo + 23] = rz1;
             return ((long) i << 2) | bestAxis;
+        }
+
+        /** Writes the union of the boxes of bins [from, to) (empty bins left out) to out[o..o+5]. */
+        private void unionBins(int from, int to, float[] out, int o) {
+            float x0 = Float.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Float.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+            final float[] bb = binBox;
+            for (int i = from; i < to; i++) {
+                if (binCount[i] == 0) continue;
+                int b = 6 * i;
+                x0 = Math.min(x0, bb[b]); y0 = Math.min(y0, bb[b + 1]); z0 = Math.min(z0, bb[b + 2]);
+                x1 = Math.max(x1, bb[b + 3]); y1 = Math.max(y1, bb[b + 4]); z1 = Math.max(z1, bb[b + 5]);
+            }
+            out[o] = x0; out[o + 1] = y0; out[o + 2] = z0; out[o + 3] = x1; out[o + 4] = y1; out[o + 5] = z1;
         }
 
         /** Branch-free (min/max are intrinsics): which bin box grows is unpredictable. */
