@@ -23,4 +23,12 @@ public interface Accelerator {
 
     /** Bytes held by the structure's own arrays (not the primitives it indexes). */
     long memoryBytes();
+
+    /**
+     * The surface-area-heuristic cost of the binary hierarchy this structure is (or was collapsed
+     * from), as {@link Bvh#sahCost()} defines it, for reports of tree quality.
+     *
+     * @return the cost, or NaN for a structure that is not a bounding volume hierarchy
+     */
+    default double sahCost() { return Double.NaN; }
 }

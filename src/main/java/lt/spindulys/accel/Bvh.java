@@ -108,6 +108,7 @@ public final class Bvh implements Accelerator {
      *
      * @return the cost, or 0 for an empty tree
      */
+    @Override
     public double sahCost() {
         if (nodeCount == 0) return 0;
         double root = nodeArea(0), sum = 0;

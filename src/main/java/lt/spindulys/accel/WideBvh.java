@@ -33,6 +33,8 @@ public final class WideBvh implements Accelerator {
     /** Per node eight links: a node index (>= 0), or -1 - (first << 4 | count) for a leaf. */
     private final int[] child;
     private final int nodeCount, depth;
+    /** The SAH cost of the binary tree this one was collapsed from (a linear pass over its nodes). */
+    private final double sah;
 
     private static boolean probe() {
         // From the module path this module requires the vector module only statically, so it reads
@@ -77,7 +79,11 @@ public final class WideBvh implements Accelerator {
         child = java.util.Arrays.copyOf(c.child, 8 * c.count);
         nodeCount = c.count;
         depth = c.maxDepth;
+        sah = bvh.sahCost();
     }
+
+    @Override
+    public double sahCost() { return sah; }
 
     public int nodeCount() { return nodeCount; }
 

@@ -66,7 +66,8 @@ final class RenderCommand {
               --subdiv-cache MIB the lazy patches' cache, part of the subdivision memory (default 64)
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
               --stats            print load, build and render times, rays by kind, Mrays/s, peak heap,
-                                 and per adaptive subdiv its levels, patches, cache hits and misses
+                                 per mesh its triangles and its tree's SAH cost, and per adaptive
+                                 subdiv its levels, patches, cache hits and misses
               --quiet            no progress bar, and no closing 'wrote OUT (WxH, N spp) in T s' line
               --debug            stack traces on errors
             Exit status: 0 success, 2 bad usage or bad input, 1 failure while rendering or writing.""";
@@ -201,6 +202,7 @@ final class RenderCommand {
         if (!quiet) err.println(MessageText.escape(doneLine(output, result.settings(), (System.nanoTime() - t0) / 1e9)));
         if (stats) {
             printStats(out, result.loadSeconds() - warmup[0], warmup[0], result.buildSeconds(), result.settings().accelerator(), result.stats(), n);
+            for (String line : result.structureStatistics()) out.println(MessageText.escape(line));
             for (String line : result.subdivisionStatistics()) out.println(MessageText.escape(line));
         }
         return 0;

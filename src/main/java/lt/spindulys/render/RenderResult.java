@@ -24,15 +24,17 @@ public final class RenderResult {
     private final AovFrame passes;
     private final RenderStats stats;
     private final double loadSeconds, buildSeconds;
-    private final java.util.List<String> subdivision;
+    private final java.util.List<String> subdivision, structures;
 
-    RenderResult(RenderSettings settings, FrameBuffer frame, AovFrame passes, RenderStats stats, java.util.List<String> subdivision) {
-        this(settings, frame, passes, stats, subdivision, 0, 0);
+    RenderResult(RenderSettings settings, FrameBuffer frame, AovFrame passes, RenderStats stats, java.util.List<String> subdivision,
+                 java.util.List<String> structures) {
+        this(settings, frame, passes, stats, subdivision, structures, 0, 0);
     }
 
     private RenderResult(RenderSettings settings, FrameBuffer frame, AovFrame passes, RenderStats stats, java.util.List<String> subdivision,
-                         double loadSeconds, double buildSeconds) {
+                         java.util.List<String> structures, double loadSeconds, double buildSeconds) {
         this.subdivision = java.util.List.copyOf(subdivision);
+        this.structures = java.util.List.copyOf(structures);
         this.settings = Objects.requireNonNull(settings);
         this.frame = Objects.requireNonNull(frame);
         this.passes = passes;
@@ -43,7 +45,7 @@ public final class RenderResult {
 
     /** This result with the times a job spent before rendering. */
     RenderResult withTimes(double load, double build) {
-        return new RenderResult(settings, frame, passes, stats, subdivision, load, build);
+        return new RenderResult(settings, frame, passes, stats, subdivision, structures, load, build);
     }
 
     /**
@@ -54,6 +56,14 @@ public final class RenderResult {
      * @return the lines, empty when the scene has no adaptive surface
      */
     public java.util.List<String> subdivisionStatistics() { return subdivision; }
+
+    /**
+     * One line per triangle mesh of the scene with a hierarchy over its triangles (see
+     * {@code Scene.structureStatistics()}): its name, triangle count and the tree's SAH cost.
+     *
+     * @return the lines, empty when no mesh has a hierarchy
+     */
+    public java.util.List<String> structureStatistics() { return structures; }
 
     /**
      * The frame: linear RGB doubles, unclamped (what a PFM file holds).

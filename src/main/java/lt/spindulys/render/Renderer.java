@@ -141,7 +141,7 @@ public final class Renderer {
             for (int i = 0; i < 4; i++) sum[i] += c[i];
         }
         double seconds = (System.nanoTime() - start) / 1e9;
-        return new RenderResult(st, fb, aovs, new RenderStats(sum[0], sum[1], sum[2], sum[3], seconds), scene.adaptiveStatistics());
+        return new RenderResult(st, fb, aovs, new RenderStats(sum[0], sum[1], sum[2], sum[3], seconds), scene.adaptiveStatistics(), scene.structureStatistics());
     }
 
     /**

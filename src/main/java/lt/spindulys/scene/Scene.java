@@ -107,6 +107,27 @@ public final class Scene {
     }
 
     /**
+     * One line per triangle mesh among the scene's objects that owns its geometry (instances
+     * share their original's structure) and has a hierarchy over its triangles: its name,
+     * triangle count and the hierarchy's SAH cost ({@link lt.spindulys.accel.Bvh#sahCost()}),
+     * so that a change to the build shows whether the tree kept its quality.
+     *
+     * @return the lines, empty when no mesh has a hierarchy
+     */
+    public List<String> structureStatistics() {
+        List<String> lines = new ArrayList<>();
+        for (GObject o : objects) {
+            if (o instanceof TriangleMesh m && !m.isInstance()) {
+                double sah = m.accelerator() == null ? Double.NaN : m.accelerator().sahCost();
+                if (!Double.isNaN(sah)) {
+                    lines.add(String.format(java.util.Locale.ROOT, "mesh %s: %d triangles, SAH cost %.4f", m.name(), m.size(), sah));
+                }
+            }
+        }
+        return lines;
+    }
+
+    /**
      * True if some surface of the scene refines patches while it is traced (an adaptive surface by
      * the lazy method, or the combined method beyond its eager budget): a renderer should then
      * trace neighbouring pixels together, so that the patches they share stay in the cache.

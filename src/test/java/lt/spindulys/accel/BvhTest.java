@@ -308,4 +308,47 @@ class BvhTest {
                 m.localBounds().maxX(), m.localBounds().maxY(), m.localBounds().maxZ()), bvh.bounds());
         compare(m, bvh, new Bounds(-0.1, -0.1, -0.1, 1.1, 1.1, 1.1), 100, 16);
     }
+
+    /** Seeded random spheres: centres in the unit cube, radii log-uniform in [0.0005, 0.02]. */
+    static Spheres randomSpheres(long seed, int n) {
+        Random r = new Random(seed);
+        double[] c = new double[4 * n];
+        for (int i = 0; i < n; i++) {
+            c[4 * i] = r.nextDouble(); c[4 * i + 1] = r.nextDouble(); c[4 * i + 2] = r.nextDouble();
+            c[4 * i + 3] = 0.0005 * Math.pow(40, r.nextDouble());
+        }
+        return new Spheres(c);
+    }
+
+    @Test
+    void sahCostIsTheNodesAreasOverTheRoots() {
+        // Two unit boxes one apart on x, one per leaf: root half-area 3 + 1 + 3 = 7, leaves 3 each.
+        Bvh bvh = new Bvh(new Spheres(new double[] {0.5, 0.5, 0.5, 0.5, 2.5, 0.5, 0.5, 0.5}), 1);
+        assertEquals(3, bvh.nodeCount());
+        assertEquals(13.0 / 7, bvh.sahCost(), 1e-12);
+        // Four in one leaf: the root alone, cost 4 primitive tests.
+        assertEquals(4, new Bvh(new Spheres(new double[] {0, 0, 0, 1, 1, 0, 0, 1, 2, 0, 0, 1, 3, 0, 0, 1})).sahCost(), 1e-12);
+        assertEquals(0, new Bvh(new Spheres(new double[0])).sahCost());
+    }
+
+    @Test
+    void parallelAndSerialBuildsMakeTheSameTree() {
+        // Large enough for several levels of fork/join tasks above the serial chunks.
+        Spheres set = randomSpheres(31, 60_000);
+        Bvh parallel = new Bvh(set, Bvh.DEFAULT_LEAF_SIZE, true), serial = new Bvh(set, Bvh.DEFAULT_LEAF_SIZE, false);
+        assertTrue(java.util.Arrays.equals(parallel.nodes(), serial.nodes()));
+        assertTrue(java.util.Arrays.equals(parallel.perm(), serial.perm()));
+        assertEquals(parallel.sahCost(), serial.sahCost());
+    }
+
+    @Test
+    void treeQualityIsKept() {
+        // The SAH cost the build before issue 18's speed-up gave for this set (the same tree):
+        // a faster build must not give a worse tree.
+        Bvh bvh = new Bvh(randomSpheres(47, 50_000));
+        assertTrue(bvh.sahCost() <= OLD_SAH_COST * (1 + 1e-12), () -> "SAH cost " + bvh.sahCost() + " > " + OLD_SAH_COST);
+        assertTrue(bvh.sahCost() > 0.5 * OLD_SAH_COST, () -> "SAH cost " + bvh.sahCost() + " implausibly low");
+    }
+
+    private static final double OLD_SAH_COST = 147.92586296036683;
 }

@@ -133,6 +133,19 @@ class CliTest {
     }
 
     @Test
+    void statsPrintEachMeshsTreeCost() throws IOException {
+        // A mesh of more than one leaf's triangles has a tree; --stats names it with its SAH cost.
+        StringBuilder obj = new StringBuilder();
+        for (int i = 0; i < 8; i++) obj.append("v ").append(i * 0.2).append(" 0 0\nv ").append(i * 0.2).append(" 0.3 0\nv ").append(i * 0.2 + 0.1).append(" 0 0.2\n");
+        for (int i = 0; i < 8; i++) obj.append("f ").append(3 * i + 1).append(' ').append(3 * i + 2).append(' ').append(3 * i + 3).append('\n');
+        Files.writeString(dir.resolve("strip.obj"), obj.toString());
+        Path scene = scene(SMALL + "mesh { file \"strip.obj\" name \"strip\" }\n");
+        Run r = run(scene.toString(), "-o", dir.resolve("m.png").toString(), "--stats", "--threads", "1");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().matches("(?s).*\nmesh strip: 8 triangles, SAH cost \\d+\\.\\d{4}\n.*"), r.out());
+    }
+
+    @Test
     void helpAndVersion() {
         Run help = run("--help");
         assertEquals(0, help.status());
