@@ -552,6 +552,7 @@ public final class Bvh implements Accelerator {
         final int[] perm;
         // Binning scratch, reused for every node: per axis and bin, a count and bounds.
         // Two sets of 3 * BINS (see sahSplit), merged into the first before the sweep.
+        static final int TWO_SETS_MIN = 64;
         final int[] binCount = new int[2 * 3 * BINS];
         final float[] binBox = new float[2 * 3 * BINS * 6];
         final double[] rightArea = new double[BINS];
@@ -652,7 +653,9 @@ public final class Bvh implements Accelerator {
             // Small ranges get as many bins as primitives: more would be mostly empty, and
             // clearing and sweeping them would dominate the many small nodes near the leaves.
             final int nb = Math.min(BINS, e - s);
-            for (int set = 0; set < 2; set++) {
+            // Small ranges use one set: a second would cost more to clear and merge than it saves.
+            final boolean two = e - s >= TWO_SETS_MIN;
+            for (int set = 0, sets = two ? 2 : 1; set < sets; set++) {
                 for (int a = 0; a < 3; a++) {
                     for (int i = (3 * set + a) * BINS, end = i + nb; i < end; i++) {
                         int o = 6 * i;
@@ -672,7 +675,7 @@ public final class Bvh implements Accelerator {
             // of bins halves the chains of loads waiting on the previous primitive's stores.
             // Min and max are exact, so merging the two sets gives the very same bin boxes.
             int k = s;
-            for (int pairEnd = e - 1; k < pairEnd; k += 2) {
+            for (int pairEnd = two ? e - 1 : s; k < pairEnd; k += 2) {
                 int q = 6 * k;
                 float x0 = p[q], y0 = p[q + 1], z0 = p[q + 2], x1 = p[q + 3], y1 = p[q + 4], z1 = p[q + 5];
                 float u0 = p[q + 6], v0 = p[q + 7], w0 = p[q + 8], u1 = p[q + 9], v1 = p[q + 10], w1 = p[q + 11];
@@ -687,7 +690,7 @@ public final class Bvh implements Accelerator {
                 grow(bb, 6 * bz, x0, y0, z0, x1, y1, z1);
                 grow(bb, 6 * cz, u0, v0, w0, u1, v1, w1);
             }
-            if (k < e) {
+            for (; k < e; k++) {
                 int q = 6 * k;
                 float x0 = p[q], y0 = p[q + 1], z0 = p[q + 2], x1 = p[q + 3], y1 = p[q + 4], z1 = p[q + 5];
                 int bx = bin(x0 + x1, mx, sx, nb), by = BINS + bin(y0 + y1, my, sy, nb), bz = 2 * BINS + bin(z0 + z1, mz, sz, nb);
@@ -696,7 +699,7 @@ public final class Bvh implements Accelerator {
                 grow(bb, 6 * by, x0, y0, z0, x1, y1, z1);
                 grow(bb, 6 * bz, x0, y0, z0, x1, y1, z1);
             }
-            for (int i = 0, end = 3 * BINS; i < end; i++) {
+            for (int i = 0, end = two ? 3 * BINS : 0; i < end; i++) {
                 int j = i + 3 * BINS;
                 if (i % BINS >= nb || cnt0[j] == 0) continue; // bins past nb hold stale values
                 cnt0[i] += cnt0[j];
