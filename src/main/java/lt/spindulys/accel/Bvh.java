@@ -653,58 +653,12 @@ public final class Bvh implements Accelerator {
             // Small ranges get as many bins as primitives: more would be mostly empty, and
             // clearing and sweeping them would dominate the many small nodes near the leaves.
             final int nb = Math.min(BINS, e - s);
-            // Small ranges use one set: a second would cost more to clear and merge than it saves.
-            final boolean two = e - s >= TWO_SETS_MIN;
-            for (int set = 0, sets = two ? 2 : 1; set < sets; set++) {
-                for (int a = 0; a < 3; a++) {
-                    for (int i = (3 * set + a) * BINS, end = i + nb; i < end; i++) {
-                        int o = 6 * i;
-                        cnt0[i] = 0;
-                        bb[o] = bb[o + 1] = bb[o + 2] = Float.POSITIVE_INFINITY;
-                        bb[o + 3] = bb[o + 4] = bb[o + 5] = Float.NEGATIVE_INFINITY;
-                    }
-                }
-            }
             // An axis whose centroids all coincide gets scale 0: everything lands in its bin 0,
             // and the sweep below finds no split with both sides non-empty on it.
             float ex = bc[o6 + 9] - bc[o6 + 6], ey = bc[o6 + 10] - bc[o6 + 7], ez = bc[o6 + 11] - bc[o6 + 8];
             float sx = ex > 0 ? nb / ex : 0, sy = ey > 0 ? nb / ey : 0, sz = ez > 0 ? nb / ez : 0;
             float mx = bc[o6 + 6], my = bc[o6 + 7], mz = bc[o6 + 8];
-            final float[] p = pb;
-            // Neighbouring primitives mostly fall in the same bins; alternating between two sets
-            // of bins halves the chains of loads waiting on the previous primitive's stores.
-            // Min and max are exact, so merging the two sets gives the very same bin boxes.
-            int k = s;
-            for (int pairEnd = two ? e - 1 : s; k < pairEnd; k += 2) {
-                int q = 6 * k;
-                float x0 = p[q], y0 = p[q + 1], z0 = p[q + 2], x1 = p[q + 3], y1 = p[q + 4], z1 = p[q + 5];
-                float u0 = p[q + 6], v0 = p[q + 7], w0 = p[q + 8], u1 = p[q + 9], v1 = p[q + 10], w1 = p[q + 11];
-                int bx = bin(x0 + x1, mx, sx, nb), by = BINS + bin(y0 + y1, my, sy, nb), bz = 2 * BINS + bin(z0 + z1, mz, sz, nb);
-                int cx = 3 * BINS + bin(u0 + u1, mx, sx, nb), cy = 4 * BINS + bin(v0 + v1, my, sy, nb), cz = 5 * BINS + bin(w0 + w1, mz, sz, nb);
-                cnt0[bx]++; cnt0[by]++; cnt0[bz]++;
-                cnt0[cx]++; cnt0[cy]++; cnt0[cz]++;
-                grow(bb, 6 * bx, x0, y0, z0, x1, y1, z1);
-                grow(bb, 6 * cx, u0, v0, w0, u1, v1, w1);
-                grow(bb, 6 * by, x0, y0, z0, x1, y1, z1);
-                grow(bb, 6 * cy, u0, v0, w0, u1, v1, w1);
-                grow(bb, 6 * bz, x0, y0, z0, x1, y1, z1);
-                grow(bb, 6 * cz, u0, v0, w0, u1, v1, w1);
-            }
-            for (; k < e; k++) {
-                int q = 6 * k;
-                float x0 = p[q], y0 = p[q + 1], z0 = p[q + 2], x1 = p[q + 3], y1 = p[q + 4], z1 = p[q + 5];
-                int bx = bin(x0 + x1, mx, sx, nb), by = BINS + bin(y0 + y1, my, sy, nb), bz = 2 * BINS + bin(z0 + z1, mz, sz, nb);
-                cnt0[bx]++; cnt0[by]++; cnt0[bz]++;
-                grow(bb, 6 * bx, x0, y0, z0, x1, y1, z1);
-                grow(bb, 6 * by, x0, y0, z0, x1, y1, z1);
-                grow(bb, 6 * bz, x0, y0, z0, x1, y1, z1);
-            }
-            for (int i = 0, end = two ? 3 * BINS : 0; i < end; i++) {
-                int j = i + 3 * BINS;
-                if (i % BINS >= nb || cnt0[j] == 0) continue; // bins past nb hold stale values
-                cnt0[i] += cnt0[j];
-                grow(bb, 6 * i, bb[6 * j], bb[6 * j + 1], bb[6 * j + 2], bb[6 * j + 3], bb[6 * j + 4], bb[6 * j + 5]);
-            }
+            binRange(s, e, nb, mx, my, mz, sx, sy, sz);
             double leafCost = (double) (e - s) * area((double) bc[o6 + 3] - bc[o6], (double) bc[o6 + 4] - bc[o6 + 1], (double) bc[o6 + 5] - bc[o6 + 2]);
             double best = leafCost;
             int bestAxis = -1, bestBin = -1;
@@ -741,10 +695,77 @@ public final class Bvh implements Accelerator {
             // The halves' boxes: the unions of bins 0..bestBin and of the rest on the chosen axis.
             unionBins(bestAxis * BINS, bestAxis * BINS + bestBin + 1, out, oo);
             unionBins(bestAxis * BINS + bestBin + 1, bestAxis * BINS + nb, out, oo + 12);
-            // Partition in place: primitives whose centroid bin is <= bestBin go left. Each
-            // primitive is read once where its side becomes final, and its centroid joins that
-            // side's centroid bounds.
-            float min = bestAxis == 0 ? mx : bestAxis == 1 ? my : mz, sc = bestAxis == 0 ? sx : bestAxis == 1 ? sy : sz;
+            int i = partition(s, e, bestAxis, bestAxis == 0 ? mx : bestAxis == 1 ? my : mz,
+                    bestAxis == 0 ? sx : bestAxis == 1 ? sy : sz, nb, bestBin, out, oo);
+            return ((long) i << 2) | bestAxis;
+        }
+
+        /**
+         * Clears the bins and counts and bounds slots [s, e) into them: per axis, nb bins over
+         * the centroid bounds starting at (mx, my, mz) with scales (sx, sy, sz). A method of its
+         * own, as is {@link #partition}: small methods are compiled sooner and each on its own,
+         * which matters in a new JVM, where the first passes over millions of primitives run.
+         */
+        private void binRange(int s, int e, int nb, float mx, float my, float mz, float sx, float sy, float sz) {
+            final int[] cnt0 = binCount;
+            final float[] bb = binBox;
+            // Small ranges use one set: a second would cost more to clear and merge than it saves.
+            final boolean two = e - s >= TWO_SETS_MIN;
+            for (int set = 0, sets = two ? 2 : 1; set < sets; set++) {
+                for (int a = 0; a < 3; a++) {
+                    for (int i = (3 * set + a) * BINS, end = i + nb; i < end; i++) {
+                        int o = 6 * i;
+                        cnt0[i] = 0;
+                        bb[o] = bb[o + 1] = bb[o + 2] = Float.POSITIVE_INFINITY;
+                        bb[o + 3] = bb[o + 4] = bb[o + 5] = Float.NEGATIVE_INFINITY;
+                    }
+                }
+            }
+            final float[] p = pb;
+            // Neighbouring primitives mostly fall in the same bins; alternating between two sets
+            // of bins halves the chains of loads waiting on the previous primitive's stores.
+            // Min and max are exact, so merging the two sets gives the very same bin boxes.
+            int k = s;
+            for (int pairEnd = two ? e - 1 : s; k < pairEnd; k += 2) {
+                int q = 6 * k;
+                float x0 = p[q], y0 = p[q + 1], z0 = p[q + 2], x1 = p[q + 3], y1 = p[q + 4], z1 = p[q + 5];
+                float u0 = p[q + 6], v0 = p[q + 7], w0 = p[q + 8], u1 = p[q + 9], v1 = p[q + 10], w1 = p[q + 11];
+                int bx = bin(x0 + x1, mx, sx, nb), by = BINS + bin(y0 + y1, my, sy, nb), bz = 2 * BINS + bin(z0 + z1, mz, sz, nb);
+                int cx = 3 * BINS + bin(u0 + u1, mx, sx, nb), cy = 4 * BINS + bin(v0 + v1, my, sy, nb), cz = 5 * BINS + bin(w0 + w1, mz, sz, nb);
+                cnt0[bx]++; cnt0[by]++; cnt0[bz]++;
+                cnt0[cx]++; cnt0[cy]++; cnt0[cz]++;
+                grow(bb, 6 * bx, x0, y0, z0, x1, y1, z1);
+                grow(bb, 6 * cx, u0, v0, w0, u1, v1, w1);
+                grow(bb, 6 * by, x0, y0, z0, x1, y1, z1);
+                grow(bb, 6 * cy, u0, v0, w0, u1, v1, w1);
+                grow(bb, 6 * bz, x0, y0, z0, x1, y1, z1);
+                grow(bb, 6 * cz, u0, v0, w0, u1, v1, w1);
+            }
+            for (; k < e; k++) {
+                int q = 6 * k;
+                float x0 = p[q], y0 = p[q + 1], z0 = p[q + 2], x1 = p[q + 3], y1 = p[q + 4], z1 = p[q + 5];
+                int bx = bin(x0 + x1, mx, sx, nb), by = BINS + bin(y0 + y1, my, sy, nb), bz = 2 * BINS + bin(z0 + z1, mz, sz, nb);
+                cnt0[bx]++; cnt0[by]++; cnt0[bz]++;
+                grow(bb, 6 * bx, x0, y0, z0, x1, y1, z1);
+                grow(bb, 6 * by, x0, y0, z0, x1, y1, z1);
+                grow(bb, 6 * bz, x0, y0, z0, x1, y1, z1);
+            }
+            for (int i = 0, end = two ? 3 * BINS : 0; i < end; i++) {
+                int j = i + 3 * BINS;
+                if (i % BINS >= nb || cnt0[j] == 0) continue; // bins past nb hold stale values
+                cnt0[i] += cnt0[j];
+                grow(bb, 6 * i, bb[6 * j], bb[6 * j + 1], bb[6 * j + 2], bb[6 * j + 3], bb[6 * j + 4], bb[6 * j + 5]);
+            }
+        }
+
+        /**
+         * Partitions slots [s, e) in place: those whose centroid bin on {@code axis} is at most
+         * {@code bestBin} go left. Each primitive is read once where its side becomes final,
+         * and its centroid joins that side's centroid bounds, written to out[oo+6..oo+11] (left)
+         * and out[oo+18..oo+23] (right). Returns the first slot of the right side.
+         */
+        private int partition(int s, int e, int bestAxis, float min, float sc, int nb, int bestBin, float[] out, int oo) {
+            final float[] p = pb;
             float lx0 = Float.POSITIVE_INFINITY, ly0 = lx0, lz0 = lx0, lx1 = Float.NEGATIVE_INFINITY, ly1 = lx1, lz1 = lx1;
             float rx0 = lx0, ry0 = lx0, rz0 = lx0, rx1 = lx1, ry1 = lx1, rz1 = lx1;
             int i = s, j = e - 1;
@@ -764,7 +785,7 @@ public final class Bvh implements Accelerator {
             }
             out[oo + 6] = lx0; out[oo + 7] = ly0; out[oo + 8] = lz0; out[oo + 9] = lx1; out[oo + 10] = ly1; out[oo + 11] = lz1;
             out[oo + 18] = rx0; out[oo + 19] = ry0; out[oo + 20] = rz0; out[oo + 21] = rx1; out[oo + 22] = ry1; out[oo + 23] = rz1;
-            return ((long) i << 2) | bestAxis;
+            return i;
         }
 
         /** Writes the union of the boxes of bins [from, to) (empty bins left out) to out[o..o+5]. */
