@@ -7,7 +7,7 @@ import java.util.List;
 
 import lt.spindulys.image.NonFinitePixelException;
 import lt.spindulys.io.SceneException;
-import lt.spindulys.render.FailureMessage;
+import lt.spindulys.frontend.FailureMessage;
 import lt.spindulys.limits.MessageText;
 
 /**

@@ -6,6 +6,8 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
 
+import lt.spindulys.limits.MessageText;
+
 /**
  * One thing a plugin asks the user, described so that any host can build a form field for it and
  * check the answer. Values travel as text, in the forms below.
@@ -298,8 +300,8 @@ public record PluginOption(String key, String label, String group, Kind kind, St
         return Double.isFinite(d) ? d : Double.NaN;
     }
 
+    /** A value as messages quote it: escaped to one line and cut when long, as every message does. */
     private static String quote(String s) {
-        String shown = s.length() > 60 ? s.substring(0, 40) + "... (" + s.length() + " characters)" : s;
-        return "'" + shown.replace("\n", "\\n").replace("\r", "\\r") + "'";
+        return MessageText.quote(MessageText.escape(s));
     }
 }

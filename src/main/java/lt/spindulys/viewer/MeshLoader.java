@@ -18,7 +18,7 @@ import lt.spindulys.subdiv.SubdivInput;
  * Workframe {@code .dat} meshes ({@link WorkframeReader#readMesh}) with the {@code .tex} unwrap of
  * the same base name beside them when there is one, and {@code .tex} unwraps on their own, for
  * a surface already open. Errors are the exceptions the readers throw, which
- * {@link lt.spindulys.render.FailureMessage#of} turns into the line the command line prints.
+ * {@link lt.spindulys.frontend.FailureMessage#of} turns into the line the command line prints.
  */
 public final class MeshLoader {
     private MeshLoader() {}

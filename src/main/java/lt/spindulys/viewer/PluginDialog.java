@@ -45,7 +45,7 @@ import javax.swing.filechooser.FileNameExtensionFilter;
 import javax.swing.text.DefaultFormatter;
 import javax.swing.text.JTextComponent;
 
-import lt.spindulys.render.FailureMessage;
+import lt.spindulys.frontend.FailureMessage;
 import lt.spindulys.plugin.DisplayedSurface;
 import lt.spindulys.plugin.PluginOption;
 

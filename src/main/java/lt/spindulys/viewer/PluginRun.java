@@ -9,7 +9,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicReference;
 
-import lt.spindulys.render.FailureMessage;
+import lt.spindulys.frontend.FailureMessage;
 import lt.spindulys.plugin.DisplayedSurface;
 import lt.spindulys.plugin.OutputPlugin;
 import lt.spindulys.plugin.PluginProgress;

@@ -12,7 +12,7 @@ import javax.swing.JMenu;
 import javax.swing.JMenuItem;
 import javax.swing.JOptionPane;
 
-import lt.spindulys.render.FailureMessage;
+import lt.spindulys.frontend.FailureMessage;
 import lt.spindulys.plugin.DisplayedSurface;
 import lt.spindulys.plugin.OutputPlugin;
 import lt.spindulys.plugin.PluginView;

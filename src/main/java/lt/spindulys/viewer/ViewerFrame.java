@@ -33,7 +33,7 @@ import javax.swing.SwingUtilities;
 import javax.swing.TransferHandler;
 import javax.swing.filechooser.FileNameExtensionFilter;
 
-import lt.spindulys.render.FailureMessage;
+import lt.spindulys.frontend.FailureMessage;
 import lt.spindulys.subdiv.SubdivOptions;
 
 /**

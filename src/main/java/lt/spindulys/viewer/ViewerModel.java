@@ -8,7 +8,7 @@ import java.util.List;
 import java.util.Set;
 import java.util.concurrent.Executor;
 
-import lt.spindulys.render.FailureMessage;
+import lt.spindulys.frontend.FailureMessage;
 import lt.spindulys.math.Bounds;
 import lt.spindulys.subdiv.SubdivInput;
 import lt.spindulys.subdiv.SubdivOptions;

@@ -15,4 +15,14 @@ class FileNamesTest {
         assertEquals("", FileNames.extension(Path.of("mesh.")));
         assertEquals("", FileNames.extension(Path.of("/")));
     }
+
+    @Test
+    void aUsersNameBecomesASafeStem() {
+        assertEquals("cube", FileNames.stem("cube.OBJ", "s"));
+        assertEquals("small_cube", FileNames.stem(" small cube ", "s"));
+        assertEquals("a_b_c", FileNames.stem("a/b\\c", "s"));
+        assertEquals("hidden", FileNames.stem("..hidden", "s"), "no hidden file, no parent folder");
+        assertEquals("s", FileNames.stem("...", "s"));
+        assertEquals(80, FileNames.stem("x".repeat(200), "s").length());
+    }
 }

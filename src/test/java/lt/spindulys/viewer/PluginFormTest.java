@@ -16,7 +16,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-import lt.spindulys.render.FailureMessage;
+import lt.spindulys.frontend.FailureMessage;
 
 class PluginFormTest {
     @TempDir

@@ -36,7 +36,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 import lt.spindulys.image.ImageDiff;
-import lt.spindulys.render.FailureMessage;
+import lt.spindulys.frontend.FailureMessage;
 import lt.spindulys.plugin.OutputPlugins;
 
 /**

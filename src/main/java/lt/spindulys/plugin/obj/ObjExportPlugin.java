@@ -12,6 +12,7 @@ import java.util.concurrent.CancellationException;
 import java.util.function.DoubleConsumer;
 
 import lt.spindulys.files.AtomicFile;
+import lt.spindulys.files.FileNames;
 import lt.spindulys.io.ObjWriter;
 import lt.spindulys.plugin.DisplayedSurface;
 import lt.spindulys.plugin.OutputPlugin;
@@ -232,23 +233,12 @@ public final class ObjExportPlugin implements OutputPlugin {
         Set<String> used = new HashSet<>();
         List<Path> files = new ArrayList<>();
         for (int i : chosen) {
-            String base = stem + "-" + safe(surfaces.get(i).name(), i);
+            String base = stem + "-" + FileNames.stem(surfaces.get(i).name(), "surface" + i);
             String candidate = base;
             for (int n = 2; !used.add(candidate.toLowerCase(Locale.ROOT)); n++) candidate = base + "-" + n;
             files.add(out.resolveSibling(candidate + ".obj"));
         }
         return files;
-    }
-
-    /** A surface's name as part of a file name: without a mesh file's extension, letters, digits, '-', '_' and '.' only. */
-    static String safe(String surfaceName, int index) {
-        String n = surfaceName.strip();
-        String lower = n.toLowerCase(Locale.ROOT);
-        if (lower.endsWith(".obj") || lower.endsWith(".dat")) n = n.substring(0, n.length() - 4);
-        StringBuilder b = new StringBuilder();
-        n.codePoints().limit(80).forEach(c -> b.appendCodePoint(Character.isLetterOrDigit(c) || c == '-' || c == '_' || c == '.' ? c : '_'));
-        String s = b.toString().replaceAll("^[.]+", "");
-        return s.isEmpty() ? "surface" + index : s;
     }
 
     private static String counts(long vertices, long faces) {

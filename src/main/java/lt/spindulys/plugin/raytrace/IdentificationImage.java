@@ -6,7 +6,6 @@ import java.util.List;
 import java.util.Set;
 
 import lt.spindulys.image.AovFrame;
-import lt.spindulys.image.BitmapFont;
 import lt.spindulys.limits.MessageText;
 import lt.spindulys.plugin.DisplayedSurface;
 

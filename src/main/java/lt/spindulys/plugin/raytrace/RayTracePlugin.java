@@ -214,7 +214,7 @@ public final class RayTracePlugin implements OutputPlugin {
         static SavedScene beside(Path out, SceneDescription scene) {
             Path dat = RayTracePlugin.beside(out, ".dat");
             List<Path> meshes = new ArrayList<>();
-            for (SceneDescription.SurfaceSpec s : scene.surfaces()) meshes.add(RayTracePlugin.beside(out, "." + s.index() + "-" + safe(s.name()) + ".obj"));
+            for (SceneDescription.SurfaceSpec s : scene.surfaces()) meshes.add(RayTracePlugin.beside(out, "." + s.index() + "-" + FileNames.stem(s.name(), "surface") + ".obj"));
             return new SavedScene(dat, meshes, scene);
         }
 
@@ -237,16 +237,6 @@ public final class RayTracePlugin implements OutputPlugin {
                 bodies.add(os -> lt.spindulys.io.ObjWriter.write(s.control(), SceneDescription.oneLine(s.name()), comment, os));
             }
             return bodies;
-        }
-
-        /** A surface name as part of a file name: letters, digits, '-' and '_' kept, the rest '_', at most 40 characters. */
-        private static String safe(String name) {
-            StringBuilder b = new StringBuilder();
-            for (int i = 0; i < name.length() && b.length() < 40; i++) {
-                char c = name.charAt(i);
-                b.append(c < 128 && (Character.isLetterOrDigit(c) || c == '-' || c == '_') ? c : '_');
-            }
-            return b.length() == 0 ? "surface" : b.toString();
         }
     }
 }

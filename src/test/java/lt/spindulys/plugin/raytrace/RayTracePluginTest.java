@@ -28,7 +28,6 @@ import org.junit.jupiter.api.io.TempDir;
 
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.image.Aov;
-import lt.spindulys.image.BitmapFont;
 import lt.spindulys.material.Material;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;

@@ -1,4 +1,4 @@
-package lt.spindulys.image;
+package lt.spindulys.plugin.raytrace;
 
 import java.util.Objects;
 
@@ -8,7 +8,7 @@ import java.util.Objects;
  * Each glyph sits in a cell of {@link #ADVANCE} x {@link #LINE_HEIGHT} pixels (one column and one
  * row of spacing); a character outside the range is drawn as {@code ?}.
  */
-public final class BitmapFont {
+final class BitmapFont {
     /** Glyph width in font pixels. */
     public static final int GLYPH_WIDTH = 5;
     /** Glyph height in font pixels. */

@@ -1,4 +1,4 @@
-package lt.spindulys.render;
+package lt.spindulys.frontend;
 
 import java.io.IOException;
 import java.util.concurrent.CancellationException;

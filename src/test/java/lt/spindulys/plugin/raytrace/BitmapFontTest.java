@@ -1,4 +1,4 @@
-package lt.spindulys.image;
+package lt.spindulys.plugin.raytrace;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;

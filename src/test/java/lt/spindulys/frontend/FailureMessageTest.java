@@ -1,4 +1,4 @@
-package lt.spindulys.render;
+package lt.spindulys.frontend;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
