@@ -9,6 +9,7 @@ import java.util.Arrays;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
+import java.util.concurrent.atomic.AtomicInteger;
 
 import lt.spindulys.limits.InputFiles;
 import lt.spindulys.limits.InsufficientMemoryException;
@@ -48,7 +49,7 @@ public final class ObjReader {
      * @throws IOException if the file cannot be read
      */
     public static MeshData read(Path file) throws IOException {
-        return new Parser(readBytes(file), file.toString(), false).parse();
+        return parse(readBytes(file), file.toString());
     }
 
     /**
@@ -59,7 +60,7 @@ public final class ObjReader {
      * @return the mesh
      */
     public static MeshData parse(String text, String fileName) {
-        return new Parser(text.getBytes(StandardCharsets.UTF_8), fileName, false).parse();
+        return parse(text.getBytes(StandardCharsets.UTF_8), fileName);
     }
 
     /**
@@ -86,7 +87,36 @@ public final class ObjReader {
         return new Parser(text.getBytes(StandardCharsets.UTF_8), fileName, true).parseSubdiv();
     }
 
-    private static byte[] readBytes(Path file) throws IOException {
+    /** Parses a file's bytes as {@link #read} does after reading them: in chunks on several threads when the file is large. */
+    static MeshData parse(byte[] bytes, String fileName) {
+        int chunks = bytes.length < PARALLEL_BYTES ? 1 : (int) Math.min(MAX_CHUNKS, (bytes.length + CHUNK_BYTES - 1) / CHUNK_BYTES);
+        return parse(bytes, fileName, chunks, parseThreads());
+    }
+
+    /** Files smaller than this are parsed on the caller's thread in one piece: threads would cost more than they save. */
+    static final int PARALLEL_BYTES = 4 << 20;
+    /** The size of a chunk: small enough that threads share the work evenly, large enough that merging is cheap. */
+    static final int CHUNK_BYTES = 4 << 20;
+    private static final int MAX_CHUNKS = 1024;
+    /** Parse threads at most: reading memory, more would wait on each other. */
+    private static final int MAX_THREADS = 4;
+
+    private static int parseThreads() {
+        return Math.max(1, Math.min(MAX_THREADS, Runtime.getRuntime().availableProcessors()));
+    }
+
+    /**
+     * Parses in {@code chunks} pieces (about equal, split at line starts) on up to {@code threads}
+     * threads, the caller's included. The mesh and every message are the same for any number of
+     * chunks and threads.
+     */
+    static MeshData parse(byte[] bytes, String fileName, int chunks, int threads) {
+        int[] starts = ChunkedParse.split(bytes, chunks);
+        if (starts.length == 2) return new Parser(bytes, fileName, false).parse();
+        return new ChunkedParse(bytes, fileName, starts).run(threads);
+    }
+
+    static byte[] readBytes(Path file) throws IOException {
         String name = file.toString();
         // A pipe would block and a device never end: only regular files are opened.
         String problem = InputFiles.problem(file);
@@ -105,29 +135,86 @@ public final class ObjReader {
         }
     }
 
-    /** Growable primitive arrays: one allocation per doubling, none per element. */
+    /** First block of a growable array; blocks double up to {@link #MAX_BLOCK} elements. */
+    private static final int FIRST_BLOCK = 1024, MAX_BLOCK = 1 << 16;
+
+    /**
+     * Growable primitive arrays as a list of blocks: one allocation per block, none per element,
+     * and nothing is copied until the exact-size array is made (a doubling array copies each
+     * element about twice more, and the garbage it leaves is as large as the mesh).
+     */
     private static final class Doubles {
-        double[] a = new double[1024];
-        int n;
+        private double[][] blocks = new double[8][];
+        private int full, before;
+        private double[] cur = new double[FIRST_BLOCK];
+        private int n;
 
         void add(double v) {
-            if (n == a.length) a = Arrays.copyOf(a, 2 * n);
-            a[n++] = v;
+            if (n == cur.length) next();
+            cur[n++] = v;
         }
 
-        double[] toArray() { return Arrays.copyOf(a, n); }
+        private void next() {
+            if (full == blocks.length) blocks = Arrays.copyOf(blocks, 2 * full);
+            blocks[full++] = cur;
+            before += cur.length;
+            cur = new double[Math.min(MAX_BLOCK, 2 * cur.length)];
+            n = 0;
+        }
+
+        int size() { return before + n; }
+
+        /** Copies the elements into {@code to} from {@code at}. */
+        void copyTo(double[] to, int at) {
+            for (int i = 0; i < full; i++) {
+                System.arraycopy(blocks[i], 0, to, at, blocks[i].length);
+                at += blocks[i].length;
+            }
+            System.arraycopy(cur, 0, to, at, n);
+        }
+
+        double[] toArray() {
+            double[] a = new double[size()];
+            copyTo(a, 0);
+            return a;
+        }
     }
 
+    /** {@link Doubles} for ints. */
     private static final class Ints {
-        int[] a = new int[1024];
-        int n;
+        private int[][] blocks = new int[8][];
+        private int full, before;
+        private int[] cur = new int[FIRST_BLOCK];
+        private int n;
 
         void add(int v) {
-            if (n == a.length) a = Arrays.copyOf(a, 2 * n);
-            a[n++] = v;
+            if (n == cur.length) next();
+            cur[n++] = v;
         }
 
-        int[] toArray() { return Arrays.copyOf(a, n); }
+        private void next() {
+            if (full == blocks.length) blocks = Arrays.copyOf(blocks, 2 * full);
+            blocks[full++] = cur;
+            before += cur.length;
+            cur = new int[Math.min(MAX_BLOCK, 2 * cur.length)];
+            n = 0;
+        }
+
+        int size() { return before + n; }
+
+        void copyTo(int[] to, int at) {
+            for (int i = 0; i < full; i++) {
+                System.arraycopy(blocks[i], 0, to, at, blocks[i].length);
+                at += blocks[i].length;
+            }
+            System.arraycopy(cur, 0, to, at, n);
+        }
+
+        int[] toArray() {
+            int[] a = new int[size()];
+            copyTo(a, 0);
+            return a;
+        }
     }
 
     private static final double[] POW10 = {
@@ -143,6 +230,19 @@ public final class ObjReader {
         /** 1-based line number of {@link #pos} and where that line starts, for messages. */
         private int line = 1, lineStart;
 
+        /**
+         * A chunk after the first, parsed before the counts of the elements before it are known:
+         * indices are not checked against the counts but remembered ({@link #need}, {@link #relative}),
+         * and checked and resolved when the chunks are merged.
+         */
+        private final boolean deferred;
+        /** Vertices, texture coordinates and normals in the file before {@link #pos}'s chunk (0 for a whole file). */
+        private final int[] base = new int[3];
+        /** Deferred: per kind, the most elements before the chunk that an index needs (valid if the base is at least this). */
+        private final long[] need = {Long.MIN_VALUE, Long.MIN_VALUE, Long.MIN_VALUE};
+        /** Deferred: per kind, the corners whose negative index was resolved against this chunk alone (the base is added in the merge). */
+        private final Ints[] relative;
+
         private final Doubles positions = new Doubles(), normals = new Doubles(), uvs = new Doubles();
         private final Ints faceSizes = new Ints(), vertexIndex = new Ints(), normalIndex = new Ints(), uvIndex = new Ints();
         private boolean anyNormalIndex, anyUvIndex;
@@ -155,17 +255,38 @@ public final class ObjReader {
         private final TagCollector tags = new TagCollector();
 
         Parser(byte[] bytes, String file, boolean subdiv) {
+            this(bytes, 0, bytes.length, 1, file, subdiv, false);
+        }
+
+        /** Parses bytes {@code from..to}, starting on line {@code firstLine}; {@code from} must start a line. */
+        Parser(byte[] bytes, int from, int to, int firstLine, String file, boolean subdiv, boolean deferred) {
             this.b = bytes;
-            this.end = bytes.length;
+            this.end = to;
             this.file = file;
             this.subdiv = subdiv;
+            this.deferred = deferred;
+            this.relative = deferred ? new Ints[] {new Ints(), new Ints(), new Ints()} : null;
+            pos = lineStart = from;
+            line = firstLine;
             // A UTF-8 byte order mark is not part of the first statement.
-            if (end >= 3 && (bytes[0] & 0xff) == 0xEF && (bytes[1] & 0xff) == 0xBB && (bytes[2] & 0xff) == 0xBF) {
+            if (from == 0 && end >= 3 && (bytes[0] & 0xff) == 0xEF && (bytes[1] & 0xff) == 0xBB && (bytes[2] & 0xff) == 0xBF) {
                 pos = lineStart = 3;
             }
         }
 
         MeshData parse() {
+            statements();
+            return new MeshData(positions.toArray(),
+                    normals.size() > 0 ? normals.toArray() : null,
+                    uvs.size() > 0 ? uvs.toArray() : null,
+                    faceSizes.toArray(), vertexIndex.toArray(),
+                    anyNormalIndex ? normalIndex.toArray() : null,
+                    anyUvIndex ? uvIndex.toArray() : null,
+                    file);
+        }
+
+        /** Reads every statement up to the end. */
+        void statements() {
             while (pos < end) {
                 skipBlanks();
                 if (atLineEnd()) {
@@ -195,13 +316,6 @@ public final class ObjReader {
                 }
                 nextLine();
             }
-            return new MeshData(positions.toArray(),
-                    normals.n > 0 ? normals.toArray() : null,
-                    uvs.n > 0 ? uvs.toArray() : null,
-                    faceSizes.toArray(), vertexIndex.toArray(),
-                    anyNormalIndex ? normalIndex.toArray() : null,
-                    anyUvIndex ? uvIndex.toArray() : null,
-                    file);
         }
 
         /** Statements that carry nothing a ray tracer's mesh needs (yet): o g s usemtl mtllib t. */
@@ -275,18 +389,18 @@ public final class ObjReader {
                 skipBlanks();
                 if (atLineEnd()) break;
                 int cornerStart = pos;
-                int v = index("vertex", positions.n / 3, "vertex", "vertices");
+                int v = index(VERTEX, "vertex", positions.size() / 3, "vertex", "vertices");
                 int t = -1, n = -1;
                 boolean hasUv = false, hasNormal = false;
                 if (pos < end && b[pos] == '/') {
                     pos++;
                     if (pos < end && b[pos] != '/') {
-                        t = index("texture coordinate", uvs.n / 2, "texture coordinate", "texture coordinates");
+                        t = index(UV, "texture coordinate", uvs.size() / 2, "texture coordinate", "texture coordinates");
                         hasUv = true;
                     }
                     if (pos < end && b[pos] == '/') {
                         pos++;
-                        n = index("normal", normals.n / 3, "normal", "normals");
+                        n = index(NORMAL, "normal", normals.size() / 3, "normal", "normals");
                         hasNormal = true;
                     }
                 }
@@ -307,7 +421,7 @@ public final class ObjReader {
             if (corners < 3) throw error(keyword, "face has " + corners + (corners == 1 ? " vertex" : " vertices") + ", expected at least 3");
             if (subdiv) {
                 // Face-varying UVs need a value at every corner of the surface.
-                if (faceSizes.n == 0) {
+                if (faceSizes.size() == 0) {
                     firstFaceLine = line;
                     firstFaceUv = withUv;
                 } else if (withUv != firstFaceUv) {
@@ -589,7 +703,7 @@ public final class ObjReader {
          * A face index, resolved to 0-based: positive counts from the first element, negative
          * back from the latest ({@code -1} is the element just read).
          */
-        private int index(String what, int have, String singular, String plural) {
+        private int index(int kind, String what, int local, String singular, String plural) {
             int start = pos;
             boolean neg = false;
             if (pos < end && (b[pos] == '-' || b[pos] == '+')) neg = b[pos++] == '-';
@@ -605,6 +719,15 @@ public final class ObjReader {
                 throw error(start, "expected a " + what + " index, found " + describe(start));
             }
             if (v == 0) throw error(start, "index 0 is not valid (OBJ indices start at 1)");
+            if (deferred) {
+                // Valid if the chunks before hold at least v - local; a negative index counts back
+                // from this chunk's latest element, so the merge adds the base to it.
+                need[kind] = Math.max(need[kind], v - local);
+                if (!neg) return (int) (v - 1);
+                relative[kind].add(vertexIndex.size());
+                return (int) (local - v);
+            }
+            int have = base[kind] + local;
             String which = what.equals("vertex") ? "f index " : "f " + what + " index ";
             if (v > have) {
                 throw error(start, which + quote(start, pos, "") + " out of range (the file has " + have + " " + (have == 1 ? singular : plural) + " so far)");
@@ -787,6 +910,191 @@ public final class ObjReader {
             int e = at;
             while (e < end && !isBlank(b[e]) && !isLineEnd(b[e])) e++;
             return quote(at, e, "'");
+        }
+    }
+
+    /** Index kinds, for {@link Parser#base} and the deferred checks. */
+    private static final int VERTEX = 0, UV = 1, NORMAL = 2;
+
+    /**
+     * A large file parsed in chunks on several threads and merged in file order. Each chunk is
+     * parsed on its own ({@link Parser#deferred}); the merge checks each chunk's indices against
+     * the counts before it, adds those counts to its negative indices, and copies the arrays into
+     * the mesh's. A chunk that failed, or whose indices reach past the file so far, is parsed
+     * again as the whole file's parser would reach it (same line, same counts), which throws the
+     * same error at the same place: the first failing chunk's, as a sequential parse would.
+     */
+    static final class ChunkedParse {
+        private final byte[] b;
+        private final String file;
+        /** Chunk k is bytes starts[k]..starts[k + 1]. */
+        private final int[] starts;
+        private final Parser[] parsed;
+        /** The first chunk that failed (no chunk after it is started), or the chunk count. */
+        private final AtomicInteger failedAt;
+        private final AtomicInteger nextChunk = new AtomicInteger();
+
+        ChunkedParse(byte[] bytes, String file, int[] starts) {
+            this.b = bytes;
+            this.file = file;
+            this.starts = starts;
+            this.parsed = new Parser[starts.length - 1];
+            this.failedAt = new AtomicInteger(parsed.length);
+        }
+
+        /**
+         * Chunk starts for about {@code chunks} equal chunks, and the file's length last: each
+         * start follows a line break that does not continue a statement (a backslash before it).
+         */
+        static int[] split(byte[] b, int chunks) {
+            int[] starts = new int[Math.max(1, chunks) + 1];
+            int n = 1;
+            for (int k = 1; k < chunks; k++) {
+                int at = Math.max(starts[n - 1] + 1, (int) ((long) b.length * k / chunks));
+                while (at < b.length && !startsStatement(b, at)) at++;
+                if (at >= b.length) break;
+                starts[n++] = at;
+            }
+            starts[n++] = b.length;
+            return Arrays.copyOf(starts, n);
+        }
+
+        /** Whether a statement starts at {@code at}: just after a '\n' that ends a line not continued by a backslash. */
+        private static boolean startsStatement(byte[] b, int at) {
+            if (b[at - 1] != '\n') return false;
+            int lineEnd = at >= 2 && b[at - 2] == '\r' ? at - 2 : at - 1;
+            return lineEnd == 0 || b[lineEnd - 1] != '\\';
+        }
+
+        MeshData run(int threads) {
+            int helpers = Math.min(threads, parsed.length) - 1;
+            Thread[] workers = new Thread[Math.max(0, helpers)];
+            Throwable[] thrown = new Throwable[workers.length];
+            for (int i = 0; i < workers.length; i++) {
+                int w = i;
+                workers[i] = new Thread(() -> {
+                    try {
+                        work();
+                    } catch (Throwable t) {
+                        thrown[w] = t;
+                        failedAt.set(-1);
+                    }
+                }, "spindulys-obj-parse");
+                workers[i].setDaemon(true);
+                workers[i].start();
+            }
+            Throwable mine = null;
+            try {
+                work();
+            } catch (Throwable t) {
+                mine = t;
+                failedAt.set(-1);
+            }
+            // The helpers end within their current chunk; waiting is not interruptible, the interrupt is kept.
+            boolean interrupted = false;
+            for (int i = 0; i < workers.length; i++) {
+                while (true) {
+                    try {
+                        workers[i].join();
+                        break;
+                    } catch (InterruptedException e) {
+                        interrupted = true;
+                    }
+                }
+                if (mine == null) mine = thrown[i];
+            }
+            if (interrupted) Thread.currentThread().interrupt();
+            if (mine instanceof RuntimeException e) throw e;
+            if (mine instanceof Error e) throw e;
+            if (mine != null) throw new IllegalStateException(mine);
+            return merge();
+        }
+
+        /** Parses chunks in file order as they come, until none is left or one before them has failed. */
+        private void work() {
+            for (int k; (k = nextChunk.getAndIncrement()) < parsed.length && k < failedAt.get();) {
+                Parser p = new Parser(b, starts[k], starts[k + 1], 1, file, false, true);
+                try {
+                    p.statements();
+                    parsed[k] = p;
+                } catch (SceneException e) {
+                    failedAt.accumulateAndGet(k, Math::min);
+                }
+            }
+        }
+
+        private MeshData merge() {
+            int chunks = parsed.length;
+            int[][] base = new int[chunks + 1][3];
+            int[] firstLine = new int[chunks + 1];
+            firstLine[0] = 1;
+            long positions = 0, normals = 0, uvs = 0, faces = 0, corners = 0;
+            boolean anyNormalIndex = false, anyUvIndex = false;
+            for (int k = 0; k < chunks; k++) {
+                Parser p = parsed[k];
+                int[] at = base[k];
+                if (p == null || p.need[VERTEX] > at[VERTEX] || p.need[UV] > at[UV] || p.need[NORMAL] > at[NORMAL]) {
+                    throw failure(k, at, firstLine[k]);
+                }
+                base[k + 1][VERTEX] = at[VERTEX] + p.positions.size() / 3;
+                base[k + 1][UV] = at[UV] + p.uvs.size() / 2;
+                base[k + 1][NORMAL] = at[NORMAL] + p.normals.size() / 3;
+                firstLine[k + 1] = firstLine[k] + p.line - 1;
+                positions += p.positions.size();
+                normals += p.normals.size();
+                uvs += p.uvs.size();
+                faces += p.faceSizes.size();
+                corners += p.vertexIndex.size();
+                anyNormalIndex |= p.anyNormalIndex;
+                anyUvIndex |= p.anyUvIndex;
+            }
+            // Each chunk's arrays are under 2^31 elements; so are the file's, which has fewer numbers than bytes.
+            double[] pos = new double[(int) positions], nor = normals > 0 ? new double[(int) normals] : null, uv = uvs > 0 ? new double[(int) uvs] : null;
+            int[] sizes = new int[(int) faces], vi = new int[(int) corners];
+            int[] ni = anyNormalIndex ? new int[(int) corners] : null, ti = anyUvIndex ? new int[(int) corners] : null;
+            int p0 = 0, n0 = 0, t0 = 0, f0 = 0, c0 = 0;
+            for (int k = 0; k < chunks; k++) {
+                Parser p = parsed[k];
+                parsed[k] = null;
+                p.positions.copyTo(pos, p0);
+                if (nor != null) p.normals.copyTo(nor, n0);
+                if (uv != null) p.uvs.copyTo(uv, t0);
+                p.faceSizes.copyTo(sizes, f0);
+                p.vertexIndex.copyTo(vi, c0);
+                resolve(vi, c0, p.relative[VERTEX], base[k][VERTEX]);
+                if (ni != null) {
+                    p.normalIndex.copyTo(ni, c0);
+                    resolve(ni, c0, p.relative[NORMAL], base[k][NORMAL]);
+                }
+                if (ti != null) {
+                    p.uvIndex.copyTo(ti, c0);
+                    resolve(ti, c0, p.relative[UV], base[k][UV]);
+                }
+                p0 += p.positions.size();
+                n0 += p.normals.size();
+                t0 += p.uvs.size();
+                f0 += p.faceSizes.size();
+                c0 += p.vertexIndex.size();
+            }
+            return new MeshData(pos, nor, uv, sizes, vi, ni, ti, file);
+        }
+
+        /** Adds the base to the chunk's negative indices, which were counted back from its own latest element. */
+        private static void resolve(int[] index, int chunkStart, Ints corners, int base) {
+            if (corners.size() == 0) return;
+            for (int c : corners.toArray()) index[chunkStart + c] += base;
+        }
+
+        /** The error of chunk k, found by parsing from its start as the whole file's parser would. */
+        private SceneException failure(int k, int[] counts, int line) {
+            Parser p = new Parser(b, starts[k], b.length, line, file, false, false);
+            System.arraycopy(counts, 0, p.base, 0, 3);
+            try {
+                p.statements();
+            } catch (SceneException e) {
+                return e;
+            }
+            throw new IllegalStateException("chunk " + k + " of " + file + " failed alone but not in order");
         }
     }
 
