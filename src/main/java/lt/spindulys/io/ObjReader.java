@@ -125,7 +125,7 @@ public final class ObjReader {
         }
         try {
             // The parser works on the bytes in place; what it builds is checked as it grows.
-            return InputFiles.readAllBytes(file, "OBJ file", 1);
+            return InputFiles.readAllBytes(file, "OBJ file", 1, parseThreads());
         } catch (InsufficientMemoryException e) {
             throw new SceneException(name, 0, 0, e.getMessage(), e);
         } catch (NoSuchFileException e) {

@@ -1,6 +1,8 @@
 package lt.spindulys.limits;
 
 import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.channels.FileChannel;
 import java.nio.file.Files;
 import java.nio.file.LinkOption;
 import java.nio.file.Path;
@@ -59,11 +61,92 @@ public final class InputFiles {
      * @throws InsufficientMemoryException if the heap cannot hold it
      */
     public static byte[] readAllBytes(Path path, String what, int bytesPerByte) throws IOException {
+        checkedSize(path, what, bytesPerByte);
+        return Files.readAllBytes(path);
+    }
+
+    /** Files at least this large are read in parts at once by {@link #readAllBytes(Path, String, int, int)}. */
+    static final long PARTS_FROM = 8 << 20;
+
+    /**
+     * {@link #readAllBytes(Path, String, int)}, a large file read in {@code threads} parts at once
+     * (the caller's thread reads one): copying from the system's cache into new heap pages is
+     * most of a read, and it divides among cores. A file whose size changes while it is read is
+     * read again whole, as the one-thread read would.
+     */
+    public static byte[] readAllBytes(Path path, String what, int bytesPerByte, int threads) throws IOException {
+        long size = checkedSize(path, what, bytesPerByte);
+        if (threads <= 1 || size < PARTS_FROM) return Files.readAllBytes(path);
+        byte[] b = readParts(path, (int) size, threads);
+        // The heap was checked for one copy: the parts, if they are not the whole file, are garbage by now.
+        return b != null ? b : Files.readAllBytes(path);
+    }
+
+    /** The file read in parts at once, or null if its size is no longer {@code size}. */
+    private static byte[] readParts(Path path, int size, int threads) throws IOException {
+        byte[] b = new byte[size];
+        boolean whole;
+        try (FileChannel channel = FileChannel.open(path)) {
+            Thread[] helpers = new Thread[threads - 1];
+            IOException[] failed = new IOException[threads];
+            boolean[] complete = new boolean[threads];
+            for (int k = 1; k < threads; k++) {
+                int part = k;
+                helpers[k - 1] = new Thread(() -> {
+                    try {
+                        complete[part] = readPart(channel, b, part, threads);
+                    } catch (IOException e) {
+                        failed[part] = e;
+                    }
+                }, "spindulys-read");
+                helpers[k - 1].setDaemon(true);
+                helpers[k - 1].start();
+            }
+            try {
+                complete[0] = readPart(channel, b, 0, threads);
+            } catch (IOException e) {
+                failed[0] = e;
+            }
+            // The helpers' reads are bounded by the file; the wait is not interruptible, the interrupt is kept.
+            boolean interrupted = false;
+            for (Thread t : helpers) {
+                while (true) {
+                    try {
+                        t.join();
+                        break;
+                    } catch (InterruptedException e) {
+                        interrupted = true;
+                    }
+                }
+            }
+            if (interrupted) Thread.currentThread().interrupt();
+            for (IOException e : failed) if (e != null) throw e;
+            whole = channel.size() == size;
+            for (boolean c : complete) whole &= c;
+        }
+        return whole ? b : null;
+    }
+
+    /** Reads part {@code k} of {@code parts} of the file into the same range of {@code b}; false if the file ended first. */
+    private static boolean readPart(FileChannel channel, byte[] b, int k, int parts) throws IOException {
+        int from = (int) ((long) b.length * k / parts), to = (int) ((long) b.length * (k + 1) / parts);
+        ByteBuffer buffer = ByteBuffer.wrap(b, from, to - from);
+        long at = from;
+        while (buffer.hasRemaining()) {
+            int n = channel.read(buffer, at);
+            if (n < 0) return false;
+            at += n;
+        }
+        return true;
+    }
+
+    /** The file's size after the checks every whole-file read makes: a regular file, under 2 GiB, room on the heap. */
+    private static long checkedSize(Path path, String what, int bytesPerByte) throws IOException {
         String p = problem(path);
         if (p != null) throw new IOException(what + " " + path + " " + p);
         long size = Files.size(path);
         if (size > Integer.MAX_VALUE - 16) throw new IOException(what + " " + path + " is " + HeapBudget.format(size) + ", more than the 2 GiB one file may have");
         HeapBudget.require(HeapBudget.product(size, Math.max(1, bytesPerByte)), "reading " + what + " " + path + " (" + HeapBudget.format(size) + ")");
-        return Files.readAllBytes(path);
+        return size;
     }
 }

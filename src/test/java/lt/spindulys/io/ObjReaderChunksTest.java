@@ -7,9 +7,12 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.Random;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 import lt.spindulys.mesh.MeshData;
 
@@ -136,6 +139,15 @@ class ObjReaderChunksTest {
             }
             assertEquals(2000, ObjReader.parse(bytes, "c.obj", chunks, 2).faceCount());
         }
+    }
+
+    @Test
+    void aLargeFileIsReadAndParsedInChunks(@TempDir Path dir) throws Exception {
+        StringBuilder s = new StringBuilder();
+        while (s.length() <= ObjReader.PARALLEL_BYTES) s.append(mixed(s.length(), 20_000));
+        byte[] bytes = s.toString().replace("\uFEFF", "").getBytes(StandardCharsets.UTF_8);
+        Path file = Files.write(dir.resolve("large.obj"), bytes);
+        assertSameMesh(ObjReader.parse(bytes, file.toString(), 1, 1), ObjReader.read(file), "read");
     }
 
     /** The error in a file of valid lines with {@code bad} at line {@code at}, the same for every split. */
