@@ -1,5 +1,6 @@
 package lt.spindulys.cli;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -14,10 +15,15 @@ import org.junit.jupiter.api.Timeout;
 
 import lt.spindulys.scene.AcceleratorKind;
 import lt.spindulys.accel.WideBvh;
+import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.image.FrameBuffer;
+import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
 import lt.spindulys.render.ProgressListener;
 import lt.spindulys.render.Renderer;
+import lt.spindulys.scene.PointLight;
+import lt.spindulys.scene.RenderSettings;
+import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.SceneBuilder;
 import lt.spindulys.scene.Sphere;
 import lt.spindulys.scene.TestMeshes;
@@ -69,6 +75,30 @@ class JitWarmupTest {
         }
         assertTrue(lit > 1000, "lit pixels: " + lit);
         assertTrue(dark > 100, "unlit pixels (shadow, background): " + dark);
+    }
+
+    @Test
+    void theImageIsTheSameWhileTheWarmupRenders() throws InterruptedException {
+        // The warm-up shares nothing with the real scene: rendered while it runs, on both cores,
+        // the image is bit for bit the one rendered alone (what the command promises, untimed).
+        Scene scene = new SceneBuilder()
+                .settings(RenderSettings.builder().size(160, 90).ambient(Color.BLACK).build())
+                .camera(new PinholeCamera(new Vec3(0, 1, 4), Vec3.ZERO, Vec3.Y, 40))
+                .light(new PointLight(new Vec3(3, 5, 2), Color.WHITE, 25, PointLight.Falloff.INVERSE_SQUARE))
+                .add(new TriangleMesh(TestMeshes.icosphere(4, 1)))
+                .add(new Sphere(new Vec3(1.5, 0, 0), 0.5))
+                .build();
+        double[] alone = Renderer.render(scene, 2, ProgressListener.NONE).frame().data();
+        JitWarmup w = JitWarmup.start();
+        try {
+            for (int i = 0; i < 3; i++) {
+                assertArrayEquals(alone, Renderer.render(scene, 2, ProgressListener.NONE).frame().data(), "render " + i + " beside the warm-up");
+            }
+        } finally {
+            w.close();
+            w.join();
+        }
+        assertArrayEquals(alone, Renderer.render(scene, 2, ProgressListener.NONE).frame().data(), "after the warm-up");
     }
 
     @Test
