@@ -127,13 +127,14 @@ public final class InputFiles {
         return whole ? b : null;
     }
 
+    /** Bytes per read call: the channel copies through a native buffer as large as the call, new for each new thread. */
+    private static final int SLICE = 1 << 20;
+
     /** Reads part {@code k} of {@code parts} of the file into the same range of {@code b}; false if the file ended first. */
     private static boolean readPart(FileChannel channel, byte[] b, int k, int parts) throws IOException {
         int from = (int) ((long) b.length * k / parts), to = (int) ((long) b.length * (k + 1) / parts);
-        ByteBuffer buffer = ByteBuffer.wrap(b, from, to - from);
-        long at = from;
-        while (buffer.hasRemaining()) {
-            int n = channel.read(buffer, at);
+        for (int at = from; at < to;) {
+            int n = channel.read(ByteBuffer.wrap(b, at, Math.min(SLICE, to - at)), at);
             if (n < 0) return false;
             at += n;
         }
