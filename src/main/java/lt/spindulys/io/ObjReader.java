@@ -35,8 +35,11 @@ import lt.spindulys.subdiv.SubdivTags;
  *
  * <p>The file is read as bytes and parsed in place, numbers by hand (exactly rounded: the fast
  * path is taken only where it is exact, other numbers go to {@link Double#parseDouble}), with no
- * allocation per token, because meshes run to tens of millions of numbers. Errors are
- * {@link SceneException}s naming the file, line and column of the offending token.
+ * allocation per token, because meshes run to tens of millions of numbers. A file of
+ * {@link #PARALLEL_BYTES} or more is read and parsed in chunks on up to {@link #MAX_THREADS}
+ * threads and merged in file order: the mesh, and every error with its line and column, are the
+ * same as parsed in one piece. Errors are {@link SceneException}s naming the file, line and
+ * column of the offending token.
  */
 public final class ObjReader {
     private ObjReader() {}
@@ -99,7 +102,7 @@ public final class ObjReader {
     static final int CHUNK_BYTES = 4 << 20;
     private static final int MAX_CHUNKS = 1024;
     /** Parse threads at most: reading memory, more would wait on each other. */
-    private static final int MAX_THREADS = 4;
+    static final int MAX_THREADS = 4;
 
     private static int parseThreads() {
         return Math.max(1, Math.min(MAX_THREADS, Runtime.getRuntime().availableProcessors()));
@@ -116,6 +119,7 @@ public final class ObjReader {
         return new ChunkedParse(bytes, fileName, starts).run(threads);
     }
 
+    /** The file's bytes, read on the parse threads; a missing, special or too large file is a {@link SceneException}. */
     static byte[] readBytes(Path file) throws IOException {
         String name = file.toString();
         // A pipe would block and a device never end: only regular files are opened.
