@@ -937,6 +937,13 @@ public final class ObjReader {
         /** The first chunk that failed (no chunk after it is started), or the chunk count. */
         private final AtomicInteger failedAt;
         private final AtomicInteger nextChunk = new AtomicInteger();
+        /**
+         * The order in which chunks are taken: spread over the file first (0, n/2, n/4, 3n/4, ...)
+         * so that every kind of statement is met, and compiled for, early. Files often hold all
+         * vertices, then all texture coordinates, then all faces; in file order, the compiled
+         * parse loop was thrown away and compiled again as each kind first appeared.
+         */
+        private final int[] order;
 
         ChunkedParse(byte[] bytes, String file, int[] starts) {
             this.b = bytes;
@@ -944,6 +951,23 @@ public final class ObjReader {
             this.starts = starts;
             this.parsed = new Parser[starts.length - 1];
             this.failedAt = new AtomicInteger(parsed.length);
+            this.order = spread(parsed.length);
+        }
+
+        /** 0..n-1, multiples of the largest power of two first, then of each smaller one. */
+        static int[] spread(int n) {
+            int[] order = new int[n];
+            boolean[] taken = new boolean[n];
+            int m = 0;
+            for (int step = Integer.highestOneBit(Math.max(1, n)); step >= 1; step >>= 1) {
+                for (int k = 0; k < n; k += step) {
+                    if (!taken[k]) {
+                        taken[k] = true;
+                        order[m++] = k;
+                    }
+                }
+            }
+            return order;
         }
 
         /**
@@ -1014,9 +1038,11 @@ public final class ObjReader {
             return merge();
         }
 
-        /** Parses chunks in file order as they come, until none is left or one before them has failed. */
+        /** Parses chunks in {@link #order} as they come, skipping those after a chunk that failed. */
         private void work() {
-            for (int k; (k = nextChunk.getAndIncrement()) < parsed.length && k < failedAt.get();) {
+            for (int i; (i = nextChunk.getAndIncrement()) < order.length;) {
+                int k = order[i];
+                if (k >= failedAt.get()) continue;
                 Parser p = new Parser(b, starts[k], starts[k + 1], 1, file, false, true);
                 try {
                     p.statements();

@@ -125,6 +125,17 @@ class ObjReaderChunksTest {
     }
 
     @Test
+    void chunksAreTakenSpreadOverTheFileEachOnce() {
+        assertArrayEquals(new int[] {0, 4, 2, 6, 1, 3, 5}, ObjReader.ChunkedParse.spread(7));
+        for (int n = 1; n <= 100; n++) {
+            int[] order = ObjReader.ChunkedParse.spread(n);
+            int[] sorted = order.clone();
+            java.util.Arrays.sort(sorted);
+            for (int k = 0; k < n; k++) assertEquals(k, sorted[k], "each of " + n + " chunks once");
+        }
+    }
+
+    @Test
     void chunksNeverStartInsideAContinuedStatement() {
         // Every line but the last of each face is continued: a chunk may start only after the last.
         StringBuilder s = new StringBuilder("v 0 0 0\nv 1 0 0\nv 0 1 0\n");
