@@ -30,8 +30,9 @@ import lt.spindulys.scene.TriangleMesh;
  *
  * <p>Why: a new JVM runs the first part of a render in interpreted and provisionally compiled
  * code. The warm-up was added while the parse left a core idle; a large OBJ is now parsed on
- * every core (ObjReader), and the warm-up still paid for itself, at low priority beside the
- * parse, in alternated cold renders of the 1m torus (docs/performance.md, OBJ parsing). The vector box test suffers most: its
+ * every core (ObjReader): the warm-up now slows that parse, but it speeds the cold build and
+ * render more, a small net gain in alternated cold renders of the 1m torus (docs/performance.md,
+ * OBJ parsing). The vector box test suffers most: its
  * vectors are real objects until the JIT compiles the traversal, so on a cold JVM a large mesh
  * renders slower with the wide tree than with the scalar one, and several times slower than warm
  * (docs/performance.md, the wide vector BVH). Warming up on this scene's rays compiles the
