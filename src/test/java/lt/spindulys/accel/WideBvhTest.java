@@ -186,4 +186,28 @@ class WideBvhTest {
         assertTrue(w.nodeCount() <= binaryLeaves - 1, w.nodeCount() + " wide nodes");
         assertTrue(w.nodeCount() >= (binaryLeaves - 1) / 7, w.nodeCount() + " wide nodes");
     }
+
+    @Test
+    void theCollapseIsTheSameForAnyThreadCountAndTheOneTheEarlierCollapseMade() {
+        // Enough binary nodes for the collapse to split into tasks.
+        Bvh binary = new Bvh(BvhTest.randomSpheres(53, 300_000), Bvh.DEFAULT_LEAF_SIZE, 1);
+        WideBvh one = new WideBvh(binary, 1);
+        for (int threads : new int[] {2, 3}) {
+            WideBvh many = new WideBvh(binary, threads);
+            assertEquals(one.nodeCount(), many.nodeCount());
+            assertTrue(java.util.Arrays.equals(one.planes(), many.planes()), threads + " threads");
+            assertTrue(java.util.Arrays.equals(one.frames(), many.frames()), threads + " threads");
+            assertTrue(java.util.Arrays.equals(one.links(), many.links()), threads + " threads");
+        }
+        // The checksum of the nodes the serial, allocating collapse before issue 18 made.
+        java.util.zip.CRC32 c = new java.util.zip.CRC32();
+        c.update(one.planes());
+        for (float v : one.frames()) {
+            int x = Float.floatToRawIntBits(v);
+            c.update(x); c.update(x >> 8); c.update(x >> 16); c.update(x >> 24);
+        }
+        for (int x : one.links()) { c.update(x); c.update(x >> 8); c.update(x >> 16); c.update(x >> 24); }
+        assertEquals(32_667, one.nodeCount());
+        assertEquals(0x88d61cd0L, c.getValue());
+    }
 }
