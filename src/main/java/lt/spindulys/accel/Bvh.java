@@ -1,6 +1,7 @@
 package lt.spindulys.accel;
 
 import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.ForkJoinTask;
 import java.util.concurrent.RecursiveTask;
 
 import lt.spindulys.math.Bounds;
@@ -85,7 +86,10 @@ public final class Bvh implements Accelerator {
             Builder b = pool == null ? new Builder(set, maxLeafSize, null) : pool.invoke(new Prepare(set, maxLeafSize, pool));
             b.build();
             node = b.node;
-            perm = b.perm.length == set.size() && set.reorder(b.perm) ? null : b.perm;
+            // Inside the pool a set may split its renumbering across it (TriangleMesh does).
+            boolean reordered = b.perm.length == n
+                    && (pool == null ? set.reorder(b.perm) : pool.invoke(ForkJoinTask.adapt(() -> set.reorder(b.perm))));
+            perm = reordered ? null : b.perm;
             primitiveCount = b.perm.length;
             bounds = b.exact;
             nodeCount = b.count;

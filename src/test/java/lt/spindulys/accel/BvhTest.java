@@ -2,6 +2,7 @@ package lt.spindulys.accel;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
@@ -356,6 +357,21 @@ class BvhTest {
         assertEquals(201_599, one.nodeCount());
         assertEquals(0xc428d3a8L, crc(one.nodes()));
         assertEquals(0xe862317bL, crc(one.perm()));
+    }
+
+    @Test
+    void aMeshIsRenumberedTheSameWithAnyThreadCount() {
+        // Enough triangles and vertices for the renumbering's copies to be split across the pool.
+        MeshData d = TestMeshes.icosphere(7, 1);
+        TriangleMesh one = new TriangleMesh(d), two = new TriangleMesh(d);
+        assertNull(new Bvh(one, Bvh.DEFAULT_LEAF_SIZE, 1).perm());
+        assertNull(new Bvh(two, Bvh.DEFAULT_LEAF_SIZE, 2).perm());
+        assertTrue(one.triangleCount() > 300_000);
+        for (int t = 0; t < one.triangleCount(); t++) {
+            for (int c = 0; c < 3; c++) assertEquals(one.triangleVertex(t, c), two.triangleVertex(t, c));
+        }
+        assertTrue(java.util.Arrays.equals(one.data().positions(), two.data().positions()));
+        assertTrue(java.util.Arrays.equals(one.data().uvIndex(), two.data().uvIndex()));
     }
 
     /** CRC-32 of the ints' little-endian bytes. */
