@@ -84,6 +84,11 @@ public final class Bvh implements Accelerator {
         ForkJoinPool pool = threads > 1 && n >= Builder.PARALLEL_GRAIN ? new ForkJoinPool(threads) : null;
         try {
             Builder b = pool == null ? new Builder(set, maxLeafSize, null) : pool.invoke(new Prepare(set, maxLeafSize, pool));
+            if (b.nonFinite >= 0) {
+                double[] tmp = new double[6];
+                set.bounds(b.nonFinite, tmp);
+                throw new IllegalArgumentException("primitive " + b.nonFinite + " has non-finite bounds " + java.util.Arrays.toString(tmp));
+            }
             b.build();
             node = b.node;
             // Inside the pool a set may split its renumbering across it (TriangleMesh does).
@@ -374,6 +379,8 @@ public final class Bvh implements Accelerator {
         final float[] rootBounds = new float[12];
         /** The pool large ranges are split across, or null to build on the calling thread alone. */
         final ForkJoinPool pool;
+        /** The first primitive with non-finite bounds, or -1; nothing is built when there is one. */
+        final int nonFinite;
 
         /**
          * Reads every primitive's bounds, in blocks on the pool when there is one (called
@@ -386,10 +393,13 @@ public final class Bvh implements Accelerator {
             float[] bb = new float[6 * n];
             int[] p = new int[n];
             Prep all = pool == null ? Prep.range(set, bb, p, 0, n) : new PrepTask(set, bb, p, 0, n).invoke();
-            if (all.firstBad >= 0) {
-                double[] tmp = new double[6];
-                set.bounds(all.firstBad, tmp);
-                throw new IllegalArgumentException("primitive " + all.firstBad + " has non-finite bounds " + java.util.Arrays.toString(tmp));
+            nonFinite = all.firstBad;
+            if (nonFinite >= 0) {
+                // Reported by the caller, on its own thread: an exception thrown inside the pool
+                // would reach it wrapped, with a different message.
+                perm = new int[0];
+                pb = new float[0];
+                return;
             }
             int m = n - all.empty;
             if (m < n) {

@@ -374,6 +374,20 @@ class BvhTest {
         assertTrue(java.util.Arrays.equals(one.data().uvIndex(), two.data().uvIndex()));
     }
 
+    @Test
+    void nonFiniteBoundsAreReportedAsBeforeWhateverTheThreadCount() {
+        // Large enough for the bounds to be read on the pool: the message must not come wrapped.
+        double[] c = new double[4 * 20_000];
+        for (int i = 0; i < 20_000; i++) { c[4 * i] = i; c[4 * i + 3] = 0.5; }
+        c[4 * 15_000 + 1] = Double.NaN;
+        c[4 * 17_000 + 2] = Double.POSITIVE_INFINITY;
+        for (int threads : new int[] {1, 2}) {
+            IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                    () -> new Bvh(new Spheres(c), Bvh.DEFAULT_LEAF_SIZE, threads));
+            assertEquals("primitive 15000 has non-finite bounds [14999.5, NaN, -0.5, 15000.5, NaN, 0.5]", e.getMessage());
+        }
+    }
+
     /** CRC-32 of the ints' little-endian bytes. */
     static long crc(int[] a) {
         java.util.zip.CRC32 c = new java.util.zip.CRC32();
