@@ -49,7 +49,6 @@ public final class Bvh implements Accelerator {
     private final Bounds bounds;
     private final int nodeCount;
     private final int depth;
-    private final int buildThreads;
 
     public Bvh(PrimitiveSet set) { this(set, DEFAULT_LEAF_SIZE); }
 
@@ -102,11 +101,7 @@ public final class Bvh implements Accelerator {
         } finally {
             if (pool != null) pool.shutdown();
         }
-        buildThreads = pool == null ? 1 : threads;
     }
-
-    /** How many threads built this tree: 1, or the size of its pool (the collapse uses as many). */
-    int buildThreads() { return buildThreads; }
 
     public PrimitiveSet set() { return set; }
     public int nodeCount() { return nodeCount; }

@@ -67,34 +67,18 @@ public final class WideBvh implements Accelerator {
         return bvh.nodeCount() > 1 && bvh.maxLeafCount() <= 15 && bvh.primitiveCount() < (1 << 26);
     }
 
-    WideBvh(Bvh bvh) { this(bvh, bvh.buildThreads()); }
-
-    /**
-     * Collapses {@code bvh} on at most {@code threads} threads; the nodes are the same, in the
-     * same order, for every thread count.
-     */
-    WideBvh(Bvh bvh, int threads) {
+    WideBvh(Bvh bvh) {
         this.set = bvh.set();
         this.perm = bvh.perm();
         int[] node = bvh.nodes();
-        Piece root;
-        if (threads > 1 && bvh.nodeCount() >= 2 * Collapse.GRAIN) {
-            // A pool of our own, as the binary build has: the common pool's size is not ours to choose.
-            java.util.concurrent.ForkJoinPool pool = new java.util.concurrent.ForkJoinPool(threads);
-            try {
-                root = pool.invoke(new Collapse(node, 0, 0));
-            } finally {
-                pool.shutdown();
-            }
-        } else {
-            root = Piece.serial(node, 0, 0);
-        }
-        nodeCount = root.count;
-        q = new byte[PLANES * nodeCount];
-        frame = new float[6 * nodeCount];
-        child = new int[8 * nodeCount];
-        root.place(this, 0);
-        depth = root.maxDepth;
+        int cap = Math.max(1, bvh.nodeCount() / 3);
+        Collapser c = new Collapser(node, cap);
+        c.build(0, 0);
+        q = java.util.Arrays.copyOf(c.q, PLANES * c.count);
+        frame = java.util.Arrays.copyOf(c.frame, 6 * c.count);
+        child = java.util.Arrays.copyOf(c.child, 8 * c.count);
+        nodeCount = c.count;
+        depth = c.maxDepth;
         sah = bvh.sahCost();
     }
 
@@ -317,101 +301,6 @@ public final class WideBvh implements Accelerator {
         return k;
     }
 
-    /**
-     * A collapsed piece of the wide tree, its nodes in chunk-local indices: a subtree collapsed
-     * serially, or one node collapsed here whose inner children are pieces of their own. Placed
-     * depth-first (a node, then its children's subtrees in lane order), as one serial collapse
-     * numbers them, so the result is the same however the pieces were made.
-     */
-    private static final class Piece {
-        final Collapser c;
-        /** For a one-node piece: the pieces of its lanes (null for a leaf or empty lane). */
-        final Piece[] kids;
-        final int count, maxDepth;
-
-        private Piece(Collapser c, Piece[] kids) {
-            this.c = c;
-            this.kids = kids;
-            int n = c.count, d = c.maxDepth;
-            if (kids != null) {
-                for (Piece k : kids) {
-                    if (k == null) continue;
-                    n += k.count;
-                    d = Math.max(d, k.maxDepth);
-                }
-            }
-            count = n;
-            maxDepth = d;
-        }
-
-        /** Binary inner node b's subtree collapsed on this thread, its root at depth d. */
-        static Piece serial(int[] node, int b, int d) {
-            Collapser c = new Collapser(node, Math.max(1, Collapser.subtreeSize(node, b) / 3));
-            c.build(b, d);
-            return new Piece(c, null);
-        }
-
-        /** Copies this piece into w's arrays with its first node at index {@code at}. */
-        void place(WideBvh w, int at) {
-            int n = c.count;
-            System.arraycopy(c.q, 0, w.q, PLANES * at, PLANES * n);
-            System.arraycopy(c.frame, 0, w.frame, 6 * at, 6 * n);
-            int[] from = c.child, to = w.child;
-            for (int i = 0, o = 8 * at; i < 8 * n; i++) {
-                int link = from[i];
-                to[o + i] = link >= 0 ? link + at : link; // node links are piece-local; leaf codes are not
-            }
-            if (kids == null) return;
-            int next = at + 1;
-            for (int i = 0; i < 8; i++) {
-                if (kids[i] == null) continue;
-                to[8 * at + i] = next;
-                kids[i].place(w, next);
-                next += kids[i].count;
-            }
-        }
-    }
-
-    /** Collapses a large binary subtree: its top wide node here, its inner lanes' subtrees as subtasks. */
-    private static final class Collapse extends java.util.concurrent.RecursiveTask<Piece> {
-        /** Binary subtrees of fewer nodes than this are collapsed by one thread. */
-        static final int GRAIN = 1 << 15;
-        private final int[] node;
-        private final int b, d;
-
-        Collapse(int[] node, int b, int d) { this.node = node; this.b = b; this.d = d; }
-
-        @Override
-        protected Piece compute() {
-            if (Collapser.subtreeSize(node, b) < GRAIN) return Piece.serial(node, b, d);
-            Collapser top = new Collapser(node, 1);
-            top.count = 1;
-            top.maxDepth = d;
-            int k = top.open(b, 0);
-            Collapse[] tasks = new Collapse[8];
-            for (int i = 0; i < k; i++) {
-                int c = top.child[i];
-                if (top.leaf(c)) {
-                    top.child[i] = Collapser.leafCode(node, c);
-                } else {
-                    tasks[i] = new Collapse(node, c, d + 1);
-                    top.child[i] = -1; // set when placed
-                }
-            }
-            // Fork all but the first inner lane, collapse that one here, then join in lane order.
-            int first = -1;
-            for (int i = 0; i < k; i++) {
-                if (tasks[i] == null) continue;
-                if (first < 0) first = i;
-                else tasks[i].fork();
-            }
-            Piece[] kids = new Piece[8];
-            if (first >= 0) kids[first] = tasks[first].compute();
-            for (int i = first + 1; i < k; i++) if (tasks[i] != null) kids[i] = tasks[i].join();
-            return new Piece(top, kids);
-        }
-    }
-
     /** Builds the wide nodes depth-first from the binary ones. */
     private static final class Collapser {
         final int[] node;
@@ -427,16 +316,6 @@ public final class WideBvh implements Accelerator {
             child = new int[8 * cap];
         }
 
-        /** How many binary nodes the subtree of node b has (its rightmost path ends at its last node). */
-        static int subtreeSize(int[] node, int b) {
-            int r = b;
-            while (node[8 * r + 7] <= 0) r = node[8 * r + 6];
-            return r + 1 - b;
-        }
-
-        /** The wide link of binary leaf c. */
-        static int leafCode(int[] node, int c) { return -1 - (node[8 * c + 6] << 4 | node[8 * c + 7]); }
-
         private float area(int b) {
             float dx = f(b, 3) - f(b, 0), dy = f(b, 4) - f(b, 1), dz = f(b, 5) - f(b, 2);
             return dx * dy + dy * dz + dz * dx;
@@ -444,7 +323,7 @@ public final class WideBvh implements Accelerator {
 
         private float f(int b, int j) { return Float.intBitsToFloat(node[8 * b + j]); }
 
-        boolean leaf(int b) { return node[8 * b + 7] > 0; }
+        private boolean leaf(int b) { return node[8 * b + 7] > 0; }
 
         /** Makes a wide node of binary inner node {@code b}'s subtree; returns its index. */
         int build(int b, int d) {
@@ -455,42 +334,22 @@ public final class WideBvh implements Accelerator {
                 frame = java.util.Arrays.copyOf(frame, 2 * frame.length);
             }
             if (d > maxDepth) maxDepth = d;
-            int k = open(b, w);
-            for (int i = 0; i < k; i++) {
-                int c = child[8 * w + i];
-                int link = leaf(c) ? leafCode(node, c) : build(c, d + 1);
-                child[8 * w + i] = link; // after the call: it may have grown the arrays
-            }
-            return w;
-        }
-
-        /**
-         * Fills wide node w from binary inner node b: chooses its children, writes their planes
-         * and grid, leaves the children's binary indices in lanes 0..k-1 of child[8w..] (for the
-         * caller to turn into links) and -1 in the empty lanes; returns k.
-         */
-        int open(int b, int w) {
-            final int[] kids = child;
-            final int o8 = 8 * w;
+            int[] kids = new int[8];
             int k = 0;
-            kids[o8 + k++] = b + 1;
-            kids[o8 + k++] = node[8 * b + 6];
+            kids[k++] = b + 1;
+            kids[k++] = node[8 * b + 6];
             // Open the largest inner child until there are eight: big boxes are the ones rays
             // enter most often, so their children are the ones worth testing together.
             while (k < 8) {
                 int best = -1;
                 float bestArea = -1;
                 for (int i = 0; i < k; i++) {
-                    int c = kids[o8 + i];
-                    if (!leaf(c)) {
-                        float a = area(c);
-                        if (a > bestArea) { bestArea = a; best = i; }
-                    }
+                    if (!leaf(kids[i]) && area(kids[i]) > bestArea) { bestArea = area(kids[i]); best = i; }
                 }
                 if (best < 0) break;
-                int open = kids[o8 + best];
-                kids[o8 + best] = open + 1;
-                kids[o8 + k++] = node[8 * open + 6];
+                int open = kids[best];
+                kids[best] = open + 1;
+                kids[k++] = node[8 * open + 6];
             }
             // The node's grid per axis spans its own box, b's (which holds all of its children).
             int o = PLANES * w;
@@ -501,18 +360,22 @@ public final class WideBvh implements Accelerator {
                 for (int i = 0; i < 8; i++) {
                     int row = o + 16 * a + i;
                     if (i < k) {
-                        q[row] = (byte) gridDown(f(kids[o8 + i], a), base, sc);
-                        q[row + 8] = (byte) gridUp(f(kids[o8 + i], 3 + a), base, sc);
+                        q[row] = (byte) gridDown(f(kids[i], a), base, sc);
+                        q[row + 8] = (byte) gridUp(f(kids[i], 3 + a), base, sc);
                     } else {
                         q[row] = Byte.MAX_VALUE;
                         q[row + 8] = Byte.MIN_VALUE;
                     }
                 }
             }
+            for (int i = 0; i < k; i++) {
+                int c = kids[i];
+                child[8 * w + i] = leaf(c) ? -1 - (node[8 * c + 6] << 4 | node[8 * c + 7]) : build(c, d + 1);
+            }
             // An empty lane is missed, except on a node whose box is one point (every axis flat);
             // then it is an empty leaf, never a link back to the root.
-            for (int i = k; i < 8; i++) kids[o8 + i] = -1;
-            return k;
+            for (int i = k; i < 8; i++) child[8 * w + i] = -1;
+            return w;
         }
     }
 }

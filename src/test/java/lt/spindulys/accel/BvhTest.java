@@ -357,6 +357,14 @@ class BvhTest {
         assertEquals(201_599, one.nodeCount());
         assertEquals(0xc428d3a8L, crc(one.nodes()));
         assertEquals(0xe862317bL, crc(one.perm()));
+        // With empty primitives among them (left out, the rest closing up): the same on the pool too.
+        double[] c = randomSpheres(59, 100_000).c().clone();
+        for (int i = 0; i < 100_000; i += 7) c[4 * i + 3] = -1;
+        Bvh gaps1 = new Bvh(new Spheres(c), Bvh.DEFAULT_LEAF_SIZE, 1), gaps2 = new Bvh(new Spheres(c), Bvh.DEFAULT_LEAF_SIZE, 2);
+        assertEquals(100_000 - 14_286, gaps1.primitiveCount());
+        assertTrue(java.util.Arrays.equals(gaps1.nodes(), gaps2.nodes()));
+        assertTrue(java.util.Arrays.equals(gaps1.perm(), gaps2.perm()));
+        assertEquals(gaps1.bounds(), gaps2.bounds());
     }
 
     @Test

@@ -188,18 +188,12 @@ class WideBvhTest {
     }
 
     @Test
-    void theCollapseIsTheSameForAnyThreadCountAndTheOneTheEarlierCollapseMade() {
-        // Enough binary nodes for the collapse to split into tasks.
-        Bvh binary = new Bvh(BvhTest.randomSpheres(53, 300_000), Bvh.DEFAULT_LEAF_SIZE, 1);
-        WideBvh one = new WideBvh(binary, 1);
-        for (int threads : new int[] {2, 3}) {
-            WideBvh many = new WideBvh(binary, threads);
-            assertEquals(one.nodeCount(), many.nodeCount());
-            assertTrue(java.util.Arrays.equals(one.planes(), many.planes()), threads + " threads");
-            assertTrue(java.util.Arrays.equals(one.frames(), many.frames()), threads + " threads");
-            assertTrue(java.util.Arrays.equals(one.links(), many.links()), threads + " threads");
-        }
-        // The checksum of the nodes the serial, allocating collapse before issue 18 made.
+    void theCollapseMakesTheNodesItMadeBefore() {
+        // A checksum of the wide nodes the collapse made at the start of issue 18's second pass,
+        // over a tree the build (on any thread count) makes the same: a change to the collapse
+        // that changes the nodes must be deliberate.
+        Bvh binary = new Bvh(BvhTest.randomSpheres(53, 300_000), Bvh.DEFAULT_LEAF_SIZE, 2);
+        WideBvh one = new WideBvh(binary);
         java.util.zip.CRC32 c = new java.util.zip.CRC32();
         c.update(one.planes());
         for (float v : one.frames()) {
