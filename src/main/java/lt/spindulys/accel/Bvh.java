@@ -1,6 +1,7 @@
 package lt.spindulys.accel;
 
 import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.ForkJoinTask;
 import java.util.concurrent.RecursiveTask;
 
 import lt.spindulys.math.Bounds;
@@ -67,17 +68,39 @@ public final class Bvh implements Accelerator {
      * @param parallel whether large builds may split across a pool of threads
      */
     public Bvh(PrimitiveSet set, int maxLeafSize, boolean parallel) {
+        this(set, maxLeafSize, parallel ? Runtime.getRuntime().availableProcessors() : 1);
+    }
+
+    /**
+     * Builds the hierarchy on at most {@code threads} threads (1: the calling thread alone). The
+     * tree is the same for every thread count: how work is divided depends on range sizes only.
+     */
+    Bvh(PrimitiveSet set, int maxLeafSize, int threads) {
         if (maxLeafSize < 1) throw new IllegalArgumentException("leaf size must be at least 1, got " + maxLeafSize);
         this.set = set;
-        Builder b = new Builder(set, maxLeafSize);
-        b.parallel = parallel;
-        b.build();
-        node = b.node;
-        perm = b.perm.length == set.size() && set.reorder(b.perm) ? null : b.perm;
-        primitiveCount = b.perm.length;
-        bounds = b.exact;
-        nodeCount = b.count;
-        depth = b.maxDepth;
+        int n = set.size();
+        // A pool of our own: forks must not land in the common pool, whose size is not ours to choose.
+        ForkJoinPool pool = threads > 1 && n >= Builder.PARALLEL_GRAIN ? new ForkJoinPool(threads) : null;
+        try {
+            Builder b = pool == null ? new Builder(set, maxLeafSize, null) : pool.invoke(new Prepare(set, maxLeafSize, pool));
+            if (b.nonFinite >= 0) {
+                double[] tmp = new double[6];
+                set.bounds(b.nonFinite, tmp);
+                throw new IllegalArgumentException("primitive " + b.nonFinite + " has non-finite bounds " + java.util.Arrays.toString(tmp));
+            }
+            b.build();
+            node = b.node;
+            // Inside the pool a set may split its renumbering across it (TriangleMesh does).
+            boolean reordered = b.perm.length == n
+                    && (pool == null ? set.reorder(b.perm) : pool.invoke(ForkJoinTask.adapt(() -> set.reorder(b.perm))));
+            perm = reordered ? null : b.perm;
+            primitiveCount = b.perm.length;
+            bounds = b.exact;
+            nodeCount = b.count;
+            depth = b.maxDepth;
+        } finally {
+            if (pool != null) pool.shutdown();
+        }
     }
 
     public PrimitiveSet set() { return set; }
@@ -347,35 +370,45 @@ public final class Bvh implements Accelerator {
         int count, maxDepth;
         Bounds exact = Bounds.EMPTY;
 
-        /** Whether a large build may use a pool of threads. */
-        boolean parallel = true;
+        /** The root's box and centroid bounds, twelve floats as {@link Splitter#bounds} writes them. */
+        final float[] rootBounds = new float[12];
+        /** The pool large ranges are split across, or null to build on the calling thread alone. */
+        final ForkJoinPool pool;
+        /** The first primitive with non-finite bounds, or -1; nothing is built when there is one. */
+        final int nonFinite;
 
-        Builder(PrimitiveSet set, int leafSize) {
+        /**
+         * Reads every primitive's bounds, in blocks on the pool when there is one (called
+         * inside it then, so the blocks can fork), and finds the root's bounds on the way.
+         */
+        Builder(PrimitiveSet set, int leafSize, ForkJoinPool pool) {
             this.leafSize = leafSize;
+            this.pool = pool;
             int n = set.size();
             float[] bb = new float[6 * n];
             int[] p = new int[n];
-            int m = 0;
-            double[] tmp = new double[6];
-            double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
-            for (int i = 0; i < n; i++) {
-                set.bounds(i, tmp);
-                if (tmp[0] > tmp[3] || tmp[1] > tmp[4] || tmp[2] > tmp[5]) continue; // empty: never hit
-                for (double v : tmp) {
-                    if (!Double.isFinite(v)) {
-                        throw new IllegalArgumentException("primitive " + i + " has non-finite bounds " + java.util.Arrays.toString(tmp));
-                    }
+            Prep all = pool == null ? Prep.range(set, bb, p, 0, n) : new PrepTask(set, bb, p, 0, n).invoke();
+            nonFinite = all.firstBad;
+            if (nonFinite >= 0) {
+                // Reported by the caller, on its own thread: an exception thrown inside the pool
+                // would reach it wrapped, with a different message.
+                perm = new int[0];
+                pb = new float[0];
+                return;
+            }
+            int m = n - all.empty;
+            if (m < n) {
+                // Empty primitives can never be hit: close the gaps they left (rare, so serial).
+                for (int i = 0, k = 0; i < n; i++) {
+                    if (Float.isNaN(bb[6 * i])) continue;
+                    System.arraycopy(bb, 6 * i, bb, 6 * k, 6);
+                    p[k++] = i;
                 }
-                x0 = Math.min(x0, tmp[0]); y0 = Math.min(y0, tmp[1]); z0 = Math.min(z0, tmp[2]);
-                x1 = Math.max(x1, tmp[3]); y1 = Math.max(y1, tmp[4]); z1 = Math.max(z1, tmp[5]);
-                int o = 6 * m;
-                bb[o] = down(tmp[0]); bb[o + 1] = down(tmp[1]); bb[o + 2] = down(tmp[2]);
-                bb[o + 3] = up(tmp[3]); bb[o + 4] = up(tmp[4]); bb[o + 5] = up(tmp[5]);
-                p[m++] = i;
             }
             perm = m == n ? p : java.util.Arrays.copyOf(p, m);
             pb = m == n ? bb : java.util.Arrays.copyOf(bb, 6 * m);
-            if (m > 0) exact = new Bounds(x0, y0, z0, x1, y1, z1);
+            if (m > 0) exact = new Bounds(all.ex[0], all.ex[1], all.ex[2], all.ex[3], all.ex[4], all.ex[5]);
+            System.arraycopy(all.bc, 0, rootBounds, 0, 12);
         }
 
         void build() {
@@ -385,29 +418,16 @@ public final class Bvh implements Accelerator {
                 return;
             }
             Part root;
-            if (parallel && n >= PARALLEL_GRAIN) {
-                // A pool of our own: forks must not land in the common pool, whose size is not ours to choose.
-                ForkJoinPool pool = new ForkJoinPool(Runtime.getRuntime().availableProcessors());
-                try {
-                    root = pool.invoke(new Task(this, 0, n, 0, rootBounds()));
-                } finally {
-                    pool.shutdown();
-                }
+            if (pool != null) {
+                root = pool.invoke(new Task(this, 0, n, 0, rootBounds));
             } else {
                 Chunk c = new Chunk(pb, perm, leafSize);
-                c.build(0, n, 0, rootBounds());
+                c.build(0, n, 0, rootBounds);
                 root = new Part(c);
             }
             count = root.nodes;
             node = new int[8 * count];
             place(root, 0);
-        }
-
-        /** The root's box and centroid bounds, twelve floats as {@link Splitter#bounds} writes them. */
-        private float[] rootBounds() {
-            float[] bc = new float[12];
-            new Splitter(pb, perm).bounds(0, perm.length, bc, 0);
-            return bc;
         }
 
         /** Writes part p with its first node at index at (depth-first, left child next). */
@@ -433,6 +453,129 @@ public final class Bvh implements Accelerator {
             place(p.left, at + 1);
             place(p.right, right);
         }
+    }
+
+    /**
+     * What reading a block of primitives' bounds found: how many were empty, the first with
+     * non-finite bounds (-1 if none), the exact (double) bounds, and the float box and doubled
+     * centroid bounds of the block's slots as {@link Splitter#bounds} computes them.
+     */
+    private static final class Prep {
+        int empty, firstBad = -1;
+        final double[] ex = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+            Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+        final float[] bc = new float[12];
+
+        /**
+         * Reads primitives [lo, hi) into slots [lo, hi) of bb and p; an empty one gets a NaN
+         * in its first float, for the caller to leave out.
+         */
+        static Prep range(PrimitiveSet set, float[] bb, int[] p, int lo, int hi) {
+            Prep r = new Prep();
+            double[] tmp = new double[6];
+            double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+            for (int i = lo; i < hi; i++) {
+                set.bounds(i, tmp);
+                int o = 6 * i;
+                if (tmp[0] > tmp[3] || tmp[1] > tmp[4] || tmp[2] > tmp[5]) { // empty: never hit
+                    bb[o] = Float.NaN;
+                    r.empty++;
+                    continue;
+                }
+                if (r.firstBad < 0) {
+                    for (double v : tmp) {
+                        if (!Double.isFinite(v)) r.firstBad = i;
+                    }
+                }
+                x0 = Math.min(x0, tmp[0]); y0 = Math.min(y0, tmp[1]); z0 = Math.min(z0, tmp[2]);
+                x1 = Math.max(x1, tmp[3]); y1 = Math.max(y1, tmp[4]); z1 = Math.max(z1, tmp[5]);
+                bb[o] = down(tmp[0]); bb[o + 1] = down(tmp[1]); bb[o + 2] = down(tmp[2]);
+                bb[o + 3] = up(tmp[3]); bb[o + 4] = up(tmp[4]); bb[o + 5] = up(tmp[5]);
+                p[i] = i;
+            }
+            r.ex[0] = x0; r.ex[1] = y0; r.ex[2] = z0; r.ex[3] = x1; r.ex[4] = y1; r.ex[5] = z1;
+            boxAndCentroids(bb, lo, hi, r.bc);
+            return r;
+        }
+
+        /**
+         * The box and doubled-centroid bounds of slots [lo, hi) (empty slots, marked NaN, left
+         * out), with {@link Splitter#bounds}'s strict comparisons: the first of equal values
+         * (+0 or -0) is kept, as a scan of the whole range in order would keep it.
+         */
+        static void boxAndCentroids(float[] p, int lo, int hi, float[] out) {
+            float x0 = Float.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Float.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+            float cx0 = x0, cy0 = x0, cz0 = x0, cx1 = x1, cy1 = x1, cz1 = x1;
+            for (int k = lo; k < hi; k++) {
+                int q = 6 * k;
+                float a = p[q], b = p[q + 1], c = p[q + 2], A = p[q + 3], B = p[q + 4], C = p[q + 5];
+                if (a != a) continue;
+                if (a < x0) x0 = a;
+                if (b < y0) y0 = b;
+                if (c < z0) z0 = c;
+                if (A > x1) x1 = A;
+                if (B > y1) y1 = B;
+                if (C > z1) z1 = C;
+                float mx = a + A, my = b + B, mz = c + C;
+                if (mx < cx0) cx0 = mx;
+                if (my < cy0) cy0 = my;
+                if (mz < cz0) cz0 = mz;
+                if (mx > cx1) cx1 = mx;
+                if (my > cy1) cy1 = my;
+                if (mz > cz1) cz1 = mz;
+            }
+            out[0] = x0; out[1] = y0; out[2] = z0; out[3] = x1; out[4] = y1; out[5] = z1;
+            out[6] = cx0; out[7] = cy0; out[8] = cz0; out[9] = cx1; out[10] = cy1; out[11] = cz1;
+        }
+
+        /** Joins the block after this one into this one (the order keeps the first of equal values). */
+        Prep then(Prep r) {
+            empty += r.empty;
+            if (firstBad < 0) firstBad = r.firstBad;
+            for (int a = 0; a < 3; a++) {
+                ex[a] = Math.min(ex[a], r.ex[a]);
+                ex[3 + a] = Math.max(ex[3 + a], r.ex[3 + a]);
+                if (r.bc[a] < bc[a]) bc[a] = r.bc[a];
+                if (r.bc[3 + a] > bc[3 + a]) bc[3 + a] = r.bc[3 + a];
+                if (r.bc[6 + a] < bc[6 + a]) bc[6 + a] = r.bc[6 + a];
+                if (r.bc[9 + a] > bc[9 + a]) bc[9 + a] = r.bc[9 + a];
+            }
+            return this;
+        }
+    }
+
+    /** Reads a range of primitives' bounds, halves of large ranges in parallel. */
+    private static final class PrepTask extends RecursiveTask<Prep> {
+        /** Blocks of at most this many primitives are read by one thread. */
+        private static final int BLOCK = 1 << 16;
+        private final PrimitiveSet set;
+        private final float[] bb;
+        private final int[] p;
+        private final int lo, hi;
+
+        PrepTask(PrimitiveSet set, float[] bb, int[] p, int lo, int hi) { this.set = set; this.bb = bb; this.p = p; this.lo = lo; this.hi = hi; }
+
+        @Override
+        protected Prep compute() {
+            if (hi - lo <= BLOCK) return Prep.range(set, bb, p, lo, hi);
+            int mid = (lo + hi) >>> 1;
+            PrepTask right = new PrepTask(set, bb, p, mid, hi);
+            right.fork();
+            Prep left = new PrepTask(set, bb, p, lo, mid).compute();
+            return left.then(right.join());
+        }
+    }
+
+    /** Makes the {@link Builder} inside the pool, so that reading the bounds can fork. */
+    private static final class Prepare extends RecursiveTask<Builder> {
+        private final PrimitiveSet set;
+        private final int leafSize;
+        private final ForkJoinPool pool;
+
+        Prepare(PrimitiveSet set, int leafSize, ForkJoinPool pool) { this.set = set; this.leafSize = leafSize; this.pool = pool; }
+
+        @Override
+        protected Builder compute() { return new Builder(set, leafSize, pool); }
     }
 
     /** A built piece of the tree: a serially built chunk, or one inner node over two parts. */
@@ -469,6 +612,7 @@ public final class Bvh implements Accelerator {
                 return new Part(c);
             }
             Splitter sp = new Splitter(b.pb, b.perm);
+            sp.forkBins = true;
             float[] lr = new float[24];
             long split = sp.split(s, e, bc, 0, d, lr, 0);
             int mid = (int) (split >> 2), axis = (int) (split & 3);
@@ -478,6 +622,39 @@ public final class Bvh implements Accelerator {
             Part l = left.compute();
             Part r = right.join();
             return new Part(java.util.Arrays.copyOf(bc, 6), axis, d, l, r);
+        }
+    }
+
+    /**
+     * Bins a large range in blocks on the fork/join pool (the root's 2M primitives would
+     * otherwise be read by one thread while the others wait): each half into bins of its own,
+     * then merged into the splitter's. How the range is cut depends on its size alone.
+     */
+    private static final class BinTask extends java.util.concurrent.RecursiveAction {
+        /** Ranges of fewer than twice this many primitives are binned by one thread. */
+        static final int BLOCK = 1 << 17;
+        private final Splitter into;
+        private final int s, e, nb;
+        private final float mx, my, mz, sx, sy, sz;
+
+        BinTask(Splitter into, int s, int e, int nb, float mx, float my, float mz, float sx, float sy, float sz) {
+            this.into = into; this.s = s; this.e = e; this.nb = nb;
+            this.mx = mx; this.my = my; this.mz = mz; this.sx = sx; this.sy = sy; this.sz = sz;
+        }
+
+        @Override
+        protected void compute() {
+            if (e - s < 2 * BLOCK) {
+                into.binRange(s, e, nb, mx, my, mz, sx, sy, sz);
+                return;
+            }
+            int mid = (s + e) >>> 1;
+            Splitter other = new Splitter(into.pb, into.perm);
+            BinTask right = new BinTask(other, mid, e, nb, mx, my, mz, sx, sy, sz);
+            right.fork();
+            new BinTask(into, s, mid, nb, mx, my, mz, sx, sy, sz).compute();
+            right.join();
+            into.mergeBins(other, nb);
         }
     }
 
@@ -557,6 +734,8 @@ public final class Bvh implements Accelerator {
         final float[] binBox = new float[2 * 3 * BINS * 6];
         final double[] rightArea = new double[BINS];
         final int[] rightCount = new int[BINS];
+        /** Whether large ranges are binned in blocks on the fork/join pool this runs in. */
+        boolean forkBins;
 
         Splitter(float[] pb, int[] perm) { this.pb = pb; this.perm = perm; }
 
@@ -658,7 +837,11 @@ public final class Bvh implements Accelerator {
             float ex = bc[o6 + 9] - bc[o6 + 6], ey = bc[o6 + 10] - bc[o6 + 7], ez = bc[o6 + 11] - bc[o6 + 8];
             float sx = ex > 0 ? nb / ex : 0, sy = ey > 0 ? nb / ey : 0, sz = ez > 0 ? nb / ez : 0;
             float mx = bc[o6 + 6], my = bc[o6 + 7], mz = bc[o6 + 8];
-            binRange(s, e, nb, mx, my, mz, sx, sy, sz);
+            if (forkBins && e - s >= 2 * BinTask.BLOCK) {
+                new BinTask(this, s, e, nb, mx, my, mz, sx, sy, sz).invoke();
+            } else {
+                binRange(s, e, nb, mx, my, mz, sx, sy, sz);
+            }
             double leafCost = (double) (e - s) * area((double) bc[o6 + 3] - bc[o6], (double) bc[o6 + 4] - bc[o6 + 1], (double) bc[o6 + 5] - bc[o6 + 2]);
             double best = leafCost;
             int bestAxis = -1, bestBin = -1;
@@ -706,7 +889,7 @@ public final class Bvh implements Accelerator {
          * own, as is {@link #partition}: small methods are compiled sooner and each on its own,
          * which matters in a new JVM, where the first passes over millions of primitives run.
          */
-        private void binRange(int s, int e, int nb, float mx, float my, float mz, float sx, float sy, float sz) {
+        void binRange(int s, int e, int nb, float mx, float my, float mz, float sx, float sy, float sz) {
             final int[] cnt0 = binCount;
             final float[] bb = binBox;
             // Small ranges use one set: a second would cost more to clear and merge than it saves.
@@ -755,6 +938,21 @@ public final class Bvh implements Accelerator {
                 if (i % BINS >= nb || cnt0[j] == 0) continue; // bins past nb hold stale values
                 cnt0[i] += cnt0[j];
                 grow(bb, 6 * i, bb[6 * j], bb[6 * j + 1], bb[6 * j + 2], bb[6 * j + 3], bb[6 * j + 4], bb[6 * j + 5]);
+            }
+        }
+
+        /**
+         * Adds the first nb bins per axis of {@code o} (binned by {@link #binRange} with the same
+         * grid) into this one's. Counts add and min/max are exact, so bins filled block by block
+         * and merged are the very bins one pass over the whole range fills.
+         */
+        void mergeBins(Splitter o, int nb) {
+            final int[] cnt0 = binCount;
+            final float[] bb = binBox, ob = o.binBox;
+            for (int i = 0; i < 3 * BINS; i++) {
+                if (i % BINS >= nb || o.binCount[i] == 0) continue;
+                cnt0[i] += o.binCount[i];
+                grow(bb, 6 * i, ob[6 * i], ob[6 * i + 1], ob[6 * i + 2], ob[6 * i + 3], ob[6 * i + 4], ob[6 * i + 5]);
             }
         }
 

@@ -87,6 +87,11 @@ public final class WideBvh implements Accelerator {
 
     public int nodeCount() { return nodeCount; }
 
+    /** The node arrays, shared, not copied (for tests comparing collapses). */
+    byte[] planes() { return q; }
+    float[] frames() { return frame; }
+    int[] links() { return child; }
+
     /** How many leaves reference each of the first {@code slots} leaf slots (for tests). */
     int[] leafSlotCounts(int slots) {
         int[] seen = new int[slots];

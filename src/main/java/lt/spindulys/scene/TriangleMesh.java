@@ -6,6 +6,8 @@ import lt.spindulys.trace.ShadingData;
 import lt.spindulys.trace.SpanBuffer;
 
 import java.util.Arrays;
+import java.util.concurrent.ForkJoinTask;
+import java.util.concurrent.RecursiveAction;
 
 import lt.spindulys.accel.Accelerator;
 import lt.spindulys.accel.BruteForce;
@@ -444,9 +446,12 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         int n = triangleCount;
         // Only the geometry's owner, and only before any structure (which would index the old order) exists.
         if (order.length != n || prototype != null || !structures.isEmpty()) return false;
-        permuteTriangles(tri, order);
-        if (triNormal != null) permuteTriangles(triNormal, order);
-        if (triUv != null) permuteTriangles(triUv, order);
+        // Called from inside a fork/join pool (the parallel BVH build does), the copies are split
+        // across it; each element lands where the serial copy puts it.
+        boolean fork = ForkJoinTask.inForkJoinPool();
+        permuteTriangles(tri, order, fork);
+        if (triNormal != null) permuteTriangles(triNormal, order, fork);
+        if (triUv != null) permuteTriangles(triUv, order, fork);
         int nv = pos.length / 3;
         int[] newId = new int[nv];
         Arrays.fill(newId, -1);
@@ -457,21 +462,61 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
             tri[k] = newId[v];
         }
         for (int v = 0; v < nv; v++) if (newId[v] < 0) newId[v] = next++; // unused vertices keep a slot at the end
-        pos = permuteVertices(pos, newId);
-        if (vertexNormals != null) vertexNormals = permuteVertices(vertexNormals, newId);
+        pos = permuteVertices(pos, newId, fork);
+        if (vertexNormals != null) vertexNormals = permuteVertices(vertexNormals, newId, fork);
         return true;
     }
 
-    private static void permuteTriangles(int[] a, int[] order) {
+    /** Ranges of at least this many triangles or vertices are copied in two halves on the pool. */
+    private static final int COPY_GRAIN = 1 << 16;
+
+    private static void permuteTriangles(int[] a, int[] order, boolean fork) {
         int[] old = a.clone();
-        for (int k = 0; k < order.length; k++) System.arraycopy(old, 3 * order[k], a, 3 * k, 3);
+        new Permute(a, old, order, null, 0, order.length, fork).invoke();
     }
 
     /** A renumbered copy: the positions may be shared with other meshes made from the same data. */
-    private static double[] permuteVertices(double[] a, int[] newId) {
+    private static double[] permuteVertices(double[] a, int[] newId, boolean fork) {
         double[] out = new double[a.length];
-        for (int v = 0; v < newId.length; v++) System.arraycopy(a, 3 * v, out, 3 * newId[v], 3);
+        new Permute(null, null, newId, new double[][] {a, out}, 0, newId.length, fork).invoke();
         return out;
+    }
+
+    /**
+     * Copies a range of triangles into their new slots (a[3k..] = old[3 order[k]..]) or of
+     * vertices to their new numbers (xyz[1][3 newId[v]..] = xyz[0][3v..]), halves of large
+     * ranges in parallel when {@code fork}.
+     */
+    private static final class Permute extends RecursiveAction {
+        private final int[] a, old, map;
+        private final double[][] xyz;
+        private final int lo, hi;
+        private final boolean fork;
+
+        Permute(int[] a, int[] old, int[] map, double[][] xyz, int lo, int hi, boolean fork) {
+            this.a = a; this.old = old; this.map = map; this.xyz = xyz; this.lo = lo; this.hi = hi; this.fork = fork;
+        }
+
+        @Override
+        protected void compute() {
+            if (fork && hi - lo >= 2 * COPY_GRAIN) {
+                int mid = (lo + hi) >>> 1;
+                invokeAll(new Permute(a, old, map, xyz, lo, mid, true), new Permute(a, old, map, xyz, mid, hi, true));
+                return;
+            }
+            if (xyz == null) {
+                for (int k = lo; k < hi; k++) {
+                    int o = 3 * map[k], t = 3 * k;
+                    a[t] = old[o]; a[t + 1] = old[o + 1]; a[t + 2] = old[o + 2];
+                }
+            } else {
+                double[] from = xyz[0], to = xyz[1];
+                for (int v = lo; v < hi; v++) {
+                    int o = 3 * map[v], f = 3 * v;
+                    to[o] = from[f]; to[o + 1] = from[f + 1]; to[o + 2] = from[f + 2];
+                }
+            }
+        }
     }
 
     @Override

@@ -2,6 +2,7 @@ package lt.spindulys.accel;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.ArrayList;
@@ -339,6 +340,67 @@ class BvhTest {
         assertTrue(java.util.Arrays.equals(parallel.nodes(), serial.nodes()));
         assertTrue(java.util.Arrays.equals(parallel.perm(), serial.perm()));
         assertEquals(parallel.sahCost(), serial.sahCost());
+    }
+
+    @Test
+    void theTreeIsTheSameForAnyThreadCountAndTheOneTheEarlierBuildMade() {
+        // Large enough for the root's binning to be split into blocks across the pool.
+        Spheres set = randomSpheres(53, 300_000);
+        Bvh one = new Bvh(set, Bvh.DEFAULT_LEAF_SIZE, 1);
+        for (int threads : new int[] {2, 3}) {
+            Bvh many = new Bvh(set, Bvh.DEFAULT_LEAF_SIZE, threads);
+            assertTrue(java.util.Arrays.equals(one.nodes(), many.nodes()), threads + " threads");
+            assertTrue(java.util.Arrays.equals(one.perm(), many.perm()), threads + " threads");
+        }
+        // Checksums of the node records and the permutation the build before issue 18's
+        // parallel top levels made for this set: the faster build makes the very same tree.
+        assertEquals(201_599, one.nodeCount());
+        assertEquals(0xc428d3a8L, crc(one.nodes()));
+        assertEquals(0xe862317bL, crc(one.perm()));
+        // With empty primitives among them (left out, the rest closing up): the same on the pool too.
+        double[] c = randomSpheres(59, 100_000).c().clone();
+        for (int i = 0; i < 100_000; i += 7) c[4 * i + 3] = -1;
+        Bvh gaps1 = new Bvh(new Spheres(c), Bvh.DEFAULT_LEAF_SIZE, 1), gaps2 = new Bvh(new Spheres(c), Bvh.DEFAULT_LEAF_SIZE, 2);
+        assertEquals(100_000 - 14_286, gaps1.primitiveCount());
+        assertTrue(java.util.Arrays.equals(gaps1.nodes(), gaps2.nodes()));
+        assertTrue(java.util.Arrays.equals(gaps1.perm(), gaps2.perm()));
+        assertEquals(gaps1.bounds(), gaps2.bounds());
+    }
+
+    @Test
+    void aMeshIsRenumberedTheSameWithAnyThreadCount() {
+        // Enough triangles and vertices for the renumbering's copies to be split across the pool.
+        MeshData d = TestMeshes.icosphere(7, 1);
+        TriangleMesh one = new TriangleMesh(d), two = new TriangleMesh(d);
+        assertNull(new Bvh(one, Bvh.DEFAULT_LEAF_SIZE, 1).perm());
+        assertNull(new Bvh(two, Bvh.DEFAULT_LEAF_SIZE, 2).perm());
+        assertTrue(one.triangleCount() > 300_000);
+        for (int t = 0; t < one.triangleCount(); t++) {
+            for (int c = 0; c < 3; c++) assertEquals(one.triangleVertex(t, c), two.triangleVertex(t, c));
+        }
+        assertTrue(java.util.Arrays.equals(one.data().positions(), two.data().positions()));
+        assertTrue(java.util.Arrays.equals(one.data().uvIndex(), two.data().uvIndex()));
+    }
+
+    @Test
+    void nonFiniteBoundsAreReportedAsBeforeWhateverTheThreadCount() {
+        // Large enough for the bounds to be read on the pool: the message must not come wrapped.
+        double[] c = new double[4 * 20_000];
+        for (int i = 0; i < 20_000; i++) { c[4 * i] = i; c[4 * i + 3] = 0.5; }
+        c[4 * 15_000 + 1] = Double.NaN;
+        c[4 * 17_000 + 2] = Double.POSITIVE_INFINITY;
+        for (int threads : new int[] {1, 2}) {
+            IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                    () -> new Bvh(new Spheres(c), Bvh.DEFAULT_LEAF_SIZE, threads));
+            assertEquals("primitive 15000 has non-finite bounds [14999.5, NaN, -0.5, 15000.5, NaN, 0.5]", e.getMessage());
+        }
+    }
+
+    /** CRC-32 of the ints' little-endian bytes. */
+    static long crc(int[] a) {
+        java.util.zip.CRC32 c = new java.util.zip.CRC32();
+        for (int v : a) { c.update(v); c.update(v >> 8); c.update(v >> 16); c.update(v >> 24); }
+        return c.getValue();
     }
 
     @Test

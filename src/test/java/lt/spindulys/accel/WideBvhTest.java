@@ -186,4 +186,22 @@ class WideBvhTest {
         assertTrue(w.nodeCount() <= binaryLeaves - 1, w.nodeCount() + " wide nodes");
         assertTrue(w.nodeCount() >= (binaryLeaves - 1) / 7, w.nodeCount() + " wide nodes");
     }
+
+    @Test
+    void theCollapseMakesTheNodesItMadeBefore() {
+        // A checksum of the wide nodes the collapse made at the start of issue 18's second pass,
+        // over a tree the build (on any thread count) makes the same: a change to the collapse
+        // that changes the nodes must be deliberate.
+        Bvh binary = new Bvh(BvhTest.randomSpheres(53, 300_000), Bvh.DEFAULT_LEAF_SIZE, 2);
+        WideBvh one = new WideBvh(binary);
+        java.util.zip.CRC32 c = new java.util.zip.CRC32();
+        c.update(one.planes());
+        for (float v : one.frames()) {
+            int x = Float.floatToRawIntBits(v);
+            c.update(x); c.update(x >> 8); c.update(x >> 16); c.update(x >> 24);
+        }
+        for (int x : one.links()) { c.update(x); c.update(x >> 8); c.update(x >> 16); c.update(x >> 24); }
+        assertEquals(32_667, one.nodeCount());
+        assertEquals(0x88d61cd0L, c.getValue());
+    }
 }
