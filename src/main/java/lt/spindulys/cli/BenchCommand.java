@@ -34,7 +34,8 @@ final class BenchCommand {
     static final String USAGE = """
             usage: render bench [--only NAME] [--runs N] [--accel A] [--peers LIST] [--cell-timeout S] [--list]
 
-              --only NAME   run only the row NAME, or the rows of the group NAME (see --list); the group
+              --only NAME   run only the row NAME, or the rows of the group NAME (see --list), or those of a
+                            comma-separated list of names; the group
                             'adaptive' (issue 16's rows, long: each cell is a new JVM) and the group 'viewer' (the
                             viewer's frame rate) run only when asked for
               --runs N      timed runs per row after the warm-up (default 5); the median is reported
@@ -55,7 +56,7 @@ final class BenchCommand {
      */
     private record Row(String name, String section, String description, Action action, String group) {
         Row(String name, String section, String description, Action action) { this(name, section, description, action, null); }
-        boolean selected(String only) { return only == null ? group == null : only.equals(name) || only.equals(group); }
+        boolean selected(List<String> only) { return only == null ? group == null : only.contains(name) || only.contains(group); }
     }
 
     @FunctionalInterface
@@ -139,7 +140,8 @@ final class BenchCommand {
     /** In-process renders before the timed ones, so the JIT has compiled the hot paths. */
     private static final int WARMUPS = 2;
 
-    private String only;
+    /** The rows or groups --only names, or null for every row without a group. */
+    private List<String> only;
     private int runs = 5;
     /** Structure the peer-scene rows use instead of their scenes' own; null keeps the scenes'. */
     private AcceleratorKind accel;
@@ -155,10 +157,12 @@ final class BenchCommand {
             switch (args[i]) {
                 case "--only" -> {
                     if (++i >= args.length) throw new UsageException("option --only needs a value");
-                    only = args[i];
-                    if (ROWS.stream().noneMatch(r -> r.name().equals(only) || only.equals(r.group()))) {
-                        throw new UsageException("unknown bench row '" + only + "' (rows: " + String.join(", ", ROWS.stream().map(Row::name).toList())
-                                + "; groups: " + ADAPTIVE + ", " + VIEWER + ")");
+                    only = List.of(args[i].split(",", -1));
+                    for (String o : only) {
+                        if (ROWS.stream().noneMatch(r -> r.name().equals(o) || o.equals(r.group()))) {
+                            throw new UsageException("unknown bench row '" + o + "' (rows: " + String.join(", ", ROWS.stream().map(Row::name).toList())
+                                    + "; groups: " + ADAPTIVE + ", " + VIEWER + ")");
+                        }
                     }
                 }
                 case "--runs" -> {
