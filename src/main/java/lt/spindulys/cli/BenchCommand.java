@@ -56,7 +56,7 @@ final class BenchCommand {
      */
     private record Row(String name, String section, String description, Action action, String group) {
         Row(String name, String section, String description, Action action) { this(name, section, description, action, null); }
-        boolean selected(List<String> only) { return only == null ? group == null : only.contains(name) || only.contains(group); }
+        boolean selected(List<String> only) { return only == null ? group == null : only.contains(name) || group != null && only.contains(group); }
     }
 
     @FunctionalInterface
