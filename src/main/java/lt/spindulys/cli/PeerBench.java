@@ -96,8 +96,12 @@ final class PeerBench {
     private final Path scratch;
     private final BenchTable table = new BenchTable("peer", "pairs", "peer render s", "ours", "peer Mrays/s", "ours", "speed ours/peer",
             "target", "peer wall s", "ours", "wall ours/peer", "target", "image |dL|", ">5% px");
+    /** The targets not met, for the summary line. */
     private final List<String> missed = new ArrayList<>();
+    /** Targets judged so far: none means no peer ran, and nothing is printed. */
     private int judged;
+    /** Our counted rays of a frame, as printed. */
+    private String raysLine = "?";
 
     private PeerBench(PrintStream out, String row, PeerView view, int pairs, int threads, Targets targets, Ours ours, Path scratch) {
         this.out = out;
@@ -184,8 +188,7 @@ final class PeerBench {
         if (rays > 0) raysLine = String.format(Locale.ROOT, "%,d", rays);
     }
 
-    private String raysLine = "?";
-
+    /** "met" or "NOT met", noting a miss for the summary line; an unknown figure (NaN) is a miss. */
     private String verdict(boolean met, String what) {
         judged++;
         if (!met) missed.add(what);
