@@ -26,8 +26,9 @@ import lt.spindulys.subdiv.RefinedMesh;
 /**
  * {@code render bench}: the project's fixed benchmark suite. Speed and memory targets live
  * here, not in timed tests. Every row warms the JVM up before it is timed and reports the median
- * of several runs; where a peer program is installed (OpenSubdiv's far_perf), the same input is
- * run through it in the same session and the ratio is printed beside our figure. Inputs are read
+ * of several runs; where a peer program is installed (OpenSubdiv's far_perf; Embree's pathtracer,
+ * POV-Ray and Blender's Cycles for the rows with peer targets, see {@link PeerBench}), the same
+ * input is run through it in the same session and the ratio is printed beside our figure. Inputs are read
  * from scenes/bench/ under the current folder (the repository root).
  */
 final class BenchCommand {
@@ -47,8 +48,8 @@ final class BenchCommand {
                             (comma-separated: embree, povray, cycles; default all three) that are on PATH, in --runs
                             alternated pairs each; 'none' runs none
               --list        list the rows and exit
-            Run from the repository root: inputs are read from scenes/bench/; the torus-* rows first write
-            their meshes into scenes/bench/meshes/ when missing. See docs/performance.md.""";
+            Run from the repository root: inputs are read from scenes/bench/; the torus-* and knot-* rows first
+            write their meshes into scenes/bench/meshes/ when missing. See docs/performance.md.""";
 
     /**
      * One benchmark row: a name, what it measures, and how; rows with a group run only when

@@ -180,9 +180,11 @@ final class PeerBench {
         double speed = medianRatio(peerRender, ourRender), wall = medianRatio(ourWall, peerWall);
         double minSpeed = targets.minSpeed().get(p), maxWall = targets.maxWall().get(p);
         table.add(p.label, Integer.toString(pairs), fmt(median(peerRender), 3), fmt(median(ourRender), 3),
-                fmt(rays / median(peerRender) / 1e6, 2), fmt(rays / median(ourRender) / 1e6, 2), fmt(speed, 2) + "x",
+                fmt(rays / median(peerRender) / 1e6, 2), fmt(rays / median(ourRender) / 1e6, 2),
+                fmt(speed, 2) + "x (" + fmt(median(peerRender) / median(ourRender), 2) + "x)",
                 ">= " + fmt(minSpeed, 1) + "x " + verdict(speed >= minSpeed, p.label + " render-only"),
-                fmt(median(peerWall), 3), fmt(median(ourWall), 3), fmt(wall, 2) + "x",
+                fmt(median(peerWall), 3), fmt(median(ourWall), 3),
+                fmt(wall, 2) + "x (" + fmt(median(ourWall) / median(peerWall), 2) + "x)",
                 (maxWall == 1.0 ? "< 1x " : "<= " + fmt(maxWall, 1) + "x ") + verdict(maxWall == 1.0 ? wall < 1 : wall <= maxWall, p.label + " whole process"),
                 fmt(diff.meanLuma(), 2), fmt(100 * diff.shareOff(), 2) + "%");
         if (rays > 0) raysLine = String.format(Locale.ROOT, "%,d", rays);
@@ -202,7 +204,8 @@ final class PeerBench {
         out.printf("  render s: tracing the frame only (ours: in this JVM after the row's warm-up; Embree: --benchmark 1 %d --legacy,%n", EMBREE_FRAMES);
         out.println("  the mean of its timed frames; POV-Ray: its Trace Time; Cycles: status line Sample 0/1 to Sample 1/1).");
         out.printf("  Mrays/s: our counted rays (%s camera and shadow rays) / render s, for both sides. speed ours/peer and%n", raysLine);
-        out.println("  wall ours/peer: medians of the pairs' ratios. wall s: whole processes (ours: java -cp render.jar ... as the cold");
+        out.println("  wall ours/peer: medians of the pairs' ratios (judged against the targets), in brackets the ratios of the medians;");
+        out.println("  far apart, the machine was too noisy to trust either. wall s: whole processes (ours: java -cp render.jar ... as the cold");
         out.println("  column), each after one untimed run. image |dL|: mean absolute luma difference from ours in 8-bit sRGB steps; >5% px:");
         out.println("  pixels off by more than 5 % (Embree and Cycles jitter their sample; edges differ). Images: target/bench-peers/.");
         out.printf("  %s: %s%n", row, missed.isEmpty() ? "every target met" : "not met: " + String.join(", ", missed));
