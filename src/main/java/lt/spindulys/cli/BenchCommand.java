@@ -26,15 +26,17 @@ import lt.spindulys.subdiv.RefinedMesh;
 /**
  * {@code render bench}: the project's fixed benchmark suite. Speed and memory targets live
  * here, not in timed tests. Every row warms the JVM up before it is timed and reports the median
- * of several runs; where a peer program is installed (OpenSubdiv's far_perf), the same input is
- * run through it in the same session and the ratio is printed beside our figure. Inputs are read
+ * of several runs; where a peer program is installed (OpenSubdiv's far_perf; Embree's pathtracer,
+ * POV-Ray and Blender's Cycles for the rows with peer targets, see {@link PeerBench}), the same
+ * input is run through it in the same session and the ratio is printed beside our figure. Inputs are read
  * from scenes/bench/ under the current folder (the repository root).
  */
 final class BenchCommand {
     static final String USAGE = """
-            usage: render bench [--only NAME] [--runs N] [--accel A] [--cell-timeout S] [--list]
+            usage: render bench [--only NAME] [--runs N] [--accel A] [--peers LIST] [--cell-timeout S] [--list]
 
-              --only NAME   run only the row NAME, or the rows of the group NAME (see --list); the group
+              --only NAME   run only the row NAME, or the rows of the group NAME (see --list), or those of a
+                            comma-separated list of names; the group
                             'adaptive' (issue 16's rows, long: each cell is a new JVM) and the group 'viewer' (the
                             viewer's frame rate) run only when asked for
               --runs N      timed runs per row after the warm-up (default 5); the median is reported
@@ -42,9 +44,12 @@ final class BenchCommand {
               --cell-timeout S  stop an adaptive-row cell after S seconds (default 600) and report it as stopped
               --accel A     acceleration structure of the peer-scene rows: bvh (the scenes' default),
                             bvh2, octree or bruteforce; to compare structures on the same scene
+              --peers LIST  peer renderers run beside the rows torus-1m, knot-1m and torus-1m-close, those of LIST
+                            (comma-separated: embree, povray, cycles; default all three) that are on PATH, in --runs
+                            alternated pairs each; 'none' runs none
               --list        list the rows and exit
-            Run from the repository root: inputs are read from scenes/bench/; the torus-* rows first write
-            their meshes into scenes/bench/meshes/ when missing. See docs/performance.md.""";
+            Run from the repository root: inputs are read from scenes/bench/; the torus-* and knot-* rows first
+            write their meshes into scenes/bench/meshes/ when missing. See docs/performance.md.""";
 
     /**
      * One benchmark row: a name, what it measures, and how; rows with a group run only when
@@ -52,11 +57,14 @@ final class BenchCommand {
      */
     private record Row(String name, String section, String description, Action action, String group) {
         Row(String name, String section, String description, Action action) { this(name, section, description, action, null); }
-        boolean selected(String only) { return only == null ? group == null : only.equals(name) || only.equals(group); }
+        boolean selected(List<String> only) { return only == null ? group == null : only.contains(name) || group != null && only.contains(group); }
     }
 
     @FunctionalInterface
     private interface Action { void run(BenchCommand bench, PrintStream out) throws IOException; }
+
+    /** The section of the views where a dense mesh fills the frame (issue 18). */
+    private static final String FILLING = "Peer scene, mesh-filling views";
 
     /** The group of the issue-16 rows. */
     static final String ADAPTIVE = "adaptive";
@@ -68,6 +76,14 @@ final class BenchCommand {
                     "catmark_bishop (968 quads, 224 creases) refined uniformly to level 6 (~4M quads) on one thread; beside far_perf -u",
                     (b, out) -> b.refinement(out, "catmark_bishop.obj", 6)),
             torusRow("1k"), torusRow("16k"), torusRow("250k"), torusRow("1m"),
+            new Row("knot-1m", FILLING,
+                    String.format(Locale.ROOT, "scenes/bench/knot-1m.dat: a tube of %,d triangles around a trefoil knot filling the frame, on the ground quad, "
+                            + "1280x720, 1 spp, %d threads; in-process and cold process; beside the peers", BenchMeshes.KNOT_1M.triangles(), BenchCommand.THREADS),
+                    (b, out) -> b.peerScene(out, BenchMeshes.KNOT_1M, "knot-1m", PeerBench.Targets.issue18(0.8))),
+            new Row("torus-1m-close", FILLING,
+                    String.format(Locale.ROOT, "scenes/bench/torus-1m-close.dat: the 1m torus close up, filling the frame, "
+                            + "1280x720, 1 spp, %d threads; in-process and cold process; beside the peers", BenchCommand.THREADS),
+                    (b, out) -> b.peerScene(out, BenchMeshes.size("1m"), "torus-1m-close", PeerBench.Targets.issue18(0.8))),
             new Row("csg-subdiv", "CSG",
                     "scenes/bench/csg-subdiv.dat: difference of two level-4 subdivision surfaces, 1280x720, 1 spp, 2 threads; "
                             + "beside csg-subdiv-plain.dat, the same two surfaces without CSG (target: at least half its speed)",
@@ -107,15 +123,17 @@ final class BenchCommand {
         String name = "torus-" + size + "-" + variant;
         return new Row(name, "Peer scene, subdivision",
                 String.format(Locale.ROOT, "scenes/bench/%s.dat: %s, 1280x720, 1 spp, %d threads; in-process and cold process", name, what, THREADS),
-                (b, out) -> b.peerScene(out, s, name), ADAPTIVE);
+                (b, out) -> b.peerScene(out, s, name, null), ADAPTIVE);
     }
 
     private static Row torusRow(String size) {
         BenchMeshes.Size s = BenchMeshes.size(size);
+        // The 1m torus is the size issue 18 sets targets for beside the peers.
+        PeerBench.Targets targets = size.equals("1m") ? PeerBench.Targets.issue18(1.0) : null;
         return new Row("torus-" + size, "Peer scene",
-                String.format(Locale.ROOT, "scenes/bench/torus-%s.dat: torus of %,d triangles on a ground quad, 1280x720, 1 spp, %d threads; in-process and cold process",
-                        size, s.triangles(), THREADS),
-                (b, out) -> b.peerScene(out, s));
+                String.format(Locale.ROOT, "scenes/bench/torus-%s.dat: torus of %,d triangles on a ground quad, 1280x720, 1 spp, %d threads; in-process and cold process%s",
+                        size, s.triangles(), THREADS, targets != null ? "; beside the peers" : ""),
+                (b, out) -> b.peerScene(out, s, "torus-" + size, targets));
     }
 
     /** Render threads of the peer-scene rows: the peers' protocol uses two everywhere. */
@@ -123,11 +141,14 @@ final class BenchCommand {
     /** In-process renders before the timed ones, so the JIT has compiled the hot paths. */
     private static final int WARMUPS = 2;
 
-    private String only;
+    /** The rows or groups --only names, or null for every row without a group. */
+    private List<String> only;
     private int runs = 5;
     /** Structure the peer-scene rows use instead of their scenes' own; null keeps the scenes'. */
     private AcceleratorKind accel;
     private boolean list;
+    /** The peer renderers the rows with peer targets run beside ours (when on PATH). */
+    private java.util.Set<PeerBench.Peer> peers = java.util.EnumSet.allOf(PeerBench.Peer.class);
     /** Seconds an adaptive-row cell (a child JVM) may take before it is stopped. */
     private int cellTimeout = 600;
     private final Path benchDir = Path.of("scenes", "bench");
@@ -137,10 +158,12 @@ final class BenchCommand {
             switch (args[i]) {
                 case "--only" -> {
                     if (++i >= args.length) throw new UsageException("option --only needs a value");
-                    only = args[i];
-                    if (ROWS.stream().noneMatch(r -> r.name().equals(only) || only.equals(r.group()))) {
-                        throw new UsageException("unknown bench row '" + only + "' (rows: " + String.join(", ", ROWS.stream().map(Row::name).toList())
-                                + "; groups: " + ADAPTIVE + ", " + VIEWER + ")");
+                    only = List.of(args[i].split(",", -1));
+                    for (String o : only) {
+                        if (ROWS.stream().noneMatch(r -> r.name().equals(o) || o.equals(r.group()))) {
+                            throw new UsageException("unknown bench row '" + o + "' (rows: " + String.join(", ", ROWS.stream().map(Row::name).toList())
+                                    + "; groups: " + ADAPTIVE + ", " + VIEWER + ")");
+                        }
                     }
                 }
                 case "--runs" -> {
@@ -168,6 +191,10 @@ final class BenchCommand {
                         throw new UsageException("--cell-timeout expects a whole number of seconds, found '" + args[i] + "'");
                     }
                     if (cellTimeout < 1 || cellTimeout > 86400) throw new UsageException("--cell-timeout must be between 1 and 86400 seconds, found " + cellTimeout);
+                }
+                case "--peers" -> {
+                    if (++i >= args.length) throw new UsageException("option --peers needs a value");
+                    peers = PeerBench.Peer.parse(args[i]);
                 }
                 case "--list" -> list = true;
                 default -> throw new UsageException("unknown bench option '" + args[i] + "' (see render bench --help)");
@@ -215,10 +242,6 @@ final class BenchCommand {
 
     private BenchTable peerTable;
 
-    private void peerScene(PrintStream out, BenchMeshes.Size size) throws IOException {
-        peerScene(out, size, "torus-" + size.name());
-    }
-
     /** The adaptive rows, in a scratch folder that is removed afterwards. */
     private void adaptive(PrintStream out, AdaptiveAction action) throws IOException {
         AdaptiveBench a = new AdaptiveBench(runs, cellTimeout, out);
@@ -232,8 +255,12 @@ final class BenchCommand {
     @FunctionalInterface
     private interface AdaptiveAction { void run(AdaptiveBench a) throws IOException; }
 
-    /** The peer view with the scene scenes/bench/NAME.dat (the plain torus or a subdivision variant of its cage). */
-    private void peerScene(PrintStream out, BenchMeshes.Size size, String name) throws IOException {
+    /**
+     * The scene scenes/bench/NAME.dat, whose mesh is {@code size} on the ground quad (the peer
+     * view of the torus, a subdivision variant of its cage, or a mesh-filling view); with
+     * {@code targets}, the peers run on the same view afterwards.
+     */
+    private void peerScene(PrintStream out, BenchMeshes.Shape size, String name, PeerBench.Targets targets) throws IOException {
         Path meshes = benchDir.resolve("meshes");
         long g0 = System.nanoTime();
         BenchMeshes.ensure(meshes, size);
@@ -269,6 +296,14 @@ final class BenchCommand {
         out.printf(Locale.ROOT, "  %s: load %.3f s, build %.3f s, render %.3f s (%.2f Mrays/s), cold %.3f s%n", label,
                 median(load), median(build), median(render), median(mrays), cold);
         for (String line : last.subdivision) out.println("    " + line);
+        if (targets != null && !peers.isEmpty()) {
+            PeerView view = PeerView.of(SceneParser.parse(scene),
+                    List.of(meshes.resolve(size.file()).toAbsolutePath(), meshes.resolve(BenchMeshes.GROUND_FILE).toAbsolutePath()));
+            PeerBench.run(out, label, view, peers, runs, THREADS, targets, new PeerBench.Ours() {
+                @Override public Measured render() throws IOException { return renderOnce(scene, accel); }
+                @Override public double cold() throws IOException { return coldOnce(scene, accel); }
+            });
+        }
     }
 
     // ---- CSG ----
@@ -415,6 +450,17 @@ final class BenchCommand {
      * program's own classes, after one untimed run; NaN if a run fails.
      */
     private static double coldSeconds(Path scene, int runs, AcceleratorKind accel) throws IOException {
+        double[] t = new double[runs];
+        for (int i = -1; i < runs; i++) {
+            double s = coldOnce(scene, accel);
+            if (Double.isNaN(s)) return Double.NaN;
+            if (i >= 0) t[i] = s;
+        }
+        return median(t);
+    }
+
+    /** Wall time of one whole new process rendering {@code scene} with this program's own classes; NaN if it fails. */
+    static double coldOnce(Path scene, AcceleratorKind accel) throws IOException {
         String javaExe = Path.of(System.getProperty("java.home"), "bin", "java").toString();
         String cp;
         try {
@@ -431,23 +477,19 @@ final class BenchCommand {
             cmd.addAll(List.of("-cp", cp, Main.class.getName(), scene.toString(), "-o", image.toString(),
                     "--quiet", "--threads", Integer.toString(THREADS)));
             if (accel != null) cmd.addAll(List.of("--accel", accel.keyword()));
-            double[] t = new double[runs];
-            for (int i = -1; i < runs; i++) {
-                long t0 = System.nanoTime();
-                Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
-                try {
-                    if (!p.waitFor(10, java.util.concurrent.TimeUnit.MINUTES) || p.exitValue() != 0) {
-                        p.destroyForcibly();
-                        return Double.NaN;
-                    }
-                } catch (InterruptedException e) {
+            long t0 = System.nanoTime();
+            Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+            try {
+                if (!p.waitFor(10, java.util.concurrent.TimeUnit.MINUTES) || p.exitValue() != 0) {
                     p.destroyForcibly();
-                    Thread.currentThread().interrupt();
                     return Double.NaN;
                 }
-                if (i >= 0) t[i] = (System.nanoTime() - t0) / 1e9;
+            } catch (InterruptedException e) {
+                p.destroyForcibly();
+                Thread.currentThread().interrupt();
+                return Double.NaN;
             }
-            return median(t);
+            return (System.nanoTime() - t0) / 1e9;
         } finally {
             Files.deleteIfExists(image);
         }

@@ -17,21 +17,59 @@ import lt.spindulys.files.AtomicFile;
  * coordinates, and a 40 x 40 ground quad at y = -0.4. The text is the same, byte for byte, as
  * the peer kit's generator writes, so every renderer reads identical numbers; quads are split
  * along their v0-v2 diagonal by every reader, ours included. Large sizes are generated on demand
- * rather than kept in the repository.
+ * rather than kept in the repository. Also the mesh of the mesh-filling view knot-1m (issue 18):
+ * a tube around a (2, 3) torus knot, resting on the same ground.
  */
 final class BenchMeshes {
-    /** A torus size: its name in file names and its quads around the ring and the tube. */
-    record Size(String name, int nu, int nv) {
-        long quads() { return (long) nu * nv; }
-        long triangles() { return 2 * quads(); }
-        String file() { return "torus_" + name + ".obj"; }
+    /** A generated bench mesh: its file in scenes/bench/meshes/, its size, and how to write it. */
+    interface Shape {
+        String file();
+        long quads();
+        default long triangles() { return 2 * quads(); }
+        void write(OutputStream out) throws IOException;
     }
+
+    /** A torus size: its name in file names and its quads around the ring and the tube. */
+    record Size(String name, int nu, int nv) implements Shape {
+        @Override public long quads() { return (long) nu * nv; }
+        @Override public String file() { return "torus_" + name + ".obj"; }
+        @Override public void write(OutputStream out) throws IOException { writeTorus(out, this); }
+    }
+
+    /**
+     * A closed tube of radius {@code tube} around the (p, q) torus knot that winds p times about
+     * the +Y axis and q times through the hole of a torus of radii {@code major} and
+     * {@code minor}, lifted so that its lowest points touch the ground; {@code nu} quads along
+     * the knot, {@code nv} around the tube. Positions and faces only: the views it serves are
+     * untextured, and a reader that skips no texture coordinates is not slowed by them.
+     */
+    record Knot(String name, int p, int q, double major, double minor, double tube, double phase, int nu, int nv) implements Shape {
+        @Override public long quads() { return (long) nu * nv; }
+        @Override public String file() { return "knot_" + name + ".obj"; }
+        @Override public void write(OutputStream out) throws IOException { writeKnot(out, this); }
+        /** The height of the knot's centre: its lowest points, minor + tube below it, touch the ground. */
+        double centreY() { return GROUND_Y + minor + tube; }
+    }
+
+    /**
+     * The knot of the knot-1m view: a trefoil whose strands are at least 0.89 apart (centre to
+     * centre), so a tube of radius 0.25 leaves gaps the light and the camera see through; 3,125 x
+     * 320 quads keep them roughly square (the knot is 15.3 long, the tube 1.57 round). The phase
+     * turns a lobe towards the camera, so the view is balanced.
+     */
+    static final Knot KNOT_1M = new Knot("1m", 2, 3, 1.0, 0.45, 0.25, Math.PI / 2, 3125, 320);
 
     static final Size[] SIZES = {
         new Size("1k", 32, 32), new Size("16k", 128, 128), new Size("250k", 500, 500), new Size("1m", 1000, 1000)};
 
     static final double MAJOR = 1.0, MINOR = 0.4, GROUND_Y = -0.4, GROUND_HALF = 20.0;
     static final String GROUND_FILE = "ground.obj";
+    /**
+     * The material library the meshes name. Our reader skips it; the peers that read OBJ files
+     * (Embree's tutorials, Blender) take the grey from it, so it is written beside the meshes.
+     */
+    static final String MATERIAL_FILE = "grey.mtl";
+    static final String MATERIAL_TEXT = "newmtl grey\nKd 0.8 0.8 0.8\nKs 0 0 0\nNs 1\nd 1\n";
 
     private BenchMeshes() {}
 
@@ -40,13 +78,15 @@ final class BenchMeshes {
         throw new IllegalArgumentException("unknown torus size " + name);
     }
 
-    /** Writes the ground and the torus of {@code size} into {@code dir} unless they are there already. */
-    static void ensure(Path dir, Size size) throws IOException {
+    /** Writes the ground, the material library and {@code shape} into {@code dir} unless they are there already. */
+    static void ensure(Path dir, Shape shape) throws IOException {
         Files.createDirectories(dir);
         Path ground = dir.resolve(GROUND_FILE);
         if (!Files.exists(ground)) AtomicFile.write(ground, BenchMeshes::writeGround);
-        Path torus = dir.resolve(size.file());
-        if (!Files.exists(torus)) AtomicFile.write(torus, out -> writeTorus(out, size));
+        Path mtl = dir.resolve(MATERIAL_FILE);
+        if (!Files.exists(mtl)) AtomicFile.write(mtl, out -> out.write(MATERIAL_TEXT.getBytes(StandardCharsets.US_ASCII)));
+        Path mesh = dir.resolve(shape.file());
+        if (!Files.exists(mesh)) AtomicFile.write(mesh, shape::write);
     }
 
     static void writeGround(OutputStream raw) throws IOException {
@@ -95,6 +135,62 @@ final class BenchMeshes {
                 long t0 = (long) i * (nv + 1) + j + 1, t1 = (long) (i + 1) * (nv + 1) + j + 1;
                 t.s("f ").i(p0).s("/").i(t0).s(" ").i(p1).s("/").i(t1).s(" ")
                         .i(p2).s("/").i(t1 + 1).s(" ").i(p3).s("/").i(t0 + 1).s("\n");
+            }
+        }
+        t.flush();
+    }
+
+    /**
+     * The knot's tube. Its frame at a point of the knot is the torus's surface normal there
+     * (the knot lies on the torus, so the normal is square to the knot's tangent) and the
+     * tangent crossed with it: periodic, never degenerate, and without the twist a
+     * parallel-transported frame would need closing. Vertex (i, j) sits at angle 2 pi j / nv
+     * round the tube at knot parameter t = 2 pi i / nu; quads are wound so the geometric normal
+     * points out of the tube, and indices wrap in both directions, so the mesh is closed.
+     */
+    static void writeKnot(OutputStream raw, Knot k) throws IOException {
+        Text t = new Text(raw);
+        int nu = k.nu(), nv = k.nv();
+        String name = "knot_" + k.name();
+        t.s("# " + name + ": " + k.quads() + " quads, " + k.quads() + " vertices, tube around the (" + k.p() + ", " + k.q() + ") torus knot\n");
+        t.s("mtllib " + MATERIAL_FILE + "\no " + name + "\nusemtl grey\n");
+        double[] cv = new double[nv], sv = new double[nv];
+        for (int j = 0; j < nv; j++) {
+            double v = 2.0 * Math.PI * j / nv;
+            cv[j] = Math.cos(v);
+            sv[j] = Math.sin(v);
+        }
+        double big = k.major(), small = k.minor(), y0 = k.centreY();
+        for (int i = 0; i < nu; i++) {
+            double s = 2.0 * Math.PI * i / nu;
+            double a = k.p() * s + k.phase(), b = k.q() * s;
+            double ca = Math.cos(a), sa = Math.sin(a), cb = Math.cos(b), sb = Math.sin(b);
+            double rr = big + small * cb;
+            double cx = rr * ca, cy = small * sb + y0, cz = -rr * sa;
+            // torus normal n and tangent d/ds of the centre line
+            double nx = cb * ca, ny = sb, nz = -cb * sa;
+            double tx = -small * k.q() * sb * ca - rr * k.p() * sa;
+            double ty = small * k.q() * cb;
+            double tz = small * k.q() * sb * sa - rr * k.p() * ca;
+            double tl = Math.sqrt(tx * tx + ty * ty + tz * tz);
+            tx /= tl;
+            ty /= tl;
+            tz /= tl;
+            // m = t x n completes the frame (n, m) square to the tangent
+            double mx = ty * nz - tz * ny, my = tz * nx - tx * nz, mz = tx * ny - ty * nx;
+            for (int j = 0; j < nv; j++) {
+                double ox = k.tube() * (cv[j] * nx + sv[j] * mx), oy = k.tube() * (cv[j] * ny + sv[j] * my), oz = k.tube() * (cv[j] * nz + sv[j] * mz);
+                t.s("v ").num(cx + ox).s(" ").num(cy + oy).s(" ").num(cz + oz).s("\n");
+            }
+        }
+        for (int i = 0; i < nu; i++) {
+            int i1 = (i + 1) % nu;
+            for (int j = 0; j < nv; j++) {
+                int j1 = (j + 1) % nv;
+                // (n, m, t) is right-handed, so stepping round the tube (j) then along the knot (i)
+                // winds counter-clockwise seen from outside.
+                long p0 = (long) i * nv + j + 1, p1 = (long) i * nv + j1 + 1, p2 = (long) i1 * nv + j1 + 1, p3 = (long) i1 * nv + j + 1;
+                t.s("f ").i(p0).s(" ").i(p1).s(" ").i(p2).s(" ").i(p3).s("\n");
             }
         }
         t.flush();

@@ -234,9 +234,16 @@ class CliTest {
         assertEquals(2, run("bench", "--cell-timeout", "0").status());
         Run unknown = run("bench", "--only", "nope");
         assertEquals(2, unknown.status());
-        assertEquals("render: unknown bench row 'nope' (rows: refine-bishop, torus-1k, torus-16k, torus-250k, torus-1m, csg-subdiv, motion-blur, "
+        assertEquals("render: unknown bench row 'nope' (rows: refine-bishop, torus-1k, torus-16k, torus-250k, torus-1m, knot-1m, torus-1m-close, csg-subdiv, motion-blur, "
                 + "adaptive-close, adaptive-huge, adaptive-lazy, adaptive-cache, torus-1k-lazy, torus-1k-combined, torus-1k-level2, torus-1k-level2-lazy, viewer; "
                 + "groups: adaptive, viewer)" + System.lineSeparator(), unknown.err());
+        // A list names rows and groups; each must exist.
+        Run unknownInList = run("bench", "--only", "torus-1k,viewer,nope");
+        assertEquals(2, unknownInList.status());
+        assertTrue(unknownInList.err().startsWith("render: unknown bench row 'nope' (rows: "), unknownInList.err());
+        Run badPeer = run("bench", "--peers", "embree,sunflow");
+        assertEquals(2, badPeer.status());
+        assertEquals("render: unknown peer 'sunflow' in --peers (expected embree, povray, cycles or none)" + System.lineSeparator(), badPeer.err());
         Run badRuns = run("bench", "--runs", "0");
         assertEquals(2, badRuns.status());
         Run badAccel = run("bench", "--accel", "kdtree");
