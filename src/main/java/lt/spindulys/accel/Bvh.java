@@ -494,7 +494,7 @@ public final class Bvh implements Accelerator {
                 p[i] = i;
             }
             r.ex[0] = x0; r.ex[1] = y0; r.ex[2] = z0; r.ex[3] = x1; r.ex[4] = y1; r.ex[5] = z1;
-            boxAndCentroids(bb, lo, hi, r.bc);
+            boxAndCentroids(bb, lo, hi, r.bc, 0);
             return r;
         }
 
@@ -503,7 +503,7 @@ public final class Bvh implements Accelerator {
          * out), with {@link Splitter#bounds}'s strict comparisons: the first of equal values
          * (+0 or -0) is kept, as a scan of the whole range in order would keep it.
          */
-        static void boxAndCentroids(float[] p, int lo, int hi, float[] out) {
+        static void boxAndCentroids(float[] p, int lo, int hi, float[] out, int o) {
             float x0 = Float.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Float.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
             float cx0 = x0, cy0 = x0, cz0 = x0, cx1 = x1, cy1 = x1, cz1 = x1;
             for (int k = lo; k < hi; k++) {
@@ -524,8 +524,8 @@ public final class Bvh implements Accelerator {
                 if (my > cy1) cy1 = my;
                 if (mz > cz1) cz1 = mz;
             }
-            out[0] = x0; out[1] = y0; out[2] = z0; out[3] = x1; out[4] = y1; out[5] = z1;
-            out[6] = cx0; out[7] = cy0; out[8] = cz0; out[9] = cx1; out[10] = cy1; out[11] = cz1;
+            out[o] = x0; out[o + 1] = y0; out[o + 2] = z0; out[o + 3] = x1; out[o + 4] = y1; out[o + 5] = z1;
+            out[o + 6] = cx0; out[o + 7] = cy0; out[o + 8] = cz0; out[o + 9] = cx1; out[o + 10] = cy1; out[o + 11] = cz1;
         }
 
         /** Joins the block after this one into this one (the order keeps the first of equal values). */
@@ -756,28 +756,9 @@ public final class Bvh implements Accelerator {
          * out[o+6..o+11].
          */
         void bounds(int s, int e, float[] out, int o) {
-            float x0 = Float.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Float.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
-            float cx0 = x0, cy0 = x0, cz0 = x0, cx1 = x1, cy1 = x1, cz1 = x1;
-            final float[] p = pb;
-            for (int k = s; k < e; k++) {
-                int q = 6 * k;
-                float a = p[q], b = p[q + 1], c = p[q + 2], A = p[q + 3], B = p[q + 4], C = p[q + 5];
-                if (a < x0) x0 = a;
-                if (b < y0) y0 = b;
-                if (c < z0) z0 = c;
-                if (A > x1) x1 = A;
-                if (B > y1) y1 = B;
-                if (C > z1) z1 = C;
-                float mx = a + A, my = b + B, mz = c + C;
-                if (mx < cx0) cx0 = mx;
-                if (my < cy0) cy0 = my;
-                if (mz < cz0) cz0 = mz;
-                if (mx > cx1) cx1 = mx;
-                if (my > cy1) cy1 = my;
-                if (mz > cz1) cz1 = mz;
-            }
-            out[o] = x0; out[o + 1] = y0; out[o + 2] = z0; out[o + 3] = x1; out[o + 4] = y1; out[o + 5] = z1;
-            out[o + 6] = cx0; out[o + 7] = cy0; out[o + 8] = cz0; out[o + 9] = cx1; out[o + 10] = cy1; out[o + 11] = cz1;
+            // The slots hold no empty primitive here (they were left out when read), so the
+            // reader's scan, which skips them, gives exactly these bounds.
+            Prep.boxAndCentroids(pb, s, e, out, o);
         }
 
         private static double area(double dx, double dy, double dz) {
