@@ -13,6 +13,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 
 import lt.spindulys.limits.InputFiles;
 import lt.spindulys.limits.InsufficientMemoryException;
+import lt.spindulys.limits.PartThreads;
 import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.mesh.MeshData;
@@ -995,46 +996,14 @@ public final class ObjReader {
         }
 
         MeshData run(int threads) {
-            int helpers = Math.min(threads, parsed.length) - 1;
-            Thread[] workers = new Thread[Math.max(0, helpers)];
-            Throwable[] thrown = new Throwable[workers.length];
-            for (int i = 0; i < workers.length; i++) {
-                int w = i;
-                workers[i] = new Thread(() -> {
-                    try {
-                        work();
-                    } catch (Throwable t) {
-                        thrown[w] = t;
-                        failedAt.set(-1);
-                    }
-                }, "spindulys-obj-parse");
-                workers[i].setDaemon(true);
-                workers[i].start();
-            }
-            Throwable mine = null;
-            try {
-                work();
-            } catch (Throwable t) {
-                mine = t;
-                failedAt.set(-1);
-            }
-            // The helpers end within their current chunk; waiting is not interruptible, the interrupt is kept.
-            boolean interrupted = false;
-            for (int i = 0; i < workers.length; i++) {
-                while (true) {
-                    try {
-                        workers[i].join();
-                        break;
-                    } catch (InterruptedException e) {
-                        interrupted = true;
-                    }
+            PartThreads.run(Math.max(1, Math.min(threads, parsed.length)), "spindulys-obj-parse", k -> {
+                try {
+                    work();
+                } catch (RuntimeException | Error e) {
+                    failedAt.set(-1); // the others stop at their next chunk
+                    throw e;
                 }
-                if (mine == null) mine = thrown[i];
-            }
-            if (interrupted) Thread.currentThread().interrupt();
-            if (mine instanceof RuntimeException e) throw e;
-            if (mine instanceof Error e) throw e;
-            if (mine != null) throw new IllegalStateException(mine);
+            });
             return merge();
         }
 

@@ -87,40 +87,8 @@ public final class InputFiles {
         byte[] b = new byte[size];
         boolean whole;
         try (FileChannel channel = FileChannel.open(path)) {
-            Thread[] helpers = new Thread[threads - 1];
-            IOException[] failed = new IOException[threads];
             boolean[] complete = new boolean[threads];
-            for (int k = 1; k < threads; k++) {
-                int part = k;
-                helpers[k - 1] = new Thread(() -> {
-                    try {
-                        complete[part] = readPart(channel, b, part, threads);
-                    } catch (IOException e) {
-                        failed[part] = e;
-                    }
-                }, "spindulys-read");
-                helpers[k - 1].setDaemon(true);
-                helpers[k - 1].start();
-            }
-            try {
-                complete[0] = readPart(channel, b, 0, threads);
-            } catch (IOException e) {
-                failed[0] = e;
-            }
-            // The helpers' reads are bounded by the file; the wait is not interruptible, the interrupt is kept.
-            boolean interrupted = false;
-            for (Thread t : helpers) {
-                while (true) {
-                    try {
-                        t.join();
-                        break;
-                    } catch (InterruptedException e) {
-                        interrupted = true;
-                    }
-                }
-            }
-            if (interrupted) Thread.currentThread().interrupt();
-            for (IOException e : failed) if (e != null) throw e;
+            PartThreads.run(threads, "spindulys-read", k -> complete[k] = readPart(channel, b, k, threads));
             whole = channel.size() == size;
             for (boolean c : complete) whole &= c;
         }
