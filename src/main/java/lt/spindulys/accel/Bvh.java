@@ -82,7 +82,8 @@ public final class Bvh implements Accelerator {
         // A pool of our own: forks must not land in the common pool, whose size is not ours to choose.
         ForkJoinPool pool = threads > 1 && n >= Builder.PARALLEL_GRAIN ? new ForkJoinPool(threads) : null;
         try {
-            Builder b = pool == null ? new Builder(set, maxLeafSize, null) : pool.invoke(new Prepare(set, maxLeafSize, pool));
+            // Made inside the pool, so that reading the bounds can fork.
+            Builder b = pool == null ? new Builder(set, maxLeafSize, null) : pool.invoke(ForkJoinTask.adapt(() -> new Builder(set, maxLeafSize, pool)));
             if (b.nonFinite >= 0) {
                 double[] tmp = new double[6];
                 set.bounds(b.nonFinite, tmp);
@@ -564,18 +565,6 @@ public final class Bvh implements Accelerator {
             Prep left = new PrepTask(set, bb, p, lo, mid).compute();
             return left.then(right.join());
         }
-    }
-
-    /** Makes the {@link Builder} inside the pool, so that reading the bounds can fork. */
-    private static final class Prepare extends RecursiveTask<Builder> {
-        private final PrimitiveSet set;
-        private final int leafSize;
-        private final ForkJoinPool pool;
-
-        Prepare(PrimitiveSet set, int leafSize, ForkJoinPool pool) { this.set = set; this.leafSize = leafSize; this.pool = pool; }
-
-        @Override
-        protected Builder compute() { return new Builder(set, leafSize, pool); }
     }
 
     /** A built piece of the tree: a serially built chunk, or one inner node over two parts. */

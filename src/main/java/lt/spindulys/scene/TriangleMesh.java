@@ -7,7 +7,6 @@ import lt.spindulys.trace.SpanBuffer;
 
 import java.util.Arrays;
 import java.util.concurrent.ForkJoinTask;
-import java.util.concurrent.RecursiveAction;
 
 import lt.spindulys.accel.Accelerator;
 import lt.spindulys.accel.BruteForce;
@@ -472,50 +471,38 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
 
     private static void permuteTriangles(int[] a, int[] order, boolean fork) {
         int[] old = a.clone();
-        new Permute(a, old, order, null, 0, order.length, fork).invoke();
+        forRange(0, order.length, fork, (lo, hi) -> {
+            for (int k = lo; k < hi; k++) {
+                int o = 3 * order[k], t = 3 * k;
+                a[t] = old[o]; a[t + 1] = old[o + 1]; a[t + 2] = old[o + 2];
+            }
+        });
     }
 
     /** A renumbered copy: the positions may be shared with other meshes made from the same data. */
     private static double[] permuteVertices(double[] a, int[] newId, boolean fork) {
         double[] out = new double[a.length];
-        new Permute(null, null, newId, new double[][] {a, out}, 0, newId.length, fork).invoke();
+        forRange(0, newId.length, fork, (lo, hi) -> {
+            for (int v = lo; v < hi; v++) {
+                int o = 3 * newId[v], f = 3 * v;
+                out[o] = a[f]; out[o + 1] = a[f + 1]; out[o + 2] = a[f + 2];
+            }
+        });
         return out;
     }
 
-    /**
-     * Copies a range of triangles into their new slots (a[3k..] = old[3 order[k]..]) or of
-     * vertices to their new numbers (xyz[1][3 newId[v]..] = xyz[0][3v..]), halves of large
-     * ranges in parallel when {@code fork}.
-     */
-    private static final class Permute extends RecursiveAction {
-        private final int[] a, old, map;
-        private final double[][] xyz;
-        private final int lo, hi;
-        private final boolean fork;
+    /** Work on a range [lo, hi) of indices. */
+    @FunctionalInterface
+    private interface RangeWork { void run(int lo, int hi); }
 
-        Permute(int[] a, int[] old, int[] map, double[][] xyz, int lo, int hi, boolean fork) {
-            this.a = a; this.old = old; this.map = map; this.xyz = xyz; this.lo = lo; this.hi = hi; this.fork = fork;
-        }
-
-        @Override
-        protected void compute() {
-            if (fork && hi - lo >= 2 * COPY_GRAIN) {
-                int mid = (lo + hi) >>> 1;
-                invokeAll(new Permute(a, old, map, xyz, lo, mid, true), new Permute(a, old, map, xyz, mid, hi, true));
-                return;
-            }
-            if (xyz == null) {
-                for (int k = lo; k < hi; k++) {
-                    int o = 3 * map[k], t = 3 * k;
-                    a[t] = old[o]; a[t + 1] = old[o + 1]; a[t + 2] = old[o + 2];
-                }
-            } else {
-                double[] from = xyz[0], to = xyz[1];
-                for (int v = lo; v < hi; v++) {
-                    int o = 3 * map[v], f = 3 * v;
-                    to[o] = from[f]; to[o + 1] = from[f + 1]; to[o + 2] = from[f + 2];
-                }
-            }
+    /** Does {@code work} on [lo, hi): in halves on the current fork/join pool when {@code fork} and the range is large. */
+    private static void forRange(int lo, int hi, boolean fork, RangeWork work) {
+        if (fork && hi - lo >= 2 * COPY_GRAIN) {
+            int mid = (lo + hi) >>> 1;
+            ForkJoinTask.invokeAll(ForkJoinTask.adapt(() -> forRange(lo, mid, true, work)),
+                    ForkJoinTask.adapt(() -> forRange(mid, hi, true, work)));
+        } else {
+            work.run(lo, hi);
         }
     }
 
