@@ -1,5 +1,8 @@
 package lt.spindulys.cli;
 
+import static lt.spindulys.cli.BenchTable.fmt;
+import static lt.spindulys.cli.BenchTable.median;
+
 import java.io.BufferedWriter;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -7,7 +10,6 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
@@ -422,8 +424,8 @@ final class AdaptiveBench {
             Cell last = cs.get(cs.size() - 1);
             Spec s = specs.get(k);
             long built = last.misses();
-            t.add(s.lastTwo() ? "last two" : "LRU", s.lastTwo() ? "2 per thread" : s.cacheMiB() + " MiB", fmt(median(cs, Cell::render), 2),
-                    fmt(median(cs, Cell::wall), 2), fmt(median(cs, Cell::peakHeapMiB), 0), fmt(median(cs, Cell::liveHeapMiB), 0),
+            t.add(s.lastTwo() ? "last two" : "LRU", s.lastTwo() ? "2 per thread" : s.cacheMiB() + " MiB", fmt(medianOf(cs, Cell::render), 2),
+                    fmt(medianOf(cs, Cell::wall), 2), fmt(medianOf(cs, Cell::peakHeapMiB), 0), fmt(medianOf(cs, Cell::liveHeapMiB), 0),
                     Long.toString(built), Long.toString(last.hits()), Long.toString(last.misses()), Long.toString(last.evictions()),
                     Double.isNaN(last.hitRate()) ? "-" : fmt(100 * last.hitRate(), 2) + " %", last.cachePeak());
         }
@@ -432,18 +434,7 @@ final class AdaptiveBench {
         out.println("  from the last run's --stats (hit rate = hits / (hits + misses)).");
     }
 
-    private static double median(List<Cell> cells, java.util.function.ToDoubleFunction<Cell> f) {
-        double[] v = cells.stream().mapToDouble(f).filter(x -> !Double.isNaN(x)).toArray();
-        return v.length == 0 ? Double.NaN : median(v);
-    }
-
-    static double median(double[] v) {
-        double[] s = v.clone();
-        Arrays.sort(s);
-        return s.length == 0 ? Double.NaN : s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
-    }
-
-    private static String fmt(double v, int decimals) {
-        return Double.isNaN(v) ? "-" : String.format(Locale.ROOT, "%." + decimals + "f", v);
+    private static double medianOf(List<Cell> cells, java.util.function.ToDoubleFunction<Cell> f) {
+        return median(cells.stream().mapToDouble(f).toArray());
     }
 }

@@ -1,10 +1,12 @@
 package lt.spindulys.cli;
 
+import static lt.spindulys.cli.BenchTable.fmt;
+import static lt.spindulys.cli.BenchTable.median;
+
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 
@@ -530,15 +532,5 @@ final class BenchCommand {
         out.println("  TopologyRefiner::Refine alone (topology only, no positions), so the ratio is conservative for us;");
         out.println("  speed vs far_perf = far_perf s / refine s (above 1: Spindulys is faster).");
         out.println("  bytes/quad: the refined level's topology, positions and limit normals, divided by its quads.");
-    }
-
-    private static double median(double[] v) {
-        double[] s = v.clone();
-        Arrays.sort(s);
-        return s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
-    }
-
-    private static String fmt(double v, int decimals) {
-        return String.format(Locale.ROOT, "%." + decimals + "f", v);
     }
 }

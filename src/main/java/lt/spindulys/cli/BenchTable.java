@@ -2,9 +2,14 @@ package lt.spindulys.cli;
 
 import java.io.PrintStream;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
+import java.util.Locale;
 
-/** A plain-text table: columns sized to their widest cell, numbers right-aligned. */
+/**
+ * A plain-text table: columns sized to their widest cell, numbers right-aligned; and the figures
+ * the bench puts in its cells (medians, fixed decimals).
+ */
 final class BenchTable {
     private final String[] header;
     private final List<String[]> rows = new ArrayList<>();
@@ -36,5 +41,17 @@ final class BenchTable {
             s.append(right ? pad + cells[i] : cells[i] + (i == cells.length - 1 ? "" : pad));
         }
         out.println(s.toString().stripTrailing());
+    }
+
+    /** The median of the known (not NaN) values; NaN if there are none. */
+    static double median(double[] v) {
+        double[] s = Arrays.stream(v).filter(x -> !Double.isNaN(x)).sorted().toArray();
+        if (s.length == 0) return Double.NaN;
+        return s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
+    }
+
+    /** {@code v} with {@code decimals} decimals, or "-" when it is not known (NaN). */
+    static String fmt(double v, int decimals) {
+        return Double.isNaN(v) ? "-" : String.format(Locale.ROOT, "%." + decimals + "f", v);
     }
 }

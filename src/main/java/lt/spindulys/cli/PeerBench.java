@@ -1,5 +1,8 @@
 package lt.spindulys.cli;
 
+import static lt.spindulys.cli.BenchTable.fmt;
+import static lt.spindulys.cli.BenchTable.median;
+
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.io.PrintStream;
@@ -281,14 +284,4 @@ final class PeerBench {
         return median(Arrays.copyOf(r, n));
     }
 
-    /** The median of the known (not NaN) values; NaN if none. */
-    static double median(double[] v) {
-        double[] s = Arrays.stream(v).filter(x -> !Double.isNaN(x)).sorted().toArray();
-        if (s.length == 0) return Double.NaN;
-        return s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
-    }
-
-    private static String fmt(double v, int decimals) {
-        return Double.isNaN(v) ? "-" : String.format(Locale.ROOT, "%." + decimals + "f", v);
-    }
-}
+    /** The median of the known (not NaN) values; NaN if none. */}

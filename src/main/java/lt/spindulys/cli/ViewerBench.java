@@ -1,5 +1,8 @@
 package lt.spindulys.cli;
 
+import static lt.spindulys.cli.BenchTable.fmt;
+import static lt.spindulys.cli.BenchTable.median;
+
 import java.io.PrintStream;
 import java.util.Arrays;
 import java.util.List;
@@ -110,12 +113,6 @@ final class ViewerBench {
         double refine = median(ms[0]), geometry = median(ms[1]), outward = median(ms[2]);
         out.printf(Locale.ROOT, "  a level change to this surface (off the event thread): refine %.0f ms + smoothed triangles %.0f ms"
                 + " + outward winding %.0f ms = %.0f ms (median)%n", refine, geometry, outward, refine + geometry + outward);
-    }
-
-    private static double median(double[] v) {
-        double[] s = v.clone();
-        Arrays.sort(s);
-        return s.length % 2 == 1 ? s[s.length / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
     }
 
     @SuppressWarnings("unchecked")
