@@ -21,7 +21,7 @@ import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.SceneBuilder;
 import lt.spindulys.scene.TriangleMesh;
-import lt.spindulys.subdiv.CatmullClark;
+import lt.spindulys.subdiv.Subdivision;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.RefinedMesh;
 
@@ -503,14 +503,14 @@ final class BenchCommand {
         Path obj = benchDir.resolve(file);
         ControlMesh mesh = ObjReader.readSubdiv(obj).toControlMesh();
         // Warm-up: compile the refinement code paths before timing.
-        for (int i = 0; i < 3; i++) CatmullClark.refine(mesh, level - 1);
+        for (int i = 0; i < 3; i++) Subdivision.refine(mesh, level - 1);
         double[] seconds = new double[runs];
         RefinedMesh refined = null;
         for (int i = 0; i < runs; i++) {
             refined = null;
             System.gc();
             long t0 = System.nanoTime();
-            refined = CatmullClark.refine(mesh, level);
+            refined = Subdivision.refine(mesh, level);
             seconds[i] = (System.nanoTime() - t0) / 1e9;
         }
         double t = median(seconds);

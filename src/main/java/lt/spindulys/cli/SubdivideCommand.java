@@ -21,7 +21,7 @@ import lt.spindulys.scene.Bool;
 import lt.spindulys.scene.GObject;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.SubdivisionSurface;
-import lt.spindulys.subdiv.CatmullClark;
+import lt.spindulys.subdiv.Subdivision;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.RefinedMesh;
 import lt.spindulys.subdiv.SubdivInput;
@@ -126,7 +126,7 @@ final class SubdivideCommand {
             err.println(MessageText.escape(name + ": note: tag '" + tag + "' is ignored (OpenSubdiv's Far does not apply it either)"));
         }
         ControlMesh control = in.toControlMesh();
-        RefinedMesh refined = CatmullClark.refine(control, level);
+        RefinedMesh refined = Subdivision.refine(control, level);
         String comment = "Catmull-Clark subdivision of " + input.getFileName() + " at level " + level
                 + (limit ? ", limit positions and normals" : "") + " (spindulys " + Main.version() + ")\n"
                 + refined.vertexCount() + " vertices, " + refined.faceCount() + " faces";

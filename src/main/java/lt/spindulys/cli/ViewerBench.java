@@ -8,7 +8,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 
-import lt.spindulys.subdiv.CatmullClark;
+import lt.spindulys.subdiv.Subdivision;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.RefinedMesh;
 import lt.spindulys.viewer.DisplayGeometry;
@@ -55,7 +55,7 @@ final class ViewerBench {
 
     static void run(PrintStream out, int runs, int threads) {
         ControlMesh cage = torusCage();
-        RefinedMesh r = CatmullClark.refine(cage, LEVEL);
+        RefinedMesh r = Subdivision.refine(cage, LEVEL);
         DisplayGeometry smooth = DisplayGeometry.smoothed(r), poly = DisplayGeometry.polyhedron(r), lattice = DisplayGeometry.lattice(cage);
         int[] frame = new int[WIDTH * HEIGHT];
         out.printf(Locale.ROOT, "  surface: %,d quads (%,d triangles, %,d vertices), %dx%d, %d threads, %d frames per run orbiting the surface%n",
@@ -99,7 +99,7 @@ final class ViewerBench {
         double[][] ms = new double[3][runs];
         for (int i = -1; i < runs; i++) {
             long t0 = System.nanoTime();
-            RefinedMesh r = CatmullClark.refine(cage, LEVEL);
+            RefinedMesh r = Subdivision.refine(cage, LEVEL);
             long t1 = System.nanoTime();
             DisplayGeometry g = DisplayGeometry.smoothed(r);
             long t2 = System.nanoTime();

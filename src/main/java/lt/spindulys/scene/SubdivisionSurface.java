@@ -14,7 +14,7 @@ import lt.spindulys.math.Ray;
 import lt.spindulys.math.Placement;
 import lt.spindulys.math.Transform;
 import lt.spindulys.mesh.MeshData;
-import lt.spindulys.subdiv.CatmullClark;
+import lt.spindulys.subdiv.Subdivision;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.RefinedMesh;
 import lt.spindulys.subdiv.RefinedTriangles;
@@ -115,7 +115,7 @@ public final class SubdivisionSurface extends GObject {
         this.level = level;
         this.smooth = smooth;
         this.positions = positions;
-        this.refined = CatmullClark.refine(control, level);
+        this.refined = Subdivision.refine(control, level);
         this.mesh = new TriangleMesh(positions == Positions.LIMIT ? RefinedTriangles.triangles(refined, refined.limitPositions(), smooth)
                 : triangles(refined, smooth));
         mesh.smooth(smooth);
@@ -261,7 +261,7 @@ public final class SubdivisionSurface extends GObject {
      * @return the number of boundary edges; 0 only when the surface is closed
      */
     public int boundaryEdgeCount() {
-        RefinedMesh base = level == 0 ? refined : CatmullClark.refine(refined.controlMesh(), 0);
+        RefinedMesh base = level == 0 ? refined : Subdivision.refine(refined.controlMesh(), 0);
         int[] sizes = base.faceSizes(), twin = base.cornerTwins();
         int[] faceOf = new int[twin.length];
         for (int f = 0, c = 0; f < sizes.length; c += sizes[f], f++) {

@@ -6,19 +6,17 @@ public final class CatmullClark {
 
     /**
      * The mesh refined {@code level} times (0 gives the control mesh itself as a RefinedMesh).
+     * {@link Subdivision#refine} does the same for a mesh of any scheme.
      *
-     * @param mesh the control mesh
+     * @param mesh the control mesh, with the Catmull-Clark scheme
      * @param level refinements, at least 0
      * @return the refined mesh
+     * @throws IllegalArgumentException if the mesh has another scheme
      */
     public static RefinedMesh refine(ControlMesh mesh, int level) {
-        if (level < 0) throw new IllegalArgumentException("refinement level " + level + " is negative");
-        RefinedMesh r = RefinedMesh.base(mesh);
-        for (int i = 0; i < level; i++) {
-            RefinedMesh next = r.refine();
-            if (i == level - 1) next.compactAfter(r);
-            r = next;
+        if (mesh.options().scheme() != SubdivOptions.Scheme.CATMARK) {
+            throw new IllegalArgumentException("the mesh has the " + mesh.options().scheme().keyword() + " scheme, not Catmull-Clark");
         }
-        return r;
+        return Subdivision.refine(mesh, level);
     }
 }

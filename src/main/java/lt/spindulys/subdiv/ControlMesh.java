@@ -70,27 +70,32 @@ public final class ControlMesh {
     public int faceCount() { return faceSizes.length; }
 
     /**
-     * Faces the mesh has after {@code level} uniform refinements: its own at level 0, then one quad
-     * per face corner, four times more each further level. For refusing levels too deep for memory.
+     * Faces the mesh has after {@code level} uniform refinements with its scheme: its own at level
+     * 0, then four times more each level (see {@link #refinedFaceCount(SubdivOptions.Scheme, int, long, int)}).
+     * For refusing levels too deep for memory.
      *
      * @param level refinements, at least 0
      * @return the face count; past 2^60 it stops growing (already far too many)
      */
-    public long refinedFaceCount(int level) { return refinedFaceCount(faceSizes.length, faceVertices.length, level); }
+    public long refinedFaceCount(int level) { return refinedFaceCount(options.scheme(), faceSizes.length, faceVertices.length, level); }
 
     /**
-     * {@link #refinedFaceCount(int)} of a mesh with these counts, before it is built.
+     * {@link #refinedFaceCount(int)} of a mesh with these counts, before it is built: Catmull-Clark
+     * and bilinear make one quad per face corner at the first level, Loop four triangles per
+     * triangle; every further level multiplies by four.
      *
+     * @param scheme  the scheme
      * @param faces   the mesh's faces
      * @param corners the mesh's face corners
      * @param level   refinements, at least 0
      * @return the face count, saturating past 2^60
      */
-    public static long refinedFaceCount(int faces, long corners, int level) {
+    public static long refinedFaceCount(SubdivOptions.Scheme scheme, int faces, long corners, int level) {
         if (level <= 0) return faces;
+        long n = scheme == SubdivOptions.Scheme.LOOP ? 4L * faces : corners;
         // Saturate rather than overflow: at 2^62 the answer is "far too many" either way.
-        for (int l = 1; l < level && corners < (1L << 60); l++) corners *= 4;
-        return corners;
+        for (int l = 1; l < level && n < (1L << 60); l++) n *= 4;
+        return n;
     }
 
     /**
@@ -287,6 +292,9 @@ public final class ControlMesh {
             for (int f = 0; f < nF; f++) {
                 if (faceSizes[f] < 3) {
                     throw new IllegalArgumentException(at + "face " + f + " has " + faceSizes[f] + " corners; a face needs at least 3");
+                }
+                if (faceSizes[f] != 3 && options.scheme() == SubdivOptions.Scheme.LOOP) {
+                    throw new IllegalArgumentException(at + "face " + f + " has " + faceSizes[f] + " corners; the Loop scheme needs triangles");
                 }
                 cornerTotal += faceSizes[f];
             }

@@ -104,14 +104,15 @@ public record SubdivInput(MeshData mesh, SubdivTags tags) {
     private record UvKey(int vertex, long u, long v) {}
 
     /**
-     * Faces the mesh has after {@code level} uniform refinements: its own at level 0, then one quad
-     * per corner, four times more each further level. For refusing levels too deep for memory.
+     * Faces the mesh has after {@code level} uniform refinements with its scheme (see
+     * {@link ControlMesh#refinedFaceCount(SubdivOptions.Scheme, int, long, int)}). For refusing
+     * levels too deep for memory.
      *
      * @param level refinements, at least 0
      * @return the face count; past 2^60 it stops growing (already far too many)
      */
     public long refinedFaceCount(int level) {
-        return ControlMesh.refinedFaceCount(mesh.faceCount(), mesh.vertexIndex().length, level);
+        return ControlMesh.refinedFaceCount(tags.options().scheme(), mesh.faceCount(), mesh.vertexIndex().length, level);
     }
 
     /**

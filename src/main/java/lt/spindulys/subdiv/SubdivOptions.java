@@ -1,16 +1,41 @@
 package lt.spindulys.subdiv;
 
 /**
- * Catmull-Clark options, named after OpenSubdiv's Sdc options they reproduce.
+ * The subdivision scheme and its options, named after OpenSubdiv's Sdc scheme type and options.
  *
+ * @param scheme    the refinement scheme: Catmull-Clark, Loop or bilinear
  * @param boundary  how boundary vertices and edges are treated
  * @param fvar      how face-varying data (UVs) is interpolated
  * @param creasing  how semi-sharp crease sharpness decays from level to level
  * @param triangles the weights used at triangles
  */
-public record SubdivOptions(Boundary boundary, FaceVarying fvar, Creasing creasing, Triangles triangles) {
-    /** OpenSubdiv's defaults: EDGE_ONLY boundaries, linear-all UVs (FVAR_LINEAR_ALL), uniform creasing, Catmark triangles. */
-    public static final SubdivOptions DEFAULT = new SubdivOptions(Boundary.EDGE_ONLY, FaceVarying.ALL, Creasing.UNIFORM, Triangles.CATMARK);
+public record SubdivOptions(Scheme scheme, Boundary boundary, FaceVarying fvar, Creasing creasing, Triangles triangles) {
+    /** Catmull-Clark with OpenSubdiv's defaults: EDGE_ONLY boundaries, linear-all UVs (FVAR_LINEAR_ALL), uniform creasing, Catmark triangles. */
+    public static final SubdivOptions DEFAULT = new SubdivOptions(Scheme.CATMARK, Boundary.EDGE_ONLY, FaceVarying.ALL, Creasing.UNIFORM, Triangles.CATMARK);
+
+    /** Sdc SchemeType: the three schemes OpenSubdiv has. */
+    public enum Scheme {
+        /** Catmull-Clark: any polygon splits into quads; smooth limit surface (the default). */
+        CATMARK,
+        /** Loop: triangles only, each split into four; smooth limit surface. */
+        LOOP,
+        /** Bilinear: any polygon splits into quads linearly; the limit is the piecewise bilinear cage. */
+        BILINEAR;
+
+        /** {@return the lower-case name used in scene files, OBJ tags and on the command line} */
+        public String keyword() { return name().toLowerCase(java.util.Locale.ROOT); }
+
+        /**
+         * The scheme of a keyword ({@code catmark}, {@code loop} or {@code bilinear}).
+         *
+         * @param word the keyword
+         * @return the scheme, or null if the word names none
+         */
+        public static Scheme ofKeyword(String word) {
+            for (Scheme s : values()) if (s.keyword().equals(word)) return s;
+            return null;
+        }
+    }
 
     /** Sdc VtxBoundaryInterpolation. */
     public enum Boundary {
@@ -55,8 +80,21 @@ public record SubdivOptions(Boundary boundary, FaceVarying fvar, Creasing creasi
     }
 
     /**
+     * Catmull-Clark options (the scheme most meshes use).
+     *
+     * @param boundary how boundaries are treated
+     * @param fvar how UVs are interpolated
+     * @param creasing how crease sharpness decays
+     * @param triangles the weights at triangles
+     */
+    public SubdivOptions(Boundary boundary, FaceVarying fvar, Creasing creasing, Triangles triangles) {
+        this(Scheme.CATMARK, boundary, fvar, creasing, triangles);
+    }
+
+    /**
      * Checks that every option is given.
      *
+     * @param scheme the refinement scheme
      * @param boundary how boundaries are treated
      * @param fvar how UVs are interpolated
      * @param creasing how crease sharpness decays
@@ -64,6 +102,7 @@ public record SubdivOptions(Boundary boundary, FaceVarying fvar, Creasing creasi
      * @throws NullPointerException if one is null
      */
     public SubdivOptions {
+        java.util.Objects.requireNonNull(scheme);
         java.util.Objects.requireNonNull(boundary);
         java.util.Objects.requireNonNull(fvar);
         java.util.Objects.requireNonNull(creasing);
@@ -71,31 +110,39 @@ public record SubdivOptions(Boundary boundary, FaceVarying fvar, Creasing creasi
     }
 
     /**
+     * A copy with another scheme.
+     *
+     * @param s the scheme
+     * @return the options
+     */
+    public SubdivOptions withScheme(Scheme s) { return new SubdivOptions(s, boundary, fvar, creasing, triangles); }
+
+    /**
      * A copy with other boundary rules.
      *
      * @param b the rules
      * @return the options
      */
-    public SubdivOptions withBoundary(Boundary b) { return new SubdivOptions(b, fvar, creasing, triangles); }
+    public SubdivOptions withBoundary(Boundary b) { return new SubdivOptions(scheme, b, fvar, creasing, triangles); }
     /**
      * A copy with another UV interpolation.
      *
      * @param f the interpolation
      * @return the options
      */
-    public SubdivOptions withFaceVarying(FaceVarying f) { return new SubdivOptions(boundary, f, creasing, triangles); }
+    public SubdivOptions withFaceVarying(FaceVarying f) { return new SubdivOptions(scheme, boundary, f, creasing, triangles); }
     /**
      * A copy with another creasing method.
      *
      * @param c the method
      * @return the options
      */
-    public SubdivOptions withCreasing(Creasing c) { return new SubdivOptions(boundary, fvar, c, triangles); }
+    public SubdivOptions withCreasing(Creasing c) { return new SubdivOptions(scheme, boundary, fvar, c, triangles); }
     /**
      * A copy with other triangle weights.
      *
      * @param t the weights
      * @return the options
      */
-    public SubdivOptions withTriangles(Triangles t) { return new SubdivOptions(boundary, fvar, creasing, t); }
+    public SubdivOptions withTriangles(Triangles t) { return new SubdivOptions(scheme, boundary, fvar, creasing, t); }
 }

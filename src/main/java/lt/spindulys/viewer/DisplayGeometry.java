@@ -2,7 +2,7 @@ package lt.spindulys.viewer;
 
 import lt.spindulys.math.Bounds;
 import lt.spindulys.mesh.MeshData;
-import lt.spindulys.subdiv.CatmullClark;
+import lt.spindulys.subdiv.Subdivision;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.RefinedMesh;
 import lt.spindulys.subdiv.RefinedTriangles;
@@ -245,7 +245,7 @@ public record DisplayGeometry(float[] positions, float[] normals, int[] triangle
      * @return the geometry, without triangles
      */
     public static DisplayGeometry lattice(ControlMesh control) {
-        RefinedMesh base = CatmullClark.refine(control, 0);
+        RefinedMesh base = Subdivision.refine(control, 0);
         return new DisplayGeometry(toFloats(control.positions()), NO_FLOATS, NONE, NONE, base.edgeVertices());
     }
 

@@ -7,7 +7,7 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 
 import lt.spindulys.scene.SubdivisionSurface;
-import lt.spindulys.subdiv.CatmullClark;
+import lt.spindulys.subdiv.Subdivision;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.SubdivInput;
 import lt.spindulys.subdiv.SubdivOptions;
@@ -82,7 +82,7 @@ public final class ViewedSurface {
         this.level = l;
         ControlMesh c = control(boundary);
         this.lattice = DisplayGeometry.lattice(c);
-        this.closed = DisplayGeometry.closed(CatmullClark.refine(c, 0));
+        this.closed = DisplayGeometry.closed(Subdivision.refine(c, 0));
     }
 
     /** {@return the name shown in the surface list} */
@@ -202,7 +202,7 @@ public final class ViewedSurface {
     DisplayGeometry build(Key k) {
         // Checked again here: other surfaces may have taken the heap since the level was set.
         SubdivisionSurface.checkLevel(k.level(), input.refinedFaceCount(k.level()));
-        var r = CatmullClark.refine(control(k.boundary()), k.level());
+        var r = Subdivision.refine(control(k.boundary()), k.level());
         DisplayGeometry g = k.smooth() ? DisplayGeometry.smoothed(r) : DisplayGeometry.polyhedron(r);
         // The back tint marks faces seen from the inside: a closed surface has one, found from the
         // volume it encloses whatever the file's winding; an open surface's winding decides.

@@ -22,7 +22,7 @@ import lt.spindulys.plugin.PluginRequest;
 import lt.spindulys.plugin.PluginResult;
 import lt.spindulys.plugin.PluginView;
 import lt.spindulys.scene.SubdivisionSurface;
-import lt.spindulys.subdiv.CatmullClark;
+import lt.spindulys.subdiv.Subdivision;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.RefinedMesh;
 
@@ -192,7 +192,7 @@ public final class ObjExportPlugin implements OutputPlugin {
     /** Refines level by level, so that a cancel is seen between levels. */
     private static RefinedMesh refine(DisplayedSurface s, DoubleConsumer report) {
         int level = s.scheme() == DisplayedSurface.Scheme.NONE ? 0 : s.level();
-        RefinedMesh r = CatmullClark.refine(s.control(), 0);
+        RefinedMesh r = Subdivision.refine(s.control(), 0);
         for (int l = 0; l < level; l++) {
             report.accept((double) l / level);
             r = r.refine();
