@@ -107,7 +107,8 @@ final class SceneAssetCache {
 
     /**
      * A subdivision surface: the control mesh from an OBJ (with its tags) or a Workframe .dat
-     * file, an optional .tex unwrap as its UVs, the block's scheme keys over the file's options,
+     * file, an optional .tex unwrap as its UVs, the block's scheme keys (the scheme itself among
+     * them) over the file's options,
      * refined uniformly ({@code method uniform}, the default) or adaptively. A uniform level whose
      * refinement would not fit in the heap is not refused: the combined method renders it at the
      * same level within the scene's memory budget.
@@ -144,7 +145,7 @@ final class SceneAssetCache {
         Prop uvProp = p.prop("uv");
         boolean smooth = "smooth".equals(p.get("shading"));
         SubdivKey key = new SubdivKey(path, uvProp != null ? existingFile(uvProp, "unwrap file") : null, level,
-                smooth, positions, (String) p.get("boundary"), (String) p.get("uvinterpolation"),
+                smooth, positions, (String) p.get("scheme"), (String) p.get("boundary"), (String) p.get("uvinterpolation"),
                 (String) p.get("creasing"), (String) p.get("triangles"));
         if (method.equals("uniform")) {
             SubdivisionSurface same = surfaces.get(key);
@@ -158,6 +159,11 @@ final class SceneAssetCache {
                 if (!(e instanceof InsufficientMemoryException) && input.refinedFaceCount(level) <= SubdivisionSurface.MAX_FACES) throw err.wrap(levelAt, e);
                 // The combined method has no limit positions: the level is refused rather than rendered otherwise.
                 if (limit) throw err.error(levelAt, e.getMessage() + "; positions limit needs uniform refinement (the adaptive methods, which render such levels otherwise, have no limit positions)");
+                SubdivOptions.Scheme scheme = input.options().scheme();
+                if (!AdaptiveSubdivisionSurface.refines(scheme)) {
+                    throw err.error(levelAt, e.getMessage() + "; scheme " + scheme.keyword() + " needs uniform refinement (the adaptive methods, which render such levels otherwise, "
+                            + "refine Catmull-Clark surfaces only)");
+                }
                 // Too large to refine whole: the combined method gives the same triangles within the budget.
                 return adaptive(p, f, key, input, AdaptiveSubdivisionSurface.Method.COMBINED, level, null, null, null, smooth);
             }
@@ -178,16 +184,25 @@ final class SceneAssetCache {
         return adaptive(p, f, key, null, m, levelProp != null ? level : -1, target, levels, maxLevel, smooth);
     }
 
+
+
     /** An adaptive surface; statements naming the same control mesh and scheme share its refiner. */
     private GObject adaptive(Props p, Prop f, SubdivKey key, SubdivInput read, AdaptiveSubdivisionSurface.Method method, int level,
                              Prop target, Prop levels, Prop maxLevel, boolean smooth) {
-        SubdivKey shared = new SubdivKey(key.file(), key.uv(), -1, key.smooth(), key.positions(), key.boundary(), key.uvinterpolation(), key.creasing(), key.triangles());
+        SubdivKey shared = new SubdivKey(key.file(), key.uv(), -1, key.smooth(), key.positions(), key.scheme(), key.boundary(), key.uvinterpolation(),
+                key.creasing(), key.triangles());
         AdaptiveSubdivisionSurface first = adaptiveSurfaces.get(shared);
         AdaptiveSubdivisionSurface s;
         if (first != null) {
             s = first.sibling(method);
         } else {
             SubdivInput input = read != null ? read : readSurface(p, f, (String) f.value(), key.file());
+            SubdivOptions.Scheme scheme = input.options().scheme();
+            if (!AdaptiveSubdivisionSurface.refines(scheme)) {
+                Prop schemeProp = p.prop("scheme"), methodProp = p.prop("method");
+                throw err.error(methodProp.valueAt(), "method " + methodProp.value() + " refines Catmull-Clark surfaces only, and this one is "
+                        + (schemeProp != null ? "scheme " + scheme.keyword() : scheme.keyword() + " (its file's t scheme tag)") + "; use method uniform");
+            }
             try {
                 s = new AdaptiveSubdivisionSurface(input.toControlMesh(), method, smooth);
             } catch (IllegalArgumentException e) {
@@ -213,8 +228,8 @@ final class SceneAssetCache {
     }
 
     /** What makes two subdiv statements the same surface: file, unwrap, level, shading, vertex positions and scheme words. */
-    private record SubdivKey(Path file, Path uv, int level, boolean smooth, SubdivisionSurface.Positions positions, String boundary, String uvinterpolation,
-                             String creasing, String triangles) {}
+    private record SubdivKey(Path file, Path uv, int level, boolean smooth, SubdivisionSurface.Positions positions, String scheme, String boundary,
+                             String uvinterpolation, String creasing, String triangles) {}
 
     /** The control mesh of a subdiv block, with its unwrap and the block's scheme keys. */
     private SubdivInput readSurface(Props p, Prop f, String rel, Path path) {
@@ -242,12 +257,18 @@ final class SceneAssetCache {
 
     /** The file's options with the block's scheme keys, where given, in their place. */
     private static SubdivOptions options(Props p, SubdivOptions o) {
-        return subdivOptions(o, (String) p.get("boundary"), (String) p.get("uvinterpolation"), (String) p.get("creasing"), (String) p.get("triangles"));
+        return subdivOptions(o, (String) p.get("scheme"), (String) p.get("boundary"), (String) p.get("uvinterpolation"), (String) p.get("creasing"),
+                (String) p.get("triangles"));
     }
 
     /** {@code base} with each scheme choice of a subdiv block (its grammar word, or null to keep base's) in its place. */
-    static SubdivOptions subdivOptions(SubdivOptions base, String boundary, String uvinterpolation, String creasing, String triangles) {
+    static SubdivOptions subdivOptions(SubdivOptions base, String scheme, String boundary, String uvinterpolation, String creasing, String triangles) {
         SubdivOptions o = base;
+        if (scheme != null) {
+            SubdivOptions.Scheme s = SubdivOptions.Scheme.ofKeyword(scheme);
+            if (s == null) throw new IllegalStateException("scheme choice without a mapping: " + scheme);
+            o = o.withScheme(s);
+        }
         if (boundary != null) {
             o = o.withBoundary(switch (boundary) {
                 case "edge-only" -> SubdivOptions.Boundary.EDGE_ONLY;
