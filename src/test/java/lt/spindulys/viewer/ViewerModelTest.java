@@ -305,9 +305,9 @@ class ViewerModelTest {
         assertEquals(0, m.pending());
         assertTrue(m.selected().upToDate());
         assertEquals(2 * 6 * 16, faces(m).triangleCount());
-        assertNull(m.selected().cached(new ViewedSurface.Key(4, SubdivOptions.Boundary.EDGE_ONLY, true)),
+        assertNull(m.selected().cached(new ViewedSurface.Key(4, SubdivOptions.Scheme.CATMARK, SubdivOptions.Boundary.EDGE_ONLY, true)),
                 "level 4, no longer wanted when its turn came, was not built");
-        assertNotNull(m.selected().cached(new ViewedSurface.Key(3, SubdivOptions.Boundary.EDGE_ONLY, true)));
+        assertNotNull(m.selected().cached(new ViewedSurface.Key(3, SubdivOptions.Scheme.CATMARK, SubdivOptions.Boundary.EDGE_ONLY, true)));
     }
 
     @Test
