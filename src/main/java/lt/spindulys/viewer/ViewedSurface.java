@@ -141,9 +141,9 @@ public final class ViewedSurface {
     }
 
     /**
-     * Sets the scheme, after the checks a level gets (a Loop level has fewer faces than a
-     * Catmull-Clark one, so only a change from Loop can make the level too deep), and refuses
-     * Loop on a cage with other faces than triangles.
+     * Sets the scheme, after the checks a level gets (the faces differ by scheme: a triangle
+     * becomes four triangles under Loop, three quads under the others), and refuses Loop on a
+     * cage with other faces than triangles.
      *
      * @throws IllegalArgumentException saying why the scheme is refused; the scheme stays
      */
