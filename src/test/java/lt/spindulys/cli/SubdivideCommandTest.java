@@ -182,6 +182,21 @@ class SubdivideCommandTest {
     }
 
     @Test
+    void aUniformLoopStatementOfASceneIsWrittenWithItsScheme() throws IOException {
+        Path tet = tetrahedron("");
+        Path scene = dir.resolve("tet.dat");
+        Files.writeString(scene, "camera { eye 0 0 -5  lookat 0 0 0 }\nsubdiv { file \"tet.obj\"  level 2  scheme loop }\n");
+        Path out = dir.resolve("tet-scene.obj");
+        CliTest.Run r = run("subdivide", tet.toString(), "--scene", scene.toString(), "-o", out.toString());
+        assertEquals(0, r.status(), r.err());
+        String text = Files.readString(out);
+        assertTrue(text.startsWith("# Loop subdivision of tet.obj at level 2 as tet.dat renders it"), text.lines().findFirst().orElse(""));
+        SubdivInput back = ObjReader.readSubdiv(out);
+        assertEquals(SubdivOptions.Scheme.LOOP, back.options().scheme());
+        assertArrayEquals(refined(tet, SubdivOptions.Scheme.LOOP, 2).positions(), back.mesh().positions());
+    }
+
+    @Test
     void badSchemesAreRefused() throws IOException {
         String out = dir.resolve("o.obj").toString();
         Path tet = tetrahedron("");
