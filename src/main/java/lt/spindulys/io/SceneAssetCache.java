@@ -159,11 +159,6 @@ final class SceneAssetCache {
                 if (!(e instanceof InsufficientMemoryException) && input.refinedFaceCount(level) <= SubdivisionSurface.MAX_FACES) throw err.wrap(levelAt, e);
                 // The combined method has no limit positions: the level is refused rather than rendered otherwise.
                 if (limit) throw err.error(levelAt, e.getMessage() + "; positions limit needs uniform refinement (the adaptive methods, which render such levels otherwise, have no limit positions)");
-                SubdivOptions.Scheme scheme = input.options().scheme();
-                if (!AdaptiveSubdivisionSurface.refines(scheme)) {
-                    throw err.error(levelAt, e.getMessage() + "; scheme " + scheme.keyword() + " needs uniform refinement (the adaptive methods, which render such levels otherwise, "
-                            + "refine Catmull-Clark surfaces only)");
-                }
                 // Too large to refine whole: the combined method gives the same triangles within the budget.
                 return adaptive(p, f, key, input, AdaptiveSubdivisionSurface.Method.COMBINED, level, null, null, null, smooth);
             }
@@ -184,8 +179,6 @@ final class SceneAssetCache {
         return adaptive(p, f, key, null, m, levelProp != null ? level : -1, target, levels, maxLevel, smooth);
     }
 
-
-
     /** An adaptive surface; statements naming the same control mesh and scheme share its refiner. */
     private GObject adaptive(Props p, Prop f, SubdivKey key, SubdivInput read, AdaptiveSubdivisionSurface.Method method, int level,
                              Prop target, Prop levels, Prop maxLevel, boolean smooth) {
@@ -197,12 +190,6 @@ final class SceneAssetCache {
             s = first.sibling(method);
         } else {
             SubdivInput input = read != null ? read : readSurface(p, f, (String) f.value(), key.file());
-            SubdivOptions.Scheme scheme = input.options().scheme();
-            if (!AdaptiveSubdivisionSurface.refines(scheme)) {
-                Prop schemeProp = p.prop("scheme"), methodProp = p.prop("method");
-                throw err.error(methodProp.valueAt(), "method " + methodProp.value() + " refines Catmull-Clark surfaces only, and this one is "
-                        + (schemeProp != null ? "scheme " + scheme.keyword() : scheme.keyword() + " (its file's t scheme tag)") + "; use method uniform");
-            }
             try {
                 s = new AdaptiveSubdivisionSurface(input.toControlMesh(), method, smooth);
             } catch (IllegalArgumentException e) {

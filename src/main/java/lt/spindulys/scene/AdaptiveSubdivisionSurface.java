@@ -9,7 +9,6 @@ import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.PatchRefiner;
-import lt.spindulys.subdiv.SubdivOptions;
 import lt.spindulys.trace.Hit;
 import lt.spindulys.trace.ShadingData;
 import lt.spindulys.trace.SpanBuffer;
@@ -66,26 +65,9 @@ public final class AdaptiveSubdivisionSurface extends GObject {
         OBJECT
     }
 
-    /**
-     * Whether the adaptive methods refine surfaces of this scheme: their patches
-     * ({@link PatchRefiner}) follow Catmull-Clark's rules only, so a Loop or bilinear mesh is
-     * refused rather than rendered as another surface.
-     *
-     * @param scheme the scheme
-     * @return true for Catmull-Clark
-     */
-    public static boolean refines(SubdivOptions.Scheme scheme) {
-        return scheme == SubdivOptions.Scheme.CATMARK;
-    }
-
     /** What instances share: the control mesh's per-face refiner and facts derived from it once. */
     record Geometry(PatchRefiner refiner, Bounds bounds, boolean closed) {
         static Geometry of(ControlMesh control) {
-            SubdivOptions.Scheme scheme = control.options().scheme();
-            if (!refines(scheme)) {
-                throw new IllegalArgumentException((control.source() == null ? "" : control.source() + ": ")
-                        + "adaptive subdivision refines Catmull-Clark surfaces only, not " + scheme.keyword() + " ones (refine them uniformly)");
-            }
             PatchRefiner r = new PatchRefiner(control);
             double[] box = new double[6];
             double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
@@ -120,7 +102,6 @@ public final class AdaptiveSubdivisionSurface extends GObject {
      * @param control the control mesh
      * @param method  when patches are refined
      * @param smooth  limit normals interpolated (true) or flat facets
-     * @throws IllegalArgumentException if the mesh's scheme is not one the adaptive methods refine ({@link #refines})
      */
     public AdaptiveSubdivisionSurface(ControlMesh control, Method method, boolean smooth) {
         this(Geometry.of(control), method, smooth);

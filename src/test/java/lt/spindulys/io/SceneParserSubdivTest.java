@@ -166,17 +166,25 @@ class SceneParserSubdivTest {
         assertTrue(((SubdivisionSurface) operand).isClosed(), "a closed bilinear surface is a CSG solid");
     }
 
+    private static SubdivOptions.Scheme adaptiveScheme(GObject o) {
+        return assertInstanceOf(lt.spindulys.scene.AdaptiveSubdivisionSurface.class, o).control().options().scheme();
+    }
+
     @Test
-    void theAdaptiveMethodsRefuseSchemesTheyDoNotRefine() throws IOException {
+    void theAdaptiveMethodsRefineWithTheSchemeToo() throws IOException {
         Files.writeString(dir.resolve("tet.obj"), TET);
         Files.writeString(dir.resolve("loop.obj"), TET + "t scheme 0/0/1 loop\n");
-        SceneException e = assertThrows(SceneException.class, () -> SceneParser.parse("subdiv { file \"tet.obj\"  scheme loop  method lazy }", "s.dat", dir));
-        assertEquals("s.dat:1:46: method lazy refines Catmull-Clark surfaces only, and this one is scheme loop; use method uniform", e.getMessage());
-        e = assertThrows(SceneException.class, () -> SceneParser.parse("subdiv { file \"loop.obj\"  method projected }", "s.dat", dir));
-        assertEquals("s.dat:1:34: method projected refines Catmull-Clark surfaces only, and this one is loop (its file's t scheme tag); use method uniform",
-                e.getMessage());
-        assertInstanceOf(lt.spindulys.scene.AdaptiveSubdivisionSurface.class, only("subdiv { file \"loop.obj\"  scheme catmark  method lazy }"),
-                "the key overrides the file's scheme for the adaptive methods too");
+        assertEquals(SubdivOptions.Scheme.LOOP, adaptiveScheme(only("subdiv { file \"tet.obj\"  scheme loop  method lazy }")));
+        assertEquals(SubdivOptions.Scheme.LOOP, adaptiveScheme(only("subdiv { file \"loop.obj\"  method projected }")), "the file's scheme");
+        assertEquals(SubdivOptions.Scheme.CATMARK, adaptiveScheme(only("subdiv { file \"loop.obj\"  scheme catmark  method combined }")),
+                "the key over the file's");
+        // Placements of one control mesh share a refiner only under the same scheme.
+        SceneBuilder b = SceneParser.parse("subdiv { file \"tet.obj\"  method lazy  scheme loop }\nsubdiv { file \"tet.obj\"  method lazy  scheme loop }\n"
+                + "subdiv { file \"tet.obj\"  method lazy  scheme bilinear }\n", "s.dat", dir);
+        var a = (lt.spindulys.scene.AdaptiveSubdivisionSurface) b.objects().get(0);
+        assertSame(a.refiner(), ((lt.spindulys.scene.AdaptiveSubdivisionSurface) b.objects().get(1)).refiner());
+        assertNotSame(a.refiner(), ((lt.spindulys.scene.AdaptiveSubdivisionSurface) b.objects().get(2)).refiner());
+        assertEquals(SubdivOptions.Scheme.BILINEAR, adaptiveScheme(b.objects().get(2)));
     }
 
     @Test
@@ -196,10 +204,9 @@ class SceneParserSubdivTest {
         var s = assertInstanceOf(lt.spindulys.scene.AdaptiveSubdivisionSurface.class, only("subdiv {\n  file \"big.obj\"\n  level 8\n}"));
         assertEquals(lt.spindulys.scene.AdaptiveSubdivisionSurface.Method.COMBINED, s.method());
         assertEquals(8, s.fixedLevel());
-        // Loop and bilinear surfaces have no adaptive method to fall back on: the level is refused, at 'level'.
-        SceneException e = assertThrows(SceneException.class, () -> SceneParser.parse("subdiv {\n  file \"big.obj\"\n  level 8  scheme bilinear\n}", "s.dat", dir));
-        assertTrue(e.getMessage().startsWith("s.dat:3:3: "), e.getMessage());
-        assertTrue(e.getMessage().endsWith("; scheme bilinear needs uniform refinement (the adaptive methods, which render such levels otherwise, "
-                + "refine Catmull-Clark surfaces only)"), e.getMessage());
+        // The same for another scheme: the combined method refines it with that scheme.
+        var b = assertInstanceOf(lt.spindulys.scene.AdaptiveSubdivisionSurface.class, only("subdiv {\n  file \"big.obj\"\n  level 8  scheme bilinear\n}"));
+        assertEquals(8, b.fixedLevel());
+        assertEquals(SubdivOptions.Scheme.BILINEAR, b.control().options().scheme());
     }
 }

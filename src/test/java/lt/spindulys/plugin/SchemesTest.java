@@ -54,7 +54,8 @@ class SchemesTest {
         List<DisplayedSurface> shown = List.of(new DisplayedSurface("tet", loop, DisplayedSurface.Scheme.LOOP, 2));
         RayTracePlugin plugin = new RayTracePlugin();
         PluginOption rendering = plugin.options(shown, VIEW).stream().filter(o -> o.key().equals("surface.0.rendering")).findFirst().orElseThrow();
-        assertEquals(List.of("limit", "host-level"), rendering.choices(), "no adaptive rendering: its patches are Catmull-Clark's");
+        assertEquals(List.of("limit", "host-level", "adaptive"), rendering.choices());
+        assertEquals("limit", rendering.defaultValue());
 
         Map<String, String> o = new HashMap<>();
         o.put("width", "48");
@@ -78,15 +79,22 @@ class SchemesTest {
         Path cc = dir.resolve("catmark.png");
         o.remove("save-scene");
         plugin.run(new PluginRequest(catmark, VIEW, o, cc, PluginProgress.NONE));
-        assertEquals(loopDiffersFromCatmark(), !java.util.Arrays.equals(Files.readAllBytes(out), Files.readAllBytes(cc)));
+        assertTrue(loopDiffersFromCatmark(), "the library refines Loop by its own rules");
+        assertFalse(java.util.Arrays.equals(Files.readAllBytes(out), Files.readAllBytes(cc)), "the picture is the Loop surface's");
 
+        // Adaptive: the combined method refines the Loop surface too, and its saved scene renders the same picture.
         o.put("surface.0.rendering", "adaptive");
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
-                () -> plugin.run(new PluginRequest(shown, VIEW, o, dir.resolve("x.png"), PluginProgress.NONE)));
-        assertTrue(e.getMessage().contains("adaptive"), e.getMessage());
+        o.put("save-scene", "true");
+        Path adaptive = dir.resolve("adaptive.png");
+        plugin.run(new PluginRequest(shown, VIEW, o, adaptive, PluginProgress.NONE));
+        String adaptiveScene = Files.readString(dir.resolve("adaptive.dat"));
+        assertTrue(adaptiveScene.contains("method combined") && adaptiveScene.contains("scheme loop"), adaptiveScene);
+        Path adaptiveAgain = dir.resolve("adaptive-again.png");
+        RenderJob.of(dir.resolve("adaptive.dat")).output(adaptiveAgain).run();
+        assertArrayEquals(Files.readAllBytes(adaptive), Files.readAllBytes(adaptiveAgain));
     }
 
-    /** Whether the subdivision library refines the tetrahedron differently under Loop (once it has Loop's rules). */
+    /** Whether the subdivision library refines the tetrahedron differently under Loop. */
     private static boolean loopDiffersFromCatmark() {
         return !java.util.Arrays.equals(Subdivision.refine(tetrahedron(SubdivOptions.Scheme.LOOP), 2).positions(),
                 Subdivision.refine(tetrahedron(SubdivOptions.Scheme.CATMARK), 2).positions());

@@ -15,7 +15,6 @@ import lt.spindulys.plugin.DisplayedSurface;
 import lt.spindulys.plugin.PluginOption;
 import lt.spindulys.plugin.PluginView;
 import lt.spindulys.scene.RenderSettings;
-import lt.spindulys.scene.AdaptiveSubdivisionSurface;
 import lt.spindulys.scene.SubdivisionSurface;
 import lt.spindulys.subdiv.ControlMesh;
 
@@ -98,8 +97,6 @@ final class RayTraceOptions {
             String group = MessageText.cut(SceneDescription.oneLine(s.name()));
             if (!names.add(group)) group = group + " (surface " + i + ")";
             boolean subdivided = s.scheme() != DisplayedSurface.Scheme.NONE;
-            // The adaptive rendering's patches are Catmull-Clark's: a Loop or bilinear surface is not offered it.
-            boolean adaptive = AdaptiveSubdivisionSurface.refines(s.control().options().scheme());
             boolean smooth = s.shading() == DisplayedSurface.Shading.SMOOTH;
             o.add(PluginOption.choice(surfaceKey(i, MATERIAL), "Material", group, "opaque", MATERIALS,
                     "opaque: coloured; transparent: glass with an index of refraction and a tint; mirror: reflects."));
@@ -118,10 +115,8 @@ final class RayTraceOptions {
                     "An image (PNG, JPEG, TGA) to colour the surface with; empty for none."));
             o.add(PluginOption.choice(surfaceKey(i, MAPPING), "Texture mapping", group, s.control().uvs() != null ? "uv" : "spherical", MAPPINGS,
                     "How the texture is laid on the surface: its own texture coordinates (uv), or projected around its bounds."));
-            o.add(PluginOption.choice(surfaceKey(i, RENDERING), "Rendering", group, subdivided && smooth ? "limit" : "host-level",
-                    adaptive ? RENDERINGS : RENDERINGS.subList(0, 2),
-                    "limit: the smooth limit surface; host-level: subdivided as the viewer shows it"
-                            + (adaptive ? "; adaptive: refined to one-pixel edges." : " (adaptive refinement is for Catmull-Clark surfaces only).")));
+            o.add(PluginOption.choice(surfaceKey(i, RENDERING), "Rendering", group, subdivided && smooth ? "limit" : "host-level", RENDERINGS,
+                    "limit: the smooth limit surface; host-level: subdivided as the viewer shows it; adaptive: refined to one-pixel edges."));
             o.add(PluginOption.choice(surfaceKey(i, SHADING), "Shading", group, smooth ? "smooth" : "flat", SHADINGS,
                     "smooth: limit-surface normals; flat: each facet's own normal."));
         }
@@ -186,7 +181,6 @@ final class RayTraceOptions {
                                                         SceneDescription.MaterialSpec m, SceneDescription.TextureSpec tex) {
         ControlMesh c = s.control();
         boolean shownRefined = s.scheme() != DisplayedSurface.Scheme.NONE;
-        boolean adaptive = AdaptiveSubdivisionSurface.refines(c.options().scheme());
         return switch (rendering) {
             case "limit" -> {
                 // The host's level with every vertex on the limit surface; a surface the host shows
@@ -198,7 +192,6 @@ final class RayTraceOptions {
                 }
                 // Limit positions need uniform refinement; too large for it, the surface is refined
                 // adaptively to half-pixel edges instead, which the eye cannot tell from the limit.
-                if (!adaptive) throw tooLarge(i, name, c, level);
                 yield new SceneDescription.SurfaceSpec(i, name, c, SceneDescription.Method.COMBINED, -1, LIMIT_TARGET, false, smooth, m, tex,
                         "limit surface (adaptive, " + LIMIT_TARGET + " px edges: level " + level + " is too large to refine whole)");
             }
@@ -212,19 +205,11 @@ final class RayTraceOptions {
                 }
                 // As the scene parser does: a level too large to refine whole is rendered by the
                 // combined method at the same level, the same triangles within the memory budget.
-                if (!adaptive) throw tooLarge(i, name, c, level);
                 yield new SceneDescription.SurfaceSpec(i, name, c, SceneDescription.Method.COMBINED, level, Double.NaN, false, smooth, m, tex,
                         what + " (combined method: too large to refine whole)");
             }
             default -> throw new IllegalStateException("rendering without a method: " + rendering);
         };
-    }
-
-    /** A level of a Loop or bilinear surface that uniform refinement cannot hold, which has no adaptive method to fall back on. */
-    private static IllegalArgumentException tooLarge(int i, String name, ControlMesh c, int level) {
-        return new IllegalArgumentException(describe(surfaceKey(i, RENDERING)) + " of surface '" + MessageText.cut(name) + "': level " + level
-                + " is too large to refine whole, and the adaptive refinement that renders such levels otherwise is for Catmull-Clark surfaces only ("
-                + "this one is " + c.options().scheme().keyword() + "); choose a lower level in the viewer");
     }
 
     /** Levels of the limit rendering of a surface the host shows without subdivision. */
