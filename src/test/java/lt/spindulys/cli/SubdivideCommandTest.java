@@ -178,6 +178,23 @@ class SubdivideCommandTest {
             assertEquals(c.scheme(), back.options().scheme(), "the output keeps its scheme: " + String.join(" ", args));
             String text = Files.readString(out);
             assertTrue(text.startsWith("# " + c.name() + " subdivision of tet.obj at level 2"), text.lines().findFirst().orElse(""));
+            // Loop splits each triangle into four triangles; the others make quads (three per triangle at the first level).
+            int size = c.scheme() == SubdivOptions.Scheme.LOOP ? 3 : 4;
+            for (int s : back.mesh().faceSizes()) assertEquals(size, s, String.join(" ", args));
+            assertEquals(c.scheme() == SubdivOptions.Scheme.LOOP ? 4 * 16 : 4 * 3 * 4, back.mesh().faceCount());
+        }
+        // The schemes give three different surfaces.
+        double[] loop = refined(tet, SubdivOptions.Scheme.LOOP, 2).positions(), bilinear = refined(tet, SubdivOptions.Scheme.BILINEAR, 2).positions(),
+                catmark = refined(tet, SubdivOptions.Scheme.CATMARK, 2).positions();
+        assertFalse(java.util.Arrays.equals(bilinear, catmark));
+        assertFalse(java.util.Arrays.equals(loop, catmark));
+        // Bilinear refinement stays on the cage: every vertex of the first face's children lies in its plane (x - y - z = -1 through 1 1 1, -1 -1 1, -1 1 -1).
+        RefinedMesh flat = refined(tet, SubdivOptions.Scheme.BILINEAR, 2);
+        int[] fv = flat.faceVertices();
+        double[] p = flat.positions();
+        for (int c = 0; c < 4 * 4; c++) {
+            int v = fv[c];
+            assertEquals(-1, p[3 * v] - p[3 * v + 1] - p[3 * v + 2], 1e-12, "vertex " + v + " of the first face's children");
         }
     }
 

@@ -203,6 +203,8 @@ class ViewerModelTest {
         assertEquals(List.of(), errors);
         assertEquals(SubdivOptions.Scheme.BILINEAR, s.scheme());
         assertNotSame(loop, faces(m), "another scheme, another geometry");
+        assertEquals(8 * 16, loop.triangleCount(), "Loop: each triangle into four, twice");
+        assertEquals(2 * 8 * 3 * 4, faces(m).triangleCount(), "bilinear: three quads per triangle, then four each, two triangles a quad");
         assertEquals(SubdivOptions.Scheme.BILINEAR, s.shownKey().scheme());
         ViewerSnapshot.Surface snap = m.snapshot().surfaces().get(0);
         assertEquals(SubdivOptions.Scheme.BILINEAR, snap.scheme());
