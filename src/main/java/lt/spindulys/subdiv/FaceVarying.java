@@ -25,6 +25,7 @@ final class FaceVarying {
             boolean chaikin = opt.creasing() == SubdivOptions.Creasing.CHAIKIN;
             Level c = linear ? Refinement.refineCornersAndEdges(level) : Refinement.refine(level, chaikin, geomChild);
             if (linearBoundaries && !linear) pinBoundaries(c);
+            if (!linear) refineDependents(level, c);
             double[] cv = new double[2 * c.nV];
             PrimvarRefiner.interpolate(level, c, opt, 2, values, cv, linear);
             return new Channel(c, cv, linear, linearBoundaries);
@@ -133,6 +134,7 @@ final class FaceVarying {
             }
         }
         boolean[] pin = new boolean[nValues];
+        int[] depOn = null;
         for (int first = 0; first < nValues; ) {
             int v = valueVertex[first], n = valuesAt[v], end = first + n;
             if (mismatch[v]) {
@@ -145,10 +147,32 @@ final class FaceVarying {
                     if (plus2) all |= valueFaces[first] == 1 || valueFaces[first + 1] == 1;
                 }
                 for (int id = first; id < end; id++) pin[id] = all || (valueFaces[id] == 1 && cornersSharp);
+                // Far's dependent sharpness: of two values, one whose span has no semi-sharp edge
+                // while the other's has one stays a corner as long as the other does, then
+                // blends into its crease with the other's weight.
+                if (!all && dependent && n == 2 && geom.vertexSharpness(v) == 0f) {
+                    boolean s0 = semiSharpSpan(lv, eSharp, first), s1 = semiSharpSpan(lv, eSharp, first + 1);
+                    if (s0 != s1) {
+                        int a = s0 ? first + 1 : first, b = s0 ? first : first + 1;
+                        if (!pin[a]) {
+                            if (depOn == null) {
+                                depOn = new int[nValues];
+                                java.util.Arrays.fill(depOn, -1);
+                            }
+                            depOn[a] = b;
+                        }
+                    }
+                }
             }
             first = end;
         }
         levelBuilder.tag(SubdivOptions.Boundary.EDGE_ONLY, anyE ? eSharp : null, vSharp, pin, null);
+        if (depOn != null) {
+            lv.depOn = depOn;
+            for (int a = 0; a < nValues; a++) {
+                if (depOn[a] >= 0) lv.vTag[a] = (byte) ((lv.vTag[a] & ~Level.T_RULE) | Crease.RULE_CORNER);
+            }
+        }
         return new Channel(lv, values, false, linearBoundaries);
     }
 
@@ -166,6 +190,49 @@ final class FaceVarying {
             h = t;
         } while (h != start);
         return false;
+    }
+
+    /** Whether a value's span holds a semi-sharp edge (read from {@code eSharp}, as in {@link #disjoint}). */
+    private static boolean semiSharpSpan(Level lv, float[] eSharp, int id) {
+        int start = lv.vOut[id], h = start;
+        do {
+            if (lv.hTwin[h] >= 0 && Crease.isSemiSharp(eSharp[lv.edge(h)])) return true;
+            int t = lv.hTwin[lv.prev(h)];
+            if (t < 0) break;
+            h = t;
+        } while (h != start);
+        return false;
+    }
+
+    /**
+     * The child's dependent values (see {@link Level#depOn}): a value stays a corner while the
+     * value it depends on stays sharp through semi-sharp edges; otherwise it takes the rule of its
+     * own edges and no longer depends on the other.
+     */
+    static void refineDependents(Level p, Level c) {
+        if (p.depOn == null) return;
+        int[] dep = new int[c.nV];
+        java.util.Arrays.fill(dep, -1);
+        boolean any = false;
+        int[] ring = null;
+        for (int a = 0; a < p.nV; a++) {
+            int b = p.depOn[a];
+            if (b < 0) continue;
+            boolean stillSharp = c.rule(b) == Crease.RULE_CORNER && (c.tag(b) & Level.T_SEMI_EDGES) != 0;
+            int rule;
+            if (stillSharp) {
+                rule = Crease.RULE_CORNER;
+                dep[a] = b;
+                any = true;
+            } else {
+                if (ring == null) ring = new int[c.maxValence() + 2];
+                int n = c.ring(a, ring), edges = c.hTwin[c.vOut[a]] < 0 ? n + 1 : n, sharp = 0;
+                for (int j = 0; j < edges; j++) if (Crease.isSharp(c.edgeSharpness(ring[j]))) sharp++;
+                rule = Crease.vertexRule(c.vertexSharpness(a), sharp);
+            }
+            c.vTag[a] = (byte) ((c.vTag[a] & ~Level.T_RULE) | rule);
+        }
+        c.depOn = any ? dep : null;
     }
 
     /** Linear boundaries: every value on a UV boundary becomes a corner. */

@@ -61,6 +61,11 @@ final class Level {
     final int[] vOut;
 
     byte[] vTag;
+    /**
+     * Only in a UV value mesh with Far's dependent sharpness (CORNERS_PLUS1/PLUS2), else null: per
+     * value vertex, the other value of the same vertex whose semi-sharp decay it follows, or -1.
+     */
+    int[] depOn;
     float[] vSharp;
     float[] eSharp;
     boolean[] hole;

@@ -536,6 +536,16 @@ public final class PatchRefiner {
             n.vTag = new byte[nv];
             for (int v = 0; v < vAt.length; v++) if (vAt[v] >= 0) n.vTag[vAt[v]] = c.vTag[v];
         }
+        if (c.depOn != null) {
+            // A UV value that follows another keeps following it; where that one was cut away
+            // the value is on the rim, whose values are not used.
+            n.depOn = new int[nv];
+            Arrays.fill(n.depOn, -1);
+            for (int v = 0; v < vAt.length; v++) {
+                int b = vAt[v] < 0 ? -1 : c.depOn[v];
+                if (b >= 0 && vAt[b] >= 0) n.depOn[vAt[v]] = vAt[b];
+            }
+        }
         if (c.vSharp != null) {
             n.vSharp = new float[nv];
             for (int v = 0; v < vAt.length; v++) if (vAt[v] >= 0) n.vSharp[vAt[v]] = c.vSharp[v];

@@ -253,7 +253,16 @@ final class PrimvarRefiner {
             // Sdc blends the parent's mask with the child's by the fractional weight.
             double cvw = assign(cRule, cSharp, ewChild, fwChild);
             boolean cEdges = edgesSet, cFaces = facesSet;
-            double pw = Crease.fractionalWeight(pVs, cVs, nEdges, pSharp, chaikin ? cSharp : null);
+            double pw;
+            int b = p.depOn == null ? -1 : p.depOn[v];
+            if (b < 0) {
+                pw = Crease.fractionalWeight(pVs, cVs, nEdges, pSharp, chaikin ? cSharp : null);
+            } else {
+                // A dependent UV value blends with the weight of the value it depends on.
+                if (followed == null) followed = new VertexMask(pSharp.length);
+                followed.gather(p, c, b);
+                pw = Crease.fractionalWeight(p.vertexSharpness(b), c.vertexSharpness(b), followed.nEdges, followed.pSharp, chaikin ? followed.cSharp : null);
+            }
             double cw = 1.0 - pw;
             vw = pw * vw + cw * cvw;
             if (cEdges) {
@@ -269,6 +278,8 @@ final class PrimvarRefiner {
         /** Whether the mask last assigned has edge and face weights. */
         private boolean edgesSet, facesSet;
         private final int[] ends = new int[2];
+        /** The neighbourhood of the value a dependent UV value follows (made when first needed). */
+        private VertexMask followed;
         /** The scheme's masks, and whether it makes face points. */
         private SchemeRules rules;
         private boolean facePoints;

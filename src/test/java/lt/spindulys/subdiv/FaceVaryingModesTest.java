@@ -17,7 +17,8 @@ import org.junit.jupiter.params.provider.MethodSource;
 /**
  * UVs under every face-varying interpolation mode but ALL (which the main corpus covers), against
  * Far, for the three schemes: the shapes whose UVs have seams, refined twice with the mode set
- * after their tags. The
+ * after their tags; Loop shapes with semi-sharp creases also deeper, where Far's dependent
+ * sharpness (CORNERS_PLUS1/PLUS2) decays, one of them with warped UVs so that the decay shows. The
  * reference files under {@code subdiv/fvar/} were written with Far 3.5.0's
  * {@code PrimvarRefinerReal<double>::InterpolateFaceVarying} (see the README there).
  */
@@ -36,27 +37,9 @@ class FaceVaryingModesTest {
         return out.stream();
     }
 
-    /**
-     * Cases that do not match Far, with the reason. Each is still run and must still fail, so the
-     * list cannot outlive the problem.
-     */
-    static final java.util.Set<String> KNOWN_FAILURES = java.util.Set.of(
-            "loop_cube_creases1 CORNERS_PLUS1", "loop_cube_creases1 CORNERS_PLUS2",
-            "loop_cubes_semisharp CORNERS_PLUS1", "loop_cubes_semisharp CORNERS_PLUS2",
-            "loop_icos_semisharp CORNERS_PLUS1", "loop_icos_semisharp CORNERS_PLUS2");
-    /** Why they fail. */
-    static final String KNOWN_REASON = "Far's dependent sharpness: with CORNERS_PLUS1/PLUS2 a UV value at a two-value "
-            + "vertex whose own span has no semi-sharp edge, while the other span has one, follows the other's decay; "
-            + "the value mesh smooths it as a plain crease";
-
     @ParameterizedTest(name = "{0} {1} L{2}")
     @MethodSource("cases")
     void uvsMatchFar(String shape, SubdivOptions.FaceVarying mode, int level) {
-        if (KNOWN_FAILURES.contains(shape + " " + mode)) {
-            org.junit.jupiter.api.Assertions.assertThrows(AssertionError.class, () -> check(shape, mode, level),
-                    shape + " " + mode + " is a known failure (" + KNOWN_REASON + ") but now passes: remove it from the list");
-            return;
-        }
         check(shape, mode, level);
     }
 

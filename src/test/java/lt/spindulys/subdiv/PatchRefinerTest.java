@@ -54,6 +54,9 @@ class PatchRefinerTest {
                 checkExact(shape + " " + b, Corpus.load(shape, o -> o.withBoundary(b)), 3);
             }
         }
+        // UV values that follow another's semi-sharp decay (Far's dependent sharpness).
+        checkExact("loop_cube_creases1_uvwarp CORNERS_PLUS1", Corpus.load("loop_cube_creases1_uvwarp",
+                o -> o.withFaceVarying(SubdivOptions.FaceVarying.CORNERS_PLUS1)), 4);
         for (SubdivOptions.FaceVarying mode : SubdivOptions.FaceVarying.values()) {
             checkExact("loop_fvar_bound1 " + mode, Corpus.load("loop_fvar_bound1", o -> o.withFaceVarying(mode)), 3);
             checkExact("bilinear_nonquads1 " + mode, Corpus.load("bilinear_nonquads1", o -> o.withFaceVarying(mode)), 3);
