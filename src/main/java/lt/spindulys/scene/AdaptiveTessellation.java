@@ -23,6 +23,7 @@ import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
 import lt.spindulys.mesh.MeshData;
 import lt.spindulys.subdiv.PatchRefiner;
+import lt.spindulys.subdiv.SubdivOptions;
 import lt.spindulys.trace.Hit;
 import lt.spindulys.trace.ShadingData;
 import lt.spindulys.trace.SpanBuffer;
@@ -39,8 +40,9 @@ import lt.spindulys.trace.TraceContext;
  * <p>Every patch is a pure function of its face, its level and its edges' levels, so the image
  * does not depend on which patches were cached, evicted and rebuilt, on the cache's size or on
  * the number of threads. A face's box is the box of its one-ring control points, which contains
- * every refined level of it (all Catmull-Clark weights are non-negative): no ray can miss a
- * part of the surface that bulges past the coarse mesh.
+ * every refined level of it (the weights of every scheme's rules, Catmull-Clark's, Loop's and
+ * bilinear's, are non-negative: {@link PatchRefiner#oneRingBounds}): no ray can miss a part of
+ * the surface that bulges past the coarse mesh.
  */
 final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
     /** Off-screen edges are refined as if this many times shorter (Cycles' offscreen dicing scale). */
@@ -104,10 +106,15 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
      */
     static final long PATCH_BYTES_PER_TRIANGLE = 80;
 
-    /** Triangles of face {@code f}'s patch: a polygon's fan at level 0, else two per quad. */
+    /**
+     * Triangles of face {@code f}'s patch: a polygon's fan at level 0; past it, a triangle of a
+     * Loop mesh gives 4^l triangles, and any other face n quads at level 1, four times more at
+     * each level after, two triangles each.
+     */
     private long triangles(int f) {
         int n = refiner.faceSize(f), l = faceLevel[f];
-        return l == 0 ? n - 2 : 2L * n << (2 * (l - 1));
+        if (l == 0) return n - 2;
+        return refiner.control().options().scheme() == SubdivOptions.Scheme.LOOP ? 1L << (2 * l) : 2L * n << (2 * (l - 1));
     }
 
     /** Heap face {@code f}'s patch holds, all told (what pinning it costs). */
