@@ -213,6 +213,26 @@ class SchemeSurfacesTest {
         }
     }
 
+    /**
+     * The projected method's eager mesh is counted at one triangle per refined Loop face: with
+     * exactly the room that count needs, it stays eager (counted as two per face, as for quads,
+     * it would not fit and turn combined).
+     */
+    @Test
+    void aLoopSurfaceStaysEagerWithExactlyTheRoomItsTrianglesNeed() {
+        ControlMesh c = icosahedron(Scheme.LOOP);
+        int level = 3;
+        long patches = AdaptiveSubdivisionTest.patchBytes(adaptive(c, "projected", level), level)[1];
+        long triangles = 20L << (2 * level);
+        long need = patches + triangles * AdaptiveTessellation.FLAT_BYTES_PER_TRIANGLE, cache = 1 << 20;
+        for (long room : new long[] {need, need - 1}) {
+            Scene s = scene(8, 6, new AdaptiveSettings(cache + room, cache, false, Double.NaN), adaptive(c, "projected", level));
+            String stats = AdaptiveSubdivisionTest.surface(s).statistics();
+            if (room == need) assertTrue(stats.contains("; eager " + triangles + " triangles"), stats);
+            else assertTrue(stats.contains("as combined"), stats);
+        }
+    }
+
     // ---- the view-dependent tessellation ----
 
     /** A scene with the camera 1.7 radii from the centre, so that edge levels differ. */
