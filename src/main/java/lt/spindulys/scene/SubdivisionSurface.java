@@ -22,14 +22,17 @@ import lt.spindulys.math.Motion;
 import lt.spindulys.material.Material;
 
 /**
- * A Catmull-Clark subdivision surface: a control mesh refined uniformly to a fixed level once, at
- * construction, and rendered as the triangles of the refined quads. Hole faces are left out; each
- * quad is split into two triangles along its shorter diagonal. Smooth shading interpolates the
- * limit-surface normals of the refined vertices, which makes even a low level look round (at a
- * sharp edge, where the limit surface has a tangent plane on either side, each side keeps its own
- * normal); flat shading uses each triangle's own normal and shows the facets. The triangles'
- * corners are the refined vertices where the refinement puts them, or, with
- * {@link Positions#LIMIT}, their limit-surface positions, so that every corner lies on the surface.
+ * A subdivision surface of any of the three schemes (the control mesh's
+ * {@link lt.spindulys.subdiv.SubdivOptions#scheme()}: Catmull-Clark, Loop or bilinear): a control
+ * mesh refined uniformly to a fixed level once, at construction, and rendered as the triangles of the
+ * refined faces. Hole faces are left out; each refined quad (Catmull-Clark, bilinear) is split
+ * into two triangles along its shorter diagonal, and each refined triangle (Loop) is one. Smooth
+ * shading interpolates the limit-surface normals of the refined vertices, which makes even a low
+ * level look round (at a sharp edge, where the limit surface has a tangent plane on either side,
+ * each side keeps its own normal); flat shading uses each triangle's own normal and shows the
+ * facets. The triangles' corners are the refined vertices where the refinement puts them, or, with
+ * {@link Positions#LIMIT}, their limit-surface positions, so that every corner lies on the
+ * surface.
  *
  * <p>The triangles are an ordinary {@link TriangleMesh} (positions of the refined vertices, limit
  * normals, refined face-varying UVs), and every query is delegated to it: the surface hits,
@@ -37,7 +40,7 @@ import lt.spindulys.material.Material;
  * refraction and CSG) when the refined mesh is.
  */
 public final class SubdivisionSurface extends GObject {
-    /** The deepest level: a quad becomes 4^8 = 65,536 quads. */
+    /** The deepest level: a quad becomes 4^8 = 65,536 quads, a Loop triangle as many triangles. */
     public static final int MAX_LEVEL = 8;
 
     /**
@@ -309,7 +312,7 @@ public final class SubdivisionSurface extends GObject {
      */
     public MeshData triangleData() { return mesh.data(); }
     /**
-     * Triangles rendered: two per refined quad, holes left out.
+     * Triangles rendered: two per refined quad, one per refined Loop triangle, holes left out.
      *
      * @return the number of triangles rendered
      */
