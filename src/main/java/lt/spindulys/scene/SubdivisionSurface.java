@@ -18,6 +18,7 @@ import lt.spindulys.subdiv.Subdivision;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.RefinedMesh;
 import lt.spindulys.subdiv.RefinedTriangles;
+import lt.spindulys.subdiv.SubdivOptions;
 import lt.spindulys.math.Motion;
 import lt.spindulys.material.Material;
 
@@ -114,7 +115,7 @@ public final class SubdivisionSurface extends GObject {
      */
     public SubdivisionSurface(ControlMesh control, int level, boolean smooth, Positions positions) {
         Objects.requireNonNull(positions, "positions");
-        checkLevel(level, control.refinedFaceCount(level), positions == Positions.LIMIT ? BYTES_PER_FACE + LIMIT_POSITION_BYTES_PER_FACE : BYTES_PER_FACE);
+        checkLevel(level, control.refinedFaceCount(level), bytesPerFace(control.options().scheme(), positions == Positions.LIMIT));
         this.level = level;
         this.smooth = smooth;
         this.positions = positions;
@@ -219,6 +220,28 @@ public final class SubdivisionSurface extends GObject {
      * per refined face).
      */
     public static final long BYTES_PER_FACE = 560;
+
+    /**
+     * {@link #BYTES_PER_FACE} for a Loop surface, whose refined faces are triangles: one triangle
+     * and about half a vertex each, where a quad is two triangles and about one vertex. Measured
+     * beside Catmull-Clark in one harness (docs/performance.md, heap per refined face: Loop's peak
+     * is two thirds of a quad's), with the same margin over the peak as {@link #BYTES_PER_FACE}.
+     */
+    public static final long LOOP_BYTES_PER_FACE = 380;
+
+    /**
+     * Heap a surface of this scheme needs per refined face at its peak while it is built:
+     * {@link #LOOP_BYTES_PER_FACE} for Loop's triangles, {@link #BYTES_PER_FACE} for the quads of
+     * Catmull-Clark and bilinear, with {@link #LIMIT_POSITION_BYTES_PER_FACE} more for limit
+     * positions.
+     *
+     * @param scheme the control mesh's scheme
+     * @param limit  whether the vertices are placed at their limit positions
+     * @return bytes per refined face, for {@link #checkLevel(int, long, long)}
+     */
+    public static long bytesPerFace(SubdivOptions.Scheme scheme, boolean limit) {
+        return (scheme == SubdivOptions.Scheme.LOOP ? LOOP_BYTES_PER_FACE : BYTES_PER_FACE) + (limit ? LIMIT_POSITION_BYTES_PER_FACE : 0);
+    }
 
     /**
      * {@link #checkLevel(int, long)} with the heap each refined face costs given: also refuses a

@@ -186,6 +186,25 @@ class SchemeSurfacesTest {
         }
     }
 
+    /**
+     * The level check counts a Loop surface's refined triangles at Loop's own figure per face,
+     * below a quad's: under a heap cap between the two needs, Loop's level 5 of the icosahedron
+     * (20,480 triangles) is built, Catmull-Clark's of the same cage (15,360 quads) refused.
+     */
+    @Test
+    void theLevelCheckCountsLoopTrianglesAtTheirOwnCost() {
+        assertTrue(SubdivisionSurface.bytesPerFace(Scheme.LOOP, false) < SubdivisionSurface.BYTES_PER_FACE);
+        assertEquals(SubdivisionSurface.BYTES_PER_FACE, SubdivisionSurface.bytesPerFace(Scheme.BILINEAR, false));
+        long loop = 20480 * SubdivisionSurface.bytesPerFace(Scheme.LOOP, false), quads = 15360 * SubdivisionSurface.BYTES_PER_FACE;
+        assertTrue(loop < quads);
+        try (lt.spindulys.limits.HeapBudget.Scope cap = lt.spindulys.limits.HeapBudget.cap((loop + quads) / 2)) {
+            assertEquals(20480, new SubdivisionSurface(icosahedron(Scheme.LOOP), 5).triangleCount());
+            IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                    () -> new SubdivisionSurface(icosahedron(Scheme.CATMARK), 5));
+            assertTrue(e.getMessage().contains("subdivision level 5 of this mesh (15360 faces"), e.getMessage());
+        }
+    }
+
     // ---- at a fixed level, every adaptive path gives the uniform surface ----
 
     static Stream<Arguments> fixedLevelCages() {
