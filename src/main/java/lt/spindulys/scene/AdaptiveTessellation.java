@@ -50,6 +50,8 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
 
     private final AdaptiveSubdivisionSurface.Geometry geometry;
     private final PatchRefiner refiner;
+    /** Whether the faces split into triangles (Loop) rather than quads. */
+    private final boolean loop;
     private final AdaptiveSubdivisionSurface.Method method;
     private final boolean smooth;
     private final int fixedLevel, maxLevel;
@@ -82,6 +84,7 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
     AdaptiveTessellation(AdaptiveSubdivisionSurface s, double target) {
         geometry = s.geometry();
         refiner = geometry.refiner();
+        loop = refiner.control().options().scheme() == SubdivOptions.Scheme.LOOP;
         method = s.method();
         smooth = s.isSmooth();
         fixedLevel = s.fixedLevel();
@@ -107,14 +110,13 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
     static final long PATCH_BYTES_PER_TRIANGLE = 80;
 
     /**
-     * Triangles of face {@code f}'s patch: a polygon's fan at level 0; past it, a triangle of a
-     * Loop mesh gives 4^l triangles, and any other face n quads at level 1, four times more at
-     * each level after, two triangles each.
+     * Triangles of face {@code f}'s patch: a polygon's fan at level 0, else two per quad (n quads
+     * at level 1), or for Loop the triangle's own 4^l.
      */
     private long triangles(int f) {
         int n = refiner.faceSize(f), l = faceLevel[f];
         if (l == 0) return n - 2;
-        return refiner.control().options().scheme() == SubdivOptions.Scheme.LOOP ? 1L << (2 * l) : 2L * n << (2 * (l - 1));
+        return loop ? 1L << (2 * l) : 2L * n << (2 * (l - 1));
     }
 
     /** Heap face {@code f}'s patch holds, all told (what pinning it costs). */
