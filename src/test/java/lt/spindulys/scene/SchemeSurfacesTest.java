@@ -435,9 +435,10 @@ class SchemeSurfacesTest {
         assertTrue(removed > 100, "the cutter removes a real piece: " + removed);
     }
 
-    @Test
-    void aCheckerOnTheRefinedUvsOfALoopSurfaceEqualsTheUniformOne() {
-        ControlMesh c = sheet(Scheme.LOOP, 4);
+    @ParameterizedTest(name = "{0}")
+    @org.junit.jupiter.params.provider.EnumSource(value = Scheme.class, names = {"LOOP", "BILINEAR"})
+    void aCheckerOnTheRefinedUvsEqualsTheUniformOne(Scheme scheme) {
+        ControlMesh c = sheet(scheme, 4);
         Material checker = Material.builder().color(Color.WHITE)
                 .texture(Channel.DIFFUSE, new Checker(new Color(1, 0.1, 0.1), new Color(0.1, 0.1, 1), 8, false), new Uv(1, 1)).build();
         assertLazyRendersAsUniform(c, 3, RenderSettings.builder(), s -> List.of(s.get().material(checker)), "checker on UVs");
