@@ -401,14 +401,15 @@ class SchemeSurfacesTest {
         assertSameImages(u, l, what);
     }
 
-    @Test
-    void csgWithALoopOperandEqualsTheUniformOneAndCutsIt() {
-        ControlMesh c = icosahedron(Scheme.LOOP);
+    @ParameterizedTest(name = "{0}")
+    @org.junit.jupiter.params.provider.EnumSource(value = Scheme.class, names = {"LOOP", "BILINEAR"})
+    void csgWithAnOperandOfTheSchemeEqualsTheUniformOneAndCutsIt(Scheme scheme) {
+        ControlMesh c = icosahedron(scheme);
         for (Bool.Op op : Bool.Op.values()) {
             assertLazyRendersAsUniform(c, 3, RenderSettings.builder(),
                     s -> List.of(new Bool(op, List.of(s.get(), new Sphere(new Vec3(-0.5, 0.6, -0.5), 0.6)))), op + " with a sphere");
         }
-        // Rays from inside the difference of two Loop surfaces always hit it, and the cut removes a real piece.
+        // Rays from inside the difference of two such surfaces (uniform minus lazy) always hit it, and the cut removes a real piece.
         SubdivisionSurface a = new SubdivisionSurface(c, 3);
         AdaptiveSubdivisionSurface b = adaptive(c, "lazy", 3);
         b.transform(Transform.scale(0.7, 0.7, 0.7)).transform(Transform.translate(0.5, 0.3, -0.2));
@@ -420,7 +421,7 @@ class SchemeSurfacesTest {
         int tried = 0, escaped = 0, removed = 0;
         while (tried < 3000) {
             double x = rnd.nextDouble(-0.7, 0.7), y = rnd.nextDouble(-0.7, 0.7), z = rnd.nextDouble(-0.7, 0.7);
-            if (x * x + y * y + z * z > 0.49) continue; // inside the Loop surface (radius > 0.7 everywhere)
+            if (x * x + y * y + z * z > 0.49) continue; // inside the surface (Loop's and the cage's radius > 0.7 everywhere)
             double bx = (x - 0.5) / 0.7, by = (y - 0.3) / 0.7, bz = (z + 0.2) / 0.7;
             double rb = Math.sqrt(bx * bx + by * by + bz * bz);
             if (rb < 0.7) { removed++; continue; } // inside the cutter, so not in the result
@@ -456,16 +457,18 @@ class SchemeSurfacesTest {
         assertTrue(red > 100 && blue > 100, "both checker colours show: " + red + " red, " + blue + " blue pixels");
     }
 
-    @Test
-    void aMovingLoopSurfaceEqualsTheUniformOne() {
+    @ParameterizedTest(name = "{0}")
+    @org.junit.jupiter.params.provider.EnumSource(value = Scheme.class, names = {"LOOP", "BILINEAR"})
+    void aMovingSurfaceEqualsTheUniformOne(Scheme scheme) {
         Motion m = Motion.of(new Vec3(1, 1, 1), Vec3.Y, 25, new Vec3(0.7, 0.2, 0), Vec3.ZERO, Double.NaN, Double.NaN);
-        assertLazyRendersAsUniform(creasedOctahedron(Scheme.LOOP), 3, RenderSettings.builder().samplesPerPixel(4).shutter(0, 1),
+        assertLazyRendersAsUniform(creasedOctahedron(scheme), 3, RenderSettings.builder().samplesPerPixel(4).shutter(0, 1),
                 s -> List.of(s.get().motion(m)), "motion blur");
     }
 
-    @Test
-    void instancesOfALoopSurfaceShareOneTessellationBuiltOncePerFace() {
-        ControlMesh c = icosahedron(Scheme.LOOP);
+    @ParameterizedTest(name = "{0}")
+    @org.junit.jupiter.params.provider.EnumSource(value = Scheme.class, names = {"LOOP", "BILINEAR"})
+    void instancesShareOneTessellationBuiltOncePerFace(Scheme scheme) {
+        ControlMesh c = icosahedron(scheme);
         List<GObject> two = new ArrayList<>();
         AdaptiveSubdivisionSurface first = adaptive(c, "lazy", 3);
         first.transform(Transform.scale(0.6, 0.6, 0.6)).transform(Transform.translate(-0.7, 0, 0));
