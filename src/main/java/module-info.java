@@ -1,8 +1,8 @@
 /**
- * Spindulys, a Whitted ray tracer for Catmull-Clark subdivision surfaces with CSG. Build a scene
- * with {@link lt.spindulys.scene.SceneBuilder} (or parse one with {@link lt.spindulys.io.SceneParser}),
- * render it with {@link lt.spindulys.render.Renderer} and write the image with
- * {@link lt.spindulys.image.ImageWriter}.
+ * Spindulys, a Whitted ray tracer for subdivision surfaces (Catmull-Clark, Loop and bilinear)
+ * with CSG. Build a scene with {@link lt.spindulys.scene.SceneBuilder} (or parse one with
+ * {@link lt.spindulys.io.SceneParser}), render it with {@link lt.spindulys.render.Renderer} and
+ * write the image with {@link lt.spindulys.image.ImageWriter}.
  *
  * <p>Only the packages a library user needs are exported; the per-ray machinery (hit records,
  * traversal scratch, acceleration structures, shading, sampling) and the command line stay inside.

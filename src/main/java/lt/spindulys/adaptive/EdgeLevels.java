@@ -8,11 +8,12 @@ import lt.spindulys.math.Transform;
 import lt.spindulys.math.Vec3;
 
 /**
- * View-dependent Catmull-Clark levels: each refinement step halves the edges, so a control edge
- * whose projection is P pixels long needs ceil(log2(P / target)) steps to reach {@code target}
- * pixels. A level is computed per control edge from that edge's two end points only, so the two
- * faces sharing an edge always see the same level (design note, pitfall 1), clamped to a maximum
- * and coarsened off screen (pitfall 8). Stateless.
+ * View-dependent subdivision levels: each refinement step of every scheme (Catmull-Clark, Loop,
+ * bilinear) halves the edges, so a control edge whose projection is P pixels long needs
+ * ceil(log2(P / target)) steps to reach {@code target} pixels. A level is computed per control
+ * edge from that edge's two end points only, so the two faces sharing an edge always see the same
+ * level (design note, pitfall 1), clamped to a maximum and coarsened off screen (pitfall 8).
+ * Stateless.
  *
  * <p><b>Moving objects.</b> The placement is evaluated at {@link #INTERVALS} + 1 times evenly spread
  * over the shutter, its ends included. Between two samples each end of an edge stays within the

@@ -154,7 +154,7 @@ final class SceneAssetCache {
             boolean limit = positions == SubdivisionSurface.Positions.LIMIT;
             try {
                 SubdivisionSurface.checkLevel(level, input.refinedFaceCount(level),
-                        limit ? SubdivisionSurface.BYTES_PER_FACE + SubdivisionSurface.LIMIT_POSITION_BYTES_PER_FACE : SubdivisionSurface.BYTES_PER_FACE);
+                        SubdivisionSurface.bytesPerFace(input.options().scheme(), limit));
             } catch (IllegalArgumentException e) {
                 if (!(e instanceof InsufficientMemoryException) && input.refinedFaceCount(level) <= SubdivisionSurface.MAX_FACES) throw err.wrap(levelAt, e);
                 // The combined method has no limit positions: the level is refused rather than rendered otherwise.

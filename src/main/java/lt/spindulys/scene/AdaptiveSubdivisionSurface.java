@@ -15,12 +15,13 @@ import lt.spindulys.trace.SpanBuffer;
 import lt.spindulys.trace.TraceContext;
 
 /**
- * A Catmull-Clark subdivision surface refined only as far as the camera needs: chapter 6 of the
- * thesis, and past it. Each coarse face is refined on its own, from its one-ring, to the level
- * its edges need; an edge's level comes from its projected length in pixels (each step halves
- * it) and is the same for both faces sharing it, and a face refined deeper than one of its edges
- * is stitched to that edge's vertices, so the surface is watertight. At a fixed level every face
- * gives exactly the triangles the uniform {@link SubdivisionSurface} gives it.
+ * A subdivision surface (Catmull-Clark, Loop or bilinear: the control mesh's scheme) refined only as
+ * far as the camera needs: chapter 6 of the thesis, and past it (the thesis names adaptive
+ * subdivision for other schemes as future work). Each coarse face is refined on its own, from its
+ * one-ring, to the level its edges need; an edge's level comes from its projected length in pixels
+ * (each step halves it) and is the same for both faces sharing it, and a face refined deeper than
+ * one of its edges is stitched to that edge's vertices, so the surface is watertight. At a fixed
+ * level every face gives exactly the triangles the uniform {@link SubdivisionSurface} gives it.
  *
  * <p>Three methods, named as the thesis names them:
  * <ul>

@@ -40,8 +40,9 @@ import lt.spindulys.trace.TraceContext;
  * <p>Every patch is a pure function of its face, its level and its edges' levels, so the image
  * does not depend on which patches were cached, evicted and rebuilt, on the cache's size or on
  * the number of threads. A face's box is the box of its one-ring control points, which contains
- * every refined level of it (all Catmull-Clark weights are non-negative): no ray can miss a
- * part of the surface that bulges past the coarse mesh.
+ * every refined level of it (the weights of every scheme's rules, Catmull-Clark's, Loop's and
+ * bilinear's, are non-negative: {@link PatchRefiner#oneRingBounds}): no ray can miss a part of
+ * the surface that bulges past the coarse mesh.
  */
 final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
     /** Off-screen edges are refined as if this many times shorter (Cycles' offscreen dicing scale). */

@@ -18,18 +18,22 @@ import lt.spindulys.subdiv.Subdivision;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.RefinedMesh;
 import lt.spindulys.subdiv.RefinedTriangles;
+import lt.spindulys.subdiv.SubdivOptions;
 import lt.spindulys.math.Motion;
 import lt.spindulys.material.Material;
 
 /**
- * A Catmull-Clark subdivision surface: a control mesh refined uniformly to a fixed level once, at
- * construction, and rendered as the triangles of the refined quads. Hole faces are left out; each
- * quad is split into two triangles along its shorter diagonal. Smooth shading interpolates the
- * limit-surface normals of the refined vertices, which makes even a low level look round (at a
- * sharp edge, where the limit surface has a tangent plane on either side, each side keeps its own
- * normal); flat shading uses each triangle's own normal and shows the facets. The triangles'
- * corners are the refined vertices where the refinement puts them, or, with
- * {@link Positions#LIMIT}, their limit-surface positions, so that every corner lies on the surface.
+ * A subdivision surface of any of the three schemes (the control mesh's
+ * {@link lt.spindulys.subdiv.SubdivOptions#scheme()}: Catmull-Clark, Loop or bilinear): a control
+ * mesh refined uniformly to a fixed level once, at construction, and rendered as the triangles of the
+ * refined faces. Hole faces are left out; each refined quad (Catmull-Clark, bilinear) is split
+ * into two triangles along its shorter diagonal, and each refined triangle (Loop) is one. Smooth
+ * shading interpolates the limit-surface normals of the refined vertices, which makes even a low
+ * level look round (at a sharp edge, where the limit surface has a tangent plane on either side,
+ * each side keeps its own normal); flat shading uses each triangle's own normal and shows the
+ * facets. The triangles' corners are the refined vertices where the refinement puts them, or, with
+ * {@link Positions#LIMIT}, their limit-surface positions, so that every corner lies on the
+ * surface.
  *
  * <p>The triangles are an ordinary {@link TriangleMesh} (positions of the refined vertices, limit
  * normals, refined face-varying UVs), and every query is delegated to it: the surface hits,
@@ -37,7 +41,7 @@ import lt.spindulys.material.Material;
  * refraction and CSG) when the refined mesh is.
  */
 public final class SubdivisionSurface extends GObject {
-    /** The deepest level: a quad becomes 4^8 = 65,536 quads. */
+    /** The deepest level: a quad becomes 4^8 = 65,536 quads, a Loop triangle as many triangles. */
     public static final int MAX_LEVEL = 8;
 
     /**
@@ -111,7 +115,7 @@ public final class SubdivisionSurface extends GObject {
      */
     public SubdivisionSurface(ControlMesh control, int level, boolean smooth, Positions positions) {
         Objects.requireNonNull(positions, "positions");
-        checkLevel(level, control.refinedFaceCount(level), positions == Positions.LIMIT ? BYTES_PER_FACE + LIMIT_POSITION_BYTES_PER_FACE : BYTES_PER_FACE);
+        checkLevel(level, control.refinedFaceCount(level), bytesPerFace(control.options().scheme(), positions == Positions.LIMIT));
         this.level = level;
         this.smooth = smooth;
         this.positions = positions;
@@ -218,6 +222,28 @@ public final class SubdivisionSurface extends GObject {
     public static final long BYTES_PER_FACE = 560;
 
     /**
+     * {@link #BYTES_PER_FACE} for a Loop surface, whose refined faces are triangles: one triangle
+     * and about half a vertex each, where a quad is two triangles and about one vertex. Measured
+     * beside Catmull-Clark in one harness (docs/performance.md, heap per refined face: Loop's peak
+     * is two thirds of a quad's), with the same margin over the peak as {@link #BYTES_PER_FACE}.
+     */
+    public static final long LOOP_BYTES_PER_FACE = 380;
+
+    /**
+     * Heap a surface of this scheme needs per refined face at its peak while it is built:
+     * {@link #LOOP_BYTES_PER_FACE} for Loop's triangles, {@link #BYTES_PER_FACE} for the quads of
+     * Catmull-Clark and bilinear, with {@link #LIMIT_POSITION_BYTES_PER_FACE} more for limit
+     * positions.
+     *
+     * @param scheme the control mesh's scheme
+     * @param limit  whether the vertices are placed at their limit positions
+     * @return bytes per refined face, for {@link #checkLevel(int, long, long)}
+     */
+    public static long bytesPerFace(SubdivOptions.Scheme scheme, boolean limit) {
+        return (scheme == SubdivOptions.Scheme.LOOP ? LOOP_BYTES_PER_FACE : BYTES_PER_FACE) + (limit ? LIMIT_POSITION_BYTES_PER_FACE : 0);
+    }
+
+    /**
      * {@link #checkLevel(int, long)} with the heap each refined face costs given: also refuses a
      * level whose {@code refinedFaces * bytesPerFace} the heap cannot give now, with a message that
      * says how much it needs and how much is free.
@@ -309,7 +335,7 @@ public final class SubdivisionSurface extends GObject {
      */
     public MeshData triangleData() { return mesh.data(); }
     /**
-     * Triangles rendered: two per refined quad, holes left out.
+     * Triangles rendered: two per refined quad, one per refined Loop triangle, holes left out.
      *
      * @return the number of triangles rendered
      */

@@ -186,7 +186,7 @@ final class RayTraceOptions {
                 // The host's level with every vertex on the limit surface; a surface the host shows
                 // unrefined gets a few levels, else its "limit" would be its own cage shrunk.
                 int level = shownRefined ? s.level() : LIMIT_LEVEL_OF_A_POLYHEDRON;
-                if (fits(c, level, SubdivisionSurface.BYTES_PER_FACE + SubdivisionSurface.LIMIT_POSITION_BYTES_PER_FACE)) {
+                if (fits(c, level, SubdivisionSurface.bytesPerFace(c.options().scheme(), true))) {
                     yield new SceneDescription.SurfaceSpec(i, name, c, SceneDescription.Method.UNIFORM, level, Double.NaN, true, smooth, m, tex,
                             "limit surface (level " + level + ", vertices at their limit positions)");
                 }
@@ -200,7 +200,7 @@ final class RayTraceOptions {
             case "host-level" -> {
                 int level = shownRefined ? s.level() : 0;
                 String what = level == 0 ? "control mesh" : "level " + level;
-                if (fits(c, level, SubdivisionSurface.BYTES_PER_FACE)) {
+                if (fits(c, level, SubdivisionSurface.bytesPerFace(c.options().scheme(), false))) {
                     yield new SceneDescription.SurfaceSpec(i, name, c, SceneDescription.Method.UNIFORM, level, Double.NaN, false, smooth, m, tex, what);
                 }
                 // As the scene parser does: a level too large to refine whole is rendered by the
