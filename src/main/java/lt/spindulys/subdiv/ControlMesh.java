@@ -332,6 +332,7 @@ public final class ControlMesh {
             int[] sizes = faceSizes.clone(), verts = faceVertices.clone();
             BaseLevelBuilder levelBuilder = new BaseLevelBuilder(nV, sizes, verts, generalFaces);
             Level base = levelBuilder.level;
+            base.triangleSplit = options.scheme() == SubdivOptions.Scheme.LOOP;
             float[] eSharp = null;
             for (int i = 0; i < creaseCount; i++) {
                 int a = creases[2 * i], b = creases[2 * i + 1];

@@ -70,8 +70,10 @@ final class FaceVarying {
         }
         BaseLevelBuilder levelBuilder = new BaseLevelBuilder(nValues, faceSizes, valueOf, geom.faceStart != null);
         Level lv = levelBuilder.level;
+        lv.triangleSplit = geom.triangleSplit;
         SubdivOptions.FaceVarying fv = opt.fvar();
-        boolean linear = fv == SubdivOptions.FaceVarying.ALL;
+        // Bilinear refinement interpolates every value linearly, whatever the option says.
+        boolean linear = fv == SubdivOptions.FaceVarying.ALL || opt.scheme() == SubdivOptions.Scheme.BILINEAR;
         boolean linearBoundaries = linear || fv == SubdivOptions.FaceVarying.BOUNDARIES;
         if (linear) {
             levelBuilder.tag(SubdivOptions.Boundary.EDGE_ONLY, null, null, null, null);

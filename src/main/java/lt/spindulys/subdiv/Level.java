@@ -44,8 +44,16 @@ final class Level {
     final int depth;
     final int nV, nF, nE, nH;
     final int[] faceStart;
-    /** Face of each half-edge, only when faces are not all quads. */
+    /**
+     * Face of each half-edge, only when faces are not all quads; null too in a level made by the
+     * triangle split (all triangles: face f owns {@code 3f .. 3f+2}).
+     */
     final int[] hFace;
+    /**
+     * Whether this level is split into triangles (Loop: every face a triangle, split in four)
+     * rather than into quads (Catmull-Clark and bilinear: one quad per face corner).
+     */
+    boolean triangleSplit;
     final int[] hOrig, hTwin;
     /** Edge codes; null after {@link #dropEdgeCodes} until {@link #edgeCodes()} rebuilds them. */
     int[] hEdge;
@@ -94,7 +102,10 @@ final class Level {
 
     // ---------------------------------------------------------------- navigation
 
-    int face(int h) { return hFace == null ? h >> 2 : hFace[h]; }
+    int face(int h) {
+        if (hFace != null) return hFace[h];
+        return faceStart == null ? h >> 2 : h / 3; // all quads, or all triangles (a Loop level after the first)
+    }
 
     int faceSize(int f) { return faceStart == null ? 4 : faceStart[f + 1] - faceStart[f]; }
 
@@ -102,13 +113,13 @@ final class Level {
 
     int next(int h) {
         if (faceStart == null) return (h & ~3) | ((h + 1) & 3);
-        int f = hFace[h];
+        int f = face(h);
         return h + 1 == faceStart[f + 1] ? faceStart[f] : h + 1;
     }
 
     int prev(int h) {
         if (faceStart == null) return (h & ~3) | ((h + 3) & 3);
-        int f = hFace[h];
+        int f = face(h);
         return h == faceStart[f] ? faceStart[f + 1] - 1 : h - 1;
     }
 
@@ -193,6 +204,7 @@ final class Level {
 
     private int[] parentCodes, parentFaceStart;
     private int parentNF;
+    private boolean parentTriangleSplit;
 
     /**
      * Frees this level's edge codes (a quarter of its topology): they follow from the parent's
@@ -202,6 +214,7 @@ final class Level {
         parentCodes = parent.edgeCodes();
         parentFaceStart = parent.faceStart;
         parentNF = parent.nF;
+        parentTriangleSplit = parent.triangleSplit;
         hEdge = null;
     }
 
@@ -214,7 +227,8 @@ final class Level {
     synchronized int[] edgeCodes() {
         if (hEdge == null) {
             int[] ed = new int[nH];
-            Refinement.childEdgeCodes(parentCodes, parentFaceStart, parentNF, ed);
+            if (parentTriangleSplit) TriangleSplit.childEdgeCodes(parentCodes, parentNF, ed);
+            else Refinement.childEdgeCodes(parentCodes, parentFaceStart, parentNF, ed);
             hEdge = ed;
             parentCodes = parentFaceStart = null;
         }

@@ -19,15 +19,16 @@ final class Limit {
      * @param pos receives the limit position of every vertex (3 per vertex), or null
      * @param nrm receives the unit limit normal of every vertex (3 per vertex), or null
      */
-    static void evaluate(Level lv, double[] p, double[] pos, double[] nrm) {
-        evaluate(lv, p, pos, nrm, null);
+    static void evaluate(Level lv, SubdivOptions.Scheme scheme, double[] p, double[] pos, double[] nrm) {
+        evaluate(lv, scheme, p, pos, nrm, null);
     }
 
     /**
      * As {@link #evaluate(Level, double[], double[], double[])} for the vertices flagged in
      * {@code only} (null: all); each vertex's values are computed alone, so they are the same.
      */
-    static void evaluate(Level lv, double[] p, double[] pos, double[] nrm, boolean[] only) {
+    static void evaluate(Level lv, SubdivOptions.Scheme scheme, double[] p, double[] pos, double[] nrm, boolean[] only) {
+        boolean loop = scheme == SubdivOptions.Scheme.LOOP, bilinear = scheme == SubdivOptions.Scheme.BILINEAR;
         if (lv.eSharp != null) lv.edgeCodes(); // edge sharpness is looked up by edge index
         int cap = lv.maxValence() + 2;
         int[] ring = new int[cap + 1], other = new int[cap], opp = new int[cap];
@@ -35,7 +36,7 @@ final class Limit {
         double[] ew = new double[cap], fw = new double[cap], t1e = new double[cap], t1f = new double[cap],
                 t2e = new double[cap], t2f = new double[cap];
         double[] t = new double[6];
-        boolean quads = lv.faceStart == null;
+        boolean quads = lv.faceStart == null && scheme == SubdivOptions.Scheme.CATMARK;
         boolean anyNm = lv.nmVert.length > 0;
         // Regular vertices first, visited in half-edge order (each at its leading half-edge),
         // which keeps the 1-ring lookups close in memory; the rest vertex by vertex.
@@ -92,8 +93,19 @@ final class Limit {
             int rule = lv.rule(v);
             double vw, t1v, t2v;
             int nE1 = nEdges, nF1 = nFaces; // weights in use
-            boolean smooth = rule <= Crease.RULE_DART && nFaces != 2 && nmi < 0;
-            if (smooth) {
+            // Bilinear: every vertex is a corner (the limit surface is the refined mesh itself);
+            // Catmull-Clark treats a smooth valence-2 vertex as a corner, Loop does not.
+            boolean smooth = !bilinear && rule <= Crease.RULE_DART && (loop || nFaces != 2) && nmi < 0;
+            if (loop && (smooth || rule == Crease.RULE_CREASE)) {
+                vw = loopMasks(smooth, nEdges, sharp, ew, t1e, t2e, t);
+                t1v = t[0];
+                t2v = t[1];
+                nF1 = 0;
+                for (int j = 0; j < nFaces; j++) {
+                    t1f[j] = 0.0;
+                    t2f[j] = 0.0;
+                }
+            } else if (smooth) {
                 int n = nFaces;
                 double fwt, ewt;
                 if (n == 4) {
@@ -136,7 +148,7 @@ final class Limit {
                         t2f[j] = t1f[j - 1];
                     }
                 }
-            } else if (rule == Crease.RULE_CREASE) {
+            } else if (rule == Crease.RULE_CREASE && !bilinear) {
                 int c0 = 0, c1 = nEdges - 1;
                 while (c0 < nEdges - 1 && !Crease.isSharp(sharp[c0])) c0++;
                 while (c1 > 0 && !Crease.isSharp(sharp[c1])) c1--;
@@ -203,10 +215,12 @@ final class Limit {
                     t1f[j] = 0.0;
                     t2f[j] = 0.0;
                 }
-                t1v = -1.0;
-                t2v = -1.0;
-                t1e[0] = 1.0;
-                if (nEdges > 1) t2e[1] = 1.0;
+                // Loop's corner tangents are scaled by 3 (Sdc's convention); the direction is the same.
+                double scale = loop ? 3.0 : 1.0;
+                t1v = -scale;
+                t2v = -scale;
+                t1e[0] = scale;
+                if (nEdges > 1) t2e[1] = scale;
             }
             if (pos != null) {
                 for (int d = 0; d < 3; d++) {
@@ -247,6 +261,89 @@ final class Limit {
                 }
             }
         }
+    }
+
+    private static final double ROOT3 = 1.73205080756887729352, ROOT3_BY_2 = ROOT3 * 0.5;
+
+    /**
+     * Sdc's Loop limit masks of a smooth (or dart) vertex over its n edges, or of a crease vertex
+     * along its two sharp edges: position edge weights into {@code ew}, tangent edge weights into
+     * {@code t1e} and {@code t2e}, the tangents' vertex weights into {@code tv[0]} and
+     * {@code tv[1]}; returns the position's vertex weight. No face weights. Smooth: the limit
+     * (1 - n chi) v + chi sum(e) with chi = 1 / (n + 3 / (8 gamma)), tangents the cosine and sine
+     * masks; crease: the cubic B-spline's (1/6, 2/3, 1/6) along the crease, Far's tangent across
+     * the faces between the two sharp edges (counter-clockwise from the first).
+     */
+    private static double loopMasks(boolean smooth, int nEdges, float[] sharp, double[] ew, double[] t1e, double[] t2e, double[] tv) {
+        if (smooth) {
+            int n = nEdges;
+            double ewt, vw;
+            if (n == 6) {
+                ewt = 1.0 / 12.0;
+                vw = 0.5;
+            } else {
+                double dValence = n, invValence = 1.0 / dValence;
+                double cosTheta = Math.cos(Math.PI * 2.0 * invValence);
+                double beta = 0.25 * cosTheta + 0.375;
+                double gamma = (0.625 - beta * beta) * invValence;
+                ewt = 1.0 / (dValence + 3.0 / (8.0 * gamma));
+                vw = 1.0 - ewt * dValence;
+            }
+            for (int j = 0; j < n; j++) ew[j] = ewt;
+            tv[0] = tv[1] = 0.0;
+            if (n == 6) {
+                double[] c1 = {1.0, 0.5, -0.5, -1.0, -0.5, 0.5}, c2 = {0.0, ROOT3_BY_2, ROOT3_BY_2, 0.0, -ROOT3_BY_2, -ROOT3_BY_2};
+                for (int j = 0; j < 6; j++) {
+                    t1e[j] = c1[j];
+                    t2e[j] = c2[j];
+                }
+            } else {
+                double alpha = 2.0 * Math.PI / n;
+                for (int j = 0; j < n; j++) {
+                    double a = alpha * j;
+                    t1e[j] = Math.cos(a);
+                    t2e[j] = Math.sin(a);
+                }
+            }
+            return vw;
+        }
+        int c0 = 0, c1 = nEdges - 1;
+        while (c0 < nEdges - 1 && !Crease.isSharp(sharp[c0])) c0++;
+        while (c1 > 0 && !Crease.isSharp(sharp[c1])) c1--;
+        for (int j = 0; j < nEdges; j++) {
+            ew[j] = 0.0;
+            t1e[j] = 0.0;
+            t2e[j] = 0.0;
+        }
+        ew[c0] = 1.0 / 6.0;
+        ew[c1] = 1.0 / 6.0;
+        tv[0] = 0.0;
+        t1e[c0] = 1.5;
+        t1e[c1] = -1.5;
+        int interior = c1 - c0 - 1;
+        if (interior == 2) {
+            tv[1] = -ROOT3;
+            t2e[c0] = -ROOT3_BY_2;
+            t2e[c1] = -ROOT3_BY_2;
+            t2e[c0 + 1] = ROOT3;
+            t2e[c0 + 2] = ROOT3;
+        } else if (interior > 2) {
+            double theta = Math.PI / (interior + 1);
+            tv[1] = 0.0;
+            double cWeight = -3.0 * Math.sin(theta);
+            t2e[c0] = cWeight;
+            t2e[c1] = cWeight;
+            double eCoeff = -3.0 * 2.0 * (Math.cos(theta) - 1.0);
+            for (int i = 1; i <= interior; i++) t2e[c0 + i] = eCoeff * Math.sin(i * theta);
+        } else if (interior == 1) {
+            tv[1] = -3.0;
+            t2e[c0 + 1] = 3.0;
+        } else {
+            tv[1] = -6.0;
+            t2e[c0] = 3.0;
+            t2e[c1] = 3.0;
+        }
+        return 4.0 / 6.0;
     }
 
     /**

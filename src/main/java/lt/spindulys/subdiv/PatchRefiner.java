@@ -143,8 +143,10 @@ public final class PatchRefiner {
 
     /**
      * Box (minX, minY, minZ, maxX, maxY, maxZ) of the face's one-ring control points: contains
-     * every refined level of the face and its limit patch, because every Catmull-Clark rule
-     * (smooth, crease, corner, semi-sharp blends, smooth triangles) has non-negative weights.
+     * every refined level of the face and its limit patch, because every rule of the three schemes
+     * (Catmull-Clark's smooth, crease, corner, semi-sharp blends and smooth triangles; Loop's,
+     * whose smooth vertex weight 1 - n beta stays positive at every valence; bilinear's) has
+     * non-negative weights.
      * Not padded.
      *
      * @param face the face
@@ -191,6 +193,11 @@ public final class PatchRefiner {
             verts = n;
             faces = n == 4 ? 2 : 1;
             corners = n == 4 ? 6 : n;
+        } else if (base.triangleSplit) {
+            long m = 1L << level; // segments per edge: a triangle grid of m^2 triangles
+            verts = (m + 1) * (m + 2) / 2;
+            faces = m * m;
+            corners = 3 * faces;
         } else {
             long m = 1L << (level - 1), quads = n * m * m;
             verts = quads + n * m + 1;
@@ -312,8 +319,15 @@ public final class PatchRefiner {
         int f0 = lm.face, count = 1;
         for (int l = 1; l <= level; l++) {
             Level p = r.topo;
-            f0 = p.firstHalf(f0);
-            count = l == 1 ? n : 4 * count;
+            // A face's children: one per corner, numbered like its half-edges (quad split), or
+            // four in a row (triangle split).
+            if (p.triangleSplit) {
+                f0 = 4 * f0;
+                count = 4 * count;
+            } else {
+                f0 = p.firstHalf(f0);
+                count = l == 1 ? n : 4 * count;
+            }
             r = r.refine();
             if (snap) {
                 for (int k = 0; k < n; k++) halves[k] = childHalves(p, halves[k]);
@@ -324,7 +338,8 @@ public final class PatchRefiner {
                 r = prune(r, faceAt);
                 f0 = faceAt[f0];
                 if (snap) {
-                    for (int[] hs : halves) for (int i = 0; i < hs.length; i++) hs[i] = 4 * faceAt[hs[i] >> 2] + (hs[i] & 3);
+                    int fs = r.topo.triangleSplit ? 3 : 4;
+                    for (int[] hs : halves) for (int i = 0; i < hs.length; i++) hs[i] = fs * faceAt[hs[i] / fs] + hs[i] % fs;
                 }
             }
             if (snap) record(r, halves, chains, positions, l);
@@ -352,6 +367,13 @@ public final class PatchRefiner {
      */
     private static int[] childHalves(Level p, int[] hs) {
         int[] next = new int[2 * hs.length];
+        if (p.triangleSplit) {
+            for (int i = 0; i < hs.length; i++) {
+                next[2 * i] = TriangleSplit.originPiece(hs[i]);
+                next[2 * i + 1] = TriangleSplit.destPiece(hs[i]);
+            }
+            return next;
+        }
         for (int i = 0; i < hs.length; i++) {
             int x = hs[i], xn = p.next(x);
             next[2 * i] = 4 * x + (Refinement.rot(p, x) & 3);
@@ -391,14 +413,17 @@ public final class PatchRefiner {
     // ---------------------------------------------------------------- pruning
 
     /**
-     * Whether a refined level can be cut down: quads only and no non-manifold side tables (for
-     * them, and before the first refinement, the whole one-ring is refined).
+     * Whether a refined level can be cut down: quads only (or triangles only, from a triangle
+     * split) and no non-manifold side tables (for them, and before the first refinement, the
+     * whole one-ring is refined).
      */
     private static boolean prunable(RefinedMesh r) {
-        Level t = r.topo;
-        if (t.faceStart != null || t.nmVert.length > 0 || t.nmEdge.length > 0) return false;
         FaceVarying.Channel uv = r.uvChannel();
-        return uv == null || (uv.level().faceStart == null && uv.level().nmVert.length == 0 && uv.level().nmEdge.length == 0);
+        return uniform(r.topo) && (uv == null || uniform(uv.level()));
+    }
+
+    private static boolean uniform(Level t) {
+        return t.hFace == null && (t.faceStart == null || t.triangleSplit) && t.nmVert.length == 0 && t.nmEdge.length == 0;
     }
 
     /**
@@ -408,13 +433,14 @@ public final class PatchRefiner {
      */
     private static int[] keptFaces(RefinedMesh r, int f0, int count) {
         Level t = r.topo;
+        int fs = t.triangleSplit ? 3 : 4;
         boolean[] want = new boolean[t.nV];
-        for (int h = 4 * f0, e = 4 * (f0 + count); h < e; h++) want[t.hOrig[h]] = true;
+        for (int h = fs * f0, e = fs * (f0 + count); h < e; h++) want[t.hOrig[h]] = true;
         int[] faceAt = new int[t.nF];
         int m = 0;
         for (int f = 0; f < t.nF; f++) {
-            int h = 4 * f;
-            faceAt[f] = want[t.hOrig[h]] || want[t.hOrig[h + 1]] || want[t.hOrig[h + 2]] || want[t.hOrig[h + 3]] ? m++ : -1;
+            int h = fs * f;
+            faceAt[f] = want[t.hOrig[h]] || want[t.hOrig[h + 1]] || want[t.hOrig[h + 2]] || (fs == 4 && want[t.hOrig[h + 3]]) ? m++ : -1;
         }
         return faceAt;
     }
@@ -437,7 +463,7 @@ public final class PatchRefiner {
     }
 
     /**
-     * A quad level cut down to the faces kept, everything renumbered in its original order:
+     * A quad (or triangle-split) level cut down to the faces kept, everything renumbered in its original order:
      * faces, their half-edges, vertices (written to {@code vAt}, -1 where dropped) and edges, with
      * twins, edge codes, first half-edges, tags, sharpness and holes. An edge whose primary
      * half-edge is dropped gets a kept one as primary; a twin dropped leaves a boundary there.
@@ -446,6 +472,7 @@ public final class PatchRefiner {
      */
     private static Level pruneLevel(Level c, int[] faceAt, int[] vAt) {
         int[] code = c.edgeCodes();
+        int fs = c.triangleSplit ? 3 : 4;
         int m = 0;
         for (int a : faceAt) if (a >= 0) m++;
         Arrays.fill(vAt, -1);
@@ -453,7 +480,7 @@ public final class PatchRefiner {
         Arrays.fill(eAt, -1);
         for (int f = 0; f < faceAt.length; f++) {
             if (faceAt[f] < 0) continue;
-            for (int h = 4 * f; h < 4 * f + 4; h++) {
+            for (int h = fs * f; h < fs * f + fs; h++) {
                 vAt[c.hOrig[h]] = 0;
                 eAt[code[h] >>> 2] = 0;
             }
@@ -461,18 +488,18 @@ public final class PatchRefiner {
         int nv = 0, ne = 0;
         for (int v = 0; v < vAt.length; v++) if (vAt[v] == 0) vAt[v] = nv++;
         for (int e = 0; e < eAt.length; e++) if (eAt[e] == 0) eAt[e] = ne++;
-        int nh = 4 * m;
+        int nh = fs * m;
         int[] o = new int[nh], tw = c.hTwin == null ? null : new int[nh], ed = new int[nh];
         boolean[] hasPrimary = new boolean[ne];
         for (int f = 0; f < faceAt.length; f++) {
             int nf = faceAt[f];
             if (nf < 0) continue;
-            for (int k = 0; k < 4; k++) {
-                int h = 4 * f + k, nh1 = 4 * nf + k;
+            for (int k = 0; k < fs; k++) {
+                int h = fs * f + k, nh1 = fs * nf + k;
                 o[nh1] = vAt[c.hOrig[h]];
                 if (tw != null) {
                     int x = c.hTwin[h];
-                    tw[nh1] = x < 0 || faceAt[x >> 2] < 0 ? -1 : 4 * faceAt[x >> 2] + (x & 3);
+                    tw[nh1] = x < 0 || faceAt[x / fs] < 0 ? -1 : fs * faceAt[x / fs] + x % fs;
                 }
                 int e = eAt[code[h] >>> 2];
                 ed[nh1] = e << 2 | (code[h] & (Level.E_FWD | Level.E_PRIMARY));
@@ -492,13 +519,19 @@ public final class PatchRefiner {
             Arrays.fill(out, -1);
             for (int v = 0; v < vAt.length; v++) {
                 int x = vAt[v] < 0 ? -1 : c.vOut[v];
-                if (x >= 0 && faceAt[x >> 2] >= 0) out[vAt[v]] = 4 * faceAt[x >> 2] + (x & 3);
+                if (x >= 0 && faceAt[x / fs] >= 0) out[vAt[v]] = fs * faceAt[x / fs] + x % fs;
             }
             // A rim vertex whose first face was dropped starts at any kept one: walks around
             // it end at the dropped twins.
             for (int h = 0; h < nh; h++) if (out[o[h]] < 0) out[o[h]] = h;
         }
-        Level n = new Level(c.depth, nv, m, ne, null, null, o, tw, ed, out);
+        int[] faceStart = null;
+        if (c.triangleSplit) {
+            faceStart = new int[m + 1];
+            for (int f = 0; f <= m; f++) faceStart[f] = 3 * f;
+        }
+        Level n = new Level(c.depth, nv, m, ne, faceStart, null, o, tw, ed, out);
+        n.triangleSplit = c.triangleSplit;
         if (c.vTag != null) {
             n.vTag = new byte[nv];
             for (int v = 0; v < vAt.length; v++) if (vAt[v] >= 0) n.vTag[vAt[v]] = c.vTag[v];
@@ -520,7 +553,7 @@ public final class PatchRefiner {
             // a corner's rules never walk around it. Their values are not used (see above).
             int[] lost = new int[nv];
             for (int h = 0; h < c.nH; h++) {
-                if (faceAt[h >> 2] < 0 && vAt[c.hOrig[h]] >= 0) lost[vAt[c.hOrig[h]]]++;
+                if (faceAt[h / fs] < 0 && vAt[c.hOrig[h]] >= 0) lost[vAt[c.hOrig[h]]]++;
             }
             for (int v = 0; v < nv; v++) {
                 if (lost[v] == 0) continue;

@@ -23,8 +23,8 @@ final class PrimvarRefiner {
      */
     static void interpolate(Level p, Level c, SubdivOptions opt, int stride, double[] src, double[] dst, boolean linear) {
         p.edgeCodes();
-        faces(p, stride, src, dst);
-        if (linear) {
+        if (!p.triangleSplit) faces(p, stride, src, dst);
+        if (linear || opt.scheme() == SubdivOptions.Scheme.BILINEAR) {
             linearEdgesAndVertices(p, stride, src, dst);
             return;
         }
@@ -32,8 +32,11 @@ final class PrimvarRefiner {
         vertices(p, c, opt, stride, src, dst);
     }
 
+    /** Index of the first edge point in the child: after the vertices, and the face points of a quad split. */
+    static int firstEdgePoint(Level p) { return p.triangleSplit ? p.nV : p.nV + p.nF; }
+
     private static void linearEdgesAndVertices(Level p, int stride, double[] src, double[] dst) {
-        int vEdge = p.nV + p.nF;
+        int vEdge = firstEdgePoint(p);
         for (int h = 0; h < p.nH; h++) {
             if ((p.hEdge[h] & Level.E_PRIMARY) == 0) continue;
             int out = (vEdge + (p.hEdge[h] >>> 2)) * stride;
@@ -68,8 +71,9 @@ final class PrimvarRefiner {
 
     private static void edges(Level p, Level c, SubdivOptions opt, int stride, double[] src, double[] dst) {
         boolean smoothTris = opt.triangles() == SubdivOptions.Triangles.SMOOTH;
+        boolean loop = p.triangleSplit;
         int[] code = p.hEdge, twin = p.hTwin;
-        int vFace = p.nV, vEdge = p.nV + p.nF;
+        int vFace = p.nV, vEdge = firstEdgePoint(p);
         for (int h = 0; h < p.nH; h++) {
             int ch = code[h];
             if ((ch & Level.E_PRIMARY) == 0) continue;
@@ -81,6 +85,21 @@ final class PrimvarRefiner {
             // always is one (a face-varying boundary edge's point may be pinned as a corner).
             if (Crease.isSharp(sharp) && (Crease.isInfinite(sharp) || c.rule(vEdge + e) == Crease.RULE_CREASE)) {
                 for (int d = 0; d < stride; d++) dst[out + d] = 0.5 * src[v0 + d] + 0.5 * src[v1 + d];
+                continue;
+            }
+            if (loop) {
+                // Loop's smooth edge mask: 3/8 on the ends, 1/8 on the vertex opposite the edge
+                // in each of its two triangles; a decaying crease blends in (1/2, 1/2).
+                int o0 = p.hOrig[p.prev(h)] * stride, o1 = p.hOrig[p.prev(twin[h])] * stride;
+                double vw = 0.375, fw = 0.125;
+                if (Crease.isSharp(sharp)) {
+                    double pw = sharp, cw = 1.0 - pw;
+                    vw = pw * 0.5 + cw * vw;
+                    fw = fw * cw;
+                }
+                for (int d = 0; d < stride; d++) {
+                    dst[out + d] = vw * src[v0 + d] + vw * src[v1 + d] + fw * src[o0 + d] + fw * src[o1 + d];
+                }
                 continue;
             }
             int f0 = (vFace + p.face(h)) * stride, f1 = (vFace + p.face(twin[h])) * stride;
@@ -108,11 +127,26 @@ final class PrimvarRefiner {
     private static void vertices(Level p, Level c, SubdivOptions opt, int stride, double[] src, double[] dst) {
         int[] orig = p.hOrig, twin = p.hTwin;
         int vFace = p.nV;
-        boolean quads = p.faceStart == null;
+        boolean quads = p.faceStart == null, loop = p.triangleSplit;
         VertexMask m = null;
         for (int v = 0; v < p.nV; v++) {
             int pRule = p.rule(v);
             int vs = v * stride;
+            if (pRule <= Crease.RULE_DART && loop) {
+                int n = p.valence(v);
+                double ew = loopEdgeWeight(n), vw = loopVertexWeight(n, ew);
+                int start = p.vOut[v];
+                for (int d = 0; d < stride; d++) {
+                    double acc = 0.0;
+                    int h = start;
+                    do {
+                        acc += ew * src[p.dest(h) * stride + d];
+                        h = twin[p.prev(h)];
+                    } while (h != start);
+                    dst[vs + d] = acc + vw * src[vs + d];
+                }
+                continue;
+            }
             if (pRule <= Crease.RULE_DART) {
                 int start = p.vOut[v];
                 if (stride == 3 && quads) {
@@ -161,7 +195,7 @@ final class PrimvarRefiner {
             }
             if (m == null) m = new VertexMask(p.maxValence() + 2);
             m.gather(p, c, v);
-            m.compute(p, c, v, opt.creasing() == SubdivOptions.Creasing.CHAIKIN);
+            m.compute(p, c, v, opt.creasing() == SubdivOptions.Creasing.CHAIKIN, loop);
             for (int d = 0; d < stride; d++) {
                 double acc = 0.0;
                 if (m.hasFaces) for (int i = 0; i < m.nFaces; i++) acc += m.fw[i] * dst[(vFace + m.face[i]) * stride + d];
@@ -169,6 +203,24 @@ final class PrimvarRefiner {
                 dst[vs + d] = acc + m.vw * src[vs + d];
             }
         }
+    }
+
+    /**
+     * Loop's smooth vertex mask (Sdc's, after Hbr: Loop's original weights, not Warren's): the
+     * weight of each of the n edge neighbours, (5/8 - (3/8 + cos(2 pi / n) / 4)^2) / n; 1/16 at
+     * valence 6.
+     */
+    static double loopEdgeWeight(int n) {
+        if (n == 6) return 0.0625;
+        double dValence = n, invValence = 1.0 / dValence;
+        double cosTheta = Math.cos(Math.PI * 2.0 * invValence);
+        double beta = 0.25 * cosTheta + 0.375;
+        return (0.625 - beta * beta) * invValence;
+    }
+
+    /** The vertex's own weight in Loop's smooth mask, given the edge weight. */
+    static double loopVertexWeight(int n, double edgeWeight) {
+        return n == 6 ? 0.625 : 1.0 - edgeWeight * n;
     }
 
     /**
@@ -225,8 +277,9 @@ final class PrimvarRefiner {
             }
         }
 
-        /** Sdc's {@code ComputeVertexVertexMask} for vertex v of p with child rule from c. */
-        void compute(Level p, Level c, int v, boolean chaikin) {
+        /** Sdc's {@code ComputeVertexVertexMask} for vertex v of p with child rule from c (Loop's masks if {@code loop}). */
+        void compute(Level p, Level c, int v, boolean chaikin, boolean loop) {
+            this.loop = loop;
             int pRule = p.rule(v), cRule = c.rule(v);
             float pVs = p.vertexSharpness(v), cVs = c.vertexSharpness(v);
             vw = assign(pRule, pSharp, ew, fw);
@@ -251,6 +304,8 @@ final class PrimvarRefiner {
 
         /** Whether the mask last assigned has edge and face weights. */
         private boolean edgesSet, facesSet;
+        /** Loop's smooth mask instead of Catmull-Clark's. */
+        private boolean loop;
 
         /**
          * Sdc's Catmark mask of one rule into e (edge ends) and f (face points); returns the
@@ -258,6 +313,14 @@ final class PrimvarRefiner {
          * the first and last sharp edge; corner: the vertex alone.
          */
         private double assign(int rule, float[] sharp, double[] e, double[] f) {
+            if (rule <= Crease.RULE_DART && loop) {
+                int n = nFaces;
+                double ewt = loopEdgeWeight(n);
+                for (int j = 0; j < n; j++) e[j] = ewt;
+                edgesSet = true;
+                facesSet = false;
+                return loopVertexWeight(n, ewt);
+            }
             if (rule <= Crease.RULE_DART) {
                 int n = nFaces;
                 double fwt = 1.0 / (n * n);

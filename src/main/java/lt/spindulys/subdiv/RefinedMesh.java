@@ -98,7 +98,7 @@ public final class RefinedMesh {
                 faceSizes = control.faceSizes();
             } else {
                 faceSizes = new int[topo.nF];
-                Arrays.fill(faceSizes, 4);
+                Arrays.fill(faceSizes, topo.triangleSplit ? 3 : 4);
             }
         }
         return faceSizes;
@@ -221,7 +221,7 @@ public final class RefinedMesh {
     public synchronized double[] limitPositions() {
         if (limitPositions == null) {
             double[] pos = new double[3 * topo.nV];
-            Limit.evaluate(topo, positions, pos, null);
+            Limit.evaluate(topo, control.options().scheme(), positions, pos, null);
             limitPositions = pos;
         }
         return limitPositions;
@@ -238,7 +238,7 @@ public final class RefinedMesh {
     public synchronized double[] limitNormals() {
         if (limitNormals == null) {
             double[] nrm = new double[3 * topo.nV];
-            Limit.evaluate(topo, positions, null, nrm);
+            Limit.evaluate(topo, control.options().scheme(), positions, null, nrm);
             limitNormals = nrm;
         }
         return limitNormals;

@@ -64,7 +64,7 @@ public final class RefinedTriangles {
         double[] uvs = r.uvs();
         boolean withUv = uvs != null && fuv != null;
         int c0 = 0;
-        if (r.level() > 0) c0 = 4 * f0;
+        if (r.level() > 0) c0 = r.topo.triangleSplit ? 3 * f0 : 4 * f0;
         else for (int f = 0; f < f0; f++) c0 += sizes[f];
         int faces = 0, corners = 0;
         for (int f = f0; f < f1; f++) {
@@ -248,7 +248,7 @@ public final class RefinedTriangles {
         boolean[] want = new boolean[nv];
         for (int c = lv.firstHalf(f0), e = f1 < nf ? lv.firstHalf(f1) : lv.nH; c < e; c++) want[fv[c]] = true;
         double[] limit = new double[3 * nv];
-        Limit.evaluate(lv, p, null, limit, want);
+        Limit.evaluate(lv, r.controlMesh().options().scheme(), p, null, limit, want);
         // The faces that touch the range's vertices, and their corners numbered compactly.
         int[] faceAt = new int[nf], faces = new int[nf], cornerAt = new int[nf + 1];
         int m = 0;

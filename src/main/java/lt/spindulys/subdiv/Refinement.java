@@ -4,8 +4,9 @@ import static lt.spindulys.subdiv.Level.E_FWD;
 import static lt.spindulys.subdiv.Level.E_PRIMARY;
 
 /**
- * The uniform Catmull-Clark split of one {@link Level} into the next (OpenSubdiv's
- * Vtr::Refinement, without its parent-to-child maps: the child's numbering follows from the
+ * The uniform split of one {@link Level} into the next: quads from any face (Catmull-Clark and
+ * bilinear), or, for a level marked {@link Level#triangleSplit}, triangles from triangles through
+ * {@link TriangleSplit} (Loop). OpenSubdiv's Vtr::Refinement, without its parent-to-child maps: the child's numbering follows from the
  * parent's, see {@link Level}). Builds the child's topology straight from the parent's half-edges,
  * with no searching, then hands over to {@link SharpnessRefinement} for the child's sharpness and
  * tags. Vertex data is refined separately, by {@link PrimvarRefiner}.
@@ -14,7 +15,7 @@ final class Refinement {
     private Refinement() {}
 
     /**
-     * Far's uniform Catmull-Clark split of p: the child topology, built straight from p's
+     * Far's uniform split of p (quads, or triangles for a triangle-split level): the child topology, built straight from p's
      * half-edges (no searching), followed by the sharpness decay and the child vertex tags.
      * Child vertices: those of the vertices (same index), then one per face, then one per edge.
      *
@@ -22,6 +23,7 @@ final class Refinement {
      *                    geometry's child, for a face-varying value mesh with the same half-edges)
      */
     static Level refine(Level p, boolean chaikin, Level sharpSource) {
+        if (p.triangleSplit) return TriangleSplit.refine(p, chaikin, sharpSource);
         int cV = p.nV + p.nF + p.nE, cF = p.nH, cE = p.nH + 2 * p.nE, cH = 4 * p.nH;
         if (cH < 0 || (long) cE * 4 > Integer.MAX_VALUE) throw new IllegalStateException("refined mesh too large for int indices");
         p.edgeCodes();
@@ -58,6 +60,7 @@ final class Refinement {
      * cost.
      */
     static Level refineCornersAndEdges(Level p) {
+        if (p.triangleSplit) return TriangleSplit.refineCornersAndEdges(p);
         int cV = p.nV + p.nF + p.nE, cF = p.nH, cE = p.nH + 2 * p.nE, cH = 4 * p.nH;
         if (cH < 0 || (long) cE * 4 > Integer.MAX_VALUE) throw new IllegalStateException("refined mesh too large for int indices");
         p.edgeCodes();
@@ -122,7 +125,7 @@ final class Refinement {
     /** The rotation of the child faces of h's face: quads keep the parent corner in place. */
     static int rot(Level p, int h) {
         if (p.faceStart == null) return h & 3;
-        int f = p.hFace[h];
+        int f = p.face(h);
         return p.faceStart[f + 1] - p.faceStart[f] == 4 ? h - p.faceStart[f] : 0;
     }
 

@@ -109,7 +109,7 @@ final class SharpnessRefinement {
         byte[] ct = new byte[c.nV];
         System.arraycopy(p.vTag, 0, ct, 0, p.nV);
         int faceEdges = p.nH;
-        int eBase = p.nV + p.nF;
+        int eBase = p.triangleSplit ? p.nV : p.nV + p.nF; // the first edge point (no face points in a triangle split)
         boolean[] nmE = new boolean[p.nE];
         for (int e : p.nmEdge) nmE[e] = true;
         for (int h = 0; h < p.nH; h++) {

@@ -23,6 +23,26 @@ class ControlMeshTest {
     }
 
     @Test
+    void aLoopMeshNeedsTrianglesAndCatmullClarkNeedsItsScheme() {
+        SubdivOptions loop = SubdivOptions.DEFAULT.withScheme(SubdivOptions.Scheme.LOOP);
+        fails("in.obj: face 1 has 4 corners; the Loop scheme needs triangles",
+                () -> ControlMesh.builder(P, new int[] {3, 4}, new int[] {0, 1, 4, 1, 2, 5, 4}).source("in.obj").options(loop).build());
+        ControlMesh tris = ControlMesh.builder(P, new int[] {3, 3, 3, 3}, new int[] {0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4}).options(loop).build();
+        assertEquals(4, tris.refinedFaceCount(0));
+        assertEquals(16, tris.refinedFaceCount(1));
+        assertEquals(64, tris.refinedFaceCount(2));
+        assertEquals(64, Subdivision.refine(tris, 2).faceCount());
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> CatmullClark.refine(tris, 1));
+        assertEquals("the mesh has the loop scheme, not Catmull-Clark", e.getMessage());
+        ControlMesh quads = ControlMesh.builder(P, SIZES, FV).options(SubdivOptions.DEFAULT.withScheme(SubdivOptions.Scheme.BILINEAR)).build();
+        assertEquals(8, quads.refinedFaceCount(1));
+        assertEquals(32, Subdivision.refine(quads, 2).faceCount());
+        assertEquals(SubdivOptions.Scheme.LOOP, SubdivOptions.Scheme.ofKeyword("loop"));
+        assertEquals("bilinear", SubdivOptions.Scheme.BILINEAR.keyword());
+        assertEquals(null, SubdivOptions.Scheme.ofKeyword("Loop"));
+    }
+
+    @Test
     void refusesMalformedMeshesNamingTheCulprit() {
         fails("face 1 uses vertex 9, but the mesh has 6 vertices",
                 () -> ControlMesh.builder(P, SIZES, new int[] {0, 1, 4, 3, 1, 2, 9, 4}).build());

@@ -53,7 +53,7 @@ final class Corpus {
     /** Shape name (without .obj) to the levels it has reference files for, in name order. */
     static Map<String, List<Integer>> shapes() {
         Map<String, List<Integer>> out = new TreeMap<>();
-        Pattern p = Pattern.compile("(catmark_\\w+)\\.L(\\d)\\.txt\\.gz");
+        Pattern p = Pattern.compile("((?:catmark|loop|bilinear)_\\w+)\\.L(\\d)\\.txt\\.gz");
         try (Stream<Path> files = Files.list(dir())) {
             for (Path f : (Iterable<Path>) files::iterator) {
                 Matcher m = p.matcher(f.getFileName().toString());
@@ -84,7 +84,14 @@ final class Corpus {
     /** The shape with its options (after its tags) changed by {@code options}. */
     static ControlMesh load(String shape, java.util.function.UnaryOperator<SubdivOptions> options) {
         SubdivInput in = ObjReader.parseSubdiv(text(shape + ".obj"), shape + ".obj");
-        return in.withOptions(options.apply(in.options())).toControlMesh();
+        return in.withOptions(options.apply(in.options().withScheme(scheme(shape)))).toControlMesh();
+    }
+
+    /** The scheme a shape is refined with in the reference data: its name's prefix says it. */
+    static SubdivOptions.Scheme scheme(String shape) {
+        if (shape.startsWith("loop_")) return SubdivOptions.Scheme.LOOP;
+        if (shape.startsWith("bilinear_")) return SubdivOptions.Scheme.BILINEAR;
+        return SubdivOptions.Scheme.CATMARK;
     }
 
     static Oracle oracle(String shape, int level) {

@@ -18,7 +18,8 @@ import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /**
- * Every OpenSubdiv regression shape at every level Far's output is stored for: the refined
+ * Every OpenSubdiv regression shape (Catmull-Clark, Loop and bilinear) at every level Far's
+ * output is stored for: the refined
  * vertices (mapped to Far's through the parents of each level, and expected to carry Far's own
  * numbers), positions, faces, holes, UVs, and limit positions and normals where Far's values are
  * exact limits.
@@ -58,7 +59,7 @@ class OpenSubdivCorpusTest {
         ControlMesh cm = Corpus.load(shape);
         double size = 0;
         for (double x : cm.positions()) size = Math.max(size, Math.abs(x));
-        RefinedMesh prev = CatmullClark.refine(cm, 0);
+        RefinedMesh prev = Subdivision.refine(cm, 0);
         int[] map = new int[prev.vertexCount()];
         for (int i = 0; i < map.length; i++) map[i] = i;
         RefinedMesh cur = prev;
@@ -87,10 +88,12 @@ class OpenSubdivCorpusTest {
         double[][] rf = o.section("faces");
         assertEquals(rf.length, cur.faceCount(), at + "face count");
         int[] fv = cur.faceVertices();
+        int fs = rf[0].length; // 4, or 3 for Loop
         for (int f = 0; f < rf.length; f++) {
-            for (int j = 0; j < 4; j++) {
-                if (map[fv[4 * f + j]] != (int) rf[f][j]) {
-                    mm.add("face " + f + " is " + Arrays.toString(Arrays.copyOfRange(fv, 4 * f, 4 * f + 4)) + ", Far " + Arrays.toString(rf[f]));
+            assertEquals(fs, cur.faceSizes()[f], at + "size of face " + f);
+            for (int j = 0; j < fs; j++) {
+                if (map[fv[fs * f + j]] != (int) rf[f][j]) {
+                    mm.add("face " + f + " is " + Arrays.toString(Arrays.copyOfRange(fv, fs * f, fs * f + fs)) + ", Far " + Arrays.toString(rf[f]));
                     break;
                 }
             }
@@ -111,9 +114,9 @@ class OpenSubdivCorpusTest {
                 mm.add("no UVs, Far has " + ruv.length);
             } else {
                 for (int f = 0; f < rfuv.length; f++) {
-                    for (int j = 0; j < 4; j++) {
+                    for (int j = 0; j < fs; j++) {
                         double[] r = ruv[(int) rfuv[f][j]];
-                        int u = fuv[4 * f + j];
+                        int u = fuv[fs * f + j];
                         if (!(Math.abs(uv[2 * u] - r[0]) <= TOL * uvSize && Math.abs(uv[2 * u + 1] - r[1]) <= TOL * uvSize)) {
                             mm.add("face " + f + " corner " + j + " UV (" + uv[2 * u] + ", " + uv[2 * u + 1] + "), Far " + Arrays.toString(r));
                         }
@@ -169,7 +172,8 @@ class OpenSubdivCorpusTest {
         for (int i = 0; i < parents.length; i++) {
             byOrigin.computeIfAbsent(key((int) parents[i][0], (int) parents[i][1], (int) parents[i][2]), k -> new ArrayList<>()).add(i);
         }
-        int nV = prev.vertexCount(), nF = prev.faceCount();
+        // Loop makes no face points: the edge points follow the vertices.
+        int nV = prev.vertexCount(), nF = prev.controlMesh().options().scheme() == SubdivOptions.Scheme.LOOP ? 0 : prev.faceCount();
         int[] ev = prev.edgeVertices();
         int[] map = new int[cur.vertexCount()];
         boolean[] used = new boolean[parents.length];

@@ -15,7 +15,10 @@ import org.junit.jupiter.api.Test;
 
 import lt.spindulys.mesh.MeshData;
 
-/** Per-face patches against the uniform path: bit identity, watertight stitching, bounds, size bound, speed (printed). */
+/**
+ * Per-face patches against the uniform path, for the three schemes: bit identity, watertight
+ * stitching, bounds, size bound.
+ */
 class PatchRefinerTest {
     /** Most faces checked per shape and level: every face of small shapes, an even spread of large ones. */
     private static final int FACES_PER_LEVEL = 40;
@@ -45,6 +48,16 @@ class PatchRefinerTest {
             checkExact(shape + " smooth triangles", Corpus.load(shape, o -> o.withTriangles(SubdivOptions.Triangles.SMOOTH)), 4);
         }
         checkExact("catmark_cube_creases2 level 5", Corpus.load("catmark_cube_creases2"), 5);
+        checkExact("loop_cube_creases1 level 5", Corpus.load("loop_cube_creases1"), 5);
+        for (SubdivOptions.Boundary b : SubdivOptions.Boundary.values()) {
+            for (String shape : new String[] {"loop_triangle_edgecorner", "loop_xord_boundary", "loop_nonman_edges"}) {
+                checkExact(shape + " " + b, Corpus.load(shape, o -> o.withBoundary(b)), 3);
+            }
+        }
+        for (SubdivOptions.FaceVarying mode : SubdivOptions.FaceVarying.values()) {
+            checkExact("loop_fvar_bound1 " + mode, Corpus.load("loop_fvar_bound1", o -> o.withFaceVarying(mode)), 3);
+            checkExact("bilinear_nonquads1 " + mode, Corpus.load("bilinear_nonquads1", o -> o.withFaceVarying(mode)), 3);
+        }
     }
 
     private static void checkExact(String name, ControlMesh m, int maxLevel) {
@@ -66,6 +79,10 @@ class PatchRefinerTest {
     /** The range of level-L faces descending from a base face. */
     private static int[] descendants(ControlMesh m, int face, int level) {
         if (level == 0) return new int[] {face, face + 1};
+        if (m.options().scheme() == SubdivOptions.Scheme.LOOP) {
+            int span = 1 << (2 * level); // four triangles per triangle, numbered in a row
+            return new int[] {face * span, (face + 1) * span};
+        }
         int start = 0;
         for (int f = 0; f < face; f++) start += m.faceSizes()[f];
         int count = m.faceSizes()[face];
@@ -116,7 +133,8 @@ class PatchRefinerTest {
 
     @Test
     void stitchingWithRandomEdgeLevelsIsWatertight() {
-        for (String shape : new String[] {"catmark_torus", "catmark_cube_creases1", "catmark_pyramid_creases0", "catmark_toroidal_tet", "catmark_smoothtris0", "catmark_cubes_semisharp", "catmark_chaikin1"}) {
+        for (String shape : new String[] {"catmark_torus", "catmark_cube_creases1", "catmark_pyramid_creases0", "catmark_toroidal_tet", "catmark_smoothtris0", "catmark_cubes_semisharp", "catmark_chaikin1",
+                "loop_icosahedron", "loop_cube_creases1", "loop_chaikin1", "loop_icos_semisharp", "loop_toroidal_tet", "loop_cubes_semisharp", "bilinear_cube"}) {
             ControlMesh m = Corpus.load(shape);
             PatchRefiner pr = new PatchRefiner(m);
             for (int s = 1; s <= 4; s++) {
@@ -254,7 +272,8 @@ class PatchRefinerTest {
     void oneRingBoundsContainEveryPatchVertex() {
         double[] box = new double[6];
         for (String shape : new String[] {"catmark_torus", "catmark_cubes_semisharp", "catmark_chaikin1", "catmark_nonquads", "catmark_smoothtris1",
-                "catmark_fan", "catmark_nonman_edges", "catmark_xord_boundary", "catmark_val2_interior"}) {
+                "catmark_fan", "catmark_nonman_edges", "catmark_xord_boundary", "catmark_val2_interior",
+                "loop_pole8", "loop_cubes_semisharp", "loop_chaikin1", "loop_nonman_edges", "loop_val2_interior", "bilinear_nonplanar"}) {
             ControlMesh m = Corpus.load(shape);
             PatchRefiner pr = new PatchRefiner(m);
             for (int f = 0; f < pr.faceCount(); f++) {
@@ -272,7 +291,8 @@ class PatchRefinerTest {
 
     @Test
     void patchBytesBoundTheArraysHeld() {
-        for (String shape : new String[] {"catmark_torus", "catmark_nonquads", "catmark_fvar_bound1", "catmark_hole_test2", "catmark_nonman_verts", "catmark_cube_creases0"}) {
+        for (String shape : new String[] {"catmark_torus", "catmark_nonquads", "catmark_fvar_bound1", "catmark_hole_test2", "catmark_nonman_verts", "catmark_cube_creases0",
+                "loop_fvar_bound1", "loop_nonman_verts", "loop_triangle_edgenone", "bilinear_nonquads0"}) {
             PatchRefiner pr = new PatchRefiner(Corpus.load(shape));
             double worst = 0;
             for (int f = 0; f < pr.faceCount(); f++) {
