@@ -1,5 +1,6 @@
 // Writes Far's face-varying values (uvs + faceuvs) of an OBJ shape refined uniformly,
-// with the FVar linear interpolation given on the command line (overriding tags).
+// with the FVar linear interpolation given on the command line (overriding tags), and the
+// scheme (catmark, the default, loop or bilinear) as an optional fifth argument.
 #include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/primvarRefiner.h>
 #include <cstdio>
@@ -11,7 +12,9 @@
 using namespace OpenSubdiv;
 struct UV { double u, v; void Clear() { u = v = 0; } void AddWithWeight(UV const & s, double w) { u += w * s.u; v += w * s.v; } };
 int main(int argc, char** argv) {
-    if (argc < 5) { fprintf(stderr, "usage: obj level fvarMode out\n"); return 1; }
+    if (argc < 5) { fprintf(stderr, "usage: obj level fvarMode out [catmark|loop|bilinear]\n"); return 1; }
+    std::string schemeName = argc > 5 ? argv[5] : "catmark";
+    Sdc::SchemeType scheme = schemeName == "loop" ? Sdc::SCHEME_LOOP : schemeName == "bilinear" ? Sdc::SCHEME_BILINEAR : Sdc::SCHEME_CATMARK;
     std::ifstream in(argv[1]); int level = atoi(argv[2]); int mode = atoi(argv[3]);
     std::vector<double> pos, uvs; std::vector<int> sizes, verts, fuv, creaseV, cornerV, holes; std::vector<float> creaseW, cornerW;
     Sdc::Options opt; opt.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
@@ -42,7 +45,7 @@ int main(int argc, char** argv) {
     Far::TopologyDescriptor::FVarChannel ch; ch.numValues = (int) uvs.size() / 2; ch.valueIndices = fuv.data();
     d.numFVarChannels = 1; d.fvarChannels = &ch;
     Far::TopologyRefiner* r = Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Create(d,
-        Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Options(Sdc::SCHEME_CATMARK, opt));
+        Far::TopologyRefinerFactory<Far::TopologyDescriptor>::Options(scheme, opt));
     if (!r) { fprintf(stderr, "create failed\n"); return 1; }
     Far::TopologyRefiner::UniformOptions uo(level); uo.fullTopologyInLastLevel = true; r->RefineUniform(uo);
     std::vector<UV> buf(r->GetNumFVarValuesTotal(0));
@@ -53,11 +56,15 @@ int main(int argc, char** argv) {
     Far::TopologyLevel const& L = r->GetLevel(level);
     FILE* o = fopen(argv[4], "w");
     static const char* names[] = {"FVAR_LINEAR_NONE", "FVAR_LINEAR_CORNERS_ONLY", "FVAR_LINEAR_CORNERS_PLUS1", "FVAR_LINEAR_CORNERS_PLUS2", "FVAR_LINEAR_BOUNDARIES", "FVAR_LINEAR_ALL"};
-    fprintf(o, "# Far 3.5.0 face-varying values: %s level %d, option FVarLinearInterpolation %s (other options and tags from the shape)\n", argv[1], level, names[mode]);
+    fprintf(o, "# Far 3.5.0 face-varying values: %s level %d, scheme %s, option FVarLinearInterpolation %s (other options and tags from the shape)\n", argv[1], level, schemeName.c_str(), names[mode]);
     fprintf(o, "uvs %d\n", L.GetNumFVarValues(0));
     for (int i = 0; i < L.GetNumFVarValues(0); i++) fprintf(o, "%.17g %.17g\n", src[i].u, src[i].v);
     fprintf(o, "faceuvs %d\n", L.GetNumFaces());
-    for (int f = 0; f < L.GetNumFaces(); f++) { Far::ConstIndexArray fv = L.GetFaceFVarValues(f, 0); fprintf(o, "%d %d %d %d\n", fv[0], fv[1], fv[2], fv[3]); }
+    for (int f = 0; f < L.GetNumFaces(); f++) {
+        Far::ConstIndexArray fv = L.GetFaceFVarValues(f, 0);
+        for (int k = 0; k < fv.size(); k++) fprintf(o, k ? " %d" : "%d", fv[k]);
+        fprintf(o, "\n");
+    }
     fprintf(o, "end 0\n"); fclose(o);
     return 0;
 }

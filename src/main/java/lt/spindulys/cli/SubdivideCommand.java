@@ -25,22 +25,25 @@ import lt.spindulys.subdiv.Subdivision;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.RefinedMesh;
 import lt.spindulys.subdiv.SubdivInput;
+import lt.spindulys.subdiv.SubdivOptions;
 
 /**
- * {@code render subdivide IN.(obj|dat) --level N [--limit] [--uv IN.tex] -o OUT.obj}: refines a
- * control mesh by Catmull-Clark and writes the refined mesh as an OBJ file, atomically; with
+ * {@code render subdivide IN.(obj|dat) [--scheme catmark|loop|bilinear] --level N [--limit] [--uv IN.tex] -o OUT.obj}:
+ * refines a control mesh with its scheme (the OBJ file's {@code t scheme} tag, else Catmull-Clark;
+ * {@code --scheme} overrides it) and writes the refined mesh as an OBJ file, atomically; with
  * {@code --scene SCENE.dat} instead of {@code --level}, writes the tessellation that scene renders
  * the mesh with (adaptive: per-edge levels from its camera, stitched and welded).
  */
 final class SubdivideCommand {
     static final String USAGE = """
-            usage: render subdivide MESH.obj|MESH.dat --level N -o OUT.obj [--limit] [--uv UNWRAP.tex] [--debug]
+            usage: render subdivide MESH.obj|MESH.dat --level N -o OUT.obj [--scheme catmark|loop|bilinear] [--limit] [--uv UNWRAP.tex] [--debug]
                    render subdivide MESH.obj|MESH.dat --scene SCENE.dat -o OUT.obj [--debug]
                    render subdivide --help
 
-            Refines a control mesh by Catmull-Clark subdivision (OpenSubdiv's rules; the t tags of an
-            OBJ file give creases, corners, holes and options) and writes the refined mesh as OBJ:
-            v positions, vt face-varying UVs (when the mesh has them), f quads; holes are left out.
+            Refines a control mesh by Catmull-Clark, Loop or bilinear subdivision (OpenSubdiv's rules;
+            the t tags of an OBJ file give creases, corners, holes, options and the scheme) and writes
+            the refined mesh as OBJ: v positions, vt face-varying UVs (when the mesh has them), f quads
+            (triangles for Loop); holes are left out.
             With --scene, writes the tessellation that scene renders the mesh with instead: the
             scene's subdiv statement naming MESH chooses the method, levels (per edge, from its
             camera, for an adaptive method) and options; the patches are stitched and welded, so
@@ -49,6 +52,8 @@ final class SubdivideCommand {
             formats are described in docs/mesh-formats.md.
 
               --level N          refinement level, 0 to 8 (this or --scene is required)
+              --scheme S         catmark, loop (triangles only) or bilinear; overrides the OBJ file's
+                                 t scheme tag (default: the file's, else catmark; with --level)
               --scene SCENE.dat  the tessellation SCENE.dat would render MESH with
               -o, --output OUT   the .obj file to write (required); written atomically
               --limit            write limit-surface positions, and vn limit normals (with --level)
@@ -71,6 +76,8 @@ final class SubdivideCommand {
     private Path input, output, uv, scene;
     private Integer level;
     private boolean limit;
+    /** The --scheme given, or null for the file's own. */
+    private SubdivOptions.Scheme scheme;
 
     /** Parses the arguments after "subdivide" (and without --debug). */
     SubdivideCommand(String[] args) throws UsageException {
@@ -82,6 +89,7 @@ final class SubdivideCommand {
                 case "--level" -> level = levelValue(value(args, ++i, a));
                 case "--limit" -> limit = true;
                 case "--scene" -> scene = Path.of(value(args, ++i, a));
+                case "--scheme" -> scheme = schemeValue(value(args, ++i, a));
                 default -> {
                     if (a.startsWith("-") && a.length() > 1) throw new UsageException("unknown option '" + a + "' for subdivide (see render subdivide --help)");
                     if (input != null) throw new UsageException("more than one mesh given: '" + input + "' and '" + a + "'");
@@ -98,6 +106,7 @@ final class SubdivideCommand {
             if (level != null) throw new UsageException("--level and --scene exclude each other: the scene's subdiv statement chooses the levels");
             if (limit) throw new UsageException("--limit goes with --level, not --scene (the scene's tessellation is written as it renders it)");
             if (uv != null) throw new UsageException("--uv goes with --level, not --scene (the scene's subdiv statement names its unwrap)");
+            if (scheme != null) throw new UsageException("--scheme goes with --level, not --scene (the scene's subdiv statement chooses the scheme)");
         } else if (level == null) {
             throw new UsageException("subdivide needs --level N or --scene SCENE.dat (see render subdivide --help)");
         }
@@ -116,6 +125,7 @@ final class SubdivideCommand {
         String name = input.toString();
         SubdivInput in = FileNames.extension(input).equals("obj") ? ObjReader.readSubdiv(input) : SubdivInput.of(WorkframeReader.readMesh(input));
         if (uv != null) in = WorkframeReader.readTex(uv, in.mesh()).applyTo(in);
+        if (scheme != null) in = in.withOptions(in.options().withScheme(scheme));
         try {
             SubdivisionSurface.checkLevel(level, in.refinedFaceCount(level), limit ? BYTES_PER_FACE + LIMIT_BYTES_PER_FACE : BYTES_PER_FACE);
         } catch (IllegalArgumentException e) {
@@ -127,7 +137,7 @@ final class SubdivideCommand {
         }
         ControlMesh control = in.toControlMesh();
         RefinedMesh refined = Subdivision.refine(control, level);
-        String comment = "Catmull-Clark subdivision of " + input.getFileName() + " at level " + level
+        String comment = schemeName(control.options().scheme()) + " subdivision of " + input.getFileName() + " at level " + level
                 + (limit ? ", limit positions and normals" : "") + " (spindulys " + Main.version() + ")\n"
                 + refined.vertexCount() + " vertices, " + refined.faceCount() + " faces";
         AtomicFile.write(output, os -> ObjWriter.write(refined, limit, comment, os));
@@ -177,7 +187,7 @@ final class SubdivideCommand {
             RefinedMesh refined = first.refined();
             // positions limit renders the limit positions: written with the limit normals, as --limit writes them.
             boolean limitPositions = first.positions() == SubdivisionSurface.Positions.LIMIT;
-            String comment = "Catmull-Clark subdivision of " + input.getFileName() + " at level " + first.level() + " as " + scene.getFileName()
+            String comment = schemeName(refined.controlMesh().options().scheme()) + " subdivision of " + input.getFileName() + " at level " + first.level() + " as " + scene.getFileName()
                     + " renders it (" + where(first) + ", method uniform" + (limitPositions ? ", positions " + first.positions().word() + ": limit positions and normals" : "")
                     + ") (spindulys " + Main.version() + ")\n"
                     + refined.vertexCount() + " vertices, " + refined.faceCount() + " faces";
@@ -232,6 +242,21 @@ final class SubdivideCommand {
         StringBuilder b = new StringBuilder();
         h.forEach((l, n) -> b.append(b.length() == 0 ? "" : ", ").append("level ").append(l).append(": ").append(n));
         return b.toString();
+    }
+
+    /** The name of a scheme in the output's first comment line. */
+    static String schemeName(SubdivOptions.Scheme s) {
+        return switch (s) {
+            case CATMARK -> "Catmull-Clark";
+            case LOOP -> "Loop";
+            case BILINEAR -> "bilinear";
+        };
+    }
+
+    private static SubdivOptions.Scheme schemeValue(String v) throws UsageException {
+        SubdivOptions.Scheme s = SubdivOptions.Scheme.ofKeyword(v);
+        if (s == null) throw new UsageException("--scheme expects catmark, loop or bilinear, found '" + v + "'");
+        return s;
     }
 
     private static Integer levelValue(String v) throws UsageException {

@@ -472,7 +472,7 @@ public final class ObjReader {
                 case "hole" -> ni >= 1 && nf == 0 && ns == 0 ? null : "face indices only (such as 1/0/0 or 3/0/0)";
                 case "interpolateboundary", "facevaryinginterpolateboundary", "facevaryingpropagatecorners" ->
                         ni == 1 && nf == 0 && ns == 0 ? null : "one integer (1/0/0)";
-                case "creasemethod", "smoothtriangles" -> ni == 0 && nf == 0 && ns == 1 ? null : "one string (0/0/1)";
+                case "creasemethod", "smoothtriangles", "scheme" -> ni == 0 && nf == 0 && ns == 1 ? null : "one string (0/0/1)";
                 default -> null; // hierarchical edits: read and ignored, as OpenSubdiv's Far does
             };
             if (shape != null) throw error(countsAt, "tag '" + name + "' takes " + shape + ", found " + countsText);
@@ -576,6 +576,14 @@ public final class ObjReader {
                         default -> throw error(stringAt[0], "expected catmark or smooth for tag 'smoothtriangles', found " + MessageText.quote(strings[0])
                                 + SceneGrammar.didYouMean(strings[0], List.of("catmark", "smooth")));
                     });
+                }
+                case "scheme" -> {
+                    SubdivOptions.Scheme s = SubdivOptions.Scheme.ofKeyword(strings[0]);
+                    if (s == null) {
+                        throw error(stringAt[0], "expected catmark, loop or bilinear for tag 'scheme', found " + MessageText.quote(strings[0])
+                                + SceneGrammar.didYouMean(strings[0], List.of("catmark", "loop", "bilinear")));
+                    }
+                    tags.options = tags.options.withScheme(s);
                 }
                 default -> {
                     if (!tags.ignored.contains(name)) tags.ignored.add(name);
@@ -1100,7 +1108,7 @@ public final class ObjReader {
     /** The tag names OpenSubdiv's shape files use; any other name is an error. */
     private static final List<String> TAGS = List.of("crease", "corner", "hole", "interpolateboundary",
             "facevaryinginterpolateboundary", "facevaryingpropagatecorners", "creasemethod", "smoothtriangles",
-            "vertexedit", "edgeedit", "faceedit");
+            "scheme", "vertexedit", "edgeedit", "faceedit");
 
     /** An index given in a tag, with where it was written, checked once the mesh is complete. */
     private record TagIndex(long value, int line, int column) {}

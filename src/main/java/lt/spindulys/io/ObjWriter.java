@@ -71,8 +71,11 @@ public final class ObjWriter {
 
         /**
          * Writes one mesh as an object: {@code o NAME}, {@code v} (refined or limit positions),
-         * {@code vt} when the mesh has UVs, {@code vn} limit normals with {@code limit}, and one
-         * {@code f} per face that is not a hole.
+         * {@code vt} when the mesh has UVs, {@code vn} limit normals with {@code limit}, one
+         * {@code f} per face that is not a hole, and {@code t scheme 0/0/1 loop|bilinear} when the
+         * mesh was refined with a scheme other than Catmull-Clark ({@code t} tags belong to a whole
+         * file for {@link ObjReader#readSubdiv}, so a file whose objects have different schemes
+         * reads back with the last object's).
          *
          * @param name     the object's name, or null for no {@code o} line
          * @param mesh     the refined mesh
@@ -93,7 +96,9 @@ public final class ObjWriter {
             if (withUv) checkRange(uv, "uv", 2, source);
             int[] sizes = mesh.faceSizes(), fv = mesh.faceVertices();
             int nv = p.length / 3;
-            Lines lines = new Lines((limit ? 2L : 1L) * nv + (withUv ? uv.length / 2 : 0) + sizes.length, progress);
+            SubdivOptions.Scheme scheme = mesh.controlMesh().options().scheme();
+            boolean schemeTag = scheme != SubdivOptions.Scheme.CATMARK;
+            Lines lines = new Lines((limit ? 2L : 1L) * nv + (withUv ? uv.length / 2 : 0) + sizes.length + (schemeTag ? 1 : 0), progress);
             if (name != null) w.write("o " + objectName(name) + "\n");
             for (int i = 0; i < p.length; i += 3) {
                 triple(w, "v ", p, i);
@@ -128,6 +133,12 @@ public final class ObjWriter {
                 }
                 line.append('\n');
                 w.append(line);
+                lines.done();
+            }
+            if (schemeTag) {
+                // The scheme the mesh was refined with, so that reading the file back as a control
+                // mesh refines it further with the same rules (Catmull-Clark, the default, is not written).
+                w.write("t scheme 0/0/1 " + scheme.keyword() + "\n");
                 lines.done();
             }
             vertices += nv;
@@ -207,7 +218,9 @@ public final class ObjWriter {
      * does not depend on a reader's defaults: {@code t interpolateboundary 1/0/0 N} (0 none, 1
      * edge and corner, 2 edge only), {@code t facevaryinginterpolateboundary 1/0/0 N} (0 none ...
      * 5 all, as {@link SubdivOptions.FaceVarying} in order), {@code t creasemethod 0/0/1
-     * normal|chaikin} and {@code t smoothtriangles 0/0/1 catmark|smooth}.
+     * normal|chaikin} and {@code t smoothtriangles 0/0/1 catmark|smooth}; before them
+     * {@code t scheme 0/0/1 loop|bilinear} when the scheme is not Catmull-Clark (the reader's
+     * default, and the only scheme OpenSubdiv's shape files know).
      *
      * <p>A sharpness is written so that it reads back as the same {@code float}; one the OBJ
      * reader cannot take is written as the value with the same effect: a negative sharpness as 0
@@ -246,7 +259,8 @@ public final class ObjWriter {
         SubdivTags tags = mesh.tags();
         int[] sizes = mesh.faceSizes(), fv = mesh.faceVertices();
         long total = (long) mesh.vertexCount() + (withUv ? uvs.length / 2 : 0) + sizes.length
-                + tags.creaseCount() + tags.corners().length + tags.holes().length + 4;
+                + tags.creaseCount() + tags.corners().length + tags.holes().length + 4
+                + (mesh.options().scheme() == SubdivOptions.Scheme.CATMARK ? 0 : 1);
         Lines lines = new Lines(total, progress);
         Writer w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), 1 << 16);
         header(w, comment, name);
@@ -293,6 +307,9 @@ public final class ObjWriter {
             case EDGE_AND_CORNER -> 1;
             case EDGE_ONLY -> 2;
         };
+        // Only a scheme other than Catmull-Clark is written: catmark files stay as they were, and
+        // OpenSubdiv's shape files (which have no scheme tag) read as Catmull-Clark too.
+        if (o.scheme() != SubdivOptions.Scheme.CATMARK) w.write("t scheme 0/0/1 " + o.scheme().keyword() + "\n");
         w.write("t interpolateboundary 1/0/0 " + boundary + "\n");
         w.write("t facevaryinginterpolateboundary 1/0/0 " + o.fvar().ordinal() + "\n");
         w.write("t creasemethod 0/0/1 " + (o.creasing() == SubdivOptions.Creasing.CHAIKIN ? "chaikin" : "normal") + "\n");

@@ -107,7 +107,8 @@ final class SceneAssetCache {
 
     /**
      * A subdivision surface: the control mesh from an OBJ (with its tags) or a Workframe .dat
-     * file, an optional .tex unwrap as its UVs, the block's scheme keys over the file's options,
+     * file, an optional .tex unwrap as its UVs, the block's scheme keys (the scheme itself among
+     * them) over the file's options,
      * refined uniformly ({@code method uniform}, the default) or adaptively. A uniform level whose
      * refinement would not fit in the heap is not refused: the combined method renders it at the
      * same level within the scene's memory budget.
@@ -144,7 +145,7 @@ final class SceneAssetCache {
         Prop uvProp = p.prop("uv");
         boolean smooth = "smooth".equals(p.get("shading"));
         SubdivKey key = new SubdivKey(path, uvProp != null ? existingFile(uvProp, "unwrap file") : null, level,
-                smooth, positions, (String) p.get("boundary"), (String) p.get("uvinterpolation"),
+                smooth, positions, (String) p.get("scheme"), (String) p.get("boundary"), (String) p.get("uvinterpolation"),
                 (String) p.get("creasing"), (String) p.get("triangles"));
         if (method.equals("uniform")) {
             SubdivisionSurface same = surfaces.get(key);
@@ -181,7 +182,8 @@ final class SceneAssetCache {
     /** An adaptive surface; statements naming the same control mesh and scheme share its refiner. */
     private GObject adaptive(Props p, Prop f, SubdivKey key, SubdivInput read, AdaptiveSubdivisionSurface.Method method, int level,
                              Prop target, Prop levels, Prop maxLevel, boolean smooth) {
-        SubdivKey shared = new SubdivKey(key.file(), key.uv(), -1, key.smooth(), key.positions(), key.boundary(), key.uvinterpolation(), key.creasing(), key.triangles());
+        SubdivKey shared = new SubdivKey(key.file(), key.uv(), -1, key.smooth(), key.positions(), key.scheme(), key.boundary(), key.uvinterpolation(),
+                key.creasing(), key.triangles());
         AdaptiveSubdivisionSurface first = adaptiveSurfaces.get(shared);
         AdaptiveSubdivisionSurface s;
         if (first != null) {
@@ -213,8 +215,8 @@ final class SceneAssetCache {
     }
 
     /** What makes two subdiv statements the same surface: file, unwrap, level, shading, vertex positions and scheme words. */
-    private record SubdivKey(Path file, Path uv, int level, boolean smooth, SubdivisionSurface.Positions positions, String boundary, String uvinterpolation,
-                             String creasing, String triangles) {}
+    private record SubdivKey(Path file, Path uv, int level, boolean smooth, SubdivisionSurface.Positions positions, String scheme, String boundary,
+                             String uvinterpolation, String creasing, String triangles) {}
 
     /** The control mesh of a subdiv block, with its unwrap and the block's scheme keys. */
     private SubdivInput readSurface(Props p, Prop f, String rel, Path path) {
@@ -242,12 +244,18 @@ final class SceneAssetCache {
 
     /** The file's options with the block's scheme keys, where given, in their place. */
     private static SubdivOptions options(Props p, SubdivOptions o) {
-        return subdivOptions(o, (String) p.get("boundary"), (String) p.get("uvinterpolation"), (String) p.get("creasing"), (String) p.get("triangles"));
+        return subdivOptions(o, (String) p.get("scheme"), (String) p.get("boundary"), (String) p.get("uvinterpolation"), (String) p.get("creasing"),
+                (String) p.get("triangles"));
     }
 
     /** {@code base} with each scheme choice of a subdiv block (its grammar word, or null to keep base's) in its place. */
-    static SubdivOptions subdivOptions(SubdivOptions base, String boundary, String uvinterpolation, String creasing, String triangles) {
+    static SubdivOptions subdivOptions(SubdivOptions base, String scheme, String boundary, String uvinterpolation, String creasing, String triangles) {
         SubdivOptions o = base;
+        if (scheme != null) {
+            SubdivOptions.Scheme s = SubdivOptions.Scheme.ofKeyword(scheme);
+            if (s == null) throw new IllegalStateException("scheme choice without a mapping: " + scheme);
+            o = o.withScheme(s);
+        }
         if (boundary != null) {
             o = o.withBoundary(switch (boundary) {
                 case "edge-only" -> SubdivOptions.Boundary.EDGE_ONLY;

@@ -254,6 +254,7 @@ final class SceneGrammar {
             opt("target", Kind.NUMBER),
             choice("levels", "edge", "edge", "object"),
             opt("maxlevel", Kind.INTEGER),
+            choice("scheme", null, "catmark", "loop", "bilinear"),
             choice("boundary", null, "edge-only", "edge-and-corner", "none"),
             choice("uvinterpolation", null, "none", "corners-only", "corners-plus1", "corners-plus2", "boundaries", "all"),
             choice("creasing", null, "uniform", "chaikin"),

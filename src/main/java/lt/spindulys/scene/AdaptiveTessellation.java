@@ -23,6 +23,7 @@ import lt.spindulys.math.Ray;
 import lt.spindulys.math.Transform;
 import lt.spindulys.mesh.MeshData;
 import lt.spindulys.subdiv.PatchRefiner;
+import lt.spindulys.subdiv.SubdivOptions;
 import lt.spindulys.trace.Hit;
 import lt.spindulys.trace.ShadingData;
 import lt.spindulys.trace.SpanBuffer;
@@ -48,6 +49,8 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
 
     private final AdaptiveSubdivisionSurface.Geometry geometry;
     private final PatchRefiner refiner;
+    /** Whether the faces split into triangles (Loop) rather than quads. */
+    private final boolean loop;
     private final AdaptiveSubdivisionSurface.Method method;
     private final boolean smooth;
     private final int fixedLevel, maxLevel;
@@ -80,6 +83,7 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
     AdaptiveTessellation(AdaptiveSubdivisionSurface s, double target) {
         geometry = s.geometry();
         refiner = geometry.refiner();
+        loop = refiner.control().options().scheme() == SubdivOptions.Scheme.LOOP;
         method = s.method();
         smooth = s.isSmooth();
         fixedLevel = s.fixedLevel();
@@ -104,10 +108,14 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
      */
     static final long PATCH_BYTES_PER_TRIANGLE = 80;
 
-    /** Triangles of face {@code f}'s patch: a polygon's fan at level 0, else two per quad. */
+    /**
+     * Triangles of face {@code f}'s patch: a polygon's fan at level 0, else two per quad (n quads
+     * at level 1), or for Loop the triangle's own 4^l.
+     */
     private long triangles(int f) {
         int n = refiner.faceSize(f), l = faceLevel[f];
-        return l == 0 ? n - 2 : 2L * n << (2 * (l - 1));
+        if (l == 0) return n - 2;
+        return loop ? 1L << (2 * l) : 2L * n << (2 * (l - 1));
     }
 
     /** Heap face {@code f}'s patch holds, all told (what pinning it costs). */

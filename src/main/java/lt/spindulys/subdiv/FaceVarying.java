@@ -141,7 +141,7 @@ final class FaceVarying {
                         || (dependent && n > 2)
                         || (sharpenDarts && n == 1 && (gt & Level.T_BOUNDARY) == 0);
                 if (!all && dependent && n == 2) {
-                    all = disjoint(lv, first) || disjoint(lv, first + 1);
+                    all = disjoint(lv, eSharp, first) || disjoint(lv, eSharp, first + 1);
                     if (plus2) all |= valueFaces[first] == 1 || valueFaces[first + 1] == 1;
                 }
                 for (int id = first; id < end; id++) pin[id] = all || (valueFaces[id] == 1 && cornersSharp);
@@ -152,12 +152,15 @@ final class FaceVarying {
         return new Channel(lv, values, false, linearBoundaries);
     }
 
-    /** Far's "disjoint" value span: split by a seam or an infinitely sharp edge. */
-    private static boolean disjoint(Level lv, int id) {
+    /**
+     * Far's "disjoint" value span: split by a seam or an infinitely sharp edge. The level's tags
+     * are not set yet, so the edges' sharpness comes from {@code eSharp} (by edge of the value mesh).
+     */
+    private static boolean disjoint(Level lv, float[] eSharp, int id) {
         if (lv.nmVertIndex(id) >= 0) return true;
         int start = lv.vOut[id], h = start;
         do {
-            if (lv.hTwin[h] >= 0 && Crease.isInfinite(lv.edgeSharpness(h))) return true;
+            if (lv.hTwin[h] >= 0 && Crease.isInfinite(eSharp[lv.edge(h)])) return true;
             int t = lv.hTwin[lv.prev(h)];
             if (t < 0) break;
             h = t;

@@ -32,8 +32,9 @@ import java.util.Arrays;
  * its edges in Far's vertex-edge order.
  *
  * <p>A level holds the arrays and the navigation over them. Level 0 is made by
- * {@link BaseLevelBuilder}, each next level by {@link Refinement} (topology) with
- * {@link SharpnessRefinement} (sharpness and tags); the creasing rules are {@link Crease}'s.
+ * {@link BaseLevelBuilder}, each next level by {@link Refinement} or {@link TriangleSplit}
+ * (topology) with {@link SharpnessRefinement} (sharpness and tags); the creasing rules are
+ * {@link Crease}'s, the weights each scheme's {@link SchemeRules}.
  */
 final class Level {
     // vTag bits

@@ -1,13 +1,12 @@
 package lt.spindulys.subdiv;
 
 /**
- * Limit positions and normals of the vertices of a level with Sdc's Catmull-Clark limit masks
- * (OpenSubdiv's {@code PrimvarRefiner::Limit}): smooth (and dart) vertices use the smooth
- * masks over their 1-ring, crease vertices (creases and boundaries) the crease masks along their
- * two sharp edges, corners stay where they are. The normal is the normalised cross product of
- * the two limit tangents; the first tangent points along the vertex's first edge and the second
- * turns counter-clockwise from it, so the normal is on the side where faces wind
- * counter-clockwise.
+ * Limit positions and normals of the vertices of a level (OpenSubdiv's
+ * {@code PrimvarRefiner::Limit}): each vertex's 1-ring is gathered in Far's order and weighed by
+ * its scheme's limit masks ({@link SchemeRules#limitMasks}: smooth, crease or corner by the
+ * vertex's rule). The normal is the normalised cross product of the two limit tangents; the
+ * first tangent points along the vertex's first edge and the second turns counter-clockwise
+ * from it, so the normal is on the side where faces wind counter-clockwise.
  *
  * <p>Where the masks leave the tangents degenerate (for example a corner whose first two edges
  * are collinear) the normal falls back to the sum of the face normals around the vertex.
@@ -19,24 +18,23 @@ final class Limit {
      * @param pos receives the limit position of every vertex (3 per vertex), or null
      * @param nrm receives the unit limit normal of every vertex (3 per vertex), or null
      */
-    static void evaluate(Level lv, SubdivOptions.Scheme scheme, double[] p, double[] pos, double[] nrm) {
-        evaluate(lv, scheme, p, pos, nrm, null);
+    static void evaluate(Level lv, SchemeRules rules, double[] p, double[] pos, double[] nrm) {
+        evaluate(lv, rules, p, pos, nrm, null);
     }
 
     /**
-     * As {@link #evaluate(Level, double[], double[], double[])} for the vertices flagged in
+     * As {@link #evaluate(Level, SchemeRules, double[], double[], double[])} for the vertices flagged in
      * {@code only} (null: all); each vertex's values are computed alone, so they are the same.
      */
-    static void evaluate(Level lv, SubdivOptions.Scheme scheme, double[] p, double[] pos, double[] nrm, boolean[] only) {
-        boolean loop = scheme == SubdivOptions.Scheme.LOOP, bilinear = scheme == SubdivOptions.Scheme.BILINEAR;
+    static void evaluate(Level lv, SchemeRules rules, double[] p, double[] pos, double[] nrm, boolean[] only) {
         if (lv.eSharp != null) lv.edgeCodes(); // edge sharpness is looked up by edge index
         int cap = lv.maxValence() + 2;
         int[] ring = new int[cap + 1], other = new int[cap], opp = new int[cap];
         float[] sharp = new float[cap];
-        double[] ew = new double[cap], fw = new double[cap], t1e = new double[cap], t1f = new double[cap],
-                t2e = new double[cap], t2f = new double[cap];
+        SchemeRules.LimitMasks m = new SchemeRules.LimitMasks(cap);
         double[] t = new double[6];
-        boolean quads = lv.faceStart == null && scheme == SubdivOptions.Scheme.CATMARK;
+        // Catmull-Clark's regular vertices take an unrolled path.
+        boolean quads = lv.faceStart == null && rules instanceof CatmarkRules;
         boolean anyNm = lv.nmVert.length > 0;
         // Regular vertices first, visited in half-edge order (each at its leading half-edge),
         // which keeps the 1-ring lookups close in memory; the rest vertex by vertex.
@@ -90,138 +88,10 @@ final class Limit {
                 if (nrm != null) fallbackNormal(lv, p, v, nrm);
                 continue;
             }
-            int rule = lv.rule(v);
-            double vw, t1v, t2v;
-            int nE1 = nEdges, nF1 = nFaces; // weights in use
-            // Bilinear: every vertex is a corner (the limit surface is the refined mesh itself);
-            // Catmull-Clark treats a smooth valence-2 vertex as a corner, Loop does not.
-            boolean smooth = !bilinear && rule <= Crease.RULE_DART && (loop || nFaces != 2) && nmi < 0;
-            if (loop && (smooth || rule == Crease.RULE_CREASE)) {
-                vw = loopMasks(smooth, nEdges, sharp, ew, t1e, t2e, t);
-                t1v = t[0];
-                t2v = t[1];
-                nF1 = 0;
-                for (int j = 0; j < nFaces; j++) {
-                    t1f[j] = 0.0;
-                    t2f[j] = 0.0;
-                }
-            } else if (smooth) {
-                int n = nFaces;
-                double fwt, ewt;
-                if (n == 4) {
-                    fwt = 1.0 / 36.0;
-                    ewt = 1.0 / 9.0;
-                    vw = 4.0 / 9.0;
-                } else {
-                    double valence = n;
-                    fwt = 1.0 / (valence * (valence + 5.0));
-                    ewt = 4.0 * fwt;
-                    vw = 1.0 - valence * (ewt + fwt);
-                }
-                for (int j = 0; j < n; j++) {
-                    ew[j] = ewt;
-                    fw[j] = fwt;
-                }
-                t1v = t2v = 0.0;
-                if (n == 4) {
-                    double[] e1 = {4, 0, -4, 0}, f1 = {1, -1, -1, 1}, e2 = {0, 4, 0, -4}, f2 = {1, 1, -1, -1};
-                    for (int j = 0; j < 4; j++) {
-                        t1e[j] = e1[j];
-                        t1f[j] = f1[j];
-                        t2e[j] = e2[j];
-                        t2f[j] = f2[j];
-                    }
-                } else {
-                    double theta = 2.0 * Math.PI / n;
-                    double cosTheta = Math.cos(theta), cosHalfTheta = Math.cos(theta * 0.5);
-                    double lambda = (5.0 / 16.0) + (1.0 / 16.0) * (cosTheta + cosHalfTheta * Math.sqrt(2.0 * (9.0 + cosTheta)));
-                    double faceScale = 1.0 / (4.0 * lambda - 1.0);
-                    for (int j = 0; j < n; j++) {
-                        double ci = Math.cos(j * theta), ci1 = Math.cos((j + 1) * theta);
-                        t1e[j] = 4.0 * ci;
-                        t1f[j] = faceScale * (ci + ci1);
-                    }
-                    t2e[0] = t1e[n - 1];
-                    t2f[0] = t1f[n - 1];
-                    for (int j = 1; j < n; j++) {
-                        t2e[j] = t1e[j - 1];
-                        t2f[j] = t1f[j - 1];
-                    }
-                }
-            } else if (rule == Crease.RULE_CREASE && !bilinear) {
-                int c0 = 0, c1 = nEdges - 1;
-                while (c0 < nEdges - 1 && !Crease.isSharp(sharp[c0])) c0++;
-                while (c1 > 0 && !Crease.isSharp(sharp[c1])) c1--;
-                vw = 2.0 / 3.0;
-                for (int j = 0; j < nEdges; j++) ew[j] = 0.0;
-                ew[c0] = 1.0 / 6.0;
-                ew[c1] = 1.0 / 6.0;
-                nF1 = 0;
-                for (int j = 0; j < nEdges; j++) {
-                    t1e[j] = 0.0;
-                    t2e[j] = 0.0;
-                }
-                for (int j = 0; j < nFaces; j++) {
-                    t1f[j] = 0.0;
-                    t2f[j] = 0.0;
-                }
-                t1v = 0.0;
-                t1e[c0] = 0.5;
-                t1e[c1] = -0.5;
-                int interior = c1 - c0 - 1;
-                if (interior == 1) {
-                    t2v = -4.0 / 6.0;
-                    t2e[c0] = -1.0 / 6.0;
-                    t2e[c0 + 1] = 4.0 / 6.0;
-                    t2e[c1] = -1.0 / 6.0;
-                    t2f[c0] = 1.0 / 6.0;
-                    t2f[c0 + 1] = 1.0 / 6.0;
-                } else if (interior > 1) {
-                    double k = interior + 1;
-                    double theta = Math.PI / k;
-                    double cosTheta = Math.cos(theta), sinTheta = Math.sin(theta);
-                    double commonDenom = 1.0 / (k * (3.0 + cosTheta));
-                    double r = (cosTheta + 1.0) / sinTheta;
-                    double vertexWeight = 4.0 * r * (cosTheta - 1.0);
-                    double creaseWeight = -r * (1.0 + 2.0 * cosTheta);
-                    t2v = vertexWeight * commonDenom;
-                    t2e[c0] = creaseWeight * commonDenom;
-                    t2e[c1] = creaseWeight * commonDenom;
-                    t2f[c0] = sinTheta * commonDenom;
-                    double sinI, sinI1 = sinTheta;
-                    for (int i = 1; i < k; i++) {
-                        sinI = sinI1;
-                        sinI1 = Math.sin((i + 1) * theta);
-                        t2e[c0 + i] = (4.0 * sinI) * commonDenom;
-                        t2f[c0 + i] = (sinI + sinI1) * commonDenom;
-                    }
-                } else {
-                    t2v = -6.0;
-                    t2e[c0] = 3.0;
-                    t2e[c1] = 3.0;
-                    t2f[c0] = 0.0;
-                }
-            } else {
-                // Corner (and valence-2 smooth vertices, as in Sdc): the vertex itself, with
-                // tangents along the first two edges.
-                vw = 1.0;
-                nE1 = 0;
-                nF1 = 0;
-                for (int j = 0; j < nEdges; j++) {
-                    t1e[j] = 0.0;
-                    t2e[j] = 0.0;
-                }
-                for (int j = 0; j < nFaces; j++) {
-                    t1f[j] = 0.0;
-                    t2f[j] = 0.0;
-                }
-                // Loop's corner tangents are scaled by 3 (Sdc's convention); the direction is the same.
-                double scale = loop ? 3.0 : 1.0;
-                t1v = -scale;
-                t2v = -scale;
-                t1e[0] = scale;
-                if (nEdges > 1) t2e[1] = scale;
-            }
+            rules.limitMasks(lv.rule(v), nEdges, nFaces, nmi >= 0, sharp, m);
+            double[] ew = m.ew, fw = m.fw, t1e = m.t1e, t1f = m.t1f, t2e = m.t2e, t2f = m.t2f;
+            double vw = m.vw, t1v = m.t1v, t2v = m.t2v;
+            int nE1 = m.posEdges, nF1 = m.posFaces; // weights the position uses
             if (pos != null) {
                 for (int d = 0; d < 3; d++) {
                     double acc = 0.0;
@@ -263,89 +133,6 @@ final class Limit {
         }
     }
 
-    private static final double ROOT3 = 1.73205080756887729352, ROOT3_BY_2 = ROOT3 * 0.5;
-
-    /**
-     * Sdc's Loop limit masks of a smooth (or dart) vertex over its n edges, or of a crease vertex
-     * along its two sharp edges: position edge weights into {@code ew}, tangent edge weights into
-     * {@code t1e} and {@code t2e}, the tangents' vertex weights into {@code tv[0]} and
-     * {@code tv[1]}; returns the position's vertex weight. No face weights. Smooth: the limit
-     * (1 - n chi) v + chi sum(e) with chi = 1 / (n + 3 / (8 gamma)), tangents the cosine and sine
-     * masks; crease: the cubic B-spline's (1/6, 2/3, 1/6) along the crease, Far's tangent across
-     * the faces between the two sharp edges (counter-clockwise from the first).
-     */
-    private static double loopMasks(boolean smooth, int nEdges, float[] sharp, double[] ew, double[] t1e, double[] t2e, double[] tv) {
-        if (smooth) {
-            int n = nEdges;
-            double ewt, vw;
-            if (n == 6) {
-                ewt = 1.0 / 12.0;
-                vw = 0.5;
-            } else {
-                double dValence = n, invValence = 1.0 / dValence;
-                double cosTheta = Math.cos(Math.PI * 2.0 * invValence);
-                double beta = 0.25 * cosTheta + 0.375;
-                double gamma = (0.625 - beta * beta) * invValence;
-                ewt = 1.0 / (dValence + 3.0 / (8.0 * gamma));
-                vw = 1.0 - ewt * dValence;
-            }
-            for (int j = 0; j < n; j++) ew[j] = ewt;
-            tv[0] = tv[1] = 0.0;
-            if (n == 6) {
-                double[] c1 = {1.0, 0.5, -0.5, -1.0, -0.5, 0.5}, c2 = {0.0, ROOT3_BY_2, ROOT3_BY_2, 0.0, -ROOT3_BY_2, -ROOT3_BY_2};
-                for (int j = 0; j < 6; j++) {
-                    t1e[j] = c1[j];
-                    t2e[j] = c2[j];
-                }
-            } else {
-                double alpha = 2.0 * Math.PI / n;
-                for (int j = 0; j < n; j++) {
-                    double a = alpha * j;
-                    t1e[j] = Math.cos(a);
-                    t2e[j] = Math.sin(a);
-                }
-            }
-            return vw;
-        }
-        int c0 = 0, c1 = nEdges - 1;
-        while (c0 < nEdges - 1 && !Crease.isSharp(sharp[c0])) c0++;
-        while (c1 > 0 && !Crease.isSharp(sharp[c1])) c1--;
-        for (int j = 0; j < nEdges; j++) {
-            ew[j] = 0.0;
-            t1e[j] = 0.0;
-            t2e[j] = 0.0;
-        }
-        ew[c0] = 1.0 / 6.0;
-        ew[c1] = 1.0 / 6.0;
-        tv[0] = 0.0;
-        t1e[c0] = 1.5;
-        t1e[c1] = -1.5;
-        int interior = c1 - c0 - 1;
-        if (interior == 2) {
-            tv[1] = -ROOT3;
-            t2e[c0] = -ROOT3_BY_2;
-            t2e[c1] = -ROOT3_BY_2;
-            t2e[c0 + 1] = ROOT3;
-            t2e[c0 + 2] = ROOT3;
-        } else if (interior > 2) {
-            double theta = Math.PI / (interior + 1);
-            tv[1] = 0.0;
-            double cWeight = -3.0 * Math.sin(theta);
-            t2e[c0] = cWeight;
-            t2e[c1] = cWeight;
-            double eCoeff = -3.0 * 2.0 * (Math.cos(theta) - 1.0);
-            for (int i = 1; i <= interior; i++) t2e[c0 + i] = eCoeff * Math.sin(i * theta);
-        } else if (interior == 1) {
-            tv[1] = -3.0;
-            t2e[c0 + 1] = 3.0;
-        } else {
-            tv[1] = -6.0;
-            t2e[c0] = 3.0;
-            t2e[c1] = 3.0;
-        }
-        return 4.0 / 6.0;
-    }
-
     /**
      * The smooth masks at an interior vertex of valence 4 in a quad level, unrolled. Returns
      * false (having written nothing) for any other vertex.
@@ -365,7 +152,7 @@ final class Limit {
         int o2 = 3 * orig[(h2 & ~3) | ((h2 + 2) & 3)], o3 = 3 * orig[(h3 & ~3) | ((h3 + 2) & 3)];
         int vp = 3 * v;
         if (pos != null) {
-            final double fw = 1.0 / 36.0, ew = 1.0 / 9.0, vw = 4.0 / 9.0;
+            final double fw = CatmarkRules.REGULAR_LIMIT_FACE, ew = CatmarkRules.REGULAR_LIMIT_EDGE, vw = CatmarkRules.REGULAR_LIMIT_VERTEX;
             for (int d = 0; d < 3; d++) {
                 pos[vp + d] = fw * p[o0 + d] + fw * p[o1 + d] + fw * p[o2 + d] + fw * p[o3 + d]
                         + ew * p[e0 + d] + ew * p[e1 + d] + ew * p[e2 + d] + ew * p[e3 + d] + vw * p[vp + d];

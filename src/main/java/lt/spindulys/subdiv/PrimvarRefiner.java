@@ -1,10 +1,12 @@
 package lt.spindulys.subdiv;
 
 /**
- * Applies Catmull-Clark weights (Sdc's masks) to data carried by the vertices of a level, giving
- * the data of the refined level: OpenSubdiv's {@code PrimvarRefiner::Interpolate}. The same
- * code refines positions (3 values per vertex) and face-varying UVs (2 per vertex of the UV
- * "value mesh"), so both follow one set of rules.
+ * Applies a scheme's weights (its {@link SchemeRules}) to data carried by the vertices of a
+ * level, giving the data of the refined level: OpenSubdiv's {@code PrimvarRefiner::Interpolate}
+ * with Sdc's generic mask logic (creases, corners, and the blend where sharpness decays between a
+ * level and its child). The same code refines positions (3 values per vertex) and face-varying
+ * UVs (2 per vertex of the UV "value mesh"), so both follow one set of rules, and the same code
+ * serves every scheme: only the smooth masks differ between them.
  *
  * <p>Weights and the order of summation follow Far (faces, then edges, then the vertex itself),
  * so results agree with OpenSubdiv to the last bits in the common cases.
@@ -12,24 +14,22 @@ package lt.spindulys.subdiv;
 final class PrimvarRefiner {
     private PrimvarRefiner() {}
 
-    /** Far's smooth-triangle edge weight (after Hbr). */
-    private static final double TRI_EDGE_WEIGHT = 0.470;
-
     /**
      * @param src    {@code stride} values per vertex of {@code p}
      * @param dst    receives {@code stride} values per vertex of {@code c}
-     * @param linear bilinear instead of Catmull-Clark (Far's linear face-varying
+     * @param linear linear interpolation whatever the scheme (Far's linear face-varying
      *               interpolation): face centroids, edge midpoints, vertices kept
      */
     static void interpolate(Level p, Level c, SubdivOptions opt, int stride, double[] src, double[] dst, boolean linear) {
+        SchemeRules rules = SchemeRules.of(opt);
         p.edgeCodes();
         if (!p.triangleSplit) faces(p, stride, src, dst);
-        if (linear || opt.scheme() == SubdivOptions.Scheme.BILINEAR) {
+        if (linear || rules.linear()) {
             linearEdgesAndVertices(p, stride, src, dst);
             return;
         }
-        edges(p, c, opt, stride, src, dst);
-        vertices(p, c, opt, stride, src, dst);
+        edges(p, c, rules, stride, src, dst);
+        vertices(p, c, rules, opt.creasing() == SubdivOptions.Creasing.CHAIKIN, stride, src, dst);
     }
 
     /** Index of the first edge point in the child: after the vertices, and the face points of a quad split. */
@@ -69,11 +69,18 @@ final class PrimvarRefiner {
         }
     }
 
-    private static void edges(Level p, Level c, SubdivOptions opt, int stride, double[] src, double[] dst) {
-        boolean smoothTris = opt.triangles() == SubdivOptions.Triangles.SMOOTH;
-        boolean loop = p.triangleSplit;
+    /**
+     * Edge points: Sdc's {@code ComputeEdgeVertexMask}. A crease (1/2, 1/2) where the child
+     * stays a crease, the scheme's smooth mask where the edge is smooth, and between them, where
+     * a semi-sharp edge decays to smooth in the child, the smooth mask blended with the crease by
+     * the parent sharpness. The smooth mask's face weights apply to the face points (quad split)
+     * or to the vertices opposite the edge (triangle split).
+     */
+    private static void edges(Level p, Level c, SchemeRules rules, int stride, double[] src, double[] dst) {
+        boolean opposite = p.triangleSplit;
         int[] code = p.hEdge, twin = p.hTwin;
         int vFace = p.nV, vEdge = firstEdgePoint(p);
+        double[] w = new double[2];
         for (int h = 0; h < p.nH; h++) {
             int ch = code[h];
             if ((ch & Level.E_PRIMARY) == 0) continue;
@@ -81,79 +88,53 @@ final class PrimvarRefiner {
             int out = (vEdge + e) * stride;
             int v0 = p.edgeV0(h) * stride, v1 = p.edgeV1(h) * stride;
             float sharp = p.edgeSharpness(h);
-            // Sdc's edge mask: a crease if the child stays a crease; an infinitely sharp edge
-            // always is one (a face-varying boundary edge's point may be pinned as a corner).
+            // An infinitely sharp edge is always a crease (a face-varying boundary edge's point
+            // may be pinned as a corner).
             if (Crease.isSharp(sharp) && (Crease.isInfinite(sharp) || c.rule(vEdge + e) == Crease.RULE_CREASE)) {
                 for (int d = 0; d < stride; d++) dst[out + d] = 0.5 * src[v0 + d] + 0.5 * src[v1 + d];
                 continue;
             }
-            if (loop) {
-                // Loop's smooth edge mask: 3/8 on the ends, 1/8 on the vertex opposite the edge
-                // in each of its two triangles; a decaying crease blends in (1/2, 1/2).
-                int o0 = p.hOrig[p.prev(h)] * stride, o1 = p.hOrig[p.prev(twin[h])] * stride;
-                double vw = 0.375, fw = 0.125;
-                if (Crease.isSharp(sharp)) {
-                    double pw = sharp, cw = 1.0 - pw;
-                    vw = pw * 0.5 + cw * vw;
-                    fw = fw * cw;
-                }
-                for (int d = 0; d < stride; d++) {
-                    dst[out + d] = vw * src[v0 + d] + vw * src[v1 + d] + fw * src[o0 + d] + fw * src[o1 + d];
-                }
-                continue;
-            }
-            int f0 = (vFace + p.face(h)) * stride, f1 = (vFace + p.face(twin[h])) * stride;
-            double vw = 0.25, fw = 0.25;
-            if (smoothTris) {
-                boolean tri0 = p.faceSize(p.face(h)) == 3, tri1 = p.faceSize(p.face(twin[h])) == 3;
-                if (tri0 || tri1) {
-                    double w0 = tri0 ? TRI_EDGE_WEIGHT : 0.25, w1 = tri1 ? TRI_EDGE_WEIGHT : 0.25;
-                    fw = 0.5 * (w0 + w1);
-                    vw = 0.5 * (1.0 - 2.0 * fw);
-                }
-            }
+            int t = twin[h];
+            rules.smoothEdgeMask(p.faceSize(p.face(h)), p.faceSize(p.face(t)), w);
+            double vw = w[0], fw = w[1];
             if (Crease.isSharp(sharp)) {
                 // A crease decaying to smooth in the child: blend by the parent sharpness.
                 double pw = sharp, cw = 1.0 - pw;
                 vw = pw * 0.5 + cw * vw;
                 fw = fw * cw;
             }
-            for (int d = 0; d < stride; d++) {
-                dst[out + d] = vw * src[v0 + d] + vw * src[v1 + d] + fw * dst[f0 + d] + fw * dst[f1 + d];
+            if (opposite) {
+                int o0 = p.hOrig[p.prev(h)] * stride, o1 = p.hOrig[p.prev(t)] * stride;
+                for (int d = 0; d < stride; d++) {
+                    dst[out + d] = vw * src[v0 + d] + vw * src[v1 + d] + fw * src[o0 + d] + fw * src[o1 + d];
+                }
+            } else {
+                int f0 = (vFace + p.face(h)) * stride, f1 = (vFace + p.face(t)) * stride;
+                for (int d = 0; d < stride; d++) {
+                    dst[out + d] = vw * src[v0 + d] + vw * src[v1 + d] + fw * dst[f0 + d] + fw * dst[f1 + d];
+                }
             }
         }
     }
 
-    private static void vertices(Level p, Level c, SubdivOptions opt, int stride, double[] src, double[] dst) {
+    /**
+     * Vertex points: Sdc's {@code ComputeVertexVertexMask}. Smooth and dart vertices take the
+     * scheme's smooth mask; the others go through {@link VertexMask} (crease, corner, blends).
+     */
+    private static void vertices(Level p, Level c, SchemeRules rules, boolean chaikin, int stride, double[] src, double[] dst) {
         int[] orig = p.hOrig, twin = p.hTwin;
         int vFace = p.nV;
-        boolean quads = p.faceStart == null, loop = p.triangleSplit;
+        boolean quads = p.faceStart == null, facePoints = !p.triangleSplit;
         VertexMask m = null;
         for (int v = 0; v < p.nV; v++) {
             int pRule = p.rule(v);
             int vs = v * stride;
-            if (pRule <= Crease.RULE_DART && loop) {
-                int n = p.valence(v);
-                double ew = loopEdgeWeight(n), vw = loopVertexWeight(n, ew);
-                int start = p.vOut[v];
-                for (int d = 0; d < stride; d++) {
-                    double acc = 0.0;
-                    int h = start;
-                    do {
-                        acc += ew * src[p.dest(h) * stride + d];
-                        h = twin[p.prev(h)];
-                    } while (h != start);
-                    dst[vs + d] = acc + vw * src[vs + d];
-                }
-                continue;
-            }
             if (pRule <= Crease.RULE_DART) {
                 int start = p.vOut[v];
+                int n = p.valence(v);
+                double fw = rules.smoothVertexFaceWeight(n), ew = rules.smoothVertexEdgeWeight(n), vw = rules.smoothVertexWeight(n);
                 if (stride == 3 && quads) {
-                    // The common case, unrolled: Far's smooth mask with weights 1/n^2 on the
-                    // face and edge points and (n-2)/n on the vertex.
-                    int n = p.valence(v);
-                    double fw = 1.0 / (n * n), vw = (double) (n - 2) / (double) n;
+                    // The common case, unrolled: positions on a level of quads.
                     double ax = 0, ay = 0, az = 0;
                     int h = start;
                     do {
@@ -165,9 +146,9 @@ final class PrimvarRefiner {
                     } while (h != start);
                     do {
                         int op = orig[(h & ~3) | ((h + 1) & 3)] * 3;
-                        ax += fw * src[op];
-                        ay += fw * src[op + 1];
-                        az += fw * src[op + 2];
+                        ax += ew * src[op];
+                        ay += ew * src[op + 1];
+                        az += ew * src[op + 2];
                         h = twin[(h & ~3) | ((h + 3) & 3)];
                     } while (h != start);
                     int out = v * 3;
@@ -176,17 +157,17 @@ final class PrimvarRefiner {
                     dst[out + 2] = az + vw * src[vs + 2];
                     continue;
                 }
-                int n = p.valence(v);
-                double fw = 1.0 / (n * n), vw = (double) (n - 2) / (double) n;
                 for (int d = 0; d < stride; d++) {
                     double acc = 0.0;
                     int h = start;
+                    if (facePoints) {
+                        do {
+                            acc += fw * dst[(vFace + p.face(h)) * stride + d];
+                            h = twin[p.prev(h)];
+                        } while (h != start);
+                    }
                     do {
-                        acc += fw * dst[(vFace + p.face(h)) * stride + d];
-                        h = twin[p.prev(h)];
-                    } while (h != start);
-                    do {
-                        acc += fw * src[p.dest(h) * stride + d];
+                        acc += ew * src[p.dest(h) * stride + d];
                         h = twin[p.prev(h)];
                     } while (h != start);
                     dst[vs + d] = acc + vw * src[vs + d];
@@ -195,7 +176,7 @@ final class PrimvarRefiner {
             }
             if (m == null) m = new VertexMask(p.maxValence() + 2);
             m.gather(p, c, v);
-            m.compute(p, c, v, opt.creasing() == SubdivOptions.Creasing.CHAIKIN, loop);
+            m.compute(p, c, v, chaikin, rules, facePoints);
             for (int d = 0; d < stride; d++) {
                 double acc = 0.0;
                 if (m.hasFaces) for (int i = 0; i < m.nFaces; i++) acc += m.fw[i] * dst[(vFace + m.face[i]) * stride + d];
@@ -203,24 +184,6 @@ final class PrimvarRefiner {
                 dst[vs + d] = acc + m.vw * src[vs + d];
             }
         }
-    }
-
-    /**
-     * Loop's smooth vertex mask (Sdc's, after Hbr: Loop's original weights, not Warren's): the
-     * weight of each of the n edge neighbours, (5/8 - (3/8 + cos(2 pi / n) / 4)^2) / n; 1/16 at
-     * valence 6.
-     */
-    static double loopEdgeWeight(int n) {
-        if (n == 6) return 0.0625;
-        double dValence = n, invValence = 1.0 / dValence;
-        double cosTheta = Math.cos(Math.PI * 2.0 * invValence);
-        double beta = 0.25 * cosTheta + 0.375;
-        return (0.625 - beta * beta) * invValence;
-    }
-
-    /** The vertex's own weight in Loop's smooth mask, given the edge weight. */
-    static double loopVertexWeight(int n, double edgeWeight) {
-        return n == 6 ? 0.625 : 1.0 - edgeWeight * n;
     }
 
     /**
@@ -277,9 +240,10 @@ final class PrimvarRefiner {
             }
         }
 
-        /** Sdc's {@code ComputeVertexVertexMask} for vertex v of p with child rule from c (Loop's masks if {@code loop}). */
-        void compute(Level p, Level c, int v, boolean chaikin, boolean loop) {
-            this.loop = loop;
+        /** Sdc's {@code ComputeVertexVertexMask} for vertex v of p with child rule from c, with the scheme's masks. */
+        void compute(Level p, Level c, int v, boolean chaikin, SchemeRules rules, boolean facePoints) {
+            this.rules = rules;
+            this.facePoints = facePoints;
             int pRule = p.rule(v), cRule = c.rule(v);
             float pVs = p.vertexSharpness(v), cVs = c.vertexSharpness(v);
             vw = assign(pRule, pSharp, ew, fw);
@@ -304,43 +268,35 @@ final class PrimvarRefiner {
 
         /** Whether the mask last assigned has edge and face weights. */
         private boolean edgesSet, facesSet;
-        /** Loop's smooth mask instead of Catmull-Clark's. */
-        private boolean loop;
+        private final int[] ends = new int[2];
+        /** The scheme's masks, and whether it makes face points. */
+        private SchemeRules rules;
+        private boolean facePoints;
 
         /**
-         * Sdc's Catmark mask of one rule into e (edge ends) and f (face points); returns the
-         * vertex's own weight. Smooth (and dart): (n-2)/n, 1/n^2 each; crease: 3/4 and 1/8 on
-         * the first and last sharp edge; corner: the vertex alone.
+         * The scheme's mask of one rule into e (edge ends) and f (face points); returns the
+         * vertex's own weight. Smooth (and dart): the scheme's smooth mask; crease: 3/4 and 1/8
+         * on the first and last sharp edge; corner: the vertex alone (Sdc's, in every scheme).
          */
         private double assign(int rule, float[] sharp, double[] e, double[] f) {
-            if (rule <= Crease.RULE_DART && loop) {
-                int n = nFaces;
-                double ewt = loopEdgeWeight(n);
-                for (int j = 0; j < n; j++) e[j] = ewt;
-                edgesSet = true;
-                facesSet = false;
-                return loopVertexWeight(n, ewt);
-            }
             if (rule <= Crease.RULE_DART) {
                 int n = nFaces;
-                double fwt = 1.0 / (n * n);
-                for (int j = 0; j < n; j++) {
-                    e[j] = fwt;
-                    f[j] = fwt;
-                }
-                edgesSet = facesSet = true;
-                return (double) (n - 2) / (double) n;
+                double ewt = rules.smoothVertexEdgeWeight(n), fwt = rules.smoothVertexFaceWeight(n);
+                for (int j = 0; j < n; j++) e[j] = ewt;
+                if (facePoints) for (int j = 0; j < n; j++) f[j] = fwt;
+                edgesSet = true;
+                facesSet = facePoints;
+                return rules.smoothVertexWeight(n);
             }
             if (rule == Crease.RULE_CREASE) {
-                int c0 = 0, c1 = nEdges - 1;
-                while (c0 < nEdges - 1 && !Crease.isSharp(sharp[c0])) c0++;
-                while (c1 > 0 && !Crease.isSharp(sharp[c1])) c1--;
+                SchemeRules.creaseEnds(nEdges, sharp, ends);
+                int c0 = ends[0], c1 = ends[1];
                 for (int j = 0; j < nEdges; j++) e[j] = 0.0;
-                e[c0] = 0.125;
-                e[c1] = 0.125;
+                e[c0] = SchemeRules.CREASE_EDGE;
+                e[c1] = SchemeRules.CREASE_EDGE;
                 edgesSet = true;
                 facesSet = false;
-                return 0.75;
+                return SchemeRules.CREASE_VERTEX;
             }
             edgesSet = facesSet = false;
             return 1.0;

@@ -3,17 +3,18 @@ package lt.spindulys.subdiv;
 import java.util.Arrays;
 
 /**
- * One level of a subdivided mesh: positions, faces (quads after the first level), which faces
- * are holes, face-varying UVs, and, on request, limit positions and normals of its vertices.
- * Arrays returned are the mesh's own; do not modify them.
+ * One level of a subdivided mesh: positions, faces (after the first level quads, or triangles
+ * with the Loop scheme), which faces are holes, face-varying UVs, and, on request, limit
+ * positions and normals of its vertices. Arrays returned are the mesh's own; do not modify them.
  *
  * <p><b>Numbering</b> (OpenSubdiv Far's, with {@code orderVerticesFromFacesFirst=false}): the
  * vertices of level L are, in order, the children of the vertices of level L-1 (same indices),
- * one point per face of level L-1 (in face order), and one point per edge of level L-1 (in the
- * order of {@link #edgeVertices()} of level L-1). The faces of level L are the children of the
- * faces of level L-1 in order, one per parent corner j: for a quad parent (v0..v3) child j keeps
- * v_j at position j, for other parents child j is (v_j, point of edge j, face point, point of
- * edge j-1).
+ * one point per face of level L-1 (in face order; none with Loop), and one point per edge of
+ * level L-1 (in the order of {@link #edgeVertices()} of level L-1). The faces of level L are the
+ * children of the faces of level L-1 in order. Catmull-Clark and bilinear: one per parent corner
+ * j; for a quad parent (v0..v3) child j keeps v_j at position j, for other parents child j is
+ * (v_j, point of edge j, face point, point of edge j-1). Loop: four per parent triangle (v0, v1,
+ * v2) with edge points e0 (of v0-v1), e1, e2: (v0,e0,e2), (e0,v1,e1), (e2,e1,v2), (e1,e2,e0).
  */
 public final class RefinedMesh {
     private final ControlMesh control;
@@ -88,7 +89,7 @@ public final class RefinedMesh {
     public int faceCount() { return topo.nF; }
 
     /**
-     * Corners per face (all 4 after level 0).
+     * Corners per face (after level 0 all 4, or all 3 with Loop).
      *
      * @return the face sizes
      */
@@ -162,7 +163,8 @@ public final class RefinedMesh {
 
     /**
      * The two vertices of every edge, in Far's edge order and vertex order: the point of edge e
-     * is vertex {@code vertexCount() + faceCount() + e} of the next level.
+     * is vertex {@code vertexCount() + faceCount() + e} of the next level ({@code vertexCount() + e}
+     * with Loop, which makes no face points).
      *
      * @return two vertex indices per edge
      */
@@ -221,7 +223,7 @@ public final class RefinedMesh {
     public synchronized double[] limitPositions() {
         if (limitPositions == null) {
             double[] pos = new double[3 * topo.nV];
-            Limit.evaluate(topo, control.options().scheme(), positions, pos, null);
+            Limit.evaluate(topo, SchemeRules.of(control.options()), positions, pos, null);
             limitPositions = pos;
         }
         return limitPositions;
@@ -238,7 +240,7 @@ public final class RefinedMesh {
     public synchronized double[] limitNormals() {
         if (limitNormals == null) {
             double[] nrm = new double[3 * topo.nV];
-            Limit.evaluate(topo, control.options().scheme(), positions, null, nrm);
+            Limit.evaluate(topo, SchemeRules.of(control.options()), positions, null, nrm);
             limitNormals = nrm;
         }
         return limitNormals;

@@ -248,7 +248,7 @@ public final class RefinedTriangles {
         boolean[] want = new boolean[nv];
         for (int c = lv.firstHalf(f0), e = f1 < nf ? lv.firstHalf(f1) : lv.nH; c < e; c++) want[fv[c]] = true;
         double[] limit = new double[3 * nv];
-        Limit.evaluate(lv, r.controlMesh().options().scheme(), p, null, limit, want);
+        Limit.evaluate(lv, SchemeRules.of(r.controlMesh().options()), p, null, limit, want);
         // The faces that touch the range's vertices, and their corners numbered compactly.
         int[] faceAt = new int[nf], faces = new int[nf], cornerAt = new int[nf + 1];
         int m = 0;

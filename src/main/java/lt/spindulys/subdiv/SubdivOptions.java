@@ -71,7 +71,7 @@ public record SubdivOptions(Scheme scheme, Boundary boundary, FaceVarying fvar, 
         CHAIKIN
     }
 
-    /** Sdc TriangleSubdivision. */
+    /** Sdc TriangleSubdivision: Catmull-Clark's weights at triangles (the other schemes ignore it). */
     public enum Triangles {
         /** Catmull-Clark's own weights at triangles. */
         CATMARK,

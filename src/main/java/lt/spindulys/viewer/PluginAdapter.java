@@ -20,7 +20,8 @@ public final class PluginAdapter {
 
     /**
      * The surfaces, in the viewer's list order. Level 0 is the control mesh itself
-     * ({@link DisplayedSurface.Scheme#NONE}); any other level is Catmull-Clark at that level, in
+     * ({@link DisplayedSurface.Scheme#NONE}); any other level is the surface's scheme (Catmull-Clark,
+     * Loop or bilinear, as the viewer refines it) at that level, in
      * every display mode: a lattice or a polyhedron shows the cage or the facets of the same
      * subdivided surface, and a plugin that makes a picture of it should see that surface. The
      * shading is flat for a polyhedron, smooth for the smoothed surface and for a lattice.
@@ -31,7 +32,7 @@ public final class PluginAdapter {
     public static List<DisplayedSurface> surfaces(ViewerSnapshot snapshot) {
         List<DisplayedSurface> out = new ArrayList<>(snapshot.surfaces().size());
         for (ViewerSnapshot.Surface s : snapshot.surfaces()) {
-            DisplayedSurface.Scheme scheme = s.level() == 0 ? DisplayedSurface.Scheme.NONE : DisplayedSurface.Scheme.CATMULL_CLARK;
+            DisplayedSurface.Scheme scheme = s.level() == 0 ? DisplayedSurface.Scheme.NONE : DisplayedSurface.Scheme.of(s.control().options().scheme());
             // A polyhedron shows facets; the smoothed surface and the lattice (which stands for it) are smooth.
             DisplayedSurface.Shading shading = s.mode() == DisplayMode.POLYHEDRON ? DisplayedSurface.Shading.FLAT : DisplayedSurface.Shading.SMOOTH;
             out.add(new DisplayedSurface(s.name(), s.control(), scheme, s.level(), shading));

@@ -1,7 +1,7 @@
 package lt.spindulys.viewer;
 
 import java.nio.file.Path;
-import java.util.EnumMap;
+import java.util.HashMap;
 import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -13,10 +13,10 @@ import lt.spindulys.subdiv.SubdivInput;
 import lt.spindulys.subdiv.SubdivOptions;
 
 /**
- * One open surface: its mesh and how it is shown (mode, cage over it, level 0..8, boundary rule),
- * with its display geometry cached per (level, boundary, shading). The settings belong to the
- * viewer's event thread; {@link #build(Key)} and {@link #control(SubdivOptions.Boundary)} may run
- * on a background thread.
+ * One open surface: its mesh and how it is shown (mode, cage over it, level 0..8, scheme,
+ * boundary rule), with its display geometry cached per (level, scheme, boundary, shading). The
+ * settings belong to the viewer's event thread; {@link #build(Key)} and
+ * {@link #control(SubdivOptions.Scheme, SubdivOptions.Boundary)} may run on a background thread.
  */
 public final class ViewedSurface {
     /** The level a surface opens at: the deepest up to this whose faces stay under {@link #OPEN_FACES}. */
@@ -38,10 +38,11 @@ public final class ViewedSurface {
      * What a geometry is built from.
      *
      * @param level the subdivision level
+     * @param scheme the subdivision scheme
      * @param boundary the boundary rule
      * @param smooth smoothed (true) or polyhedron
      */
-    record Key(int level, SubdivOptions.Boundary boundary, boolean smooth) {}
+    record Key(int level, SubdivOptions.Scheme scheme, SubdivOptions.Boundary boundary, boolean smooth) {}
 
     private final String name;
     private final Path source;
@@ -51,11 +52,15 @@ public final class ViewedSurface {
     private DisplayMode mode = DisplayMode.SMOOTHED;
     private boolean cage;
     private int level;
+    private SubdivOptions.Scheme scheme;
     private SubdivOptions.Boundary boundary;
+    /** The cage's first face that is not a triangle ("face 3 has 4 corners"), which Loop cannot refine; null if all are. */
+    private final String nonTriangle;
     private final DisplayGeometry lattice;
     /** Whether the surface has an inside (its topology: the same at every level and under every boundary rule). */
     private final boolean closed;
-    private final Map<SubdivOptions.Boundary, ControlMesh> controls = new EnumMap<>(SubdivOptions.Boundary.class);
+    /** The control meshes built, by the options (the input's, with the viewer's scheme and boundary rule). */
+    private final Map<SubdivOptions, ControlMesh> controls = new HashMap<>();
     private final LinkedHashMap<Key, DisplayGeometry> cache = new LinkedHashMap<>(8, 0.75f, true);
     private DisplayGeometry shown;
     private Key shownKey;
@@ -64,7 +69,7 @@ public final class ViewedSurface {
     private volatile Key requested;
 
     /**
-     * A surface as opened: smoothed at {@link #OPEN_LEVEL} or below, with the boundary rule of its tags.
+     * A surface as opened: smoothed at {@link #OPEN_LEVEL} or below, with the scheme and boundary rule of its tags.
      *
      * @param loaded the mesh read
      * @param rgb its colour (0xRRGGBB)
@@ -75,12 +80,14 @@ public final class ViewedSurface {
         this.input = loaded.input();
         this.unwrap = loaded.unwrap();
         this.rgb = rgb;
+        this.scheme = input.options().scheme();
         this.boundary = input.options().boundary();
-        checkShown(0);
+        this.nonTriangle = nonTriangle(input);
+        checkShown(0, scheme);
         int l = OPEN_LEVEL;
-        while (l > 0 && input.refinedFaceCount(l) > OPEN_FACES) l--;
+        while (l > 0 && faces(l, scheme) > OPEN_FACES) l--;
         this.level = l;
-        ControlMesh c = control(boundary);
+        ControlMesh c = control(scheme, boundary);
         this.lattice = DisplayGeometry.lattice(c);
         this.closed = DisplayGeometry.closed(Subdivision.refine(c, 0));
     }
@@ -91,7 +98,7 @@ public final class ViewedSurface {
     public Path source() { return source; }
     /** {@return the unwrap its UVs came from, or null} */
     public Path unwrap() { return unwrap; }
-    /** {@return the mesh as read (with its UVs), before the viewer's boundary rule} */
+    /** {@return the mesh as read (with its UVs), before the viewer's scheme and boundary rule} */
     public SubdivInput input() { return input; }
     /** {@return how it is shown} */
     public DisplayMode mode() { return mode; }
@@ -101,6 +108,15 @@ public final class ViewedSurface {
     public int level() { return level; }
     /** {@return the boundary rule} */
     public SubdivOptions.Boundary boundary() { return boundary; }
+    /** {@return the subdivision scheme} */
+    public SubdivOptions.Scheme scheme() { return scheme; }
+    /**
+     * The cage's first face that is not a triangle ("face 3 has 4 corners"), why the Loop scheme
+     * cannot refine it; null when every face is a triangle.
+     *
+     * @return the face, or null
+     */
+    public String nonTriangle() { return nonTriangle; }
     /** {@return its colour (0xRRGGBB)} */
     public int rgb() { return rgb; }
     /** {@return whether the surface is closed: no holes, every edge between two faces} */
@@ -119,14 +135,43 @@ public final class ViewedSurface {
      * @throws IllegalArgumentException saying why the level is refused; the level stays
      */
     void level(int l) {
-        SubdivisionSurface.checkLevel(l, input.refinedFaceCount(l));
-        checkShown(l);
+        SubdivisionSurface.checkLevel(l, faces(l, scheme));
+        checkShown(l, scheme);
         level = l;
     }
 
+    /**
+     * Sets the scheme, after the checks a level gets (the faces differ by scheme: a triangle
+     * becomes four triangles under Loop, three quads under the others), and refuses Loop on a
+     * cage with other faces than triangles.
+     *
+     * @throws IllegalArgumentException saying why the scheme is refused; the scheme stays
+     */
+    void scheme(SubdivOptions.Scheme s) {
+        // Worded as ControlMesh words it when a Loop file has such a face.
+        if (s == SubdivOptions.Scheme.LOOP && nonTriangle != null) throw new IllegalArgumentException(source + ": " + nonTriangle + "; the Loop scheme needs triangles");
+        SubdivisionSurface.checkLevel(level, faces(level, s));
+        checkShown(level, s);
+        scheme = s;
+    }
+
+    /** Faces at level {@code l} under scheme {@code s}. */
+    private long faces(int l, SubdivOptions.Scheme s) {
+        return ControlMesh.refinedFaceCount(s, input.mesh().faceCount(), input.mesh().vertexIndex().length, l);
+    }
+
+    /** The first face that is not a triangle ("face 3 has 4 corners"), or null. */
+    private static String nonTriangle(SubdivInput in) {
+        int[] sizes = in.mesh().faceSizes();
+        for (int f = 0; f < sizes.length; f++) {
+            if (sizes[f] != 3) return "face " + f + " has " + sizes[f] + " corners";
+        }
+        return null;
+    }
+
     /** Refuses a level with more faces than the viewer can draw smoothly ({@link #MAX_SHOWN_FACES}). */
-    private void checkShown(int l) {
-        long faces = input.refinedFaceCount(l);
+    private void checkShown(int l, SubdivOptions.Scheme s) {
+        long faces = faces(l, s);
         if (faces > MAX_SHOWN_FACES) {
             throw new IllegalArgumentException(source + ": subdivision level " + l + " would show " + faces
                     + " faces, more than the " + MAX_SHOWN_FACES + " the viewer draws (choose a lower level; the ray-tracing plugin renders the limit surface)");
@@ -136,6 +181,7 @@ public final class ViewedSurface {
     /** Takes the settings of {@code k} back (its geometry could not be built; the one shown is {@code k}'s). */
     void settle(Key k) {
         level = k.level();
+        scheme = k.scheme();
         boundary = k.boundary();
         if (mode != DisplayMode.LATTICE) mode = k.smooth() ? DisplayMode.SMOOTHED : DisplayMode.POLYHEDRON;
         requested = k;
@@ -150,35 +196,45 @@ public final class ViewedSurface {
         unwrap = tex;
     }
 
-    /** {@return the input with the viewer's boundary rule in its options} */
-    public synchronized SubdivInput inputWithBoundary(SubdivOptions.Boundary b) {
-        return withBoundary(input, b);
+    /**
+     * The input with a scheme and boundary rule in its options.
+     *
+     * @param s the scheme
+     * @param b the boundary rule
+     * @return the input
+     */
+    public synchronized SubdivInput inputWith(SubdivOptions.Scheme s, SubdivOptions.Boundary b) {
+        return with(input, s, b);
     }
 
-    private static SubdivInput withBoundary(SubdivInput in, SubdivOptions.Boundary b) {
-        return in.options().boundary() == b ? in : in.withOptions(in.options().withBoundary(b));
+    private static SubdivInput with(SubdivInput in, SubdivOptions.Scheme s, SubdivOptions.Boundary b) {
+        SubdivOptions o = in.options();
+        return o.boundary() == b && o.scheme() == s ? in : in.withOptions(o.withScheme(s).withBoundary(b));
     }
 
     /**
-     * The control mesh under a boundary rule, built once.
+     * The control mesh under a scheme and boundary rule, built once.
      *
+     * @param s the scheme
      * @param b the rule
      * @return the control mesh
      */
-    ControlMesh control(SubdivOptions.Boundary b) {
+    ControlMesh control(SubdivOptions.Scheme s, SubdivOptions.Boundary b) {
         SubdivInput from;
+        SubdivOptions key;
         synchronized (this) {
-            ControlMesh c = controls.get(b);
+            key = input.options().withScheme(s).withBoundary(b);
+            ControlMesh c = controls.get(key);
             if (c != null) return c;
             from = input;
         }
         // Built outside the lock: the event thread reads the input (a snapshot for a plugin) while
         // a large mesh's control mesh is built in the background, and must not wait for it.
-        ControlMesh built = withBoundary(from, b).toControlMesh();
+        ControlMesh built = with(from, s, b).toControlMesh();
         synchronized (this) {
             // Kept only if no unwrap replaced the input meanwhile (its UVs would be missing).
             if (input != from) return built;
-            ControlMesh raced = controls.putIfAbsent(b, built);
+            ControlMesh raced = controls.putIfAbsent(key, built);
             return raced != null ? raced : built;
         }
     }
@@ -189,7 +245,7 @@ public final class ViewedSurface {
 
     /** {@return the key of the faces the settings ask for, or null in lattice mode} */
     Key wanted() {
-        return mode == DisplayMode.LATTICE ? null : new Key(level, boundary, mode == DisplayMode.SMOOTHED);
+        return mode == DisplayMode.LATTICE ? null : new Key(level, scheme, boundary, mode == DisplayMode.SMOOTHED);
     }
 
     /**
@@ -201,8 +257,8 @@ public final class ViewedSurface {
      */
     DisplayGeometry build(Key k) {
         // Checked again here: other surfaces may have taken the heap since the level was set.
-        SubdivisionSurface.checkLevel(k.level(), input.refinedFaceCount(k.level()));
-        var r = Subdivision.refine(control(k.boundary()), k.level());
+        SubdivisionSurface.checkLevel(k.level(), faces(k.level(), k.scheme()));
+        var r = Subdivision.refine(control(k.scheme(), k.boundary()), k.level());
         DisplayGeometry g = k.smooth() ? DisplayGeometry.smoothed(r) : DisplayGeometry.polyhedron(r);
         // The back tint marks faces seen from the inside: a closed surface has one, found from the
         // volume it encloses whatever the file's winding; an open surface's winding decides.
@@ -277,6 +333,6 @@ public final class ViewedSurface {
 
     /** {@return what an output plugin is handed of this surface} */
     ViewerSnapshot.Surface snapshot() {
-        return new ViewerSnapshot.Surface(name, source, inputWithBoundary(boundary), control(boundary), level, boundary, mode, cage);
+        return new ViewerSnapshot.Surface(name, source, inputWith(scheme, boundary), control(scheme, boundary), level, scheme, boundary, mode, cage);
     }
 }

@@ -52,6 +52,7 @@ public final class ViewerFrame extends JFrame {
     private final JLabel status = new JLabel(" ");
     private final JRadioButtonMenuItem[] modeItems = new JRadioButtonMenuItem[DisplayMode.values().length];
     private final JRadioButtonMenuItem[] boundaryItems = new JRadioButtonMenuItem[SubdivOptions.Boundary.values().length];
+    private final JRadioButtonMenuItem[] schemeItems = new JRadioButtonMenuItem[SubdivOptions.Scheme.values().length];
     private final JCheckBoxMenuItem cageItem = new JCheckBoxMenuItem("Cage over surface   C");
     private final JMenuBar menuBar = new JMenuBar();
     private boolean updating;
@@ -232,6 +233,16 @@ public final class ViewerFrame extends JFrame {
             b.add(it);
         }
         m.add(b);
+        JMenu sc = new JMenu("Scheme");
+        ButtonGroup sg = new ButtonGroup();
+        for (SubdivOptions.Scheme r : SubdivOptions.Scheme.values()) {
+            JRadioButtonMenuItem it = new JRadioButtonMenuItem(SchemeChoice.label(r));
+            it.addActionListener(e -> { if (!updating) model.scheme(r); });
+            sg.add(it);
+            schemeItems[r.ordinal()] = it;
+            sc.add(it);
+        }
+        m.add(sc);
         return m;
     }
 
@@ -279,10 +290,15 @@ public final class ViewerFrame extends JFrame {
             ViewedSurface s = model.selected();
             for (JRadioButtonMenuItem it : modeItems) it.setEnabled(s != null);
             for (JRadioButtonMenuItem it : boundaryItems) it.setEnabled(s != null);
+            for (SubdivOptions.Scheme r : SubdivOptions.Scheme.values()) {
+                schemeItems[r.ordinal()].setEnabled(SchemeChoice.enabled(s, r));
+                schemeItems[r.ordinal()].setToolTipText(SchemeChoice.tooltip(s, r));
+            }
             cageItem.setEnabled(s != null);
             if (s != null) {
                 modeItems[s.mode().ordinal()].setSelected(true);
                 boundaryItems[s.boundary().ordinal()].setSelected(true);
+                schemeItems[s.scheme().ordinal()].setSelected(true);
                 cageItem.setSelected(s.cage());
             }
             status.setText(statusText(s));
@@ -299,6 +315,7 @@ public final class ViewerFrame extends JFrame {
         } else {
             b.append(s.source()).append(": ").append(s.mode().label()).append(", level ").append(s.level())
                     .append(", boundary ").append(s.boundary().name().toLowerCase(java.util.Locale.ROOT).replace('_', ' '));
+            if (s.scheme() != SubdivOptions.Scheme.CATMARK) b.append(", scheme ").append(s.scheme().keyword());
             if (s.unwrap() != null) b.append(", UVs from ").append(s.unwrap().getFileName());
             if (s.cage()) b.append(", cage shown");
         }

@@ -296,6 +296,25 @@ public final class ViewerModel {
         refresh(s);
     }
 
+    /**
+     * Sets the selected surface's subdivision scheme; a scheme that is refused (Loop on a cage
+     * with faces that are not triangles, or one whose level has too many faces) is reported and
+     * changes nothing.
+     *
+     * @param sc the scheme
+     */
+    public void scheme(SubdivOptions.Scheme sc) {
+        ViewedSurface s = selected();
+        if (s == null || s.scheme() == sc) return;
+        try {
+            s.scheme(sc);
+        } catch (IllegalArgumentException e) {
+            listener.error(FailureMessage.of(e));
+            return;
+        }
+        refresh(s);
+    }
+
     /** Shows what {@code s}'s settings ask for: from the cache, or built in the background. */
     private void refresh(ViewedSurface s) {
         ViewedSurface.Key k = s.wanted();

@@ -32,14 +32,16 @@ public record ViewerSnapshot(List<Surface> surfaces, View view) {
      *
      * @param name its name in the surface list (the file's name)
      * @param source the file it was read from
-     * @param input the polygons, tags and UVs, with the boundary rule below in its options
+     * @param input the polygons, tags and UVs, with the scheme and boundary rule below in its options
      * @param control the control mesh built from {@code input}
-     * @param level the subdivision level the viewer applies (Catmull-Clark, uniform)
+     * @param level the subdivision level the viewer applies (uniform, with {@code scheme})
+     * @param scheme the subdivision scheme the viewer applies (also in {@code control}'s options)
      * @param boundary the boundary rule the viewer applies
      * @param mode how it is shown
      * @param cageOverSurface whether the control cage is drawn over it
      */
-    public record Surface(String name, Path source, SubdivInput input, ControlMesh control, int level, SubdivOptions.Boundary boundary,
+    public record Surface(String name, Path source, SubdivInput input, ControlMesh control, int level, SubdivOptions.Scheme scheme,
+                          SubdivOptions.Boundary boundary,
                           DisplayMode mode, boolean cageOverSurface) {}
 
     /**

@@ -16,6 +16,8 @@ import lt.spindulys.mesh.MeshData;
 import lt.spindulys.subdiv.CatmullClark;
 import lt.spindulys.subdiv.RefinedMesh;
 import lt.spindulys.subdiv.SubdivInput;
+import lt.spindulys.subdiv.SubdivOptions;
+import lt.spindulys.subdiv.Subdivision;
 
 /** {@code render subdivide}, run in-process through {@link Main#run}. */
 class SubdivideCommandTest {
@@ -139,6 +141,104 @@ class SubdivideCommandTest {
         }
     }
 
+    // ---- the scheme: the file's t scheme tag, or --scheme ----
+
+    /** A tetrahedron's four triangles (Loop can take them), with a crease and the given tag lines. */
+    private Path tetrahedron(String tags) throws IOException {
+        Path p = dir.resolve("tet.obj");
+        Files.writeString(p, "v 1 1 1\nv -1 -1 1\nv -1 1 -1\nv 1 -1 -1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\nt crease 2/1/0 0 1 2\n" + tags);
+        return p;
+    }
+
+    private static RefinedMesh refined(Path obj, SubdivOptions.Scheme scheme, int level) throws IOException {
+        SubdivInput in = ObjReader.readSubdiv(obj);
+        return Subdivision.refine(in.withOptions(in.options().withScheme(scheme)).toControlMesh(), level);
+    }
+
+    @Test
+    void theFilesSchemeTagOrSchemeOptionChoosesTheRules() throws IOException {
+        Path tet = tetrahedron("t scheme 0/0/1 loop\n");
+        Path out = dir.resolve("tet2.obj");
+        record Case(String[] extra, SubdivOptions.Scheme scheme, String name) {}
+        for (Case c : new Case[] {
+            new Case(new String[0], SubdivOptions.Scheme.LOOP, "Loop"),
+            new Case(new String[] {"--scheme", "bilinear"}, SubdivOptions.Scheme.BILINEAR, "bilinear"),
+            new Case(new String[] {"--scheme", "catmark"}, SubdivOptions.Scheme.CATMARK, "Catmull-Clark"),
+            new Case(new String[] {"--scheme", "loop"}, SubdivOptions.Scheme.LOOP, "Loop"),
+        }) {
+            String[] args = Stream.concat(Stream.of("subdivide", tet.toString(), "--level", "2", "-o", out.toString()), Stream.of(c.extra()))
+                    .toArray(String[]::new);
+            CliTest.Run r = run(args);
+            assertEquals(0, r.status(), r.err());
+            RefinedMesh e = refined(tet, c.scheme(), 2);
+            SubdivInput back = ObjReader.readSubdiv(out);
+            assertArrayEquals(e.positions(), back.mesh().positions(), String.join(" ", args));
+            assertArrayEquals(e.faceSizes(), back.mesh().faceSizes());
+            assertArrayEquals(e.faceVertices(), back.mesh().vertexIndex());
+            assertEquals(c.scheme(), back.options().scheme(), "the output keeps its scheme: " + String.join(" ", args));
+            String text = Files.readString(out);
+            assertTrue(text.startsWith("# " + c.name() + " subdivision of tet.obj at level 2"), text.lines().findFirst().orElse(""));
+            // Loop splits each triangle into four triangles; the others make quads (three per triangle at the first level).
+            int size = c.scheme() == SubdivOptions.Scheme.LOOP ? 3 : 4;
+            for (int s : back.mesh().faceSizes()) assertEquals(size, s, String.join(" ", args));
+            assertEquals(c.scheme() == SubdivOptions.Scheme.LOOP ? 4 * 16 : 4 * 3 * 4, back.mesh().faceCount());
+        }
+        // The schemes give three different surfaces.
+        double[] loop = refined(tet, SubdivOptions.Scheme.LOOP, 2).positions(), bilinear = refined(tet, SubdivOptions.Scheme.BILINEAR, 2).positions(),
+                catmark = refined(tet, SubdivOptions.Scheme.CATMARK, 2).positions();
+        assertFalse(java.util.Arrays.equals(bilinear, catmark));
+        assertFalse(java.util.Arrays.equals(loop, catmark));
+        // Bilinear refinement stays on the cage: every vertex of the first face's children lies in its plane (x - y - z = -1 through 1 1 1, -1 -1 1, -1 1 -1).
+        RefinedMesh flat = refined(tet, SubdivOptions.Scheme.BILINEAR, 2);
+        int[] fv = flat.faceVertices();
+        double[] p = flat.positions();
+        for (int c = 0; c < 4 * 4; c++) {
+            int v = fv[c];
+            assertEquals(-1, p[3 * v] - p[3 * v + 1] - p[3 * v + 2], 1e-12, "vertex " + v + " of the first face's children");
+        }
+    }
+
+    @Test
+    void aUniformLoopStatementOfASceneIsWrittenWithItsScheme() throws IOException {
+        Path tet = tetrahedron("");
+        Path scene = dir.resolve("tet.dat");
+        Files.writeString(scene, "camera { eye 0 0 -5  lookat 0 0 0 }\nsubdiv { file \"tet.obj\"  level 2  scheme loop }\n");
+        Path out = dir.resolve("tet-scene.obj");
+        CliTest.Run r = run("subdivide", tet.toString(), "--scene", scene.toString(), "-o", out.toString());
+        assertEquals(0, r.status(), r.err());
+        String text = Files.readString(out);
+        assertTrue(text.startsWith("# Loop subdivision of tet.obj at level 2 as tet.dat renders it"), text.lines().findFirst().orElse(""));
+        SubdivInput back = ObjReader.readSubdiv(out);
+        assertEquals(SubdivOptions.Scheme.LOOP, back.options().scheme());
+        assertArrayEquals(refined(tet, SubdivOptions.Scheme.LOOP, 2).positions(), back.mesh().positions());
+    }
+
+    @Test
+    void badSchemesAreRefused() throws IOException {
+        String out = dir.resolve("o.obj").toString();
+        Path tet = tetrahedron("");
+        CliTest.Run r = run("subdivide", tet.toString(), "--level", "1", "--scheme", "lop", "-o", out);
+        assertEquals(2, r.status());
+        assertEquals("render: --scheme expects catmark, loop or bilinear, found 'lop'" + System.lineSeparator(), r.err());
+        r = run("subdivide", tet.toString(), "--level", "1", "--scheme");
+        assertEquals(2, r.status());
+        assertEquals("render: option --scheme needs a value" + System.lineSeparator(), r.err());
+        // Loop on the cube's quads: the face and its size, exit status 2, nothing written.
+        r = run("subdivide", CUBE_DAT.toString(), "--level", "1", "--scheme", "loop", "-o", out);
+        assertEquals(2, r.status(), r.err());
+        assertEquals(CUBE_DAT + ": face 0 has 4 corners; the Loop scheme needs triangles" + System.lineSeparator(), r.err());
+        Path quadLoop = dir.resolve("quad.obj");
+        Files.writeString(quadLoop, "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 2 5 3 4\nt scheme 0/0/1 loop\n");
+        r = run("subdivide", quadLoop.toString(), "--level", "1", "-o", out);
+        assertEquals(2, r.status(), r.err());
+        assertEquals(quadLoop + ": face 1 has 4 corners; the Loop scheme needs triangles" + System.lineSeparator(), r.err());
+        assertEquals(0, run("subdivide", quadLoop.toString(), "--level", "1", "--scheme", "bilinear", "-o", out).status(), "--scheme overrides the tag");
+        Files.delete(Path.of(out));
+        try (Stream<Path> files = Files.list(dir)) {
+            assertTrue(files.noneMatch(p -> p.getFileName().toString().startsWith("o.")), "nothing written for the refusals");
+        }
+    }
+
     // ---- --scene: the tessellation a scene renders ----
 
     /** A scene beside a copy of the cube and its unwrap, the camera close to one corner so that levels differ per edge. */
@@ -232,6 +332,8 @@ class SubdivideCommandTest {
                     "render: --level and --scene exclude each other: the scene's subdiv statement chooses the levels"),
             new Bad(new String[] {"subdivide", mesh, "--scene", scene.toString(), "--limit", "-o", out.toString()},
                     "render: --limit goes with --level, not --scene (the scene's tessellation is written as it renders it)"),
+            new Bad(new String[] {"subdivide", mesh, "--scene", scene.toString(), "--scheme", "loop", "-o", out.toString()},
+                    "render: --scheme goes with --level, not --scene (the scene's subdiv statement chooses the scheme)"),
             new Bad(new String[] {"subdivide", mesh, "-o", out.toString()}, "render: subdivide needs --level N or --scene SCENE.dat (see render subdivide --help)"),
             new Bad(new String[] {"subdivide", CUBE_DAT.toString(), "--scene", scene.toString(), "-o", out.toString()},
                     "render: " + scene + " has no subdiv statement whose file is " + CUBE_DAT + " (its subdiv files: " + mesh + ")"),

@@ -87,6 +87,26 @@ class ObjReaderSubdivTest {
     }
 
     @Test
+    void theSchemeTagChoosesCatmarkLoopOrBilinear() {
+        assertEquals(SubdivOptions.Scheme.CATMARK, tags("").options().scheme(), "no tag: Catmull-Clark, as OpenSubdiv's shape files mean");
+        for (SubdivOptions.Scheme s : SubdivOptions.Scheme.values()) {
+            assertEquals(SubdivOptions.DEFAULT.withScheme(s), tags("t scheme 0/0/1 " + s.keyword() + "\n").options());
+        }
+        SubdivOptions o = tags("t creasemethod 0/0/1 chaikin\nt scheme 0/0/1 bilinear\nt scheme 0/0/1 loop\n").options();
+        assertEquals(SubdivOptions.Scheme.LOOP, o.scheme(), "the last tag wins");
+        assertEquals(SubdivOptions.Creasing.CHAIKIN, o.creasing(), "the scheme leaves the other options as they are");
+    }
+
+    @Test
+    void aLoopFileWithAQuadIsRefusedNamingTheFileTheFaceAndItsSize() {
+        SubdivInput in = ObjReader.parseSubdiv("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4 2\nt scheme 0/0/1 loop\n", "tri.obj");
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, in::toControlMesh);
+        assertEquals("tri.obj: face 1 has 4 corners; the Loop scheme needs triangles", e.getMessage());
+        // The same faces under the other schemes are fine.
+        assertEquals(2, in.withOptions(in.options().withScheme(SubdivOptions.Scheme.BILINEAR)).toControlMesh().faceCount());
+    }
+
+    @Test
     void hierarchicalEditsAreReadAndIgnoredLikeFarDoes() {
         SubdivTags t = tags("t vertexedit 4/2/3 1 0 1 0 0.5 1 add P value\nt faceedit 2/0/1 1 0 hole\nt vertexedit 0/0/0\n");
         assertEquals(List.of("vertexedit", "faceedit"), t.ignored());
@@ -117,7 +137,7 @@ class ObjReaderSubdivTest {
     static Stream<Bad> malformed() {
         return Stream.of(
                 new Bad("unknown tag", "t creese 2/1/0 0 1 1\n", "15:3: unknown tag 'creese' (did you mean 'crease'?) (known: crease, corner, hole, "
-                        + "interpolateboundary, facevaryinginterpolateboundary, facevaryingpropagatecorners, creasemethod, smoothtriangles, vertexedit, edgeedit, faceedit)"),
+                        + "interpolateboundary, facevaryinginterpolateboundary, facevaryingpropagatecorners, creasemethod, smoothtriangles, scheme, vertexedit, edgeedit, faceedit)"),
                 new Bad("no tag name", "t\n", "15:2: expected a tag name after 't', found end of line"),
                 new Bad("counts missing", "t crease 0 1 1\n", "15:10: expected the argument counts nints/nfloats/nstrings (such as 2/1/0) after 't crease', found '0'"),
                 new Bad("counts malformed", "t crease 2/1 0 1 1\n", "15:10: expected the argument counts nints/nfloats/nstrings (such as 2/1/0) after 't crease', found '2/1'"),
@@ -139,6 +159,10 @@ class ObjReaderSubdivTest {
                         + "3 (corners plus2), 4 (boundaries) or 5 (all) for tag 'facevaryinginterpolateboundary', found 6"),
                 new Bad("unknown crease method", "t creasemethod 0/0/1 chaikn\n", "15:22: expected normal or chaikin for tag 'creasemethod', found 'chaikn' (did you mean 'chaikin'?)"),
                 new Bad("unknown triangle rule", "t smoothtriangles 0/0/1 loop\n", "15:25: expected catmark or smooth for tag 'smoothtriangles', found 'loop'"),
+                new Bad("unknown scheme", "t scheme 0/0/1 lop\n", "15:16: expected catmark, loop or bilinear for tag 'scheme', found 'lop' (did you mean 'loop'?)"),
+                new Bad("scheme as int", "t scheme 1/0/0 2\n", "15:10: tag 'scheme' takes one string (0/0/1), found 1/0/0"),
+                new Bad("scheme misspelt", "t schem 0/0/1 loop\n", "15:3: unknown tag 'schem' (did you mean 'scheme'?) (known: crease, corner, hole, "
+                        + "interpolateboundary, facevaryinginterpolateboundary, facevaryingpropagatecorners, creasemethod, smoothtriangles, scheme, vertexedit, edgeedit, faceedit)"),
                 new Bad("crease vertex out of range", "t crease 2/1/0 0 8 1\n", "15:18: crease vertex 8 out of range (the file has 8 vertices; tag indices count from 0)"),
                 new Bad("negative crease vertex", "t crease 2/1/0 -1 0 1\n", "15:16: crease vertex -1 out of range (the file has 8 vertices; tag indices count from 0)"),
                 new Bad("crease not an edge", "t crease 2/1/0 0 6 1\n", "15:16: crease 0 6 is not an edge of the mesh (no face has vertices 0 and 6 next to each other; tag indices count from 0)"),

@@ -152,6 +152,25 @@ class ObjWriterControlMeshTest {
     }
 
     @Test
+    void aLoopOrBilinearSchemeIsWrittenAndReadsBack() throws IOException {
+        // Two triangles, so that the Loop scheme can take them too.
+        ControlMesh.Builder b = ControlMesh.builder(new double[] {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, new int[] {3, 3}, new int[] {0, 1, 2, 0, 2, 3})
+                .crease(0, 2, 2.5f);
+        for (SubdivOptions.Scheme scheme : SubdivOptions.Scheme.values()) {
+            ControlMesh m = b.options(SubdivOptions.DEFAULT.withScheme(scheme).withCreasing(SubdivOptions.Creasing.CHAIKIN)).build();
+            String text = write(m, null);
+            String options = "t interpolateboundary 1/0/0 2\nt facevaryinginterpolateboundary 1/0/0 5\n"
+                    + "t creasemethod 0/0/1 chaikin\nt smoothtriangles 0/0/1 catmark\n";
+            // Catmull-Clark files stay as OpenSubdiv writes them: no scheme tag.
+            assertTrue(text.endsWith("t crease 2/1/0 0 2 2.5\n" + (scheme == SubdivOptions.Scheme.CATMARK ? "" : "t scheme 0/0/1 " + scheme.keyword() + "\n")
+                    + options), text);
+            ControlMesh back = ObjReader.parseSubdiv(text, "back.obj").toControlMesh();
+            assertEquals(scheme, back.options().scheme());
+            assertSameMesh(m, back);
+        }
+    }
+
+    @Test
     void everySharpnessReadsBackAsTheSameFloat() {
         SplittableRandom r = new SplittableRandom(17);
         for (int i = 0; i < 200_000; i++) {

@@ -12,6 +12,8 @@ import lt.spindulys.mesh.MeshData;
 import lt.spindulys.subdiv.CatmullClark;
 import lt.spindulys.subdiv.RefinedMesh;
 import lt.spindulys.subdiv.SubdivInput;
+import lt.spindulys.subdiv.SubdivOptions;
+import lt.spindulys.subdiv.Subdivision;
 
 class ObjWriterTest {
     @Test
@@ -43,5 +45,19 @@ class ObjWriterTest {
         String text = out.toString(StandardCharsets.UTF_8);
         assertFalse(text.contains("\nf "), "the only face is a hole: no faces");
         assertTrue(text.contains("\nvn "), "limit normals");
+    }
+
+    @Test
+    void aRefinedLoopOrBilinearMeshCarriesItsSchemeAndACatmarkOneNone() throws IOException {
+        String tris = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
+        for (SubdivOptions.Scheme scheme : SubdivOptions.Scheme.values()) {
+            SubdivInput in = ObjReader.parseSubdiv(tris + "t scheme 0/0/1 " + scheme.keyword() + "\n", "t.obj");
+            ByteArrayOutputStream out = new ByteArrayOutputStream();
+            ObjWriter.write(Subdivision.refine(in.toControlMesh(), 1), false, null, out);
+            String text = out.toString(StandardCharsets.UTF_8);
+            assertEquals(scheme != SubdivOptions.Scheme.CATMARK, text.contains("t scheme"), text);
+            assertEquals(scheme, ObjReader.parseSubdiv(text, "back.obj").options().scheme(), "read back with the scheme it was refined with");
+            assertFalse(ObjReader.parse(text, "plain.obj").faceCount() == 0, "a plain OBJ reader skips the tag");
+        }
     }
 }

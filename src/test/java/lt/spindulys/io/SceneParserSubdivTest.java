@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.*;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -95,26 +96,95 @@ class SceneParserSubdivTest {
     @Test
     void everySchemeChoiceMapsToItsOption() {
         SubdivOptions d = SubdivOptions.DEFAULT;
-        assertSame(d, SceneAssetCache.subdivOptions(d, null, null, null, null));
+        assertSame(d, SceneAssetCache.subdivOptions(d, null, null, null, null, null));
         String[] boundary = {"none", "edge-only", "edge-and-corner"};
         for (int i = 0; i < 3; i++) {
-            assertEquals(SubdivOptions.Boundary.values()[i], SceneAssetCache.subdivOptions(d, boundary[i], null, null, null).boundary());
+            assertEquals(SubdivOptions.Boundary.values()[i], SceneAssetCache.subdivOptions(d, null, boundary[i], null, null, null).boundary());
         }
         String[] fvar = {"none", "corners-only", "corners-plus1", "corners-plus2", "boundaries", "all"};
         for (int i = 0; i < fvar.length; i++) {
-            assertEquals(SubdivOptions.FaceVarying.values()[i], SceneAssetCache.subdivOptions(d.withFaceVarying(SubdivOptions.FaceVarying.NONE), null, fvar[i], null, null).fvar());
+            assertEquals(SubdivOptions.FaceVarying.values()[i], SceneAssetCache.subdivOptions(d.withFaceVarying(SubdivOptions.FaceVarying.NONE), null, null, fvar[i], null, null).fvar());
         }
-        assertEquals(SubdivOptions.Creasing.CHAIKIN, SceneAssetCache.subdivOptions(d, null, null, "chaikin", null).creasing());
-        assertEquals(SubdivOptions.Creasing.UNIFORM, SceneAssetCache.subdivOptions(d.withCreasing(SubdivOptions.Creasing.CHAIKIN), null, null, "uniform", null).creasing());
-        assertEquals(SubdivOptions.Triangles.SMOOTH, SceneAssetCache.subdivOptions(d, null, null, null, "smooth").triangles());
-        assertEquals(SubdivOptions.Triangles.CATMARK, SceneAssetCache.subdivOptions(d.withTriangles(SubdivOptions.Triangles.SMOOTH), null, null, null, "catmark").triangles());
+        assertEquals(SubdivOptions.Creasing.CHAIKIN, SceneAssetCache.subdivOptions(d, null, null, null, "chaikin", null).creasing());
+        assertEquals(SubdivOptions.Creasing.UNIFORM, SceneAssetCache.subdivOptions(d.withCreasing(SubdivOptions.Creasing.CHAIKIN), null, null, null, "uniform", null).creasing());
+        assertEquals(SubdivOptions.Triangles.SMOOTH, SceneAssetCache.subdivOptions(d, null, null, null, null, "smooth").triangles());
+        assertEquals(SubdivOptions.Triangles.CATMARK, SceneAssetCache.subdivOptions(d.withTriangles(SubdivOptions.Triangles.SMOOTH), null, null, null, null, "catmark").triangles());
+        for (SubdivOptions.Scheme sc : SubdivOptions.Scheme.values()) {
+            assertEquals(sc, SceneAssetCache.subdivOptions(d.withScheme(SubdivOptions.Scheme.LOOP), sc.keyword(), null, null, null, null).scheme());
+        }
+        assertEquals(SubdivOptions.Scheme.BILINEAR, SceneAssetCache.subdivOptions(d.withScheme(SubdivOptions.Scheme.BILINEAR), null, null, null, null, null).scheme(),
+                "no key: the file's scheme");
         // Every choice the grammar offers has a mapping.
-        for (String k : new String[] {"boundary", "uvinterpolation", "creasing", "triangles"}) {
+        for (String k : new String[] {"scheme", "boundary", "uvinterpolation", "creasing", "triangles"}) {
             for (String c : SceneGrammar.SUBDIV.key(k).choices()) {
-                assertDoesNotThrow(() -> SceneAssetCache.subdivOptions(d, k.equals("boundary") ? c : null, k.equals("uvinterpolation") ? c : null,
+                assertDoesNotThrow(() -> SceneAssetCache.subdivOptions(d, k.equals("scheme") ? c : null, k.equals("boundary") ? c : null, k.equals("uvinterpolation") ? c : null,
                         k.equals("creasing") ? c : null, k.equals("triangles") ? c : null));
             }
         }
+    }
+
+    /** A tetrahedron: four triangles, closed, so every scheme (Loop too) takes it. */
+    private static final String TET = "v 1 1 1\nv -1 -1 1\nv -1 1 -1\nv 1 -1 -1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n";
+
+    private static SubdivOptions.Scheme scheme(GObject o) {
+        return ((SubdivisionSurface) o).refined().controlMesh().options().scheme();
+    }
+
+    @Test
+    void theSchemeIsTheFilesUnlessTheSceneSaysOtherwise() throws IOException {
+        Files.writeString(dir.resolve("tet.obj"), TET);
+        Files.writeString(dir.resolve("loop.obj"), TET + "t scheme 0/0/1 loop\n");
+        assertEquals(SubdivOptions.Scheme.CATMARK, scheme(only("subdiv { file \"tet.obj\"  level 1 }")), "no tag, no key: Catmull-Clark");
+        assertEquals(SubdivOptions.Scheme.LOOP, scheme(only("subdiv { file \"loop.obj\"  level 1 }")), "the file's tag");
+        for (SubdivOptions.Scheme s : SubdivOptions.Scheme.values()) {
+            assertEquals(s, scheme(only("subdiv { file \"loop.obj\"  level 1  scheme " + s.keyword() + " }")), "the key overrides the tag");
+            assertEquals(s, scheme(only("subdiv { file \"tet.obj\"  level 1  scheme " + s.keyword() + " }")));
+        }
+        // A Workframe mesh has no tags: the key alone.
+        Files.copy(Path.of("scenes/models/cube.dat"), dir.resolve("cube.dat"));
+        assertEquals(SubdivOptions.Scheme.BILINEAR, scheme(only("subdiv { file \"cube.dat\"  level 1  scheme bilinear }")));
+    }
+
+    @Test
+    void instancesShareOneSchemeAndCsgOperandsAndMovingSurfacesKeepTheirs() throws IOException {
+        Files.writeString(dir.resolve("tet.obj"), TET);
+        SceneBuilder b = SceneParser.parse("""
+                subdiv { file "tet.obj"  level 2  scheme loop }
+                subdiv { file "tet.obj"  level 2  scheme loop  translate 3 0 0 }
+                subdiv { file "tet.obj"  level 2 }
+                union { subdiv { file "tet.obj"  level 2  scheme bilinear  motion { translate 1 0 0 } }  sphere { radius 0.5 } }
+                """, "s.dat", dir);
+        List<GObject> objects = b.objects();
+        SubdivisionSurface a = (SubdivisionSurface) objects.get(0), a2 = (SubdivisionSurface) objects.get(1), c = (SubdivisionSurface) objects.get(2);
+        assertSame(a.refined(), a2.refined(), "the same surface again is an instance");
+        assertNotSame(a.refined(), c.refined(), "another scheme is another surface");
+        assertEquals(SubdivOptions.Scheme.LOOP, scheme(a2));
+        assertEquals(SubdivOptions.Scheme.CATMARK, scheme(c));
+        GObject operand = ((lt.spindulys.scene.Bool) objects.get(3)).operands().get(0);
+        assertEquals(SubdivOptions.Scheme.BILINEAR, scheme(operand));
+        assertNotNull(operand.motion(), "the moving operand keeps its motion");
+        assertTrue(((SubdivisionSurface) operand).isClosed(), "a closed bilinear surface is a CSG solid");
+    }
+
+    private static SubdivOptions.Scheme adaptiveScheme(GObject o) {
+        return assertInstanceOf(lt.spindulys.scene.AdaptiveSubdivisionSurface.class, o).control().options().scheme();
+    }
+
+    @Test
+    void theAdaptiveMethodsRefineWithTheSchemeToo() throws IOException {
+        Files.writeString(dir.resolve("tet.obj"), TET);
+        Files.writeString(dir.resolve("loop.obj"), TET + "t scheme 0/0/1 loop\n");
+        assertEquals(SubdivOptions.Scheme.LOOP, adaptiveScheme(only("subdiv { file \"tet.obj\"  scheme loop  method lazy }")));
+        assertEquals(SubdivOptions.Scheme.LOOP, adaptiveScheme(only("subdiv { file \"loop.obj\"  method projected }")), "the file's scheme");
+        assertEquals(SubdivOptions.Scheme.CATMARK, adaptiveScheme(only("subdiv { file \"loop.obj\"  scheme catmark  method combined }")),
+                "the key over the file's");
+        // Placements of one control mesh share a refiner only under the same scheme.
+        SceneBuilder b = SceneParser.parse("subdiv { file \"tet.obj\"  method lazy  scheme loop }\nsubdiv { file \"tet.obj\"  method lazy  scheme loop }\n"
+                + "subdiv { file \"tet.obj\"  method lazy  scheme bilinear }\n", "s.dat", dir);
+        var a = (lt.spindulys.scene.AdaptiveSubdivisionSurface) b.objects().get(0);
+        assertSame(a.refiner(), ((lt.spindulys.scene.AdaptiveSubdivisionSurface) b.objects().get(1)).refiner());
+        assertNotSame(a.refiner(), ((lt.spindulys.scene.AdaptiveSubdivisionSurface) b.objects().get(2)).refiner());
+        assertEquals(SubdivOptions.Scheme.BILINEAR, adaptiveScheme(b.objects().get(2)));
     }
 
     @Test
@@ -134,5 +204,9 @@ class SceneParserSubdivTest {
         var s = assertInstanceOf(lt.spindulys.scene.AdaptiveSubdivisionSurface.class, only("subdiv {\n  file \"big.obj\"\n  level 8\n}"));
         assertEquals(lt.spindulys.scene.AdaptiveSubdivisionSurface.Method.COMBINED, s.method());
         assertEquals(8, s.fixedLevel());
+        // The same for another scheme: the combined method refines it with that scheme.
+        var b = assertInstanceOf(lt.spindulys.scene.AdaptiveSubdivisionSurface.class, only("subdiv {\n  file \"big.obj\"\n  level 8  scheme bilinear\n}"));
+        assertEquals(8, b.fixedLevel());
+        assertEquals(SubdivOptions.Scheme.BILINEAR, b.control().options().scheme());
     }
 }

@@ -58,15 +58,15 @@ class OrientationTest {
     void theSignedVolumeFollowsTheWinding() throws IOException {
         ViewedSurface ccw = open("ccw.obj", ViewerModelTest.CUBE_OBJ).selected(), cw = open("cw.obj", reversed(ViewerModelTest.CUBE_OBJ)).selected();
         for (boolean smooth : new boolean[] {false, true}) {
-            var ccwMesh = CatmullClark.refine(ccw.control(ccw.boundary()), 0);
-            var cwMesh = CatmullClark.refine(cw.control(cw.boundary()), 0);
+            var ccwMesh = CatmullClark.refine(ccw.control(ccw.scheme(), ccw.boundary()), 0);
+            var cwMesh = CatmullClark.refine(cw.control(cw.scheme(), cw.boundary()), 0);
             DisplayGeometry a = smooth ? DisplayGeometry.smoothed(ccwMesh) : DisplayGeometry.polyhedron(ccwMesh);
             DisplayGeometry b = smooth ? DisplayGeometry.smoothed(cwMesh) : DisplayGeometry.polyhedron(cwMesh);
             assertEquals(8, a.signedVolume(), 1e-9, "the 2 x 2 x 2 cube, counter-clockwise");
             assertEquals(-8, b.signedVolume(), 1e-9, "the same cube wound clockwise");
             assertSame(a, a.outward(), "wound outwards already: nothing to turn");
             assertEquals(8, b.outward().signedVolume(), 1e-9, "turned outwards");
-            ViewedSurface.Key k = new ViewedSurface.Key(0, ccw.boundary(), smooth);
+            ViewedSurface.Key k = new ViewedSurface.Key(0, ccw.scheme(), ccw.boundary(), smooth);
             assertEquals(8, cw.build(k).signedVolume(), 1e-9, "the viewer shows a closed surface wound outwards");
         }
         assertTrue(ccw.closed());

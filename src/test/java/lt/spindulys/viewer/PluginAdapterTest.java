@@ -62,7 +62,7 @@ class PluginAdapterTest {
         assertEquals(DisplayedSurface.Shading.FLAT, ds.get(1).shading(), "a polyhedron shows facets");
         for (int i = 0; i < 2; i++) {
             ViewedSurface s = m.surfaces().get(i);
-            assertSame(s.control(s.boundary()), ds.get(i).control(), "the control mesh the viewer holds, not a copy");
+            assertSame(s.control(s.scheme(), s.boundary()), ds.get(i).control(), "the control mesh the viewer holds, not a copy");
             assertEquals(s.boundary(), ds.get(i).control().options().boundary(), "with the viewer's boundary rule");
         }
         assertEquals(SubdivOptions.Boundary.EDGE_AND_CORNER, ds.get(1).control().options().boundary());

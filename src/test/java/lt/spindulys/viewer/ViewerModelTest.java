@@ -171,6 +171,131 @@ class ViewerModelTest {
         assertEquals(SubdivOptions.Boundary.NONE, snap.input().options().boundary());
     }
 
+    /** An octahedron: eight triangles, closed, which every scheme refines. */
+    static final String OCTAHEDRON_OBJ = """
+            v 1 0 0
+            v -1 0 0
+            v 0 1 0
+            v 0 -1 0
+            v 0 0 1
+            v 0 0 -1
+            f 1 3 5
+            f 3 2 5
+            f 2 4 5
+            f 4 1 5
+            f 3 1 6
+            f 2 3 6
+            f 4 2 6
+            f 1 4 6
+            """;
+
+    @Test
+    void theSchemeIsTheFilesAndCanBeChanged() throws IOException {
+        ViewerModel m = model();
+        m.open(List.of(write("oct.obj", OCTAHEDRON_OBJ + "t scheme 0/0/1 loop\n")));
+        ViewedSurface s = m.selected();
+        assertEquals(SubdivOptions.Scheme.LOOP, s.scheme(), "the file's tag");
+        assertNull(s.nonTriangle());
+        m.level(2);
+        DisplayGeometry loop = faces(m);
+        assertEquals(SubdivOptions.Scheme.LOOP, s.shownKey().scheme());
+        m.scheme(SubdivOptions.Scheme.BILINEAR);
+        assertEquals(List.of(), errors);
+        assertEquals(SubdivOptions.Scheme.BILINEAR, s.scheme());
+        assertNotSame(loop, faces(m), "another scheme, another geometry");
+        assertEquals(8 * 16, loop.triangleCount(), "Loop: each triangle into four, twice");
+        assertEquals(2 * 8 * 3 * 4, faces(m).triangleCount(), "bilinear: three quads per triangle, then four each, two triangles a quad");
+        assertEquals(SubdivOptions.Scheme.BILINEAR, s.shownKey().scheme());
+        ViewerSnapshot.Surface snap = m.snapshot().surfaces().get(0);
+        assertEquals(SubdivOptions.Scheme.BILINEAR, snap.scheme());
+        assertEquals(SubdivOptions.Scheme.BILINEAR, snap.control().options().scheme(), "the plugins refine with the viewer's scheme");
+        assertEquals(SubdivOptions.Scheme.BILINEAR, snap.input().options().scheme());
+        assertEquals(lt.spindulys.plugin.DisplayedSurface.Scheme.BILINEAR, PluginAdapter.surfaces(m.snapshot()).get(0).scheme());
+        m.scheme(SubdivOptions.Scheme.LOOP);
+        assertSame(loop, faces(m), "back to Loop: the cached geometry");
+    }
+
+    @Test
+    void loopIsRefusedForACageWithOtherFacesThanTriangles() throws IOException {
+        ViewerModel m = model();
+        Path cube = write("cube.obj", CUBE_OBJ);
+        m.open(List.of(cube));
+        ViewedSurface s = m.selected();
+        assertEquals(SubdivOptions.Scheme.CATMARK, s.scheme());
+        assertEquals("face 0 has 4 corners", s.nonTriangle());
+        assertFalse(SchemeChoice.enabled(s, SubdivOptions.Scheme.LOOP));
+        assertTrue(SchemeChoice.enabled(s, SubdivOptions.Scheme.BILINEAR));
+        assertEquals("Loop needs a cage of triangles: face 0 has 4 corners", SchemeChoice.tooltip(s, SubdivOptions.Scheme.LOOP));
+        assertNull(SchemeChoice.tooltip(s, SubdivOptions.Scheme.CATMARK));
+        m.scheme(SubdivOptions.Scheme.LOOP);
+        assertEquals(List.of(cube + ": face 0 has 4 corners; the Loop scheme needs triangles"), errors);
+        assertEquals(SubdivOptions.Scheme.CATMARK, s.scheme(), "refused: nothing changes");
+        // A Loop file with a quad is refused when it is opened, as the scene and render subdivide refuse it.
+        errors.clear();
+        Path bad = write("bad.obj", CUBE_OBJ + "t scheme 0/0/1 loop\n");
+        m.open(List.of(bad));
+        assertEquals(List.of(bad + ": face 0 has 4 corners; the Loop scheme needs triangles"), errors);
+        assertEquals(1, m.surfaces().size());
+        // No surface selected: nothing to choose.
+        assertFalse(SchemeChoice.enabled(null, SubdivOptions.Scheme.CATMARK));
+    }
+
+    /** An icosahedron: twenty triangles, so that level 8 fits the viewer under Catmull-Clark (60 quads at level 1) but not under Loop (80 triangles). */
+    static final String ICOSAHEDRON_OBJ = """
+            v -1 1.618034 0
+            v 1 1.618034 0
+            v -1 -1.618034 0
+            v 1 -1.618034 0
+            v 0 -1 1.618034
+            v 0 1 1.618034
+            v 0 -1 -1.618034
+            v 0 1 -1.618034
+            v 1.618034 0 -1
+            v 1.618034 0 1
+            v -1.618034 0 -1
+            v -1.618034 0 1
+            f 1 12 6
+            f 1 6 2
+            f 1 2 8
+            f 1 8 11
+            f 1 11 12
+            f 2 6 10
+            f 6 12 5
+            f 12 11 3
+            f 11 8 7
+            f 8 2 9
+            f 4 10 5
+            f 4 5 3
+            f 4 3 7
+            f 4 7 9
+            f 4 9 10
+            f 5 10 6
+            f 3 5 12
+            f 7 3 11
+            f 9 7 8
+            f 10 9 2
+            """;
+
+    @Test
+    void aSchemeWhoseLevelHasTooManyFacesIsRefused() throws IOException {
+        ViewerModel m = model();
+        m.open(List.of(write("ico.obj", ICOSAHEDRON_OBJ)));
+        m.mode(DisplayMode.LATTICE); // nothing is refined: only the counts matter here
+        m.level(8);
+        assertEquals(List.of(), errors, "Catmull-Clark: 60 * 4^7 = 983040 faces at level 8");
+        m.scheme(SubdivOptions.Scheme.LOOP);
+        assertEquals(1, errors.size());
+        assertTrue(errors.get(0).endsWith("subdivision level 8 would show 1310720 faces, more than the 1048576 the viewer draws"
+                + " (choose a lower level; the ray-tracing plugin renders the limit surface)"), errors.get(0));
+        assertEquals(SubdivOptions.Scheme.CATMARK, m.selected().scheme());
+        m.level(7);
+        m.scheme(SubdivOptions.Scheme.LOOP);
+        assertEquals(SubdivOptions.Scheme.LOOP, m.selected().scheme(), "20 * 4^7 Loop triangles at level 7");
+        errors.clear();
+        m.level(8);
+        assertEquals(1, errors.size(), "and the level is checked with the Loop counts");
+    }
+
     static boolean has(DisplayGeometry g, float x, float y, float z) {
         float[] p = g.positions();
         for (int i = 0; i < p.length; i += 3) if (p[i] == x && p[i + 1] == y && p[i + 2] == z) return true;
@@ -305,9 +430,9 @@ class ViewerModelTest {
         assertEquals(0, m.pending());
         assertTrue(m.selected().upToDate());
         assertEquals(2 * 6 * 16, faces(m).triangleCount());
-        assertNull(m.selected().cached(new ViewedSurface.Key(4, SubdivOptions.Boundary.EDGE_ONLY, true)),
+        assertNull(m.selected().cached(new ViewedSurface.Key(4, SubdivOptions.Scheme.CATMARK, SubdivOptions.Boundary.EDGE_ONLY, true)),
                 "level 4, no longer wanted when its turn came, was not built");
-        assertNotNull(m.selected().cached(new ViewedSurface.Key(3, SubdivOptions.Boundary.EDGE_ONLY, true)));
+        assertNotNull(m.selected().cached(new ViewedSurface.Key(3, SubdivOptions.Scheme.CATMARK, SubdivOptions.Boundary.EDGE_ONLY, true)));
     }
 
     @Test

@@ -34,7 +34,7 @@ import lt.spindulys.subdiv.RefinedMesh;
  * <p>Options: {@value #EXPORT} chooses what is written:
  * <ul>
  *   <li>{@value #CONTROL}: each control mesh with its OpenSubdiv tags (creases, corners, holes, the
- *       scheme options) and face-varying uvs, by {@link ObjWriter#write(ControlMesh, String, String,
+ *       scheme and its options) and face-varying uvs, by {@link ObjWriter#write(ControlMesh, String, String,
  *       java.io.OutputStream)}; reading the file back with {@link lt.spindulys.io.ObjReader#readSubdiv}
  *       gives an equal control mesh. Tags and scheme options belong to a whole OBJ file (their
  *       indices count through the file and a reader applies one set of options), so one surface

@@ -96,7 +96,7 @@ final class RayTraceOptions {
             DisplayedSurface s = surfaces.get(i);
             String group = MessageText.cut(SceneDescription.oneLine(s.name()));
             if (!names.add(group)) group = group + " (surface " + i + ")";
-            boolean subdivided = s.scheme() == DisplayedSurface.Scheme.CATMULL_CLARK;
+            boolean subdivided = s.scheme() != DisplayedSurface.Scheme.NONE;
             boolean smooth = s.shading() == DisplayedSurface.Shading.SMOOTH;
             o.add(PluginOption.choice(surfaceKey(i, MATERIAL), "Material", group, "opaque", MATERIALS,
                     "opaque: coloured; transparent: glass with an index of refraction and a tint; mirror: reflects."));
@@ -180,7 +180,7 @@ final class RayTraceOptions {
     private static SceneDescription.SurfaceSpec surface(int i, String name, DisplayedSurface s, String rendering, boolean smooth,
                                                         SceneDescription.MaterialSpec m, SceneDescription.TextureSpec tex) {
         ControlMesh c = s.control();
-        boolean shownRefined = s.scheme() == DisplayedSurface.Scheme.CATMULL_CLARK;
+        boolean shownRefined = s.scheme() != DisplayedSurface.Scheme.NONE;
         return switch (rendering) {
             case "limit" -> {
                 // The host's level with every vertex on the limit surface; a surface the host shows

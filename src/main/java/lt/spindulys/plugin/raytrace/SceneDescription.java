@@ -209,6 +209,8 @@ record SceneDescription(ImageSpec image, CameraSpec camera, List<LightSpec> ligh
                 if (!Double.isNaN(s.target)) t.append("  target ").append(num(s.target));
             }
             SubdivOptions o = s.control.options();
+            // The OBJ beside says it too; the scene says it as well, so that it reads as what it renders.
+            if (o.scheme() != SubdivOptions.Scheme.CATMARK) t.append("  scheme ").append(o.scheme().keyword());
             t.append("\n    boundary ").append(word(o.boundary())).append("  uvinterpolation ").append(word(o.fvar()))
                     .append("  creasing ").append(word(o.creasing())).append("  triangles ").append(word(o.triangles()))
                     .append("  shading ").append(s.smooth ? "smooth" : "flat");
