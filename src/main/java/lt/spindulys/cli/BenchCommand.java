@@ -24,6 +24,8 @@ import lt.spindulys.scene.TriangleMesh;
 import lt.spindulys.subdiv.Subdivision;
 import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.subdiv.RefinedMesh;
+import lt.spindulys.subdiv.SubdivInput;
+import lt.spindulys.subdiv.SubdivOptions.Scheme;
 
 /**
  * {@code render bench}: the project's fixed benchmark suite. Speed and memory targets live
@@ -76,7 +78,11 @@ final class BenchCommand {
     private static final List<Row> ROWS = List.of(
             new Row("refine-bishop", "Subdivision",
                     "catmark_bishop (968 quads, 224 creases) refined uniformly to level 6 (~4M quads) on one thread; beside far_perf -u",
-                    (b, out) -> b.refinement(out, "catmark_bishop.obj", 6)),
+                    (b, out) -> b.refinement(out, "refine-bishop", "catmark_bishop.obj", Scheme.CATMARK, 6)),
+            new Row("refine-loop-bishop", "Subdivision",
+                    "loop_bishop (catmark_bishop split into 1,804 triangles, 224 creases) refined uniformly with Loop's rules to level 5 "
+                            + "(~1.8M triangles) on one thread; beside far_perf -u -loop",
+                    (b, out) -> b.refinement(out, "refine-loop-bishop", "loop_bishop.obj", Scheme.LOOP, 5)),
             torusRow("1k"), torusRow("16k"), torusRow("250k"), torusRow("1m"),
             new Row("knot-1m", FILLING,
                     String.format(Locale.ROOT, "scenes/bench/knot-1m.dat: a tube of %,d triangles around a trefoil knot filling the frame, on the ground quad, "
@@ -499,9 +505,15 @@ final class BenchCommand {
 
     // ---- subdivision ----
 
-    private void refinement(PrintStream out, String file, int level) throws IOException {
+    /**
+     * A refinement row: {@code file} read as a control mesh, given {@code scheme} (whatever its tags
+     * say), refined uniformly to {@code level} on one thread, beside far_perf on the same file with
+     * the same scheme and level.
+     */
+    private void refinement(PrintStream out, String name, String file, Scheme scheme, int level) throws IOException {
         Path obj = benchDir.resolve(file);
-        ControlMesh mesh = ObjReader.readSubdiv(obj).toControlMesh();
+        SubdivInput input = ObjReader.readSubdiv(obj);
+        ControlMesh mesh = input.withOptions(input.options().withScheme(scheme)).toControlMesh();
         // Warm-up: compile the refinement code paths before timing.
         for (int i = 0; i < 3; i++) Subdivision.refine(mesh, level - 1);
         double[] seconds = new double[runs];
@@ -514,23 +526,26 @@ final class BenchCommand {
             seconds[i] = (System.nanoTime() - t0) / 1e9;
         }
         double t = median(seconds);
-        long quads = refined.faceCount();
+        long faces = refined.faceCount();
         long t1 = System.nanoTime();
         refined.limitNormals();
         double normalSeconds = (System.nanoTime() - t1) / 1e9;
-        double bytesPerQuad = refined.memoryBytes() / (double) quads;
-        double far = ExternalTimer.farPerfRefineSeconds(obj, level, Math.min(runs, 3));
+        double bytesPerFace = refined.memoryBytes() / (double) faces;
+        double far = ExternalTimer.farPerfRefineSeconds(obj, scheme, level, Math.min(runs, 3));
 
-        BenchTable table = new BenchTable("row", "control faces", "level", "quads", "refine s", "Mquads/s", "limit normals s",
-                "bytes/quad", "far_perf s", "speed vs far_perf");
-        table.add("refine-" + file.replace("catmark_", "").replace(".obj", ""), Integer.toString(mesh.faceCount()), Integer.toString(level),
-                String.format(Locale.ROOT, "%,d", quads), fmt(t, 3), fmt(quads / t / 1e6, 2), fmt(normalSeconds, 3), fmt(bytesPerQuad, 1),
+        // Loop splits triangles into triangles; Catmull-Clark and bilinear make quads.
+        String face = scheme == Scheme.LOOP ? "triangle" : "quad";
+        String faceShort = scheme == Scheme.LOOP ? "tris" : "quads";
+        BenchTable table = new BenchTable("row", "control faces", "level", face + "s", "refine s", "M" + faceShort + "/s", "limit normals s",
+                "bytes/" + face, "far_perf s", "speed vs far_perf");
+        table.add(name, Integer.toString(mesh.faceCount()), Integer.toString(level),
+                String.format(Locale.ROOT, "%,d", faces), fmt(t, 3), fmt(faces / t / 1e6, 2), fmt(normalSeconds, 3), fmt(bytesPerFace, 1),
                 Double.isNaN(far) ? "not installed" : fmt(far, 3),
                 Double.isNaN(far) ? "-" : fmt(far / t, 2) + "x");
         table.print(out);
         out.println("  refine s: positions and topology of every level up to the last (one thread); far_perf s: OpenSubdiv's");
-        out.println("  TopologyRefiner::Refine alone (topology only, no positions), so the ratio is conservative for us;");
-        out.println("  speed vs far_perf = far_perf s / refine s (above 1: Spindulys is faster).");
-        out.println("  bytes/quad: the refined level's topology, positions and limit normals, divided by its quads.");
+        out.printf(Locale.ROOT, "  TopologyRefiner::Refine alone (far_perf -u -%s, topology only, no positions), so the ratio is conservative%n", scheme.keyword());
+        out.println("  for us; speed vs far_perf = far_perf s / refine s (above 1: Spindulys is faster).");
+        out.printf(Locale.ROOT, "  bytes/%s: the refined level's topology, positions and limit normals, divided by its %ss.%n", face, face);
     }
 }

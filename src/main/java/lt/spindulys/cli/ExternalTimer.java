@@ -11,6 +11,8 @@ import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
+import lt.spindulys.subdiv.SubdivOptions;
+
 /**
  * Runs a peer program that the benchmark compares against, when it is installed. The project
  * never depends on one: a missing peer yields no figure, and the bench says so.
@@ -31,16 +33,19 @@ final class ExternalTimer {
 
     /**
      * Median over {@code runs} runs of OpenSubdiv's own time for uniform topology refinement of
-     * {@code obj} to {@code level} ({@code far_perf -u -l N -nopatches -nostencils -double}), in
-     * seconds, or NaN if far_perf is not installed or its output cannot be read.
+     * {@code obj} with {@code scheme} to {@code level} ({@code far_perf -u -l N -nopatches
+     * -nostencils -double -catmark|-loop|-bilinear}: far_perf takes the scheme from its command
+     * line, not from the file), in seconds, or NaN if far_perf is not installed or its output
+     * cannot be read.
      */
-    static double farPerfRefineSeconds(Path obj, int level, int runs) {
+    static double farPerfRefineSeconds(Path obj, SubdivOptions.Scheme scheme, int level, int runs) {
         Path exe = onPath("far_perf");
         if (exe == null) return Double.NaN;
         Pattern row = Pattern.compile("TopologyRefiner::Refine\\s+([0-9.]+)");
         double[] times = new double[runs];
         for (int r = 0; r < runs; r++) {
-            String out = run(List.of(exe.toString(), "-u", "-l", Integer.toString(level), "-nopatches", "-nostencils", "-double", obj.toString()));
+            String out = run(List.of(exe.toString(), "-u", "-l", Integer.toString(level), "-nopatches", "-nostencils", "-double",
+                    "-" + scheme.keyword(), obj.toString()));
             if (out == null) return Double.NaN;
             // The last "level N" block is the refinement to the requested level.
             int at = out.lastIndexOf("level " + level + ":");
