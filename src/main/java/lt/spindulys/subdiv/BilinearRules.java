@@ -35,6 +35,6 @@ final class BilinearRules extends SchemeRules {
 
     @Override
     void limitMasks(int rule, int nEdges, int nFaces, boolean nonManifold, float[] sharp, LimitMasks m) {
-        cornerLimitMasks(nEdges, nFaces, 1.0, m);
+        cornerLimitMasks(nEdges, 0, 1.0, m);
     }
 }

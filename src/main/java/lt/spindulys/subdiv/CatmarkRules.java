@@ -18,6 +18,9 @@ final class CatmarkRules extends SchemeRules {
     /** The limit masks at a regular interior vertex (valence 4), unrolled by {@link Limit}. */
     static final double REGULAR_LIMIT_FACE = 1.0 / 36.0, REGULAR_LIMIT_EDGE = 1.0 / 9.0, REGULAR_LIMIT_VERTEX = 4.0 / 9.0;
 
+    /** The smooth tangent masks at valence 4 (edges, faces). */
+    private static final double[] REGULAR_T1E = {4, 0, -4, 0}, REGULAR_T1F = {1, -1, -1, 1}, REGULAR_T2E = {0, 4, 0, -4}, REGULAR_T2F = {1, 1, -1, -1};
+
     private final boolean smoothTriangles;
 
     private CatmarkRules(boolean smoothTriangles) { this.smoothTriangles = smoothTriangles; }
@@ -79,13 +82,10 @@ final class CatmarkRules extends SchemeRules {
             m.fw[j] = fwt;
         }
         if (n == 4) {
-            double[] e1 = {4, 0, -4, 0}, f1 = {1, -1, -1, 1}, e2 = {0, 4, 0, -4}, f2 = {1, 1, -1, -1};
-            for (int j = 0; j < 4; j++) {
-                m.t1e[j] = e1[j];
-                m.t1f[j] = f1[j];
-                m.t2e[j] = e2[j];
-                m.t2f[j] = f2[j];
-            }
+            System.arraycopy(REGULAR_T1E, 0, m.t1e, 0, 4);
+            System.arraycopy(REGULAR_T1F, 0, m.t1f, 0, 4);
+            System.arraycopy(REGULAR_T2E, 0, m.t2e, 0, 4);
+            System.arraycopy(REGULAR_T2F, 0, m.t2f, 0, 4);
             return;
         }
         double theta = 2.0 * Math.PI / n;

@@ -119,13 +119,15 @@ final class Level {
 
     int next(int h) {
         if (faceStart == null) return (h & ~3) | ((h + 1) & 3);
-        int f = face(h);
+        if (hFace == null) return h % 3 == 2 ? h - 2 : h + 1; // all triangles
+        int f = hFace[h];
         return h + 1 == faceStart[f + 1] ? faceStart[f] : h + 1;
     }
 
     int prev(int h) {
         if (faceStart == null) return (h & ~3) | ((h + 3) & 3);
-        int f = face(h);
+        if (hFace == null) return h % 3 == 0 ? h + 2 : h - 1; // all triangles
+        int f = hFace[h];
         return h == faceStart[f] ? faceStart[f + 1] - 1 : h - 1;
     }
 

@@ -35,7 +35,7 @@ final class Limit {
         double[] t = new double[6];
         // Catmull-Clark's regular vertices take an unrolled path.
         boolean quads = lv.faceStart == null && rules instanceof CatmarkRules;
-        boolean anyNm = lv.nmVert.length > 0;
+        boolean anyNm = lv.nmVert.length > 0, faceWeights = rules.limitUsesFaces();
         // Regular vertices first, visited in half-edge order (each at its leading half-edge),
         // which keeps the 1-ring lookups close in memory; the rest vertex by vertex.
         boolean[] done = null;
@@ -55,16 +55,19 @@ final class Limit {
             if (only != null && !only[v]) continue;
             int nEdges, nFaces;
             int nmi = lv.nmVertIndex(v);
+            // Sharpness matters to the crease masks only; the opposite vertices to masks with face weights.
+            int rule = lv.rule(v);
+            boolean wantSharp = rule == Crease.RULE_CREASE;
             if (nmi >= 0) {
                 nEdges = 0;
                 for (int k = lv.nmVertStart[nmi]; k < lv.nmVertStart[nmi + 1]; k++, nEdges++) {
                     other[nEdges] = lv.nmVertOther[k];
-                    sharp[nEdges] = lv.edgeSharpness(lv.nmVertHalf[k]);
+                    if (wantSharp) sharp[nEdges] = lv.edgeSharpness(lv.nmVertHalf[k]);
                 }
                 // Far's vertex-face order of a non-manifold vertex, as its masks index it.
                 nFaces = 0;
                 for (int k = lv.nmFaceStart[nmi]; k < lv.nmFaceStart[nmi + 1]; k++, nFaces++) {
-                    opp[nFaces] = lv.hOrig[lv.next(lv.next(lv.nmFaceHalf[k]))];
+                    if (faceWeights) opp[nFaces] = lv.hOrig[lv.next(lv.next(lv.nmFaceHalf[k]))];
                 }
             } else {
                 int n = lv.ring(v, ring);
@@ -75,11 +78,11 @@ final class Limit {
                     int x = ring[j];
                     if (j < n) {
                         other[j] = lv.dest(x);
-                        opp[j] = lv.hOrig[lv.next(lv.next(x))];
+                        if (faceWeights) opp[j] = lv.hOrig[lv.next(lv.next(x))];
                     } else {
                         other[j] = lv.hOrig[x];
                     }
-                    sharp[j] = lv.edgeSharpness(x);
+                    if (wantSharp) sharp[j] = lv.edgeSharpness(x);
                 }
             }
             int vp = 3 * v;
@@ -88,7 +91,7 @@ final class Limit {
                 if (nrm != null) fallbackNormal(lv, p, v, nrm);
                 continue;
             }
-            rules.limitMasks(lv.rule(v), nEdges, nFaces, nmi >= 0, sharp, m);
+            rules.limitMasks(rule, nEdges, nFaces, nmi >= 0, sharp, m);
             double[] ew = m.ew, fw = m.fw, t1e = m.t1e, t1f = m.t1f, t2e = m.t2e, t2f = m.t2f;
             double vw = m.vw, t1v = m.t1v, t2v = m.t2v;
             int nE1 = m.posEdges, nF1 = m.posFaces; // weights the position uses
@@ -103,7 +106,7 @@ final class Limit {
             if (nrm != null) {
                 for (int d = 0; d < 3; d++) {
                     double a = 0.0, b = 0.0;
-                    for (int j = 0; j < nFaces; j++) {
+                    for (int j = 0; j < m.tanFaces; j++) {
                         double q = p[3 * opp[j] + d];
                         a += t1f[j] * q;
                         b += t2f[j] * q;

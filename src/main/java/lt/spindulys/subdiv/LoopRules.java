@@ -12,6 +12,8 @@ final class LoopRules extends SchemeRules {
     static final LoopRules RULES = new LoopRules();
 
     private static final double ROOT3 = 1.73205080756887729352, ROOT3_BY_2 = ROOT3 * 0.5;
+    /** The smooth tangent masks at valence 6. */
+    private static final double[] REGULAR_T1 = {1.0, 0.5, -0.5, -1.0, -0.5, 0.5}, REGULAR_T2 = {0.0, ROOT3_BY_2, ROOT3_BY_2, 0.0, -ROOT3_BY_2, -ROOT3_BY_2};
 
     /** Smooth vertex weights by valence, computed once: the cosine is the costly part. */
     private static final int TABLE = 64;
@@ -70,22 +72,18 @@ final class LoopRules extends SchemeRules {
         } else if (rule == Crease.RULE_CREASE) {
             crease(nEdges, nFaces, sharp, m);
         } else {
-            cornerLimitMasks(nEdges, nFaces, 3.0, m);
+            cornerLimitMasks(nEdges, 0, 3.0, m);
         }
     }
 
     private static void smooth(int n, int nFaces, LimitMasks m) {
-        m.clear(n, nFaces);
-        m.posFaces = 0;
+        m.clear(n, 0);
         double ewt = n < TABLE ? LIMIT_EDGE_WEIGHT[n] : limitEdgeWeight(n);
         m.vw = n == 6 ? 0.5 : 1.0 - ewt * n;
         for (int j = 0; j < n; j++) m.ew[j] = ewt;
         if (n == 6) {
-            double[] c1 = {1.0, 0.5, -0.5, -1.0, -0.5, 0.5}, c2 = {0.0, ROOT3_BY_2, ROOT3_BY_2, 0.0, -ROOT3_BY_2, -ROOT3_BY_2};
-            for (int j = 0; j < 6; j++) {
-                m.t1e[j] = c1[j];
-                m.t2e[j] = c2[j];
-            }
+            System.arraycopy(REGULAR_T1, 0, m.t1e, 0, 6);
+            System.arraycopy(REGULAR_T2, 0, m.t2e, 0, 6);
             return;
         }
         double alpha = 2.0 * Math.PI / n;
@@ -99,8 +97,7 @@ final class LoopRules extends SchemeRules {
     private static void crease(int nEdges, int nFaces, float[] sharp, LimitMasks m) {
         creaseEnds(nEdges, sharp, m.ends);
         int c0 = m.ends[0], c1 = m.ends[1];
-        m.clear(nEdges, nFaces);
-        m.posFaces = 0;
+        m.clear(nEdges, 0);
         m.vw = 4.0 / 6.0;
         m.ew[c0] = 1.0 / 6.0;
         m.ew[c1] = 1.0 / 6.0;

@@ -157,6 +157,23 @@ final class PrimvarRefiner {
                     dst[out + 2] = az + vw * src[vs + 2];
                     continue;
                 }
+                if (stride == 3 && p.hFace == null) {
+                    // Positions on a level of triangles (Loop), in one walk around the vertex.
+                    double ax = 0, ay = 0, az = 0;
+                    int h = start;
+                    do {
+                        int k = h % 3;
+                        int op = orig[k == 2 ? h - 2 : h + 1] * 3;
+                        ax += ew * src[op];
+                        ay += ew * src[op + 1];
+                        az += ew * src[op + 2];
+                        h = twin[k == 0 ? h + 2 : h - 1];
+                    } while (h != start);
+                    dst[vs] = ax + vw * src[vs];
+                    dst[vs + 1] = ay + vw * src[vs + 1];
+                    dst[vs + 2] = az + vw * src[vs + 2];
+                    continue;
+                }
                 for (int d = 0; d < stride; d++) {
                     double acc = 0.0;
                     int h = start;

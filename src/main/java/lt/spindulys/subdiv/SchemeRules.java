@@ -30,6 +30,9 @@ abstract class SchemeRules {
     /** Whether faces split into triangles (Loop: four per triangle, no face points) rather than quads (one per corner). */
     abstract boolean splitsToTriangles();
 
+    /** Whether any limit mask weighs the vertices opposite a vertex in its faces (Catmull-Clark's do). */
+    boolean limitUsesFaces() { return !splitsToTriangles() && !linear(); }
+
     /** Whether every rule is linear (bilinear): face centroids, edge midpoints, vertices kept, whatever the sharpness. */
     boolean linear() { return false; }
 
@@ -70,8 +73,10 @@ abstract class SchemeRules {
         final double[] ew, fw, t1e, t1f, t2e, t2f;
         /** The position's vertex weight and the tangents' vertex weights. */
         double vw, t1v, t2v;
-        /** Edge and face weights the position uses (the first ones; the tangents use all). */
+        /** Edge and face weights the position uses (the first ones; the tangents use all edges). */
         int posEdges, posFaces;
+        /** Face weights the tangents use: all faces, or none where the scheme has no face weights. */
+        int tanFaces;
         /** Scratch: a crease's first and last sharp edge. */
         final int[] ends = new int[2];
 
@@ -91,6 +96,7 @@ abstract class SchemeRules {
             vw = t1v = t2v = 0.0;
             posEdges = nEdges;
             posFaces = nFaces;
+            tanFaces = nFaces;
         }
     }
 
