@@ -151,7 +151,7 @@ final class FaceVarying {
                 // while the other's has one stays a corner as long as the other does, then
                 // blends into its crease with the other's weight.
                 if (!all && dependent && n == 2 && geom.vertexSharpness(v) == 0f) {
-                    boolean s0 = semiSharpSpan(lv, eSharp, first), s1 = semiSharpSpan(lv, eSharp, first + 1);
+                    boolean s0 = spanHas(lv, eSharp, first, false), s1 = spanHas(lv, eSharp, first + 1, false);
                     if (s0 != s1) {
                         int a = s0 ? first + 1 : first, b = s0 ? first : first + 1;
                         if (!pin[a]) {
@@ -181,22 +181,17 @@ final class FaceVarying {
      * are not set yet, so the edges' sharpness comes from {@code eSharp} (by edge of the value mesh).
      */
     private static boolean disjoint(Level lv, float[] eSharp, int id) {
-        if (lv.nmVertIndex(id) >= 0) return true;
-        int start = lv.vOut[id], h = start;
-        do {
-            if (lv.hTwin[h] >= 0 && Crease.isInfinite(eSharp[lv.edge(h)])) return true;
-            int t = lv.hTwin[lv.prev(h)];
-            if (t < 0) break;
-            h = t;
-        } while (h != start);
-        return false;
+        return lv.nmVertIndex(id) >= 0 || spanHas(lv, eSharp, id, true);
     }
 
-    /** Whether a value's span holds a semi-sharp edge (read from {@code eSharp}, as in {@link #disjoint}). */
-    private static boolean semiSharpSpan(Level lv, float[] eSharp, int id) {
+    /** Whether a value's span holds an edge (inside it: not a seam) that is infinitely sharp, or else semi-sharp. */
+    private static boolean spanHas(Level lv, float[] eSharp, int id, boolean infinite) {
         int start = lv.vOut[id], h = start;
         do {
-            if (lv.hTwin[h] >= 0 && Crease.isSemiSharp(eSharp[lv.edge(h)])) return true;
+            if (lv.hTwin[h] >= 0) {
+                float s = eSharp[lv.edge(h)];
+                if (infinite ? Crease.isInfinite(s) : Crease.isSemiSharp(s)) return true;
+            }
             int t = lv.hTwin[lv.prev(h)];
             if (t < 0) break;
             h = t;

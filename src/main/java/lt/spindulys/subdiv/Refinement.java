@@ -198,7 +198,17 @@ final class Refinement {
         return 4 * xn + ((rot(p, xn) + 3) & 3);
     }
 
-    private static void refineNonManifold(Level p, Level c) {
+    /** The child half-edge along parent half-edge x that touches x's edge at the given end (0 = v0), in one split. */
+    interface ChildPiece {
+        int of(Level p, int x, int end);
+    }
+
+    /**
+     * The child's non-manifold edges, the same for both splits: each non-manifold parent edge
+     * gives two (2e + end, numbered as in {@link Level}), each with the pieces of the parent's
+     * half-edges at that end, in the parent's edge-face order.
+     */
+    static void childNonManifoldEdges(Level p, Level c, ChildPiece piece) {
         int faceEdges = p.nH;
         int nme = p.nmEdge.length;
         c.nmEdge = new int[2 * nme];
@@ -209,10 +219,16 @@ final class Refinement {
             for (int end = 0; end < 2; end++) {
                 int ci = 2 * i + end;
                 c.nmEdge[ci] = faceEdges + 2 * e + end;
-                for (int j = p.nmEdgeStart[i]; j < p.nmEdgeStart[i + 1]; j++) c.nmEdgeHalf[k++] = childPiece(p, p.nmEdgeHalf[j], end);
+                for (int j = p.nmEdgeStart[i]; j < p.nmEdgeStart[i + 1]; j++) c.nmEdgeHalf[k++] = piece.of(p, p.nmEdgeHalf[j], end);
                 c.nmEdgeStart[ci + 1] = k;
             }
         }
+    }
+
+    private static void refineNonManifold(Level p, Level c) {
+        int faceEdges = p.nH;
+        int nme = p.nmEdge.length;
+        childNonManifoldEdges(p, c, Refinement::childPiece);
         // Non-manifold vertices: children of such vertices, then the points of such edges.
         int nmv = p.nmVert.length;
         int entries = p.nmVertHalf.length;

@@ -180,18 +180,7 @@ final class TriangleSplit {
     private static void refineNonManifold(Level p, Level c) {
         int faceEdges = p.nH, vEdge = p.nV;
         int nme = p.nmEdge.length;
-        c.nmEdge = new int[2 * nme];
-        c.nmEdgeStart = new int[2 * nme + 1];
-        c.nmEdgeHalf = new int[2 * p.nmEdgeHalf.length];
-        for (int i = 0, k = 0; i < nme; i++) {
-            int e = p.nmEdge[i];
-            for (int end = 0; end < 2; end++) {
-                int ci = 2 * i + end;
-                c.nmEdge[ci] = faceEdges + 2 * e + end;
-                for (int j = p.nmEdgeStart[i]; j < p.nmEdgeStart[i + 1]; j++) c.nmEdgeHalf[k++] = childPiece(p, p.nmEdgeHalf[j], end);
-                c.nmEdgeStart[ci + 1] = k;
-            }
-        }
+        Refinement.childNonManifoldEdges(p, c, TriangleSplit::childPiece);
         int nmv = p.nmVert.length;
         int entries = p.nmVertHalf.length, faces = p.nmFaceHalf.length;
         for (int i = 0; i < nme; i++) {

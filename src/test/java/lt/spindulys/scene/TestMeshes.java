@@ -8,6 +8,24 @@ import lt.spindulys.mesh.MeshData;
 
 /** Meshes generated for tests: closed solids with shared vertices, and triangle soups. */
 public final class TestMeshes {
+    /** An octahedron: eight triangles, closed (every subdivision scheme refines it). */
+    public static final String OCTAHEDRON_OBJ = """
+            v 1 0 0
+            v -1 0 0
+            v 0 1 0
+            v 0 -1 0
+            v 0 0 1
+            v 0 0 -1
+            f 1 3 5
+            f 3 2 5
+            f 2 4 5
+            f 4 1 5
+            f 3 1 6
+            f 2 3 6
+            f 4 2 6
+            f 1 4 6
+            """;
+
     /** The cube [-1, 1]^3 as OBJ text, outward quads; vertices 0..7 as in scenes/models/crease-cube.obj. */
     public static final String CUBE_OBJ = """
             v -1 -1 -1

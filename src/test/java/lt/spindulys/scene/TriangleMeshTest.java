@@ -200,29 +200,13 @@ class TriangleMeshTest {
         assertVec(0, 0, 1, sd.ng);
     }
 
-    private static final String OCTAHEDRON = """
-            v 1 0 0
-            v -1 0 0
-            v 0 1 0
-            v 0 -1 0
-            v 0 0 1
-            v 0 0 -1
-            f 1 3 5
-            f 3 2 5
-            f 2 4 5
-            f 4 1 5
-            f 3 1 6
-            f 2 3 6
-            f 4 2 6
-            f 1 4 6
-            """;
 
     @Test
     void smoothWithoutFileNormalsUsesAreaWeightedVertexNormals() {
-        TriangleMesh flat = frozen(obj(OCTAHEDRON));
+        TriangleMesh flat = frozen(obj(TestMeshes.OCTAHEDRON_OBJ));
         assertFalse(flat.isSmooth(), "flat by default without normals");
         assertTrue(flat.isClosed());
-        TriangleMesh smooth = frozen(obj(OCTAHEDRON).smooth(true));
+        TriangleMesh smooth = frozen(obj(TestMeshes.OCTAHEDRON_OBJ).smooth(true));
         TraceContext ctx = new TraceContext();
         ShadingData sd = new ShadingData();
         double s = 1 / Math.sqrt(3);

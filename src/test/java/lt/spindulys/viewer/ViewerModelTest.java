@@ -171,28 +171,11 @@ class ViewerModelTest {
         assertEquals(SubdivOptions.Boundary.NONE, snap.input().options().boundary());
     }
 
-    /** An octahedron: eight triangles, closed, which every scheme refines. */
-    static final String OCTAHEDRON_OBJ = """
-            v 1 0 0
-            v -1 0 0
-            v 0 1 0
-            v 0 -1 0
-            v 0 0 1
-            v 0 0 -1
-            f 1 3 5
-            f 3 2 5
-            f 2 4 5
-            f 4 1 5
-            f 3 1 6
-            f 2 3 6
-            f 4 2 6
-            f 1 4 6
-            """;
 
     @Test
     void theSchemeIsTheFilesAndCanBeChanged() throws IOException {
         ViewerModel m = model();
-        m.open(List.of(write("oct.obj", OCTAHEDRON_OBJ + "t scheme 0/0/1 loop\n")));
+        m.open(List.of(write("oct.obj", lt.spindulys.scene.TestMeshes.OCTAHEDRON_OBJ + "t scheme 0/0/1 loop\n")));
         ViewedSurface s = m.selected();
         assertEquals(SubdivOptions.Scheme.LOOP, s.scheme(), "the file's tag");
         assertNull(s.nonTriangle());
