@@ -233,6 +233,7 @@ public final class Renderer {
                     double time = ownTimes ? st.shutterTime(sampler.time(i)) : pass.time;
                     camera.generateRay(sampler.filmX(i) / w, sampler.filmY(i) / h, aspect,
                             sampler.lensU(i), sampler.lensV(i), time, ray);
+                    scratch.setSample(pass.seed, x, y, i, n);
                     integrator.traceCamera(ray, scratch, colour);
                     r += colour[0]; g += colour[1]; b += colour[2];
                 }

@@ -41,6 +41,7 @@ public final class SceneBuilder {
     private RenderSettings settings = RenderSettings.DEFAULT;
     private Camera camera;
     private final List<PointLight> lights = new ArrayList<>();
+    private final List<AreaLight> areaLights = new ArrayList<>();
     private final List<GObject> objects = new ArrayList<>();
     private final Map<String, Material> materials = new LinkedHashMap<>();
     private String frameSource;
@@ -57,6 +58,7 @@ public final class SceneBuilder {
         c.settings = settings;
         c.camera = camera;
         c.lights.addAll(lights);
+        c.areaLights.addAll(areaLights);
         c.totalLight = totalLight;
         c.objects.addAll(objects);
         c.materials.putAll(materials);
@@ -116,7 +118,33 @@ public final class SceneBuilder {
         return this;
     }
 
-    /** Sum of {@link PointLight#power()} over the lights added so far. */
+    /**
+     * Adds an area light (soft shadows).
+     *
+     * @param l the light to add (not null)
+     * @return this builder
+     * @throws IllegalArgumentException if the lights' total (intensity times largest colour
+     *         component, summed over point and area lights) would exceed {@link Ranges#MAX_TOTAL_LIGHT}
+     */
+    public SceneBuilder areaLight(AreaLight l) {
+        double total = totalLight + Objects.requireNonNull(l).power();
+        if (!(total <= Ranges.MAX_TOTAL_LIGHT)) {
+            throw new IllegalArgumentException("area light intensity " + l.intensity() + " brings the lights' total (intensity times the largest colour component, summed over the lights) to "
+                    + total + ", more than " + Ranges.show(Ranges.MAX_TOTAL_LIGHT));
+        }
+        totalLight = total;
+        areaLights.add(l);
+        return this;
+    }
+
+    /**
+     * The area lights added so far, in order (read-only view).
+     *
+     * @return an unmodifiable view of the area lights, which follows later additions
+     */
+    public List<AreaLight> areaLights() { return Collections.unmodifiableList(areaLights); }
+
+    /** Sum of {@link PointLight#power()} and {@link AreaLight#power()} over the lights added so far. */
     private double totalLight;
 
     /**
@@ -197,7 +225,7 @@ public final class SceneBuilder {
      */
     public Scene build() {
         Camera c = camera != null ? camera : DEFAULT_CAMERA;
-        return new Scene(settings, c, lights, objects);
+        return new Scene(settings, c, lights, areaLights, objects);
     }
 
     /**

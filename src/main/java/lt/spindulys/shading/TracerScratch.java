@@ -37,6 +37,41 @@ public final class TracerScratch {
     TracedObject[] solids = new TracedObject[8];
     int mediaCount;
 
+    // The pixel sample being traced, for area-light samples: global seed, pixel, sample index and
+    // count. Set by setSample; a caller that never sets it traces as sample 0 of 1 of pixel (0, 0).
+    long seed;
+    int pixelX, pixelY, sample, samplesPerPixel = 1;
+    /** Bumped whenever the pixel or sample count changes, so per-pixel light strata are redrawn. */
+    int pixelGeneration = 1;
+    /** Per area light: its strata in the order the pixel's samples take them, and the generation they were drawn for. */
+    int[][] lightStrata = new int[0][];
+    int[] lightStrataGeneration = new int[0];
+    final lt.spindulys.sampling.Rng lightRng = new lt.spindulys.sampling.Rng();
+    /** An area-light sample: the point on the light and the weight of its radiance. */
+    final double[] lightSample = new double[4];
+
+    /**
+     * Says which pixel sample the next camera ray is, so that area-light samples are stratified
+     * over the pixel's samples and seeded from (seed, pixel, sample, light) like every other random
+     * number: the image does not depend on the thread count.
+     *
+     * @param seed            the pass's global seed
+     * @param px              pixel column
+     * @param py              pixel row
+     * @param sample          sample index in the pixel, 0..samplesPerPixel-1
+     * @param samplesPerPixel the pixel's sample count
+     */
+    public void setSample(long seed, int px, int py, int sample, int samplesPerPixel) {
+        if (seed != this.seed || px != pixelX || py != pixelY || samplesPerPixel != this.samplesPerPixel) {
+            this.seed = seed;
+            pixelX = px;
+            pixelY = py;
+            this.samplesPerPixel = samplesPerPixel;
+            pixelGeneration++;
+        }
+        this.sample = sample;
+    }
+
     /** Rays traced, by kind (counted per thread and summed by the renderer). */
     public long cameraRays, shadowRays, reflectionRays, refractionRays;
 

@@ -6,6 +6,8 @@ import lt.spindulys.math.Ray;
 import lt.spindulys.trace.TracedObject;
 import lt.spindulys.trace.Hit;
 import lt.spindulys.material.Material;
+import lt.spindulys.sampling.Rng;
+import lt.spindulys.scene.AreaLight;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
@@ -25,6 +27,12 @@ import lt.spindulys.texture.Channel;
  * another material) leaves the medium it entered, whose material gives the inside's index of
  * refraction and attenuation; the exit surface's material still gives that surface's kt and filter.
  *
+ * <p>Area lights ({@link AreaLight}): each shaded point sends {@link AreaLight#samples()} shadow
+ * rays per pixel sample to points on the light, drawn from strata of the light shared by the
+ * pixel's samples (seeded from the pass seed, pixel, sample and light, as set by
+ * {@link TracerScratch#setSample}), through the same transmission walk as point lights' shadow
+ * rays; rays that reach a light before any surface see its radiance.
+ *
  * <p>Textures ({@link TextureShading}): a material's bound channels are evaluated at each shaded
  * hit before lighting (colour, ks, kr, kt, emission, bumped shading normal), with a footprint from
  * the path length and the camera's pixel angle; shadow rays evaluate transparency textures.
@@ -36,6 +44,7 @@ public final class WhittedIntegrator {
     private final Scene scene;
     private final RenderSettings settings;
     private final PointLight[] lights;
+    private final AreaLight[] areaLights;
     private final boolean transparentShadows;
     /** Angle between the primary rays of neighbouring pixels at the image centre, radians (texture footprints). */
     private final double pixelAngle;
@@ -51,6 +60,7 @@ public final class WhittedIntegrator {
         this.scene = scene;
         this.settings = scene.settings();
         this.lights = scene.lightArray();
+        this.areaLights = scene.areaLightArray();
         this.transparentShadows = scene.hasTransparentObjects();
         this.pixelAngle = pixelAngle(scene);
         double power = 0;
@@ -81,7 +91,12 @@ public final class WhittedIntegrator {
     private static final double MIN_FOOTPRINT_COSINE = 1 / lt.spindulys.texture.Mapping.MAX_ANISOTROPY;
 
     /** A scratch sized for this scene's recursion depth, for one thread. */
-    public TracerScratch newScratch() { return new TracerScratch(settings.maxDepth()); }
+    public TracerScratch newScratch() {
+        TracerScratch s = new TracerScratch(settings.maxDepth());
+        s.lightStrata = new int[areaLights.length][];
+        s.lightStrataGeneration = new int[areaLights.length];
+        return s;
+    }
 
     /** Colour seen along a camera ray, written to out[0..2]. */
     public void traceCamera(Ray ray, TracerScratch s, double[] out) {
@@ -136,7 +151,15 @@ public final class WhittedIntegrator {
         Hit hit = v.hit;
         Material medium = s.innermost();
         double dlen = Math.sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
-        if (!scene.intersect(ray, hit, s.ctx)) {
+        boolean found = scene.intersect(ray, hit, s.ctx);
+        if (areaLights.length > 0) {
+            double tLight = seesAreaLight(ray, found ? hit.t : Double.POSITIVE_INFINITY, out);
+            if (tLight == tLight) { // not NaN: a light is nearer than any surface
+                if (medium != null) attenuate(medium, tLight * dlen, out);
+                return;
+            }
+        }
+        if (!found) {
             Color bg = settings.background();
             out[0] = bg.r(); out[1] = bg.g(); out[2] = bg.b();
             if (medium != null) attenuate(medium, Double.POSITIVE_INFINITY, out);
@@ -215,7 +238,197 @@ public final class WhittedIntegrator {
                 }
             }
         }
+        if (areaLights.length > 0 && (kd > 0 || ks > 0)) {
+            // The area lights' share goes through out: shadowTransmission reuses s.transmission.
+            out[0] = r; out[1] = g; out[2] = b;
+            areaIllumination(m, v, s, out);
+            return;
+        }
         out[0] = r; out[1] = g; out[2] = b;
+    }
+
+    /** Distinguishes the area-light strata's shuffle from the per-sample jitter and the pixel sampler's streams. */
+    private static final long STRATA_STREAM = 0x61726561L, JITTER_STREAM = 0x6a697474L;
+
+    /**
+     * Adds to out[0..2] the diffuse and Blinn-Phong specular light from every area light at
+     * vertex v (material m): each of a light's samples takes the stratum of the pixel's shuffled
+     * strata that its pixel sample and index within the light select, jittered within it.
+     */
+    private void areaIllumination(Material m, TracerScratch.PathVertex v, TracerScratch s, double[] out) {
+        double kd = m.kd(), ks = v.ks, shininess = m.shininess();
+        double cr = v.colourR, cg = v.colourG, cb = v.colourB;
+        double px = v.px, py = v.py, pz = v.pz;
+        double nfx = v.nfx, nfy = v.nfy, nfz = v.nfz, snx = v.snx, sny = v.sny, snz = v.snz;
+        double ox = px + nfx * v.eps, oy = py + nfy * v.eps, oz = pz + nfz * v.eps;
+        double[] ls = s.lightSample;
+        for (int li = 0; li < areaLights.length; li++) {
+            AreaLight light = areaLights[li];
+            int k = light.samples(), n = s.samplesPerPixel * k;
+            int[] strata = strata(li, n, s);
+            int rows = (int) Math.floor(Math.sqrt(n));
+            while (n % rows != 0) rows--;
+            int cols = n / rows;
+            Rng rng = s.lightRng.seed(s.seed ^ JITTER_STREAM * (li + 1), s.pixelX, s.pixelY, s.sample);
+            Color lc = light.color();
+            double scale = light.intensity() / k;
+            double lr = lc.r() * scale, lg = lc.g() * scale, lb = lc.b() * scale;
+            for (int j = 0; j < k; j++) {
+                int st = strata[(s.sample * k + j) % n];
+                double su = (st % cols + rng.nextDouble()) / cols, sv = (st / cols + rng.nextDouble()) / rows;
+                if (!sampleLight(light, su, sv, px, py, pz, ls)) continue;
+                double lx = ls[0] - px, ly = ls[1] - py, lz = ls[2] - pz;
+                double dist = Math.sqrt(lx * lx + ly * ly + lz * lz);
+                if (!(dist > 0)) continue;
+                double ux = lx / dist, uy = ly / dist, uz = lz / dist;
+                if (ux * nfx + uy * nfy + uz * nfz <= 0) continue; // light behind the surface
+                double ndotl = ux * snx + uy * sny + uz * snz;
+                if (ndotl <= 0) continue;
+                // The shadow ray stops just short of the light's surface, so that geometry the light
+                // lies on (a disc on a ceiling) does not block it.
+                Ray shadow = s.shadowRay.set(ox, oy, oz, ls[0] - ox, ls[1] - oy, ls[2] - oz, 0, 1 - 1e-7);
+                shadow.time = v.time;
+                double weight = ls[3];
+                if (!shadowTransmission(shadow, dist, s)) continue;
+                double[] t = s.transmission;
+                double ir = lr * weight * t[0], ig = lg * weight * t[1], ib = lb * weight * t[2];
+                double diff = kd * ndotl;
+                out[0] += diff * cr * ir; out[1] += diff * cg * ig; out[2] += diff * cb * ib;
+                if (ks > 0) {
+                    double hx = ux - v.dx, hy = uy - v.dy, hz = uz - v.dz;
+                    double hl = Math.sqrt(hx * hx + hy * hy + hz * hz);
+                    double nh = hl > 0 ? (hx * snx + hy * sny + hz * snz) / hl : 0;
+                    if (nh > 0) {
+                        double spec = ks * Math.pow(nh, shininess);
+                        out[0] += spec * ir; out[1] += spec * ig; out[2] += spec * ib;
+                    }
+                }
+            }
+        }
+    }
+
+    /**
+     * The order in which the pixel's samples take area light li's n strata: a shuffle seeded from
+     * the pass seed, pixel and light, drawn once per pixel and thread.
+     */
+    private int[] strata(int li, int n, TracerScratch s) {
+        if (s.lightStrata.length < areaLights.length) { // a scratch not made by newScratch
+            s.lightStrata = new int[areaLights.length][];
+            s.lightStrataGeneration = new int[areaLights.length];
+        }
+        int[] p = s.lightStrata[li];
+        if (p != null && p.length == n && s.lightStrataGeneration[li] == s.pixelGeneration) return p;
+        if (p == null || p.length != n) p = s.lightStrata[li] = new int[n];
+        for (int i = 0; i < n; i++) p[i] = i;
+        Rng rng = s.lightRng.seed(s.seed ^ STRATA_STREAM * (li + 1), s.pixelX, s.pixelY, li);
+        for (int i = n - 1; i > 0; i--) {
+            int j = rng.nextInt(i + 1);
+            int t = p[i]; p[i] = p[j]; p[j] = t;
+        }
+        s.lightStrataGeneration[li] = s.pixelGeneration;
+        return p;
+    }
+
+    /**
+     * A point on {@code light} for the unit-square sample (su, sv), seen from (px, py, pz): writes
+     * it to out[0..2] and to out[3] the weight that turns radiance into this sample's irradiance
+     * share before the receiver's cosine (the solid angle per sample: cos at the light * area / d^2
+     * for a rectangle or disc sampled by area, the cone's solid angle for a sphere sampled within
+     * the cone it fills).
+     *
+     * @return false if the sample gives nothing (the light's back, or the point inside a sphere)
+     */
+    static boolean sampleLight(AreaLight light, double su, double sv, double px, double py, double pz, double[] out) {
+        lt.spindulys.math.Vec3 c = light.center(), u = light.halfU(), w = light.halfV();
+        if (light.shape() == AreaLight.Shape.SPHERE) {
+            double wx = c.x() - px, wy = c.y() - py, wz = c.z() - pz;
+            double d2 = wx * wx + wy * wy + wz * wz, r = light.radius();
+            if (!(d2 > r * r)) return false;
+            double d = Math.sqrt(d2);
+            wx /= d; wy /= d; wz /= d;
+            double x = r * r / d2;
+            double oneMinusCosMax = x / (1 + Math.sqrt(1 - x)); // 1 - sqrt(1 - x) without cancellation
+            double cos = 1 - su * oneMinusCosMax, sin = Math.sqrt(Math.max(0, 1 - cos * cos));
+            double phi = 2 * Math.PI * sv;
+            // A frame about the direction to the centre.
+            double ax = Math.abs(wx) < 0.9 ? 1 : 0, ay = ax == 1 ? 0 : 1;
+            double tx = ay * wz, ty = -ax * wz, tz = ax * wy - ay * wx; // (a x w)
+            double tl = Math.sqrt(tx * tx + ty * ty + tz * tz);
+            tx /= tl; ty /= tl; tz /= tl;
+            double bx = wy * tz - wz * ty, by = wz * tx - wx * tz, bz = wx * ty - wy * tx;
+            double cp = Math.cos(phi) * sin, sp = Math.sin(phi) * sin;
+            double dx = wx * cos + tx * cp + bx * sp, dy = wy * cos + ty * cp + by * sp, dz = wz * cos + tz * cp + bz * sp;
+            // The nearer crossing of the sphere along that direction.
+            double t = d * cos - Math.sqrt(Math.max(0, r * r - d2 * sin * sin));
+            out[0] = px + t * dx; out[1] = py + t * dy; out[2] = pz + t * dz;
+            out[3] = 2 * Math.PI * oneMinusCosMax;
+            return true;
+        }
+        double a = 2 * su - 1, b = 2 * sv - 1;
+        if (light.shape() == AreaLight.Shape.DISC) {
+            // Shirley and Chiu's concentric map, as for lens samples: strata stay equal in area.
+            double rr, phi;
+            if (a == 0 && b == 0) { rr = 0; phi = 0; }
+            else if (Math.abs(a) > Math.abs(b)) { rr = a; phi = Math.PI / 4 * (b / a); }
+            else { rr = b; phi = Math.PI / 2 - Math.PI / 4 * (a / b); }
+            a = rr * Math.cos(phi);
+            b = rr * Math.sin(phi);
+        }
+        double x = c.x() + a * u.x() + b * w.x(), y = c.y() + a * u.y() + b * w.y(), z = c.z() + a * u.z() + b * w.z();
+        double lx = px - x, ly = py - y, lz = pz - z;
+        double d2 = lx * lx + ly * ly + lz * lz;
+        if (!(d2 > 0)) return false;
+        lt.spindulys.math.Vec3 n = light.normal();
+        double cos = (lx * n.x() + ly * n.y() + lz * n.z()) / Math.sqrt(d2);
+        if (light.oneSided() ? cos <= 0 : cos == 0) return false;
+        out[0] = x; out[1] = y; out[2] = z;
+        out[3] = Math.abs(cos) * light.area() / d2;
+        return true;
+    }
+
+    /**
+     * If {@code ray} reaches an area light before {@code tBound}, writes the radiance it sees there
+     * to out[0..2] (black from a one-sided light's back) and returns the ray parameter of the
+     * crossing; else returns NaN and leaves out alone.
+     */
+    private double seesAreaLight(Ray ray, double tBound, double[] out) {
+        double best = Math.min(tBound, ray.tMax);
+        AreaLight seen = null;
+        boolean front = false;
+        double ox = ray.ox, oy = ray.oy, oz = ray.oz, dx = ray.dx, dy = ray.dy, dz = ray.dz;
+        for (AreaLight light : areaLights) {
+            lt.spindulys.math.Vec3 c = light.center();
+            double cx = c.x() - ox, cy = c.y() - oy, cz = c.z() - oz;
+            if (light.shape() == AreaLight.Shape.SPHERE) {
+                double r = light.radius();
+                double a = dx * dx + dy * dy + dz * dz, hb = dx * cx + dy * cy + dz * cz;
+                double disc = hb * hb - a * (cx * cx + cy * cy + cz * cz - r * r);
+                if (disc < 0) continue;
+                double sq = Math.sqrt(disc);
+                double t = (hb - sq) / a;
+                if (!(t > ray.tMin)) t = (hb + sq) / a;
+                if (t > ray.tMin && t < best) { best = t; seen = light; front = true; }
+                continue;
+            }
+            lt.spindulys.math.Vec3 n = light.normal(), u = light.halfU(), w = light.halfV();
+            double denom = n.x() * dx + n.y() * dy + n.z() * dz;
+            if (denom == 0) continue;
+            double t = (n.x() * cx + n.y() * cy + n.z() * cz) / denom;
+            if (!(t > ray.tMin && t < best)) continue;
+            double qx = ox + t * dx - c.x(), qy = oy + t * dy - c.y(), qz = oz + t * dz - c.z();
+            double a = (qx * u.x() + qy * u.y() + qz * u.z()) / (u.x() * u.x() + u.y() * u.y() + u.z() * u.z());
+            double b = (qx * w.x() + qy * w.y() + qz * w.z()) / (w.x() * w.x() + w.y() * w.y() + w.z() * w.z());
+            boolean inside = light.shape() == AreaLight.Shape.DISC ? a * a + b * b <= 1 : Math.abs(a) <= 1 && Math.abs(b) <= 1;
+            if (!inside) continue;
+            best = t;
+            seen = light;
+            front = denom < 0 || !light.oneSided();
+        }
+        if (seen == null) return Double.NaN;
+        Color lc = seen.color();
+        double i = front ? seen.intensity() : 0;
+        out[0] = lc.r() * i; out[1] = lc.g() * i; out[2] = lc.b() * i;
+        return best;
     }
 
     /**
