@@ -63,6 +63,8 @@ final class SceneGrammar {
     /** What a block makes, which decides how the parser turns its keys into builder calls. */
     enum Category {
         SETTINGS, CAMERA, LIGHT, MATERIAL,
+        /** A light with an extent (scene.AreaLight): rectangle, disc or sphere. */
+        AREA_LIGHT,
         /** A named texture: an image or a procedural pattern. */
         TEXTURE,
         /** A texture binding nested in a material (not a statement). */
@@ -161,6 +163,35 @@ final class SceneGrammar {
             opt("color", Kind.COLOR, Color.WHITE),
             opt("intensity", Kind.NUMBER, 1.0),
             choice("falloff", "none", "none", "inverse-square")));
+
+    // Area lights: placed by centre and normal (a rectangle also by the tangent its width runs
+    // along), sized by width and height or radius; 'samples' shadow rays per pixel sample.
+    static final Block RECTLIGHT = new Block("rectlight", Category.AREA_LIGHT, false, List.of(
+            req("center", Kind.VECTOR),
+            opt("normal", Kind.VECTOR, new Vec3(0, -1, 0)),
+            opt("tangent", Kind.VECTOR, Vec3.X),
+            req("width", Kind.NUMBER),
+            req("height", Kind.NUMBER),
+            opt("color", Kind.COLOR, Color.WHITE),
+            opt("intensity", Kind.NUMBER, 1.0),
+            opt("onesided", Kind.BOOLEAN, false),
+            opt("samples", Kind.INTEGER, 1)));
+
+    static final Block DISCLIGHT = new Block("disclight", Category.AREA_LIGHT, false, List.of(
+            req("center", Kind.VECTOR),
+            opt("normal", Kind.VECTOR, new Vec3(0, -1, 0)),
+            req("radius", Kind.NUMBER),
+            opt("color", Kind.COLOR, Color.WHITE),
+            opt("intensity", Kind.NUMBER, 1.0),
+            opt("onesided", Kind.BOOLEAN, false),
+            opt("samples", Kind.INTEGER, 1)));
+
+    static final Block SPHERELIGHT = new Block("spherelight", Category.AREA_LIGHT, false, List.of(
+            req("center", Kind.VECTOR),
+            req("radius", Kind.NUMBER),
+            opt("color", Kind.COLOR, Color.WHITE),
+            opt("intensity", Kind.NUMBER, 1.0),
+            opt("samples", Kind.INTEGER, 1)));
 
     static final Block MATERIAL = new Block("material", Category.MATERIAL, false, List.of(
             opt("color", Kind.COLOR),
@@ -269,7 +300,7 @@ final class SceneGrammar {
     static final Block DIFFERENCE = new Block("difference", Category.CSG, true, OBJECT_COMMON);
 
     /** Every top-level statement, in documentation order. */
-    static final List<Block> STATEMENTS = List.of(SETTINGS, CAMERA, LIGHT, TEXTURE, MATERIAL, SPHERE, PLANE, BOX, CYLINDER, TRIANGLE, MESH, SUBDIV,
+    static final List<Block> STATEMENTS = List.of(SETTINGS, CAMERA, LIGHT, RECTLIGHT, DISCLIGHT, SPHERELIGHT, TEXTURE, MATERIAL, SPHERE, PLANE, BOX, CYLINDER, TRIANGLE, MESH, SUBDIV,
             UNION, INTERSECTION, DIFFERENCE);
 
     /** An object statement whose objects may be CSG operands. */

@@ -31,6 +31,7 @@ import lt.spindulys.scene.Cylinder;
 import lt.spindulys.scene.GObject;
 import lt.spindulys.material.Material;
 import lt.spindulys.scene.Plane;
+import lt.spindulys.scene.AreaLight;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Sphere;
@@ -200,6 +201,24 @@ final class SceneObjectFactory {
         };
         try {
             return new PointLight(p.vec("position"), (Color) p.get("color"), p.num("intensity"), falloff);
+        } catch (IllegalArgumentException e) {
+            throw err.blame(p, e);
+        }
+    }
+
+    /** A rectlight, disclight or spherelight block's area light. */
+    AreaLight areaLight(Props p) {
+        Color color = (Color) p.get("color");
+        double intensity = p.num("intensity");
+        int samples = (Integer) p.get("samples");
+        try {
+            return switch (p.block.keyword()) {
+                case "rectlight" -> AreaLight.rectangle(p.vec("center"), p.vec("normal"), p.vec("tangent"), p.num("width"), p.num("height"),
+                        color, intensity, (Boolean) p.get("onesided"), samples);
+                case "disclight" -> AreaLight.disc(p.vec("center"), p.vec("normal"), p.num("radius"), color, intensity, (Boolean) p.get("onesided"), samples);
+                case "spherelight" -> AreaLight.sphere(p.vec("center"), p.num("radius"), color, intensity, samples);
+                default -> throw new IllegalStateException("area light statement without a mapping: " + p.block.keyword());
+            };
         } catch (IllegalArgumentException e) {
             throw err.blame(p, e);
         }

@@ -19,6 +19,7 @@ import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Motion;
 import lt.spindulys.scene.GObject;
 import lt.spindulys.material.Material;
+import lt.spindulys.scene.AreaLight;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.SceneBuilder;
@@ -136,6 +137,7 @@ public final class SceneParser {
             case SETTINGS -> settings(kw);
             case CAMERA -> camera(kw);
             case LIGHT -> light(kw);
+            case AREA_LIGHT -> areaLight(b, kw);
             case MATERIAL -> namedMaterial(kw);
             case TEXTURE -> texture(kw);
             case OBJECT, CSG -> builder.add(objects.object(in.block(b, kw, null)));
@@ -182,6 +184,16 @@ public final class SceneParser {
         PointLight light = objects.light(p);
         try {
             builder.light(light); // refuses a total intensity over the limit, summed over the lights so far
+        } catch (IllegalArgumentException e) {
+            throw err.blame(p, e);
+        }
+    }
+
+    private void areaLight(Block b, Token kw) {
+        Props p = in.block(b, kw, null);
+        AreaLight light = objects.areaLight(p);
+        try {
+            builder.areaLight(light); // refuses a total intensity over the limit, summed over the lights so far
         } catch (IllegalArgumentException e) {
             throw err.blame(p, e);
         }
