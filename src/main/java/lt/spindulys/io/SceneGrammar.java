@@ -174,6 +174,7 @@ final class SceneGrammar {
             req("height", Kind.NUMBER),
             opt("color", Kind.COLOR, Color.WHITE),
             opt("intensity", Kind.NUMBER, 1.0),
+            opt("power", Kind.NUMBER),
             opt("onesided", Kind.BOOLEAN, false),
             opt("samples", Kind.INTEGER, 1)));
 
@@ -183,6 +184,7 @@ final class SceneGrammar {
             req("radius", Kind.NUMBER),
             opt("color", Kind.COLOR, Color.WHITE),
             opt("intensity", Kind.NUMBER, 1.0),
+            opt("power", Kind.NUMBER),
             opt("onesided", Kind.BOOLEAN, false),
             opt("samples", Kind.INTEGER, 1)));
 
@@ -191,6 +193,7 @@ final class SceneGrammar {
             req("radius", Kind.NUMBER),
             opt("color", Kind.COLOR, Color.WHITE),
             opt("intensity", Kind.NUMBER, 1.0),
+            opt("power", Kind.NUMBER),
             opt("samples", Kind.INTEGER, 1)));
 
     static final Block MATERIAL = new Block("material", Category.MATERIAL, false, List.of(

@@ -211,14 +211,20 @@ final class SceneObjectFactory {
         Color color = (Color) p.get("color");
         double intensity = p.num("intensity");
         int samples = (Integer) p.get("samples");
+        Prop given = p.prop("intensity"), power = p.prop("power");
+        if (given != null && power != null) {
+            Prop later = p.all.indexOf(given) > p.all.indexOf(power) ? given : power;
+            throw err.error(later.at(), p.block.keyword() + " has both 'intensity' and 'power': give one");
+        }
         try {
-            return switch (p.block.keyword()) {
+            AreaLight light = switch (p.block.keyword()) {
                 case "rectlight" -> AreaLight.rectangle(p.vec("center"), p.vec("normal"), p.vec("tangent"), p.num("width"), p.num("height"),
                         color, intensity, (Boolean) p.get("onesided"), samples);
                 case "disclight" -> AreaLight.disc(p.vec("center"), p.vec("normal"), p.num("radius"), color, intensity, (Boolean) p.get("onesided"), samples);
                 case "spherelight" -> AreaLight.sphere(p.vec("center"), p.num("radius"), color, intensity, samples);
                 default -> throw new IllegalStateException("area light statement without a mapping: " + p.block.keyword());
             };
+            return power == null ? light : light.withPower((Double) power.value());
         } catch (IllegalArgumentException e) {
             throw err.blame(p, e);
         }

@@ -162,6 +162,21 @@ public final class AreaLight {
     public int samples() { return samples; }
 
     /**
+     * The same light with the intensity that makes its emitted power (flux) {@code power}: power =
+     * intensity * pi * area, times 2 for a rectangle or disc that emits from both faces. Power lets
+     * a light be resized without changing how much light it gives.
+     *
+     * @param power the emitted power, per unit of colour, at least 0
+     * @return the light with that power
+     * @throws IllegalArgumentException if the resulting intensity is out of range
+     */
+    public AreaLight withPower(double power) {
+        Ranges.inRange("area light power", power, Ranges.MAX_INTENSITY);
+        double faces = shape != Shape.SPHERE && !oneSided ? 2 : 1;
+        return new AreaLight(shape, center, normal, u, v, radius, area, color, power / (Math.PI * area * faces), oneSided, samples);
+    }
+
+    /**
      * Intensity times the largest colour component: what the lights' total ({@link Ranges#MAX_TOTAL_LIGHT}) adds up.
      *
      * @return the radiance bound

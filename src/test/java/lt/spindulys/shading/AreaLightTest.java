@@ -156,6 +156,40 @@ class AreaLightTest {
         }
     }
 
+    /**
+     * A transparent occluder tints the umbra exactly as it tints a point light's shadow: each of
+     * the flat cylinder's two caps passes kt * filter, so the umbra receives (kt * filter)^2 of
+     * the unoccluded light, channel by channel; a CSG occluder (a box minus a sphere) casts an
+     * umbra of its own.
+     */
+    @Test
+    void transparentAndCsgOccludersCastSoftShadows() {
+        Material glass = Material.builder().color(Color.WHITE).kd(0).kt(0.5).filter(new Color(1, 0.5, 0.25)).build();
+        SceneBuilder b = base(disc(1), false);
+        b.add(new Cylinder(new Vec3(0, OH - 1e-4, 0), new Vec3(0, OH, 0), OR).material(glass));
+        WhittedIntegrator wt = new WhittedIntegrator(b.build()), wf = new WhittedIntegrator(base(disc(1), false).build());
+        TracerScratch st = wt.newScratch(), sf = wf.newScratch();
+        Ray ray = new Ray();
+        double[] tinted = new double[4], free = new double[4];
+        double[] expected = {0.25, 0.0625, 0.015625};
+        for (int i = 0; i < 64; i++) {
+            st.setSample(7, 0, 0, i, 64);
+            sf.setSample(7, 0, 0, i, 64);
+            ray.set(0, 1e-3, 0, 0, -1, 0, 0, Double.POSITIVE_INFINITY);
+            wt.traceCamera(ray, st, tinted);
+            ray.set(0, 1e-3, 0, 0, -1, 0, 0, Double.POSITIVE_INFINITY);
+            wf.traceCamera(ray, sf, free);
+            for (int c = 0; c < 3; c++) assertEquals(free[c] * expected[c], tinted[c], 1e-12 * free[c], "channel " + c + ", sample " + i);
+        }
+        SceneBuilder csg = base(disc(1), false);
+        csg.add(new lt.spindulys.scene.Bool(lt.spindulys.scene.Bool.Op.DIFFERENCE, java.util.List.of(
+                new lt.spindulys.scene.Box(new Vec3(-0.5, OH - 0.1, -0.5), new Vec3(0.5, OH, 0.5)),
+                new Sphere(new Vec3(0.5, OH, 0.5), 0.2))).material(WHITE));
+        WhittedIntegrator wc = new WhittedIntegrator(csg.build());
+        assertEquals(0, irradiance(wc, wc.newScratch(), 0, 0, 3, 0, 64), "umbra under the CSG occluder");
+        assertTrue(irradiance(wc, wc.newScratch(), 0.45, 0, 3, 0, 64) > 0, "penumbra at its edge");
+    }
+
     private static String sceneText() {
         return """
                 settings { width 40 height 30 samples 4 seed 9 ambient 0 }
@@ -201,5 +235,13 @@ class AreaLightTest {
         assertTrue(e.getMessage().startsWith("c.dat:1:") && e.getMessage().contains("samples"), e.getMessage());
         e = assertThrows(SceneException.class, () -> SceneParser.parse("rectlight { center 0 1 0 width 1 height 1 tangent 0 1 0 }", "d.dat", Path.of(".")));
         assertTrue(e.getMessage().startsWith("d.dat:1:") && e.getMessage().contains("tangent"), e.getMessage());
+        e = assertThrows(SceneException.class, () -> SceneParser.parse("disclight { center 0 1 0 radius 1 power 3\n intensity 2 }", "e.dat", Path.of(".")));
+        assertEquals("e.dat:2:2: disclight has both 'intensity' and 'power': give one", e.getMessage());
+
+        // Power is the emitted flux: pi * area * intensity, twice for both faces.
+        AreaLight two = SceneParser.parse("disclight { center 0 1 0 radius 2 power 8 }", "f.dat", Path.of(".")).areaLights().get(0);
+        assertEquals(8 / (Math.PI * Math.PI * 4 * 2), two.intensity(), 1e-15);
+        AreaLight ball = SceneParser.parse("spherelight { center 0 1 0 radius 0.5 power 2 }", "g.dat", Path.of(".")).areaLights().get(0);
+        assertEquals(2 / (4 * Math.PI * Math.PI * 0.25), ball.intensity(), 1e-15);
     }
 }
