@@ -190,6 +190,41 @@ class AreaLightTest {
         assertTrue(irradiance(wc, wc.newScratch(), 0.45, 0, 3, 0, 64) > 0, "penumbra at its edge");
     }
 
+    /**
+     * A mirror floor shows the disc light's radiance times kr where the reflected ray meets the
+     * disc, and the background beside it; a refracting slab (index 1) shows it times kt.
+     */
+    @Test
+    void lightsAreSeenInReflectionsAndRefractions() {
+        Material mirror = Material.builder().color(Color.WHITE).ka(0).kd(0).kr(0.8).build();
+        SceneBuilder b = new SceneBuilder()
+                .settings(RenderSettings.builder().size(8, 8).ambient(Color.BLACK).background(Color.BLACK).build())
+                .areaLight(AreaLight.disc(new Vec3(0, H, 0), new Vec3(0, -1, 0), R, new Color(1, 0.5, 0.25), 2, false, 1));
+        b.add(new Plane(Vec3.Y, 0).material(mirror));
+        WhittedIntegrator w = new WhittedIntegrator(b.build());
+        TracerScratch s = w.newScratch();
+        Ray ray = new Ray();
+        double[] out = new double[4];
+        // From (0, 1, -1) to the floor at (0, 0, -0.9): reflected up through (0, 4, -0.5), within the disc.
+        ray.set(0, 1, -1, 0, -1, 0.1, 0, Double.POSITIVE_INFINITY);
+        w.traceCamera(ray, s, out);
+        assertArrayEquals(new double[] {1.6, 0.8, 0.4}, java.util.Arrays.copyOf(out, 3), 1e-12);
+        // To the floor at (0, 0, -0.4): reflected through (0, 4, 2), outside the disc: background.
+        ray.set(0, 1, -1, 0, -1, 0.6, 0, Double.POSITIVE_INFINITY);
+        w.traceCamera(ray, s, out);
+        assertArrayEquals(new double[] {0, 0, 0}, java.util.Arrays.copyOf(out, 3), 0);
+
+        Material clear = Material.builder().color(Color.WHITE).ka(0).kd(0).kt(0.5).ior(1).build();
+        SceneBuilder g = new SceneBuilder()
+                .settings(RenderSettings.builder().size(8, 8).ambient(Color.BLACK).background(Color.BLACK).build())
+                .areaLight(AreaLight.disc(new Vec3(0, H, 0), new Vec3(0, -1, 0), R, Color.WHITE, 2, false, 1));
+        g.add(new lt.spindulys.scene.Box(new Vec3(-1, 1, -1), new Vec3(1, 2, 1)).material(clear));
+        WhittedIntegrator wg = new WhittedIntegrator(g.build());
+        ray.set(0.1, 0, 0, 0, 1, 0, 0, Double.POSITIVE_INFINITY);
+        wg.traceCamera(ray, wg.newScratch(), out);
+        assertArrayEquals(new double[] {0.5, 0.5, 0.5}, java.util.Arrays.copyOf(out, 3), 1e-12);
+    }
+
     private static String sceneText() {
         return """
                 settings { width 40 height 30 samples 4 seed 9 ambient 0 }
