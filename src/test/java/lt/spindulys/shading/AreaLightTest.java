@@ -225,6 +225,43 @@ class AreaLightTest {
         assertArrayEquals(new double[] {0.5, 0.5, 0.5}, java.util.Arrays.copyOf(out, 3), 1e-12);
     }
 
+    /**
+     * A subdivision surface (the thesis's cube) casts a soft shadow's umbra on the floor below it
+     * and receives one from a sphere above it, while the floor beside it is lit.
+     */
+    @Test
+    void subdivisionSurfacesCastAndReceiveSoftShadows() {
+        double[] shaded = subdivProbes(true), open = subdivProbes(false);
+        assertEquals(0, shaded[0], "the cube's top in the sphere's umbra");
+        assertTrue(open[0] > 0, "the cube's top lit without the sphere");
+        assertEquals(0, shaded[1], "the floor in the cube's umbra");
+        assertTrue(shaded[2] > 0, "the floor beside the cube is lit");
+    }
+
+    /** Brightness, over 64 samples, of the cube's top, the floor under it and the floor beside it. */
+    private static double[] subdivProbes(boolean sphere) {
+        Scene scene = SceneParser.parse("settings { ambient 0 }\n"
+                + "disclight { center 0 6 0 radius 0.5 }\n"
+                + (sphere ? "sphere { center 0 3 0 radius 0.8 material { kd 1 ka 0 } }\n" : "")
+                + "subdiv { file \"models/cube.dat\" level 3 material { kd 1 ka 0 } }\n"
+                + "plane { normal 0 1 0 offset -1.2 material { kd 1 ka 0 } }\n", "cube.dat", Path.of("scenes")).build();
+        WhittedIntegrator w = new WhittedIntegrator(scene);
+        TracerScratch s = w.newScratch();
+        Ray ray = new Ray();
+        double[] out = new double[4];
+        double[][] probes = {{0, 2, 0}, {0, -1.15, 0}, {4, -1.15, 0}};
+        double[] seen = new double[3];
+        for (int k = 0; k < probes.length; k++) {
+            for (int i = 0; i < 64; i++) {
+                s.setSample(11, k, 0, i, 64);
+                ray.set(probes[k][0], probes[k][1], probes[k][2], 0, -1, 0, 0, Double.POSITIVE_INFINITY);
+                w.traceCamera(ray, s, out);
+                seen[k] += out[0] / 64;
+            }
+        }
+        return seen;
+    }
+
     private static String sceneText() {
         return """
                 settings { width 40 height 30 samples 4 seed 9 ambient 0 }
