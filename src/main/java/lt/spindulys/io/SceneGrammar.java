@@ -62,7 +62,10 @@ final class SceneGrammar {
 
     /** What a block makes, which decides how the parser turns its keys into builder calls. */
     enum Category {
-        SETTINGS, CAMERA, LIGHT, MATERIAL,
+        SETTINGS, CAMERA, LIGHT,
+        /** The lat-long image that rays hitting nothing see (scene.Environment). */
+        ENVIRONMENT,
+        MATERIAL,
         /** A named texture: an image or a procedural pattern. */
         TEXTURE,
         /** A texture binding nested in a material (not a statement). */
@@ -161,6 +164,12 @@ final class SceneGrammar {
             opt("color", Kind.COLOR, Color.WHITE),
             opt("intensity", Kind.NUMBER, 1.0),
             choice("falloff", "none", "none", "inverse-square")));
+
+    // Rotation about the up axis (+Y) in degrees; intensity scales every value (scene.Environment).
+    static final Block ENVIRONMENT = new Block("environment", Category.ENVIRONMENT, false, List.of(
+            req("file", Kind.STRING),
+            opt("rotate", Kind.NUMBER, 0.0),
+            opt("intensity", Kind.NUMBER, 1.0)));
 
     static final Block MATERIAL = new Block("material", Category.MATERIAL, false, List.of(
             opt("color", Kind.COLOR),
@@ -269,7 +278,7 @@ final class SceneGrammar {
     static final Block DIFFERENCE = new Block("difference", Category.CSG, true, OBJECT_COMMON);
 
     /** Every top-level statement, in documentation order. */
-    static final List<Block> STATEMENTS = List.of(SETTINGS, CAMERA, LIGHT, TEXTURE, MATERIAL, SPHERE, PLANE, BOX, CYLINDER, TRIANGLE, MESH, SUBDIV,
+    static final List<Block> STATEMENTS = List.of(SETTINGS, CAMERA, LIGHT, ENVIRONMENT, TEXTURE, MATERIAL, SPHERE, PLANE, BOX, CYLINDER, TRIANGLE, MESH, SUBDIV,
             UNION, INTERSECTION, DIFFERENCE);
 
     /** An object statement whose objects may be CSG operands. */

@@ -6,6 +6,7 @@ import lt.spindulys.math.Ray;
 import lt.spindulys.trace.TracedObject;
 import lt.spindulys.trace.Hit;
 import lt.spindulys.material.Material;
+import lt.spindulys.scene.Environment;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
@@ -28,6 +29,9 @@ import lt.spindulys.texture.Channel;
  * <p>Textures ({@link TextureShading}): a material's bound channels are evaluated at each shaded
  * hit before lighting (colour, ks, kr, kt, emission, bumped shading normal), with a footprint from
  * the path length and the camera's pixel angle; shadow rays evaluate transparency textures.
+ *
+ * <p>A ray that hits nothing sees the scene's {@link Environment} along its direction if it has
+ * one (so mirrors and glass show it), else the background colour.
  */
 public final class WhittedIntegrator {
     /** Surfaces a shadow ray may cross before the light counts as blocked. */
@@ -36,6 +40,8 @@ public final class WhittedIntegrator {
     private final Scene scene;
     private final RenderSettings settings;
     private final PointLight[] lights;
+    /** What rays that hit nothing see, or null for the background colour. */
+    private final Environment environment;
     private final boolean transparentShadows;
     /** Angle between the primary rays of neighbouring pixels at the image centre, radians (texture footprints). */
     private final double pixelAngle;
@@ -51,6 +57,7 @@ public final class WhittedIntegrator {
         this.scene = scene;
         this.settings = scene.settings();
         this.lights = scene.lightArray();
+        this.environment = scene.environment();
         this.transparentShadows = scene.hasTransparentObjects();
         this.pixelAngle = pixelAngle(scene);
         double power = 0;
@@ -137,8 +144,12 @@ public final class WhittedIntegrator {
         Material medium = s.innermost();
         double dlen = Math.sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
         if (!scene.intersect(ray, hit, s.ctx)) {
-            Color bg = settings.background();
-            out[0] = bg.r(); out[1] = bg.g(); out[2] = bg.b();
+            if (environment != null) {
+                environment.lookup(ray.dx / dlen, ray.dy / dlen, ray.dz / dlen, out);
+            } else {
+                Color bg = settings.background();
+                out[0] = bg.r(); out[1] = bg.g(); out[2] = bg.b();
+            }
             if (medium != null) attenuate(medium, Double.POSITIVE_INFINITY, out);
             return;
         }
