@@ -20,13 +20,13 @@ import lt.spindulys.texture.TextureCache;
 
 /** The environment statement: its keys, its image (shared with textures), and its errors, located. */
 class SceneParserEnvironmentTest {
-    private static final Path SCENES = Path.of("scenes");
+    private static final Path FOLDER = Path.of("textures");
 
     @TempDir
     Path dir;
 
     private static SceneBuilder parse(String text) {
-        return SceneParser.parse(text, "t.dat", SCENES);
+        return SceneParser.parse(text, "t.dat", FOLDER);
     }
 
     private static String error(String text) {
@@ -45,14 +45,14 @@ class SceneParserEnvironmentTest {
         assertEquals(1.5, e.intensity());
         assertSame(((ImageTexture) b.material("m").texture(lt.spindulys.texture.Channel.DIFFUSE)).image(), e.map());
         // Linear values, as read from the file.
-        assertEquals(new TextureCache().load(SCENES.resolve("sky.hdr")).texel(0, 3, 5, 1), e.map().texel(0, 3, 5, 1));
+        assertEquals(new TextureCache().load(FOLDER.resolve("sky.hdr")).texel(0, 3, 5, 1), e.map().texel(0, 3, 5, 1));
 
         Environment d = parse("environment { file \"sky.hdr\" }").environment();
         assertEquals(0.0, d.rotateDegrees());
         assertEquals(1.0, d.intensity());
         assertNull(parse("sphere { }").environment());
         // A PNG map is sRGB-decoded, as textures are.
-        Environment png = parse("environment { file \"../textures/grid.png\" }").environment();
+        Environment png = parse("environment { file \"grid.png\" }").environment();
         int code = new java.awt.Color(javax.imageio.ImageIO.read(Path.of("textures/grid.png").toFile()).getRGB(0, 0)).getGreen();
         assertEquals(TextureCache.srgbToLinear(code / 255.0), png.map().texel(0, 0, 0, 1), 1e-6);
     }

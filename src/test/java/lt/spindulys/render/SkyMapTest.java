@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Test;
 import lt.spindulys.texture.HdrWriter;
 
 /**
- * The synthetic sky of scenes/environment.dat, scenes/sky.hdr, is made by {@link #sky} and written
+ * The synthetic sky of scenes/environment.dat, textures/sky.hdr, is made by {@link #sky} and written
  * by our own RGBE writer; this keeps the committed file reproducible (rewrite it with
  * {@code java -cp target/classes:target/test-classes lt.spindulys.render.SkyMapTest}).
  *
@@ -24,7 +24,7 @@ import lt.spindulys.texture.HdrWriter;
  */
 class SkyMapTest {
     static final int W = 512, H = 256;
-    static final Path FILE = Path.of("scenes/sky.hdr");
+    static final Path FILE = Path.of("textures/sky.hdr");
 
     static float[] sky() {
         float[] f = new float[3 * W * H];
