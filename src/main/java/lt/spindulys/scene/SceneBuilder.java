@@ -47,7 +47,7 @@ public final class SceneBuilder {
     private Environment environment;
 
     /**
-     * A new builder with everything given to this one so far (settings, camera, lights, objects,
+     * A new builder with everything given to this one so far (settings, camera, lights, environment, objects,
      * named materials, frame source); later changes to either do not reach the other. The objects
      * themselves are shared, not copied: building never changes them.
      *
