@@ -84,7 +84,7 @@ public final class Environment {
      * atan2(y, x) in [-pi, pi], within 1e-7 radians (a hundred-thousandth of a texel of a
      * 4096-wide map). Math.atan2 and Math.acos are fdlibm's, about 60 ns each, most of a lookup's
      * time; this is an octant reduction to |t| <= tan(pi/8) and the odd Taylor series of atan up
-     * to t^15 (remainder below 0.4143^17 / 17 = 3e-8).
+     * to t^15 (remainder below 0.4143^17 / 17 = 2e-8).
      */
     static double atan2(double y, double x) {
         double ax = Math.abs(x), ay = Math.abs(y);
