@@ -53,7 +53,12 @@ final class SceneAssetCache {
      * an error at the value if it cannot be read.
      */
     TextureImage image(Prop image) {
-        Path path = existingFile(image, "texture image");
+        return image(image, "texture image");
+    }
+
+    /** Likewise, for an image that {@code what} names in messages ("texture image", "environment image"). */
+    TextureImage image(Prop image, String what) {
+        Path path = existingFile(image, what);
         TextureImage img;
         try {
             img = textureCache.load(path);
@@ -61,7 +66,7 @@ final class SceneAssetCache {
             // The cache says "FILE: reason"; the scene location and the name as written replace FILE.
             String reason = String.valueOf(e.getMessage());
             if (reason.startsWith(path + ": ")) reason = reason.substring(path.toString().length() + 2);
-            throw err.error(image.valueAt(), "cannot read texture image " + MessageText.quote((String) image.value()) + ": " + reason);
+            throw err.error(image.valueAt(), "cannot read " + what + " " + MessageText.quote((String) image.value()) + ": " + reason);
         }
         return img;
     }

@@ -62,9 +62,12 @@ final class SceneGrammar {
 
     /** What a block makes, which decides how the parser turns its keys into builder calls. */
     enum Category {
-        SETTINGS, CAMERA, LIGHT, MATERIAL,
+        SETTINGS, CAMERA, LIGHT,
         /** A light with an extent (scene.AreaLight): rectangle, disc or sphere. */
         AREA_LIGHT,
+        /** The lat-long image that rays hitting nothing see (scene.Environment). */
+        ENVIRONMENT,
+        MATERIAL,
         /** A named texture: an image or a procedural pattern. */
         TEXTURE,
         /** A texture binding nested in a material (not a statement). */
@@ -196,6 +199,12 @@ final class SceneGrammar {
             opt("power", Kind.NUMBER),
             opt("samples", Kind.INTEGER, 1)));
 
+    // Rotation about the up axis (+Y) in degrees; intensity scales every value (scene.Environment).
+    static final Block ENVIRONMENT = new Block("environment", Category.ENVIRONMENT, false, List.of(
+            req("file", Kind.STRING),
+            opt("rotate", Kind.NUMBER, 0.0),
+            opt("intensity", Kind.NUMBER, 1.0)));
+
     static final Block MATERIAL = new Block("material", Category.MATERIAL, false, List.of(
             opt("color", Kind.COLOR),
             opt("ka", Kind.NUMBER),
@@ -303,7 +312,7 @@ final class SceneGrammar {
     static final Block DIFFERENCE = new Block("difference", Category.CSG, true, OBJECT_COMMON);
 
     /** Every top-level statement, in documentation order. */
-    static final List<Block> STATEMENTS = List.of(SETTINGS, CAMERA, LIGHT, RECTLIGHT, DISCLIGHT, SPHERELIGHT, TEXTURE, MATERIAL, SPHERE, PLANE, BOX, CYLINDER, TRIANGLE, MESH, SUBDIV,
+    static final List<Block> STATEMENTS = List.of(SETTINGS, CAMERA, LIGHT, RECTLIGHT, DISCLIGHT, SPHERELIGHT, ENVIRONMENT, TEXTURE, MATERIAL, SPHERE, PLANE, BOX, CYLINDER, TRIANGLE, MESH, SUBDIV,
             UNION, INTERSECTION, DIFFERENCE);
 
     /** An object statement whose objects may be CSG operands. */

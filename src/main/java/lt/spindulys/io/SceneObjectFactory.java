@@ -32,6 +32,7 @@ import lt.spindulys.scene.GObject;
 import lt.spindulys.material.Material;
 import lt.spindulys.scene.Plane;
 import lt.spindulys.scene.AreaLight;
+import lt.spindulys.scene.Environment;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Sphere;
@@ -193,6 +194,16 @@ final class SceneObjectFactory {
     }
 
     /** A light block's point light. */
+    /** An environment block's environment: its image read once per parse (shared with textures naming the same file). */
+    Environment environment(Props p) {
+        TextureImage map = assets.image(p.prop("file"), "environment image");
+        try {
+            return new Environment(map, p.num("rotate"), p.num("intensity"));
+        } catch (IllegalArgumentException e) {
+            throw err.blame(p, e);
+        }
+    }
+
     PointLight light(Props p) {
         PointLight.Falloff falloff = switch ((String) p.get("falloff")) {
             case "none" -> PointLight.Falloff.NONE;

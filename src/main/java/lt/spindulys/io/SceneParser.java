@@ -46,7 +46,7 @@ public final class SceneParser {
     private final SceneBlockReader in;
     private final SceneObjectFactory objects;
     private final SceneBuilder builder = new SceneBuilder();
-    private Token settingsAt, cameraAt;
+    private Token settingsAt, cameraAt, environmentAt;
     /** Where each named material was defined, for "already defined at" and suggestions. */
     private final Map<String, Token> materialsAt = new LinkedHashMap<>();
     /** Named textures and where each was defined. */
@@ -138,6 +138,7 @@ public final class SceneParser {
             case CAMERA -> camera(kw);
             case LIGHT -> light(kw);
             case AREA_LIGHT -> areaLight(b, kw);
+            case ENVIRONMENT -> environment(kw);
             case MATERIAL -> namedMaterial(kw);
             case TEXTURE -> texture(kw);
             case OBJECT, CSG -> builder.add(objects.object(in.block(b, kw, null)));
@@ -197,6 +198,13 @@ public final class SceneParser {
         } catch (IllegalArgumentException e) {
             throw err.blame(p, e);
         }
+    }
+
+    /** environment { file "..." rotate DEGREES intensity I }: at most once. */
+    private void environment(Token kw) {
+        if (environmentAt != null) throw error(kw, "environment is already defined at " + environmentAt.position());
+        environmentAt = kw;
+        builder.environment(objects.environment(in.block(SceneGrammar.ENVIRONMENT, kw, null)));
     }
 
     private void namedMaterial(Token kw) {

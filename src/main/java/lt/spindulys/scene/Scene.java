@@ -35,6 +35,7 @@ public final class Scene {
     private final Accelerator accel;
     private final int objectIds;
     private final boolean transparent;
+    private final Environment environment;
 
     /**
      * Builds the scene from copies of {@code given}: see {@link SceneBuilder#build()}.
@@ -42,8 +43,9 @@ public final class Scene {
      * @throws IllegalArgumentException if an object cannot be placed (a {@link SceneBuildException}
      *         naming it) or the copies would not fit in the heap
      */
-    Scene(RenderSettings settings, Camera camera, List<PointLight> lights, List<AreaLight> areaLights, List<GObject> given) {
+    Scene(RenderSettings settings, Camera camera, List<PointLight> lights, List<AreaLight> areaLights, List<GObject> given, Environment environment) {
         this.settings = settings.checkTimeSteps();
+        this.environment = environment;
         this.camera = camera;
         this.lights = List.copyOf(lights);
         this.lightArray = lights.toArray(new PointLight[0]);
@@ -149,6 +151,13 @@ public final class Scene {
      * @return the render settings, never null
      */
     public RenderSettings settings() { return settings; }
+
+    /**
+     * What rays that hit nothing see instead of the background colour, or null for the colour.
+     *
+     * @return the environment, or null
+     */
+    public Environment environment() { return environment; }
     /**
      * The camera the scene is rendered through.
      *

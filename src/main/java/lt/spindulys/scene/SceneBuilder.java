@@ -45,9 +45,10 @@ public final class SceneBuilder {
     private final List<GObject> objects = new ArrayList<>();
     private final Map<String, Material> materials = new LinkedHashMap<>();
     private String frameSource;
+    private Environment environment;
 
     /**
-     * A new builder with everything given to this one so far (settings, camera, lights, objects,
+     * A new builder with everything given to this one so far (settings, camera, lights, environment, objects,
      * named materials, frame source); later changes to either do not reach the other. The objects
      * themselves are shared, not copied: building never changes them.
      *
@@ -63,6 +64,7 @@ public final class SceneBuilder {
         c.objects.addAll(objects);
         c.materials.putAll(materials);
         c.frameSource = frameSource;
+        c.environment = environment;
         return c;
     }
 
@@ -225,7 +227,7 @@ public final class SceneBuilder {
      */
     public Scene build() {
         Camera c = camera != null ? camera : DEFAULT_CAMERA;
-        return new Scene(settings, c, lights, areaLights, objects);
+        return new Scene(settings, c, lights, areaLights, objects, environment);
     }
 
     /**
@@ -244,6 +246,22 @@ public final class SceneBuilder {
      * @return the place recorded, or null
      */
     public String frameSource() { return frameSource; }
+
+    /**
+     * Sets what rays that hit nothing see: a lat-long image instead of the settings' background
+     * colour (see {@link Environment} for its orientation); null goes back to the colour.
+     *
+     * @param e the environment, or null
+     * @return this builder, for chaining
+     */
+    public SceneBuilder environment(Environment e) { environment = e; return this; }
+
+    /**
+     * The environment set, or null.
+     *
+     * @return the environment, or null
+     */
+    public Environment environment() { return environment; }
 
     /**
      * Convenience for code: the ambient light intensity.

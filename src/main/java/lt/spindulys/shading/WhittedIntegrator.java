@@ -8,6 +8,7 @@ import lt.spindulys.trace.Hit;
 import lt.spindulys.material.Material;
 import lt.spindulys.sampling.Rng;
 import lt.spindulys.scene.AreaLight;
+import lt.spindulys.scene.Environment;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
@@ -36,6 +37,9 @@ import lt.spindulys.texture.Channel;
  * <p>Textures ({@link TextureShading}): a material's bound channels are evaluated at each shaded
  * hit before lighting (colour, ks, kr, kt, emission, bumped shading normal), with a footprint from
  * the path length and the camera's pixel angle; shadow rays evaluate transparency textures.
+ *
+ * <p>A ray that hits nothing sees the scene's {@link Environment} along its direction if it has
+ * one (so mirrors and glass show it), else the background colour.
  */
 public final class WhittedIntegrator {
     /** Surfaces a shadow ray may cross before the light counts as blocked. */
@@ -45,6 +49,8 @@ public final class WhittedIntegrator {
     private final RenderSettings settings;
     private final PointLight[] lights;
     private final AreaLight[] areaLights;
+    /** What rays that hit nothing see, or null for the background colour. */
+    private final Environment environment;
     private final boolean transparentShadows;
     /** Angle between the primary rays of neighbouring pixels at the image centre, radians (texture footprints). */
     private final double pixelAngle;
@@ -61,6 +67,7 @@ public final class WhittedIntegrator {
         this.settings = scene.settings();
         this.lights = scene.lightArray();
         this.areaLights = scene.areaLightArray();
+        this.environment = scene.environment();
         this.transparentShadows = scene.hasTransparentObjects();
         this.pixelAngle = pixelAngle(scene);
         double power = 0;
@@ -160,8 +167,12 @@ public final class WhittedIntegrator {
             }
         }
         if (!found) {
-            Color bg = settings.background();
-            out[0] = bg.r(); out[1] = bg.g(); out[2] = bg.b();
+            if (environment != null) {
+                environment.lookup(ray.dx / dlen, ray.dy / dlen, ray.dz / dlen, out);
+            } else {
+                Color bg = settings.background();
+                out[0] = bg.r(); out[1] = bg.g(); out[2] = bg.b();
+            }
             if (medium != null) attenuate(medium, Double.POSITIVE_INFINITY, out);
             return;
         }

@@ -27,8 +27,10 @@ import lt.spindulys.limits.InputFiles;
  * path to its {@link TextureImage}, so every object naming the same file shares one instance
  * (and one mip chain).
  *
- * <p>Formats: {@code .tga} files are read by {@link TgaReader}; everything else by
- * javax.imageio, which recognises PNG, JPEG, BMP and GIF by their contents. Alpha is ignored;
+ * <p>Formats: {@code .tga} files are read by {@link TgaReader}, {@code .hdr} (Radiance RGBE) by
+ * {@link HdrReader} and {@code .pfm} by {@link PfmReader} (both high dynamic range, LINEAR, kept
+ * as three floats a texel); everything else by javax.imageio, which recognises PNG, JPEG, BMP and
+ * GIF by their contents. Alpha is ignored;
  * 16-bit colour images are reduced to 8 bits per channel (16-bit greyscale keeps its precision).
  *
  * <p>Colour: 8-bit colour images are taken as sRGB-encoded and decoded to linear with the exact
@@ -86,7 +88,7 @@ public final class TextureCache {
      * The image in {@code file}, loaded on the first request for its normalised absolute path and
      * shared afterwards.
      *
-     * @param file the image file (TGA, PNG or JPEG)
+     * @param file the image file (TGA, HDR, PFM, PNG or JPEG)
      * @return the image
      * @throws IOException "FILE: reason" if the file is missing, unreadable, corrupt, of an
      *         unsupported kind, or larger than {@link #MAX_PIXELS}
@@ -174,6 +176,10 @@ public final class TextureCache {
         if (name.endsWith(".tga")) {
             TgaReader.Image t = TgaReader.read(file);
             return fromRgb8(t.width(), t.height(), t.rgb(), !t.grey());
+        }
+        if (name.endsWith(".hdr") || name.endsWith(".pfm")) {
+            HdrReader.Image f = name.endsWith(".hdr") ? HdrReader.read(file) : PfmReader.read(file);
+            return TextureImage.wrap(f.width(), f.height(), f.rgb());
         }
         try (ImageInputStream in = ImageIO.createImageInputStream(file.toFile())) {
             if (in == null) throw new IOException("cannot open the file");

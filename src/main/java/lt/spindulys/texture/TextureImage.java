@@ -71,7 +71,7 @@ public final class TextureImage {
         }
         float[] f = new float[rgb.length];
         for (int i = 0; i < f.length; i++) {
-            // The bound keeps pixels finite (see Ranges); images read from files hold 0..1.
+            // The bound keeps pixels finite (see Ranges); 8-bit images hold 0..1, HDR and PFM ones are clamped to it.
             if (!(Math.abs(rgb[i]) <= Ranges.MAX_COLOUR)) {
                 throw new IllegalArgumentException("texel value " + rgb[i] + " at index " + i + " (texel values must be between -"
                         + Ranges.show(Ranges.MAX_COLOUR) + " and " + Ranges.show(Ranges.MAX_COLOUR) + ")");
