@@ -119,9 +119,12 @@ final class PeerInputs {
                 .append(BenchMeshes.number(v.radiantIntensity() / (2 * Math.PI)));
         PeerView.Area a = v.area();
         if (a != null) {
-            // jitter and adaptive 0: every sample of the grid traced, each at a random spot in its cell.
+            // jitter and adaptive 0: every sample of the grid traced, each at a random spot in its cell;
+            // area_illumination: each sample shades from its own direction, as ours do (by default
+            // POV-Ray shades from the centre only, and a face turned from the centre stays black).
             s.append("\n  area_light ").append(vector(a.axis1())).append(", ").append(vector(a.axis2())).append(", ")
-                    .append(a.grid()).append(", ").append(a.grid()).append(" adaptive 0 jitter").append(a.disc() ? " circular" : "").append("\n ");
+                    .append(a.grid()).append(", ").append(a.grid()).append(" adaptive 0 jitter").append(a.disc() ? " circular" : "")
+                    .append(" area_illumination on\n ");
         }
         s.append(" fade_distance 1 fade_power 2 }\n");
         s.append("#declare BenchGrey = texture { pigment { color rgb 0.8 } finish { ambient 0 diffuse 1 } }\n");
