@@ -97,6 +97,10 @@ final class BenchCommand {
                             + "1280x720, 16 spp with 1 light sample each, %d threads; beside POV-Ray's 4x4 jittered area_light "
                             + "(1 primary ray and 16 shadow rays per pixel; target: at least 2x its speed)", BenchCommand.THREADS),
                     (b, out) -> b.peerScene(out, BenchMeshes.size("1k"), "soft-shadow", PeerBench.Targets.issue20())),
+            new Row("soft-shadow-light16", "Soft shadows",
+                    String.format(Locale.ROOT, "scenes/bench/soft-shadow-light16.dat: soft-shadow at 1 spp with 16 light samples, %d threads: "
+                            + "the same rays per pixel as POV-Ray's 4x4 area_light (1 camera ray, 16 shadow rays)", BenchCommand.THREADS),
+                    (b, out) -> b.peerScene(out, BenchMeshes.size("1k"), "soft-shadow-light16", PeerBench.Targets.issue20())),
             new Row("csg-subdiv", "CSG",
                     "scenes/bench/csg-subdiv.dat: difference of two level-4 subdivision surfaces, 1280x720, 1 spp, 2 threads; "
                             + "beside csg-subdiv-plain.dat, the same two surfaces without CSG (target: at least half its speed)",
@@ -325,9 +329,11 @@ final class BenchCommand {
                 @Override public double cold() throws IOException { return coldOnce(scene, accel); }
             });
             if (soft && which.contains(PeerBench.Peer.POVRAY)) {
-                out.printf("  %s: equal shadow rays (%d per pixel, one per sample); not equal: we trace %d camera rays per pixel at%n",
-                        label, parsed.settings().samplesPerPixel(), parsed.settings().samplesPerPixel());
-                out.println("  stratified spots, POV-Ray one at the pixel centre (no anti-aliasing), so its edges are aliased and ours are not.");
+                int spp = parsed.settings().samplesPerPixel();
+                out.printf("  %s: equal shadow rays (%d per pixel; POV-Ray: a %dx%d jittered area_light, adaptive 0); camera rays per%n",
+                        label, view.area().grid() * view.area().grid(), view.area().grid(), view.area().grid());
+                out.println(spp == 1 ? "  pixel equal too: one, at the pixel centre on both sides (no anti-aliasing)."
+                        : "  pixel not equal: we trace " + spp + " at stratified spots, POV-Ray one at the pixel centre (no anti-aliasing).");
             }
         }
     }

@@ -62,9 +62,9 @@ record PeerView(Vec3 eye, Vec3 at, Vec3 up, double verticalFov, int width, int h
     }
 
     /**
-     * The soft-shadow view of {@code scene}: one white rectangle or disc light with one light
-     * sample, no point light, a pinhole camera. Each pixel's {@code samples} shadow rays become a
-     * grid x grid area_light, so the pixel samples must be a square. The radiant intensity is
+     * The soft-shadow view of {@code scene}: one white rectangle or disc light, no point light, a
+     * pinhole camera. Each pixel's shadow rays (pixel samples x light samples) become a grid x
+     * grid area_light, so their number must be a square. The radiant intensity is
      * the light's straight below it, radiance x area x pi (its light-side cosine is then 1), so
      * that the point light's conversion in {@link PeerInputs#povScene} carries over.
      *
@@ -76,11 +76,11 @@ record PeerView(Vec3 eye, Vec3 at, Vec3 up, double verticalFov, int width, int h
             throw new IOException("a soft-shadow peer view needs exactly one area light and no point light");
         }
         AreaLight l = scene.areaLights().get(0);
-        if (l.shape() == AreaLight.Shape.SPHERE || l.samples() != 1 || l.color().r() != 1 || l.color().g() != 1 || l.color().b() != 1) {
-            throw new IOException("a soft-shadow peer view needs a white rectangle or disc light with samples 1");
+        if (l.shape() == AreaLight.Shape.SPHERE || l.color().r() != 1 || l.color().g() != 1 || l.color().b() != 1) {
+            throw new IOException("a soft-shadow peer view needs a white rectangle or disc light");
         }
-        int spp = scene.settings().samplesPerPixel(), grid = (int) Math.round(Math.sqrt(spp));
-        if (grid * grid != spp) throw new IOException("a soft-shadow peer view needs square samples per pixel, found " + spp);
+        int rays = scene.settings().samplesPerPixel() * l.samples(), grid = (int) Math.round(Math.sqrt(rays));
+        if (grid * grid != rays) throw new IOException("a soft-shadow peer view needs a square number of shadow rays per pixel, found " + rays);
         return new PeerView(cam.eye(), cam.lookAt(), cam.up(), cam.fovDegrees(), scene.settings().width(), scene.settings().height(),
                 l.center(), l.intensity() * l.area() * Math.PI, List.copyOf(meshes),
                 new Area(l.shape() == AreaLight.Shape.DISC, l.halfU().times(2), l.halfV().times(2), grid));

@@ -138,7 +138,7 @@ class PeerInputsTest {
         assertFalse(PeerInputs.povScene(VIEW, List.of()).contains("area_light"));
     }
 
-    /** A soft-shadow view needs one white rect or disc light with one sample, no point light, and square pixel samples. */
+    /** A soft-shadow view needs one white rect or disc light, no point light, and a square number of shadow rays per pixel. */
     @Test
     void softShadowViewRefusesOtherScenes() {
         String base = """
@@ -147,8 +147,8 @@ class PeerInputsTest {
                 """;
         String disc = "disclight { center 0 4 0  normal 0 -1 0  radius 0.5  intensity 4  samples 1 }\n";
         for (String[] bad : new String[][] {
-                {base.replace("samples 16", "samples 8") + disc, "square samples per pixel, found 8"},
-                {base + disc.replace("samples 1", "samples 2"), "samples 1"},
+                {base.replace("samples 16", "samples 8") + disc, "square number of shadow rays per pixel, found 8"},
+                {base + disc.replace("samples 1", "samples 2"), "square number of shadow rays per pixel, found 32"},
                 {base + "spherelight { center 0 4 0  radius 0.5  intensity 4 }\n", "rectangle or disc"},
                 {base + disc + "light { position 3 5 2  falloff inverse-square }\n", "no point light"},
                 {base, "exactly one area light"}}) {
@@ -172,6 +172,11 @@ class PeerInputsTest {
         assertTrue(soft.contains("mesh { file \"meshes/ground.obj\""));
         PeerView v = PeerView.ofArea(SceneParser.parse(soft.replaceAll("(?m)^mesh .*$", ""), "soft-shadow.dat", Path.of(".")), List.of());
         assertEquals(4, v.area().grid());
+        // The equal-rays twin: 1 sample per pixel, 16 light samples, the same 4x4 grid.
+        String light16 = Files.readString(Path.of("scenes", "bench", "soft-shadow-light16.dat"));
+        assertEquals(soft.replace("samples 16", "samples 1").replace("samples 1 }", "samples 16 }").replaceAll("(?m)^#.*\\n", ""),
+                light16.replaceAll("(?m)^#.*\\n", ""));
+        assertEquals(4, PeerView.ofArea(SceneParser.parse(light16.replaceAll("(?m)^mesh .*$", ""), "l.dat", Path.of(".")), List.of()).area().grid());
     }
 
     @Test
