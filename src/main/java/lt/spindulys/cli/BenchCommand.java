@@ -328,7 +328,7 @@ final class BenchCommand {
                 @Override public Measured render() throws IOException { return renderOnce(scene, accel); }
                 @Override public double cold() throws IOException { return coldOnce(scene, accel); }
             });
-            if (soft && which.contains(PeerBench.Peer.POVRAY)) {
+            if (soft && which.contains(PeerBench.Peer.POVRAY) && ExternalTimer.onPath(PeerBench.Peer.POVRAY.program) != null) {
                 int spp = parsed.settings().samplesPerPixel();
                 out.printf("  %s: equal shadow rays (%d per pixel; POV-Ray: a %dx%d jittered area_light, adaptive 0); camera rays per%n",
                         label, view.area().grid() * view.area().grid(), view.area().grid(), view.area().grid());
