@@ -92,6 +92,15 @@ final class BenchCommand {
                     String.format(Locale.ROOT, "scenes/bench/torus-1m-close.dat: the 1m torus close up, filling the frame, "
                             + "1280x720, 1 spp, %d threads; in-process and cold process; beside the peers", BenchCommand.THREADS),
                     (b, out) -> b.peerScene(out, BenchMeshes.size("1m"), "torus-1m-close", PeerBench.Targets.issue18(0.8))),
+            new Row("soft-shadow", "Soft shadows",
+                    String.format(Locale.ROOT, "scenes/bench/soft-shadow.dat: the 1k torus on the ground quad under a 3x3 rectangle light, "
+                            + "1280x720, 16 spp with 1 light sample each, %d threads; beside POV-Ray's 4x4 jittered area_light "
+                            + "(1 primary ray and 16 shadow rays per pixel; target: at least 2x its speed)", BenchCommand.THREADS),
+                    (b, out) -> b.peerScene(out, BenchMeshes.size("1k"), "soft-shadow", PeerBench.Targets.issue20())),
+            new Row("soft-shadow-light16", "Soft shadows",
+                    String.format(Locale.ROOT, "scenes/bench/soft-shadow-light16.dat: soft-shadow at 1 spp with 16 light samples, %d threads: "
+                            + "the same rays per pixel as POV-Ray's 4x4 area_light (1 camera ray, 16 shadow rays)", BenchCommand.THREADS),
+                    (b, out) -> b.peerScene(out, BenchMeshes.size("1k"), "soft-shadow-light16", PeerBench.Targets.issue20())),
             new Row("csg-subdiv", "CSG",
                     "scenes/bench/csg-subdiv.dat: difference of two level-4 subdivision surfaces, 1280x720, 1 spp, 2 threads; "
                             + "beside csg-subdiv-plain.dat, the same two surfaces without CSG (target: at least half its speed)",
@@ -305,12 +314,27 @@ final class BenchCommand {
                 median(load), median(build), median(render), median(mrays), cold);
         for (String line : last.subdivision) out.println("    " + line);
         if (targets != null && !peers.isEmpty()) {
-            PeerView view = PeerView.of(SceneParser.parse(scene),
-                    List.of(meshes.resolve(size.file()).toAbsolutePath(), meshes.resolve(BenchMeshes.GROUND_FILE).toAbsolutePath()));
-            PeerBench.run(out, label, view, peers, runs, THREADS, targets, new PeerBench.Ours() {
+            List<Path> files = List.of(meshes.resolve(size.file()).toAbsolutePath(), meshes.resolve(BenchMeshes.GROUND_FILE).toAbsolutePath());
+            SceneBuilder parsed = SceneParser.parse(scene);
+            // A soft-shadow view goes to POV-Ray alone: its area_light is the peer of our area light here.
+            boolean soft = !parsed.areaLights().isEmpty();
+            PeerView view = soft ? PeerView.ofArea(parsed, files) : PeerView.of(parsed, files);
+            java.util.Set<PeerBench.Peer> which = peers;
+            if (soft) {
+                which = java.util.EnumSet.noneOf(PeerBench.Peer.class);
+                if (peers.contains(PeerBench.Peer.POVRAY)) which.add(PeerBench.Peer.POVRAY);
+            }
+            PeerBench.run(out, label, view, which, runs, THREADS, targets, new PeerBench.Ours() {
                 @Override public Measured render() throws IOException { return renderOnce(scene, accel); }
                 @Override public double cold() throws IOException { return coldOnce(scene, accel); }
             });
+            if (soft && which.contains(PeerBench.Peer.POVRAY) && ExternalTimer.onPath(PeerBench.Peer.POVRAY.program) != null) {
+                int spp = parsed.settings().samplesPerPixel();
+                out.printf("  %s: equal shadow rays (%d per pixel; POV-Ray: a %dx%d jittered area_light, adaptive 0); camera rays per%n",
+                        label, view.area().grid() * view.area().grid(), view.area().grid(), view.area().grid());
+                out.println(spp == 1 ? "  pixel equal too: one, at the pixel centre on both sides (no anti-aliasing)."
+                        : "  pixel not equal: we trace " + spp + " at stratified spots, POV-Ray one at the pixel centre (no anti-aliasing).");
+            }
         }
     }
 

@@ -102,7 +102,10 @@ final class PeerInputs {
      * horizontal field of view. Its point light with {@code fade_distance 1 fade_power 2}
      * scales by 2 / (1 + d^2) and its diffuse term has no 1/pi, so the colour that matches a
      * radiant intensity I with a Lambert BRDF is I / (2 pi) (off by d^2 / (1 + d^2), 3 % at the
-     * bench lights' 5-6 units).
+     * bench lights' 5-6 units). With the view's {@link PeerView.Area area}, the light is an
+     * {@code area_light} whose grid of point lights shares that colour; each sample lights as a
+     * point light, without our emitter's cosine at the light, so the two agree where that cosine
+     * is near 1 (beneath the light) and POV-Ray is brighter towards the sides.
      */
     static String povScene(PeerView v, List<String> includes) {
         StringBuilder s = new StringBuilder();
@@ -113,7 +116,17 @@ final class PeerInputs {
                 .append("\n  up y\n  angle ").append(String.format(Locale.ROOT, "%.4f", v.horizontalFov()))
                 .append("\n  look_at ").append(vector(v.at())).append("\n}\n");
         s.append("light_source { ").append(vector(v.light())).append(" color rgb ")
-                .append(BenchMeshes.number(v.radiantIntensity() / (2 * Math.PI))).append(" fade_distance 1 fade_power 2 }\n");
+                .append(BenchMeshes.number(v.radiantIntensity() / (2 * Math.PI)));
+        PeerView.Area a = v.area();
+        if (a != null) {
+            // jitter and adaptive 0: every sample of the grid traced, each at a random spot in its cell;
+            // area_illumination: each sample shades from its own direction, as ours do (by default
+            // POV-Ray shades from the centre only, and a face turned from the centre stays black).
+            s.append("\n  area_light ").append(vector(a.axis1())).append(", ").append(vector(a.axis2())).append(", ")
+                    .append(a.grid()).append(", ").append(a.grid()).append(" adaptive 0 jitter").append(a.disc() ? " circular" : "")
+                    .append(" area_illumination on\n ");
+        }
+        s.append(" fade_distance 1 fade_power 2 }\n");
         s.append("#declare BenchGrey = texture { pigment { color rgb 0.8 } finish { ambient 0 diffuse 1 } }\n");
         for (String inc : includes) {
             s.append("object {\n#include \"").append(inc).append("\"\n  texture { BenchGrey } }\n");

@@ -6,6 +6,7 @@ import java.util.List;
 
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.math.Vec3;
+import lt.spindulys.scene.AreaLight;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.SceneBuilder;
 
@@ -24,9 +25,23 @@ import lt.spindulys.scene.SceneBuilder;
  * @param light            the point light's position
  * @param radiantIntensity the light's radiant intensity, W/sr (with the 1/pi of a Lambert BRDF)
  * @param meshes           the OBJ files, in the scene's order
+ * @param area             for a soft-shadow view, the area light whose centre is {@code light};
+ *                         null for a point light
  */
 record PeerView(Vec3 eye, Vec3 at, Vec3 up, double verticalFov, int width, int height, Vec3 light, double radiantIntensity,
-                List<Path> meshes) {
+                List<Path> meshes, Area area) {
+    /** A point-light view. */
+    PeerView(Vec3 eye, Vec3 at, Vec3 up, double verticalFov, int width, int height, Vec3 light, double radiantIntensity, List<Path> meshes) {
+        this(eye, at, up, verticalFov, width, height, light, radiantIntensity, meshes, null);
+    }
+
+    /**
+     * A rectangle or disc light as POV-Ray's {@code area_light} is told it: its two full edge
+     * vectors (a disc's two diameters, with {@code circular}) and a {@code grid} x {@code grid}
+     * array of jittered samples.
+     */
+    record Area(boolean disc, Vec3 axis1, Vec3 axis2, int grid) {}
+
     /**
      * The view of {@code scene}, whose meshes are {@code meshes}. Our Whitted diffuse term is
      * kd * colour * cos, without the 1/pi of a Lambert BRDF, so the scene's intensity is the
@@ -44,6 +59,31 @@ record PeerView(Vec3 eye, Vec3 at, Vec3 up, double verticalFov, int width, int h
         }
         return new PeerView(cam.eye(), cam.lookAt(), cam.up(), cam.fovDegrees(), scene.settings().width(), scene.settings().height(),
                 l.position(), l.intensity() * Math.PI, List.copyOf(meshes));
+    }
+
+    /**
+     * The soft-shadow view of {@code scene}: one white rectangle or disc light, no point light, a
+     * pinhole camera. Each pixel's shadow rays (pixel samples x light samples) become a grid x
+     * grid area_light, so their number must be a square. The radiant intensity is
+     * the light's straight below it, radiance x area x pi (its light-side cosine is then 1), so
+     * that the point light's conversion in {@link PeerInputs#povScene} carries over.
+     *
+     * @throws IOException if the scene is not of that kind
+     */
+    static PeerView ofArea(SceneBuilder scene, List<Path> meshes) throws IOException {
+        if (!(scene.camera() instanceof PinholeCamera cam)) throw new IOException("a peer view needs a pinhole camera");
+        if (!scene.lights().isEmpty() || scene.areaLights().size() != 1) {
+            throw new IOException("a soft-shadow peer view needs exactly one area light and no point light");
+        }
+        AreaLight l = scene.areaLights().get(0);
+        if (l.shape() == AreaLight.Shape.SPHERE || l.color().r() != 1 || l.color().g() != 1 || l.color().b() != 1) {
+            throw new IOException("a soft-shadow peer view needs a white rectangle or disc light");
+        }
+        int rays = scene.settings().samplesPerPixel() * l.samples(), grid = (int) Math.round(Math.sqrt(rays));
+        if (grid * grid != rays) throw new IOException("a soft-shadow peer view needs a square number of shadow rays per pixel, found " + rays);
+        return new PeerView(cam.eye(), cam.lookAt(), cam.up(), cam.fovDegrees(), scene.settings().width(), scene.settings().height(),
+                l.center(), l.intensity() * l.area() * Math.PI, List.copyOf(meshes),
+                new Area(l.shape() == AreaLight.Shape.DISC, l.halfU().times(2), l.halfV().times(2), grid));
     }
 
     /** {@return the horizontal field of view in degrees, for the renderers that take that one} */

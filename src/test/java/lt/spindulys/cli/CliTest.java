@@ -230,18 +230,20 @@ class CliTest {
         assertTrue(list.out().startsWith("refine-bishop "), list.out());
         assertTrue(list.out().contains(System.lineSeparator() + "refine-loop-bishop "), list.out());
         assertTrue(list.out().contains(System.lineSeparator() + "torus-1m "), list.out());
+        assertTrue(list.out().contains(System.lineSeparator() + "soft-shadow            scenes/bench/soft-shadow.dat: "), list.out());
         assertTrue(list.out().contains(System.lineSeparator() + "adaptive-close         [adaptive] "), list.out());
         assertTrue(list.out().contains(System.lineSeparator() + "viewer                 [viewer] "), list.out());
         assertEquals(2, run("bench", "--cell-timeout", "0").status());
         Run unknown = run("bench", "--only", "nope");
         assertEquals(2, unknown.status());
-        assertEquals("render: unknown bench row 'nope' (rows: refine-bishop, refine-loop-bishop, torus-1k, torus-16k, torus-250k, torus-1m, knot-1m, torus-1m-close, csg-subdiv, motion-blur, "
+        assertEquals("render: unknown bench row 'nope' (rows: refine-bishop, refine-loop-bishop, torus-1k, torus-16k, torus-250k, torus-1m, knot-1m, torus-1m-close, soft-shadow, soft-shadow-light16, csg-subdiv, motion-blur, "
                 + "adaptive-close, adaptive-huge, adaptive-lazy, adaptive-cache, torus-1k-lazy, torus-1k-combined, torus-1k-level2, torus-1k-level2-lazy, viewer; "
                 + "groups: adaptive, viewer)" + System.lineSeparator(), unknown.err());
         // A list names rows and groups; each must exist.
         Run unknownInList = run("bench", "--only", "torus-1k,viewer,nope");
         assertEquals(2, unknownInList.status());
         assertTrue(unknownInList.err().startsWith("render: unknown bench row 'nope' (rows: "), unknownInList.err());
+        assertEquals(0, run("bench", "--only", "soft-shadow", "--list").status(), "--only takes the soft-shadow row");
         Run badPeer = run("bench", "--peers", "embree,sunflow");
         assertEquals(2, badPeer.status());
         assertEquals("render: unknown peer 'sunflow' in --peers (expected embree, povray, cycles or none)" + System.lineSeparator(), badPeer.err());

@@ -1,6 +1,7 @@
 package lt.spindulys.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -97,6 +98,65 @@ class PeerInputsTest {
         assertTrue(e.getMessage().contains("inverse-square"));
     }
 
+    /** A rectangle light becomes a 4x4 jittered, non-adaptive area_light with its full edges as axes. */
+    @Test
+    void povSceneOfARectangleLight() throws IOException {
+        String scene = """
+                settings { width 1280 height 720 samples 16 }
+                camera { eye 0 2.5 3.5  lookat 0 -0.2 0  up 0 1 0  fov 40 }
+                rectlight { center 1.5 4 -1.5  normal 0 -1 0  tangent 1 0 0  width 3  height 2  intensity 2.2  onesided true  samples 1 }
+                """;
+        PeerView v = PeerView.ofArea(SceneParser.parse(scene, "s.dat", Path.of(".")), List.of(Path.of("a.obj")));
+        // 2.2 x 6 x pi W/sr straight below; / (2 pi) = 6.6
+        assertEquals(2.2 * 6 * Math.PI, v.radiantIntensity(), 1e-9);
+        String pov = PeerInputs.povScene(v, List.of("a.inc"));
+        assertTrue(pov.contains("light_source { <1.5,4,-1.5> color rgb 6.6\n  area_light <3,0,0>, <0,0,2>, 4, 4 adaptive 0 jitter area_illumination on\n  "
+                + "fade_distance 1 fade_power 2 }"), pov);
+        assertFalse(pov.contains("circular"), pov);
+    }
+
+    /** A disc light becomes a circular area_light whose axes are two diameters; the grid is the square root of the samples. */
+    @Test
+    void povSceneOfADiscLight() throws IOException {
+        String scene = """
+                settings { width 640 height 360 samples 9 }
+                camera { eye 0 2.5 3.5  lookat 0 -0.2 0  up 0 1 0  fov 40 }
+                disclight { center 0 4 0  normal 0 -1 0  radius 0.5  intensity 4  samples 1 }
+                """;
+        PeerView v = PeerView.ofArea(SceneParser.parse(scene, "s.dat", Path.of(".")), List.of());
+        assertEquals(3, v.area().grid());
+        assertTrue(v.area().disc());
+        assertEquals(1, v.area().axis1().length(), 1e-12);
+        assertEquals(1, v.area().axis2().length(), 1e-12);
+        assertEquals(0, v.area().axis1().dot(v.area().axis2()), 1e-12);
+        assertEquals(0, v.area().axis1().dot(new Vec3(0, 1, 0)), 1e-12);
+        String pov = PeerInputs.povScene(v, List.of());
+        // 4 x pi 0.25 x pi / (2 pi) = pi / 2
+        assertTrue(pov.contains("light_source { <0,4,0> color rgb 1.570796\n  area_light <"), pov);
+        assertTrue(pov.contains(">, 3, 3 adaptive 0 jitter circular area_illumination on\n  fade_distance 1 fade_power 2 }"), pov);
+        // Point-light views keep their one-line light_source.
+        assertFalse(PeerInputs.povScene(VIEW, List.of()).contains("area_light"));
+    }
+
+    /** A soft-shadow view needs one white rect or disc light, no point light, and a square number of shadow rays per pixel. */
+    @Test
+    void softShadowViewRefusesOtherScenes() {
+        String base = """
+                settings { width 640 height 360 samples 16 }
+                camera { eye 0 2.5 3.5  lookat 0 -0.2 0  up 0 1 0  fov 40 }
+                """;
+        String disc = "disclight { center 0 4 0  normal 0 -1 0  radius 0.5  intensity 4  samples 1 }\n";
+        for (String[] bad : new String[][] {
+                {base.replace("samples 16", "samples 8") + disc, "square number of shadow rays per pixel, found 8"},
+                {base + disc.replace("samples 1", "samples 2"), "square number of shadow rays per pixel, found 32"},
+                {base + "spherelight { center 0 4 0  radius 0.5  intensity 4 }\n", "rectangle or disc"},
+                {base + disc + "light { position 3 5 2  falloff inverse-square }\n", "no point light"},
+                {base, "exactly one area light"}}) {
+            IOException e = assertThrows(IOException.class, () -> PeerView.ofArea(SceneParser.parse(bad[0], "s.dat", Path.of(".")), List.of()));
+            assertTrue(e.getMessage().contains(bad[1]), e.getMessage());
+        }
+    }
+
     /** The bench scenes the peers are run on name the meshes the bench gives the peers, and have views the peers can take. */
     @Test
     void benchScenesNameTheirMeshes() throws IOException {
@@ -107,6 +167,16 @@ class PeerInputsTest {
             String noMeshes = text.replaceAll("(?m)^mesh .*$", "");
             PeerView.of(SceneParser.parse(noMeshes, s[0] + ".dat", Path.of(".")), List.of());
         }
+        String soft = Files.readString(Path.of("scenes", "bench", "soft-shadow.dat"));
+        assertTrue(soft.contains("mesh { file \"meshes/torus_1k.obj\""));
+        assertTrue(soft.contains("mesh { file \"meshes/ground.obj\""));
+        PeerView v = PeerView.ofArea(SceneParser.parse(soft.replaceAll("(?m)^mesh .*$", ""), "soft-shadow.dat", Path.of(".")), List.of());
+        assertEquals(4, v.area().grid());
+        // The equal-rays twin: 1 sample per pixel, 16 light samples, the same 4x4 grid.
+        String light16 = Files.readString(Path.of("scenes", "bench", "soft-shadow-light16.dat"));
+        assertEquals(soft.replace("samples 16", "samples 1").replace("samples 1 }", "samples 16 }").replaceAll("(?m)^#.*\\n", ""),
+                light16.replaceAll("(?m)^#.*\\n", ""));
+        assertEquals(4, PeerView.ofArea(SceneParser.parse(light16.replaceAll("(?m)^mesh .*$", ""), "l.dat", Path.of(".")), List.of()).area().grid());
     }
 
     @Test
