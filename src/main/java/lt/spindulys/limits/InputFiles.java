@@ -1,6 +1,7 @@
 package lt.spindulys.limits;
 
 import java.io.IOException;
+import java.io.InputStream;
 import java.nio.ByteBuffer;
 import java.nio.channels.FileChannel;
 import java.nio.file.Files;
@@ -31,6 +32,20 @@ public final class InputFiles {
         if (a.isRegularFile()) return null;
         if (a.isDirectory()) return "is a directory, not a regular file";
         return "is " + otherKind(path) + ", not a regular file";
+    }
+
+    /**
+     * Opens an input file for reading, refusing one that is not a regular file (a pipe would
+     * block and a device never end) with an IOException naming it and the {@link #problem}.
+     *
+     * @param path the file
+     * @return a stream the caller closes
+     * @throws IOException if it is not a regular file or cannot be opened
+     */
+    public static InputStream open(Path path) throws IOException {
+        String problem = problem(path);
+        if (problem != null) throw new IOException(path + " " + problem);
+        return Files.newInputStream(path);
     }
 
     /** "a named pipe", "a character device", ...: the kind of a path that is neither file nor directory. */

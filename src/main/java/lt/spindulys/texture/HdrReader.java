@@ -6,7 +6,6 @@ import java.io.EOFException;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 
 import lt.spindulys.limits.InputFiles;
@@ -55,9 +54,7 @@ public final class HdrReader {
      * @throws IOException if it cannot be read or is not an RGBE image this reader supports
      */
     public static Image read(Path file) throws IOException {
-        String problem = InputFiles.problem(file);
-        if (problem != null) throw new IOException(file + " " + problem);
-        try (InputStream in = Files.newInputStream(file)) {
+        try (InputStream in = InputFiles.open(file)) {
             return read(in);
         }
     }

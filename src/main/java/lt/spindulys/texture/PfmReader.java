@@ -5,7 +5,6 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
-import java.nio.file.Files;
 import java.nio.file.Path;
 
 import lt.spindulys.limits.InputFiles;
@@ -34,9 +33,7 @@ public final class PfmReader {
      * @throws IOException if it cannot be read or is not a PFM image
      */
     public static HdrReader.Image read(Path file) throws IOException {
-        String problem = InputFiles.problem(file);
-        if (problem != null) throw new IOException(file + " " + problem);
-        try (InputStream in = Files.newInputStream(file)) {
+        try (InputStream in = InputFiles.open(file)) {
             return read(in);
         }
     }

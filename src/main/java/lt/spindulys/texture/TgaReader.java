@@ -4,7 +4,6 @@ import java.io.BufferedInputStream;
 import java.io.EOFException;
 import java.io.IOException;
 import java.io.InputStream;
-import java.nio.file.Files;
 import java.nio.file.Path;
 
 import lt.spindulys.limits.InputFiles;
@@ -39,10 +38,7 @@ public final class TgaReader {
      * @throws IOException if the file cannot be read or is not a TGA image this reader supports
      */
     public static Image read(Path file) throws IOException {
-        // A pipe would block and a device never end: only regular files are opened.
-        String problem = InputFiles.problem(file);
-        if (problem != null) throw new IOException(file + " " + problem);
-        try (InputStream in = Files.newInputStream(file)) {
+        try (InputStream in = InputFiles.open(file)) {
             return read(in);
         }
     }
