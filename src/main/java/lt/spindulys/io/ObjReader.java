@@ -148,35 +148,54 @@ public final class ObjReader {
      * and nothing is copied until the exact-size array is made (a doubling array copies each
      * element about twice more, and the garbage it leaves is as large as the mesh).
      */
-    private static final class Doubles {
-        private double[][] blocks = new double[8][];
+    private abstract static class BlockList<A> {
+        /** The filled blocks (primitive arrays), in order. */
+        private Object[] blocks = new Object[8];
         private int full, before;
-        private double[] cur = new double[FIRST_BLOCK];
-        private int n;
 
-        void add(double v) {
-            if (n == cur.length) next();
-            cur[n++] = v;
-        }
+        /** A new block of the given length. */
+        abstract A block(int length);
 
-        private void next() {
+        /** Keeps the filled block and returns the next, empty one. */
+        final A next(A filled, int length) {
             if (full == blocks.length) blocks = Arrays.copyOf(blocks, 2 * full);
-            blocks[full++] = cur;
-            before += cur.length;
-            cur = new double[Math.min(MAX_BLOCK, 2 * cur.length)];
-            n = 0;
+            blocks[full++] = filled;
+            before += length;
+            return block(Math.min(MAX_BLOCK, 2 * length));
         }
 
-        int size() { return before + n; }
+        /** Elements added: those of the filled blocks and {@code n} of the current one. */
+        final int size(int n) { return before + n; }
 
-        /** Copies the elements into {@code to} from {@code at}. */
-        void copyTo(double[] to, int at) {
+        /** Copies the elements into {@code to} from {@code at}: the filled blocks, then n of {@code cur}. */
+        final void copyTo(A cur, int n, A to, int at) {
             for (int i = 0; i < full; i++) {
-                System.arraycopy(blocks[i], 0, to, at, blocks[i].length);
-                at += blocks[i].length;
+                int len = java.lang.reflect.Array.getLength(blocks[i]);
+                System.arraycopy(blocks[i], 0, to, at, len);
+                at += len;
             }
             System.arraycopy(cur, 0, to, at, n);
         }
+    }
+
+    /** A growable array of doubles (see {@link BlockList}). */
+    private static final class Doubles extends BlockList<double[]> {
+        private double[] cur = new double[FIRST_BLOCK];
+        private int n;
+
+        @Override double[] block(int length) { return new double[length]; }
+
+        void add(double v) {
+            if (n == cur.length) {
+                cur = next(cur, cur.length);
+                n = 0;
+            }
+            cur[n++] = v;
+        }
+
+        int size() { return size(n); }
+
+        void copyTo(double[] to, int at) { copyTo(cur, n, to, at); }
 
         double[] toArray() {
             double[] a = new double[size()];
@@ -185,35 +204,24 @@ public final class ObjReader {
         }
     }
 
-    /** {@link Doubles} for ints. */
-    private static final class Ints {
-        private int[][] blocks = new int[8][];
-        private int full, before;
+    /** A growable array of ints (see {@link BlockList}). */
+    private static final class Ints extends BlockList<int[]> {
         private int[] cur = new int[FIRST_BLOCK];
         private int n;
 
+        @Override int[] block(int length) { return new int[length]; }
+
         void add(int v) {
-            if (n == cur.length) next();
+            if (n == cur.length) {
+                cur = next(cur, cur.length);
+                n = 0;
+            }
             cur[n++] = v;
         }
 
-        private void next() {
-            if (full == blocks.length) blocks = Arrays.copyOf(blocks, 2 * full);
-            blocks[full++] = cur;
-            before += cur.length;
-            cur = new int[Math.min(MAX_BLOCK, 2 * cur.length)];
-            n = 0;
-        }
+        int size() { return size(n); }
 
-        int size() { return before + n; }
-
-        void copyTo(int[] to, int at) {
-            for (int i = 0; i < full; i++) {
-                System.arraycopy(blocks[i], 0, to, at, blocks[i].length);
-                at += blocks[i].length;
-            }
-            System.arraycopy(cur, 0, to, at, n);
-        }
+        void copyTo(int[] to, int at) { copyTo(cur, n, to, at); }
 
         int[] toArray() {
             int[] a = new int[size()];
