@@ -179,7 +179,14 @@ public final class Renderer {
         for (int k = 0; k < workers.length; k++) {
             int index = k;
             workers[k] = new Thread(null, () -> {
-                TracerScratch scratch = integrator.newScratch();
+                TracerScratch scratch;
+                try {
+                    scratch = integrator.newScratch(); // its heap check may refuse
+                } catch (RuntimeException e) {
+                    failure.compareAndSet(null, e);
+                    counters[index] = new long[4];
+                    return;
+                }
                 PixelSampler sampler = new PixelSampler(pass.samples, scene.camera().usesLens() ? scene.camera().lensPattern() : null);
                 Ray ray = new Ray();
                 double[] colour = new double[4];

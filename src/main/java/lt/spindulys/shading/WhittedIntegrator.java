@@ -5,6 +5,7 @@ import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.trace.TracedObject;
 import lt.spindulys.trace.Hit;
+import lt.spindulys.limits.HeapBudget;
 import lt.spindulys.material.Material;
 import lt.spindulys.sampling.Rng;
 import lt.spindulys.scene.AreaLight;
@@ -102,6 +103,15 @@ public final class WhittedIntegrator {
         TracerScratch s = new TracerScratch(settings.maxDepth());
         s.lightStrata = new int[areaLights.length][];
         s.lightStrataGeneration = new int[areaLights.length];
+        if (areaLights.length > 0) {
+            // Each light's strata (pixel samples times its samples, both from the input) are kept
+            // per thread: checked against the heap, then made here, so the next thread's check sees them.
+            int spp = settings.samplesPerPixel();
+            long bytes = 0;
+            for (AreaLight l : areaLights) bytes = HeapBudget.sum(bytes, HeapBudget.product(4, spp, l.samples()));
+            HeapBudget.require(bytes, "the area lights' sample strata of one render thread");
+            for (int i = 0; i < areaLights.length; i++) s.lightStrata[i] = new int[spp * areaLights[i].samples()];
+        }
         return s;
     }
 

@@ -52,6 +52,20 @@ class AreaLightTest {
         return AreaLight.disc(new Vec3(0, H, 0), new Vec3(0, -1, 0), R, Color.WHITE, 1, false, samples);
     }
 
+    @Test
+    void aThreadsStrataAreCheckedAgainstTheHeapBeforeTheyAreMade() {
+        // 65,536 pixel samples times 1,024 light samples: 256 MiB of strata for one thread.
+        SceneBuilder b = base(disc(AreaLight.MAX_SAMPLES), false);
+        b.settings(RenderSettings.builder().size(8, 8).samplesPerPixel(65536).build());
+        WhittedIntegrator w = new WhittedIntegrator(b.build());
+        try (lt.spindulys.limits.HeapBudget.Scope cap = lt.spindulys.limits.HeapBudget.cap(64L << 20)) {
+            lt.spindulys.limits.InsufficientMemoryException e = assertThrows(lt.spindulys.limits.InsufficientMemoryException.class, w::newScratch);
+            assertTrue(e.getMessage().startsWith("the area lights' sample strata of one render thread needs 256"), e.getMessage());
+        }
+        TracerScratch small = new WhittedIntegrator(base(disc(4), false).build()).newScratch();
+        assertEquals(4, small.lightStrata[0].length, "one pixel sample times the light's four");
+    }
+
     /**
      * The plane's brightness at (x, 0, z): the mean over the n samples of pixel (px, 0), each
      * tracing from just above the plane straight down.
