@@ -29,7 +29,7 @@ import lt.spindulys.math.Ranges;
  * texel) before anything is allocated; the data are decoded a row at a time. Errors are
  * {@link IOException}s with a one-line reason saying where (header line, row); the caller names the file.
  */
-public final class HdrReader {
+final class HdrReader {
     private HdrReader() {}
 
     /** Longest header line read before the file is refused as not a header. */
@@ -44,7 +44,7 @@ public final class HdrReader {
      * @param height height in texels
      * @param rgb    the values
      */
-    public record Image(int width, int height, float[] rgb) {}
+    record Image(int width, int height, float[] rgb) {}
 
     /**
      * Reads the file.
@@ -53,7 +53,7 @@ public final class HdrReader {
      * @return the image
      * @throws IOException if it cannot be read or is not an RGBE image this reader supports
      */
-    public static Image read(Path file) throws IOException {
+    static Image read(Path file) throws IOException {
         try (InputStream in = InputFiles.open(file)) {
             return read(in);
         }
@@ -66,7 +66,7 @@ public final class HdrReader {
      * @return the image
      * @throws IOException if it cannot be read or is not an RGBE image this reader supports
      */
-    public static Image read(InputStream in) throws IOException {
+    static Image read(InputStream in) throws IOException {
         InputStream s = in instanceof BufferedInputStream ? in : new BufferedInputStream(in, 1 << 16);
         String magic = line(s, 1);
         if (magic == null || !(magic.equals("#?RADIANCE") || magic.equals("#?RGBE"))) {

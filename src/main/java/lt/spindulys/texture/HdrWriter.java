@@ -15,7 +15,7 @@ import java.nio.file.Path;
  * {@code m = f * 2^e} with f in [0.5, 1) gives the exponent {@code e + 128} and each component
  * {@code c} the byte {@code floor(c * f * 256 / m)}; values below 1e-32 are black.
  */
-public final class HdrWriter {
+final class HdrWriter {
     private HdrWriter() {}
 
     /**
@@ -28,7 +28,7 @@ public final class HdrWriter {
      * @param rle  whether to run-length encode the rows
      * @throws IOException if the file cannot be written
      */
-    public static void write(Path file, int w, int h, float[] rgb, boolean rle) throws IOException {
+    static void write(Path file, int w, int h, float[] rgb, boolean rle) throws IOException {
         try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(file), 1 << 16)) {
             write(out, w, h, rgb, rle);
         }
@@ -44,7 +44,7 @@ public final class HdrWriter {
      * @param rle  whether to run-length encode the rows
      * @throws IOException if the stream cannot be written
      */
-    public static void write(OutputStream out, int w, int h, float[] rgb, boolean rle) throws IOException {
+    static void write(OutputStream out, int w, int h, float[] rgb, boolean rle) throws IOException {
         if (w <= 0 || h <= 0 || rgb.length != 3L * w * h) throw new IllegalArgumentException("expected " + 3L * w * h + " values for " + w + "x" + h);
         out.write(("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y " + h + " +X " + w + "\n").getBytes(StandardCharsets.US_ASCII));
         byte[] row = new byte[4 * w];

@@ -22,7 +22,7 @@ import lt.spindulys.math.Ranges;
  * against {@link TextureCache#MAX_PIXELS} and the heap before anything is allocated. Errors are
  * {@link IOException}s with a one-line reason; the caller names the file.
  */
-public final class PfmReader {
+final class PfmReader {
     private PfmReader() {}
 
     /**
@@ -32,7 +32,7 @@ public final class PfmReader {
      * @return the image (linear RGB, rows top-down)
      * @throws IOException if it cannot be read or is not a PFM image
      */
-    public static HdrReader.Image read(Path file) throws IOException {
+    static HdrReader.Image read(Path file) throws IOException {
         try (InputStream in = InputFiles.open(file)) {
             return read(in);
         }
@@ -45,7 +45,7 @@ public final class PfmReader {
      * @return the image (linear RGB, rows top-down)
      * @throws IOException if it cannot be read or is not a PFM image
      */
-    public static HdrReader.Image read(InputStream in) throws IOException {
+    static HdrReader.Image read(InputStream in) throws IOException {
         InputStream s = in instanceof BufferedInputStream ? in : new BufferedInputStream(in, 1 << 16);
         String magic = token(s, "type");
         int channels = switch (magic) {

@@ -1,4 +1,4 @@
-package lt.spindulys.render;
+package lt.spindulys.texture;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -9,7 +9,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 
-import lt.spindulys.texture.HdrWriter;
 
 /**
  * The synthetic sky of scenes/environment.dat, textures/sky.hdr, is made by {@link #sky} and written
