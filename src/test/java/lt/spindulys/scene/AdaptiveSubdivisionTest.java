@@ -282,28 +282,39 @@ class AdaptiveSubdivisionTest {
                 AdaptiveSettings.DEFAULT);
         int[] range = assertMixedLevels(surface(s), 1);
         Frame f = frame(file);
-        SplittableRandom rnd = new SplittableRandom(file.hashCode() * 31L + method.hashCode());
+        int n = 250_000;
+        String[] first = new String[1];
+        int missed = raysFromInsideMissing(s, f.centre().x(), f.centre().y(), f.centre().z(), f.radius(), file.hashCode() * 31L + method.hashCode(), n, first);
+        assertEquals(0, missed, file + " (" + method + ", edge levels " + range[0] + ".." + range[1] + "): " + missed + " of " + n
+                + " rays from inside missed the surface, the first " + first[0]);
+    }
+
+    /**
+     * Of n seeded rays from points within a tenth of {@code radius} of a centre inside a closed
+     * surface, in uniform directions, those that do not hit it within 10 radii; the first such
+     * ray goes to {@code first[0]}.
+     */
+    static int raysFromInsideMissing(Scene s, double cx, double cy, double cz, double radius, long seed, int n, String[] first) {
+        SplittableRandom rnd = new SplittableRandom(seed);
         TraceContext ctx = new TraceContext();
         Ray ray = new Ray();
         Hit hit = new Hit();
-        int n = 250_000, missed = 0;
-        String first = null;
+        int missed = 0;
         for (int i = 0; i < n; i++) {
             // A point within a tenth of the radius of the centre (inside these convex-ish shapes), a uniform direction.
             double ox, oy, oz;
             do {
                 ox = rnd.nextDouble(-1, 1); oy = rnd.nextDouble(-1, 1); oz = rnd.nextDouble(-1, 1);
             } while (ox * ox + oy * oy + oz * oz > 1);
-            double r = 0.1 * f.radius();
+            double r = 0.1 * radius;
             double dx = rnd.nextDouble(-1, 1), dy = rnd.nextDouble(-1, 1), dz = rnd.nextDouble(-1, 1), l = Math.sqrt(dx * dx + dy * dy + dz * dz);
             if (!(l > 1e-3 && l <= 1)) { i--; continue; }
-            ray.set(f.centre().x() + r * ox, f.centre().y() + r * oy, f.centre().z() + r * oz, dx / l, dy / l, dz / l, 0, Double.POSITIVE_INFINITY);
-            if (!s.intersect(ray, hit, ctx) || !(hit.t > 0 && hit.t < 10 * f.radius())) {
-                if (missed++ == 0) first = ray.toString();
+            ray.set(cx + r * ox, cy + r * oy, cz + r * oz, dx / l, dy / l, dz / l, 0, Double.POSITIVE_INFINITY);
+            if (!s.intersect(ray, hit, ctx) || !(hit.t > 0 && hit.t < 10 * radius)) {
+                if (missed++ == 0) first[0] = ray.toString();
             }
         }
-        assertEquals(0, missed, file + " (" + method + ", edge levels " + range[0] + ".." + range[1] + "): " + missed + " of " + n
-                + " rays from inside missed the surface, the first " + first);
+        return missed;
     }
 
     /** Welded tessellations at mixed levels: every edge of a closed surface is shared by exactly two triangles. */

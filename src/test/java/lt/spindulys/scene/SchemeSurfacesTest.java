@@ -306,27 +306,12 @@ class SchemeSurfacesTest {
         AdaptiveSubdivisionSurface surface = AdaptiveSubdivisionTest.surface(s); // the scene's copy, frozen
         int[] range = AdaptiveSubdivisionTest.assertMixedLevels(surface, 1);
         assertTrue(surface.isClosed(), cage + " is closed");
-        SplittableRandom rnd = new SplittableRandom(cage.hashCode() * 31L + method.hashCode());
-        TraceContext ctx = new TraceContext();
-        Ray ray = new Ray();
-        Hit hit = new Hit();
-        int n = 100_000, missed = 0;
-        String first = null;
-        for (int i = 0; i < n; i++) {
-            double dx = rnd.nextDouble(-1, 1), dy = rnd.nextDouble(-1, 1), dz = rnd.nextDouble(-1, 1), l = Math.sqrt(dx * dx + dy * dy + dz * dz);
-            if (!(l > 1e-3 && l <= 1)) { i--; continue; }
-            ray.set(0.1 * rnd.nextDouble(-1, 1), 0.1 * rnd.nextDouble(-1, 1), 0.1 * rnd.nextDouble(-1, 1), dx / l, dy / l, dz / l, 0, Double.POSITIVE_INFINITY);
-            if (!s.intersect(ray, hit, ctx) || !(hit.t > 0 && hit.t < 10)) {
-                if (missed++ == 0) first = ray.toString();
-            }
-        }
+        int n = 100_000;
+        String[] first = new String[1];
+        int missed = AdaptiveSubdivisionTest.raysFromInsideMissing(s, 0, 0, 0, 1, cage.hashCode() * 31L + method.hashCode(), n, first);
         assertEquals(0, missed, cage + " (" + method + ", edge levels " + range[0] + ".." + range[1] + "): " + missed + " of " + n
-                + " rays from inside missed, the first " + first);
-        assertCrackFreeWelded(surface.tessellation(), cage + " at its view's levels");
-    }
-
-    static void assertCrackFreeWelded(MeshData m, String what) {
-        AdaptiveSubdivisionTest.assertCrackFree(m, what);
+                + " rays from inside missed, the first " + first[0]);
+        AdaptiveSubdivisionTest.assertCrackFree(surface.tessellation(), cage + " at its view's levels");
     }
 
     /**
@@ -354,7 +339,7 @@ class SchemeSurfacesTest {
                 parts[f] = r.refine(f, level, el, cl, true);
             }
             MeshData welded = AdaptiveTessellation.weld(AdaptiveTessellation.join(parts, cage));
-            assertCrackFreeWelded(welded, cage + ", trial " + trial);
+            AdaptiveSubdivisionTest.assertCrackFree(welded, cage + ", trial " + trial);
         }
     }
 
