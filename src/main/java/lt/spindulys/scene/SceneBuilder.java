@@ -110,14 +110,19 @@ public final class SceneBuilder {
      *         component, summed) would exceed {@link Ranges#MAX_TOTAL_LIGHT}
      */
     public SceneBuilder light(PointLight l) {
-        double total = totalLight + Objects.requireNonNull(l).power();
+        countLight("light", Objects.requireNonNull(l).intensity(), l.power());
+        lights.add(l);
+        return this;
+    }
+
+    /** Adds a light's power to the lights' total, refusing it (naming it and its intensity) past the limit. */
+    private void countLight(String what, double intensity, double power) {
+        double total = totalLight + power;
         if (!(total <= Ranges.MAX_TOTAL_LIGHT)) {
-            throw new IllegalArgumentException("light intensity " + l.intensity() + " brings the lights' total (intensity times the largest colour component, summed over the lights) to "
+            throw new IllegalArgumentException(what + " intensity " + intensity + " brings the lights' total (intensity times the largest colour component, summed over the lights) to "
                     + total + ", more than " + Ranges.show(Ranges.MAX_TOTAL_LIGHT));
         }
         totalLight = total;
-        lights.add(l);
-        return this;
     }
 
     /**
@@ -129,12 +134,7 @@ public final class SceneBuilder {
      *         component, summed over point and area lights) would exceed {@link Ranges#MAX_TOTAL_LIGHT}
      */
     public SceneBuilder areaLight(AreaLight l) {
-        double total = totalLight + Objects.requireNonNull(l).power();
-        if (!(total <= Ranges.MAX_TOTAL_LIGHT)) {
-            throw new IllegalArgumentException("area light intensity " + l.intensity() + " brings the lights' total (intensity times the largest colour component, summed over the lights) to "
-                    + total + ", more than " + Ranges.show(Ranges.MAX_TOTAL_LIGHT));
-        }
-        totalLight = total;
+        countLight("area light", Objects.requireNonNull(l).intensity(), l.power());
         areaLights.add(l);
         return this;
     }
