@@ -13,7 +13,7 @@ import lt.spindulys.limits.MessageText;
 /**
  * The {@code render} command line: {@code render SCENE.dat ...} renders ({@link RenderCommand}),
  * {@code render subdivide ...} refines a mesh ({@link SubdivideCommand}), {@code render view ...} opens the viewer
- * ({@link ViewCommand}). {@link #run} does the work and returns the exit status, so
+ * ({@link ViewCommand}), {@code render assemble ...} puts tiles back into a frame ({@link AssembleCommand}). {@link #run} does the work and returns the exit status, so
  * tests call it in-process; {@link #main} only exits with that status. Bad usage and bad input
  * print one line to stderr and exit 2; a failure while rendering or writing exits 1. Stack traces
  * appear only with {@code --debug}.
@@ -47,6 +47,14 @@ public final class Main {
                     return 0;
                 }
                 return new ViewCommand(rest.toArray(new String[0])).run(out, err);
+            }
+            if (!rest.isEmpty() && rest.get(0).equals("assemble")) {
+                rest.remove(0);
+                if (rest.contains("--help") || rest.contains("-h")) {
+                    out.println(AssembleCommand.USAGE);
+                    return 0;
+                }
+                return new AssembleCommand(rest.toArray(new String[0])).run(err);
             }
             if (!rest.isEmpty() && rest.get(0).equals("bench")) {
                 rest.remove(0);

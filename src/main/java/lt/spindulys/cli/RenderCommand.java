@@ -25,6 +25,8 @@ import lt.spindulys.limits.InputFiles;
 import lt.spindulys.limits.InsufficientMemoryException;
 import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Ranges;
+import lt.spindulys.frontend.FailureMessage;
+import lt.spindulys.render.FarmProgress;
 import lt.spindulys.render.RenderStats;
 import lt.spindulys.render.RenderJob;
 import lt.spindulys.render.RenderResult;
@@ -40,7 +42,9 @@ final class RenderCommand {
             usage: render SCENE.dat [-o OUT] [--width W] [--height H] [--spp N] [--aperture R] [--focus D]
                                     [--threads N] [--seed S] [--accel A] [--aov LIST] [--shutter OPEN,CLOSE] [--timesteps N]
                                     [--subdiv-target PX] [--subdiv-memory MIB] [--subdiv-cache MIB]
-                                    [--quality Q] [--stats] [--quiet] [--debug]
+                                    [--quality Q] [--region X0,X1,Y0,Y1 | --tile I/N] [--progress openjd|plain]
+                                    [--stats] [--quiet] [--debug]
+                   render assemble TILE.png... -o OUT                             (see render assemble --help)
                    render subdivide MESH.obj|MESH.dat --level N|--scene SCENE.dat -o OUT.obj [...]   (see render subdivide --help)
                    render bench [--only NAME] [--runs N] [--accel A] [--list]      (see render bench --help)
                    render view [MESH.obj|MESH.dat|UNWRAP.tex ...]                  (see render view --help)
@@ -65,6 +69,8 @@ final class RenderCommand {
               --subdiv-memory MIB  heap for adaptive subdivision, eager and cached together (0: automatic)
               --subdiv-cache MIB the lazy patches' cache, part of the subdivision memory (default 64)
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
+""" + FarmOptions.USAGE + """
+
               --stats            print load, build and render times, rays by kind, Mrays/s, peak heap,
                                  per mesh its triangles and its tree's SAH cost, and per adaptive
                                  subdiv its levels, patches, cache hits and misses
@@ -83,6 +89,8 @@ final class RenderCommand {
     private Double subdivTarget, subdivMemory, subdivCache;
     private double quality = ImageOptions.DEFAULT.jpegQuality();
     private boolean stats, quiet;
+    private final FarmOptions farm = new FarmOptions();
+    private FarmProgress farmProgress;
 
     /** Parses arguments (after --debug was taken out). */
     RenderCommand(String[] args) throws UsageException {
@@ -124,6 +132,11 @@ final class RenderCommand {
                 case "--stats" -> stats = true;
                 case "--quiet", "-q" -> quiet = true;
                 default -> {
+                    int used = farm.parse(args, i);
+                    if (used >= 0) {
+                        i = used;
+                        continue;
+                    }
                     if (a.startsWith("-") && a.length() > 1) throw new UsageException("unknown option '" + a + "' (see render --help)");
                     if (scene != null) throw new UsageException("more than one scene file given: '" + scene + "' and '" + a + "'");
                     scene = Path.of(a);
@@ -141,10 +154,36 @@ final class RenderCommand {
         } catch (IllegalArgumentException e) {
             throw new UsageException(e.getMessage());
         }
+        farm.checkOutput(output);
     }
 
     /** Runs the command; returns the exit status. Bad input surfaces as exceptions handled by {@link Main}. */
     int run(PrintStream out, PrintStream err) throws IOException, InterruptedException, UsageException {
+        try {
+            return render(out, err);
+        } catch (UsageException e) {
+            if (farmProgress != null) farmProgress.failed("render: " + e.getMessage());
+            throw e;
+        } catch (Exception | Error e) {
+            // The manager is told the line Main prints on stderr for the same failure.
+            if (farmProgress != null) farmProgress.failed(e instanceof NoSuchFileException ? e.getMessage() : FailureMessage.of(e));
+            throw e;
+        }
+    }
+
+    private int render(PrintStream out, PrintStream err) throws IOException, InterruptedException, UsageException {
+        long t0 = System.nanoTime();
+        int n = threads != null ? threads : Runtime.getRuntime().availableProcessors();
+        SceneBuilder[] loaded = new SceneBuilder[1];
+        double[] warmup = new double[1];
+        RenderJob job = RenderJob.of(scene).output(output).jpegQuality(quality).threads(n)
+                .settings(this::override);
+        farm.apply(job);
+        // A farm's manager reads lines; the bar redraws one line in place, for a person at a terminal.
+        farmProgress = farm.progress(job, out, err, output.toString(), t0);
+        TerminalProgress bar = farmProgress == null && !quiet && System.console() != null ? new TerminalProgress(err) : null;
+        job.progress(farmProgress != null ? farmProgress : bar);
+        if (farmProgress != null) farmProgress.start();
         // Refused before anything is opened: a pipe would block, a device never end.
         String problem = InputFiles.problem(scene);
         if (problem != null) throw new NoSuchFileException(scene, problem);
@@ -154,13 +193,6 @@ final class RenderCommand {
                     + name + " } or subdiv { file " + name + " } block, or refine it with render subdivide");
         }
         if (aovs != null) checkAovOutputs(aovs);
-        long t0 = System.nanoTime();
-        int n = threads != null ? threads : Runtime.getRuntime().availableProcessors();
-        TerminalProgress bar = !quiet && System.console() != null ? new TerminalProgress(err) : null;
-        SceneBuilder[] loaded = new SceneBuilder[1];
-        double[] warmup = new double[1];
-        RenderJob job = RenderJob.of(scene).output(output).jpegQuality(quality).threads(n).progress(bar)
-                .settings(this::override);
         if (aperture != null || focus != null) job.camera(c -> withLens(c, aperture, focus));
         RenderResult result;
         try (JitWarmup warm = JitWarmup.start()) {
@@ -197,9 +229,12 @@ final class RenderCommand {
             throw new UsageException(given + ": " + e.getMessage());
         } finally {
             if (bar != null) bar.finish();
+            if (farmProgress != null) farmProgress.close();
         }
+        String done = MessageText.escape(doneLine(output, result, (System.nanoTime() - t0) / 1e9));
+        if (farmProgress != null) farmProgress.succeeded(done);
         // On stderr with the progress bar it replaces: stdout carries only what was asked for (--stats).
-        if (!quiet) err.println(MessageText.escape(doneLine(output, result.settings(), (System.nanoTime() - t0) / 1e9)));
+        if (!quiet) err.println(done);
         if (stats) {
             printStats(out, result.loadSeconds() - warmup[0], warmup[0], result.buildSeconds(), result.settings().accelerator(), result.stats(), n);
             for (String line : result.structureStatistics()) out.println(MessageText.escape(line));
@@ -238,6 +273,11 @@ final class RenderCommand {
             o.adaptive(a);
         }
         s = o.build();
+        try {
+            farm.checkFrame(s);
+        } catch (UsageException e) {
+            throw new UncheckedUsage(e);
+        }
         if (spp != null || timeSteps != null) {
             try {
                 s.checkTimeSteps();
@@ -263,10 +303,12 @@ final class RenderCommand {
      * The line that ends a render: the files written (the image, then its passes), the frame and
      * the time from start to written files, e.g. {@code wrote out.png (800x450, 16 spp) in 3.2 s}.
      */
-    static String doneLine(Path output, RenderSettings s, double seconds) {
+    static String doneLine(Path output, RenderResult result, double seconds) {
+        RenderSettings s = result.settings();
         StringBuilder line = new StringBuilder("wrote ").append(output);
         for (Aov a : s.aovs()) line.append(", ").append(a.fileBeside(output));
-        return line.append(String.format(Locale.ROOT, " (%dx%d, %d spp) in %.1f s", s.width(), s.height(), s.samplesPerPixel(), seconds)).toString();
+        String part = result.region().map(r -> "region " + r + " of ").orElse("");
+        return line.append(String.format(Locale.ROOT, " (%s%dx%d, %d spp) in %.1f s", part, s.width(), s.height(), s.samplesPerPixel(), seconds)).toString();
     }
 
     /**

@@ -14,6 +14,7 @@ import lt.spindulys.camera.Camera;
 import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.image.ImageOptions;
 import lt.spindulys.image.ImageWriter;
+import lt.spindulys.image.PixelRegion;
 import lt.spindulys.io.SceneParser;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
@@ -71,6 +72,8 @@ public final class RenderJob {
     private int threads = Runtime.getRuntime().availableProcessors();
     private ProgressListener progress;
     private TileListener tiles;
+    /** The region to render for a frame's width and height; null: the whole frame. */
+    private RegionOf regionOf;
     private final AtomicBoolean cancelled = new AtomicBoolean();
     private final AtomicBoolean started = new AtomicBoolean();
     private volatile Stage stage = Stage.READY;
@@ -214,6 +217,38 @@ public final class RenderJob {
         return this;
     }
 
+    /**
+     * Renders only {@code region} of the frame: the result's frame is the region's size, holds
+     * exactly the pixels a whole render has there, and is written as a PNG tile that records its
+     * place ({@link lt.spindulys.image.TileFile}), for {@code render assemble} to put back. Checked
+     * against the frame's size once the settings are known; render passes are refused for a region.
+     *
+     * @param region the pixels to render; null: the whole frame
+     * @return this job
+     */
+    public RenderJob region(PixelRegion region) {
+        configurable(false);
+        regionOf = region == null ? null : (w, h) -> region;
+        return this;
+    }
+
+    /**
+     * Renders only tile {@code index} of {@code count} of the frame: the band of whole rows
+     * {@link PixelRegion#band} gives, as {@link #region(PixelRegion)} does. The tiles of one count
+     * cover the frame exactly once, for any size (down to bands of one row).
+     *
+     * @param index which tile, from 0 to {@code count - 1}
+     * @param count how many tiles, at least 1 and at most the frame's height (checked when the size is known)
+     * @return this job
+     * @throws IllegalArgumentException if {@code index} is not in [0, count)
+     */
+    public RenderJob tile(int index, int count) {
+        configurable(false);
+        PixelRegion.checkTile(index, count);
+        regionOf = (w, h) -> PixelRegion.band(index, count, w, h);
+        return this;
+    }
+
     /** Asks the job to stop: a running render stops between tiles, and the run throws {@link CancellationException}. */
     public void cancel() { cancelled.set(true); }
 
@@ -275,10 +310,12 @@ public final class RenderJob {
     private RenderResult runStarted() throws IOException, InterruptedException {
         if (output != null) {
             enter(Stage.CHECK);
+            if (regionOf != null) RenderResult.checkTileOutput(output);
             ImageWriter.checkOutput(output);
         }
         long t0 = System.nanoTime();
         Scene built = scene;
+        PixelRegion region;
         double load = 0, build = 0;
         if (built == null) {
             enter(Stage.LOAD);
@@ -289,8 +326,10 @@ public final class RenderJob {
             enter(Stage.SETTINGS);
             RenderSettings s = Objects.requireNonNull(settingsOverride.apply(b.settings()), "the settings override returned null")
                     .checkTimeSteps();
+            region = region(s);
             // The frame is asked for by input: checked before anything is built for it.
-            FrameBuffer.checkHeap(s.width(), s.height(), s.aovs());
+            if (region == null) FrameBuffer.checkHeap(s.width(), s.height(), s.aovs());
+            else FrameBuffer.checkHeap(region.width(), region.height(), s.aovs());
             if (output != null) ImageWriter.checkPassOutputs(output, s.aovs()); // the image itself was checked first
             Camera c = cameraOverride == null ? b.camera()
                     : cameraOverride.apply(b.camera() != null ? b.camera() : SceneBuilder.DEFAULT_CAMERA);
@@ -300,16 +339,32 @@ public final class RenderJob {
         } else {
             enter(Stage.SETTINGS);
             RenderSettings s = built.settings();
+            region = region(s);
             if (output != null) ImageWriter.checkPassOutputs(output, s.aovs()); // the image itself was checked first
         }
         enter(Stage.RENDER);
-        RenderResult result = Renderer.render(built, threads, progress, cancelled, tiles).withTimes(load, build);
+        RenderResult result = Renderer.render(built, threads, progress, cancelled, tiles, region).withTimes(load, build);
         if (output != null) {
             enter(Stage.WRITE);
             result.write(output, jpegQuality);
         }
         stage = Stage.DONE;
         return result;
+    }
+
+    /** The region for a frame of these settings: checked against its size, and refused with passes. Null: the whole frame. */
+    private PixelRegion region(RenderSettings s) {
+        if (regionOf == null) return null;
+        PixelRegion r = regionOf.of(s.width(), s.height());
+        r.checkInside(s.width(), s.height());
+        if (!s.aovs().isEmpty()) throw new IllegalArgumentException(Renderer.PASSES_OF_REGION);
+        return r;
+    }
+
+    /** A region chosen by the frame's size. */
+    @FunctionalInterface
+    private interface RegionOf {
+        PixelRegion of(int width, int height);
     }
 
     /** Builds {@code b} with these settings and camera, leaving the builder as it was. */

@@ -9,7 +9,10 @@ import java.util.Optional;
 import lt.spindulys.image.AovFrame;
 import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.image.ImageOptions;
+import lt.spindulys.image.ImageFormat;
 import lt.spindulys.image.ImageWriter;
+import lt.spindulys.image.PixelRegion;
+import lt.spindulys.image.TileFile;
 import lt.spindulys.scene.RenderSettings;
 
 /**
@@ -24,6 +27,7 @@ public final class RenderResult {
     private final AovFrame passes;
     private final RenderStats stats;
     private final double loadSeconds, buildSeconds;
+    private final PixelRegion region;
     private final java.util.List<String> subdivision, structures;
 
     RenderResult(RenderSettings settings, FrameBuffer frame, AovFrame passes, RenderStats stats, java.util.List<String> subdivision,
@@ -33,6 +37,12 @@ public final class RenderResult {
 
     private RenderResult(RenderSettings settings, FrameBuffer frame, AovFrame passes, RenderStats stats, java.util.List<String> subdivision,
                          java.util.List<String> structures, double loadSeconds, double buildSeconds) {
+        this(settings, frame, passes, stats, subdivision, structures, loadSeconds, buildSeconds, null);
+    }
+
+    private RenderResult(RenderSettings settings, FrameBuffer frame, AovFrame passes, RenderStats stats, java.util.List<String> subdivision,
+                         java.util.List<String> structures, double loadSeconds, double buildSeconds, PixelRegion region) {
+        this.region = region;
         this.subdivision = java.util.List.copyOf(subdivision);
         this.structures = java.util.List.copyOf(structures);
         this.settings = Objects.requireNonNull(settings);
@@ -45,8 +55,22 @@ public final class RenderResult {
 
     /** This result with the times a job spent before rendering. */
     RenderResult withTimes(double load, double build) {
-        return new RenderResult(settings, frame, passes, stats, subdivision, structures, load, build);
+        return new RenderResult(settings, frame, passes, stats, subdivision, structures, load, build, region);
     }
+
+    /** This result as the render of {@code part} of the frame its settings describe (null: a render of the frame, not of a region). */
+    RenderResult inRegion(PixelRegion part) {
+        return new RenderResult(settings, frame, passes, stats, subdivision, structures, loadSeconds, buildSeconds, part);
+    }
+
+    /**
+     * The part of the frame rendered, when one was asked for ({@link RenderJob#region},
+     * {@link RenderJob#tile}): {@link #frame()} is then the region's size and {@link #write(Path)}
+     * writes a tile ({@link TileFile}), even when the region is the whole frame.
+     *
+     * @return the region, or empty for a render of the frame
+     */
+    public Optional<PixelRegion> region() { return Optional.ofNullable(region); }
 
     /**
      * One line per adaptive subdivision tessellation of the scene (see
@@ -133,7 +157,8 @@ public final class RenderResult {
      * Writes the image to {@code out} in the format its extension names (.png, .jpg/.jpeg, .tga,
      * .pfm), sRGB-encoded as the scene says, with each render pass beside it
      * ({@link lt.spindulys.image.Aov#fileBeside}); all files are written atomically as one group,
-     * so a failure leaves none of the new files and every old one.
+     * so a failure leaves none of the new files and every old one. The render of a
+     * {@link #region()} is written as a PNG tile that records its place ({@link TileFile}).
      *
      * @param out the image file
      * @throws IllegalArgumentException if the extension names no supported format
@@ -152,6 +177,25 @@ public final class RenderResult {
      * @throws IOException if a file cannot be written
      */
     public void write(Path out, double jpegQuality) throws IOException {
-        ImageWriter.write(frame, out, new ImageOptions(settings.srgb(), jpegQuality), passes);
+        ImageOptions opts = new ImageOptions(settings.srgb(), jpegQuality);
+        if (region == null) {
+            ImageWriter.write(frame, out, opts, passes);
+            return;
+        }
+        checkTileOutput(out);
+        ImageWriter.writeAtomically(out, TileFile.encoder(frame, opts, new TileFile.Placement(region, settings.width(), settings.height())));
+    }
+
+    /**
+     * Refuses an output other than PNG for a region: the tile's placement is kept in a PNG chunk.
+     *
+     * @param out the image file a region is to be written to
+     * @throws IllegalArgumentException if its extension is not .png
+     */
+    public static void checkTileOutput(Path out) {
+        if (ImageWriter.checkFormat(out) != ImageFormat.PNG) {
+            throw new IllegalArgumentException("a region of a frame is written as a PNG tile (its place in the frame is recorded in the file), so "
+                    + out + " must end in .png");
+        }
     }
 }

@@ -9,6 +9,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import lt.spindulys.camera.Camera;
 import lt.spindulys.image.AovFrame;
 import lt.spindulys.image.FrameBuffer;
+import lt.spindulys.image.PixelRegion;
 import lt.spindulys.math.Ray;
 import lt.spindulys.sampling.PixelSampler;
 import lt.spindulys.scene.RenderSettings;
@@ -118,14 +119,30 @@ public final class Renderer {
 
     /** {@link #render(Scene, int, ProgressListener, AtomicBoolean)}, telling {@code tileListener} (null: nobody) of each finished tile. */
     static RenderResult render(Scene scene, int threads, ProgressListener listener, AtomicBoolean cancelled, TileListener tileListener) throws InterruptedException {
+        return render(scene, threads, listener, cancelled, tileListener, null);
+    }
+
+    /**
+     * {@link #render(Scene, int, ProgressListener, AtomicBoolean, TileListener)} of {@code region}
+     * of the frame only (null: the whole frame): the result's frame is the region's size and holds
+     * exactly the pixels a whole render has there, since every sample is seeded from its pixel in
+     * the whole frame. Tiles reported to {@code tileListener} are in the region's coordinates.
+     * Render passes are not made for a part of the frame.
+     */
+    static RenderResult render(Scene scene, int threads, ProgressListener listener, AtomicBoolean cancelled, TileListener tileListener,
+                               PixelRegion region) throws InterruptedException {
         ProgressListener progress = listener != null ? listener : ProgressListener.NONE;
         if (threads < 1) throw new IllegalArgumentException("threads must be at least 1, found " + threads);
         RenderSettings st = scene.settings();
         int w = st.width(), h = st.height();
-        FrameBuffer.checkHeap(w, h, st.aovs()); // the frame is asked for by input: checked before it is allocated
-        FrameBuffer fb = new FrameBuffer(w, h);
+        PixelRegion r = region != null ? region : PixelRegion.whole(w, h);
+        r.checkInside(w, h);
+        if (region != null && !st.aovs().isEmpty()) throw new IllegalArgumentException(PASSES_OF_REGION);
+        int rw = r.width(), rh = r.height();
+        FrameBuffer.checkHeap(rw, rh, st.aovs()); // the frame is asked for by input: checked before it is allocated
+        FrameBuffer fb = new FrameBuffer(rw, rh);
         AovFrame aovs = st.aovs().isEmpty() ? null : new AovFrame(w, h, st.aovs());
-        int tilesX = (w + TILE - 1) / TILE, tilesY = (h + TILE - 1) / TILE, tiles = tilesX * tilesY;
+        int tilesX = (rw + TILE - 1) / TILE, tilesY = (rh + TILE - 1) / TILE, tiles = tilesX * tilesY;
         WhittedIntegrator integrator = new WhittedIntegrator(scene);
         int steps = st.timeSteps(); // a multiple of the samples: the scene checked it when built
         long[] sum = new long[4];
@@ -134,15 +151,19 @@ public final class Renderer {
             // One time step: a fixed time and its share of the samples, or (steps == 1) all samples at their own times.
             Pass pass = steps == 1 ? new Pass(st.samplesPerPixel(), st.seed(), Double.NaN, false, 1)
                     : new Pass(st.samplesPerPixel() / steps, passSeed(st.seed(), k), st.shutterTime((k + 0.5) / steps), k > 0, k == steps - 1 ? steps : 1);
-            long done = (long) k * w * h, total = (long) steps * w * h;
+            long done = (long) k * rw * rh, total = (long) steps * rw * rh;
             ProgressListener p = (pixels, all) -> progress.progress(done + pixels, total);
-            long[] c = renderPass(scene, threads, p, integrator, fb, k == 0 ? aovs : null, pass, tilesX, tiles, cancelled,
+            long[] c = renderPass(scene, threads, p, integrator, fb, k == 0 ? aovs : null, pass, r, tilesX, tiles, cancelled,
                     k == steps - 1 ? tileListener : null);
             for (int i = 0; i < 4; i++) sum[i] += c[i];
         }
         double seconds = (System.nanoTime() - start) / 1e9;
-        return new RenderResult(st, fb, aovs, new RenderStats(sum[0], sum[1], sum[2], sum[3], seconds), scene.adaptiveStatistics(), scene.structureStatistics());
+        return new RenderResult(st, fb, aovs, new RenderStats(sum[0], sum[1], sum[2], sum[3], seconds), scene.adaptiveStatistics(), scene.structureStatistics())
+                .inRegion(region);
     }
+
+    /** Why a region of a frame with render passes is refused: the passes' files have no placement to assemble them by. */
+    static final String PASSES_OF_REGION = "render passes (aov) are made for whole frames only: render a region without them, or the whole frame with them";
 
     /**
      * One pass over the frame.
@@ -162,10 +183,11 @@ public final class Renderer {
 
     /** Renders one pass on {@code threads} threads; returns its ray counts (camera, shadow, reflection, refraction). */
     private static long[] renderPass(Scene scene, int threads, ProgressListener progress, WhittedIntegrator integrator, FrameBuffer fb,
-                                     AovFrame aovs, Pass pass, int tilesX, int tiles, AtomicBoolean cancelled, TileListener tileListener)
+                                     AovFrame aovs, Pass pass, PixelRegion region, int tilesX, int tiles, AtomicBoolean cancelled,
+                                     TileListener tileListener)
             throws InterruptedException {
         RenderSettings st = scene.settings();
-        int w = st.width(), h = st.height();
+        long pixels = region.pixels();
         // Tiles spread over the frame keep the time estimate steady; but a scene that refines
         // patches while it is traced takes them row by row, so that neighbouring tiles reuse the
         // patches in its cache instead of evicting them (the image is the same in any order).
@@ -194,11 +216,13 @@ public final class Renderer {
                     for (int next; (next = nextTile.getAndIncrement()) < tiles && failure.get() == null; ) {
                         if (Thread.currentThread().isInterrupted() || cancelled != null && cancelled.get()) return;
                         int t = tileAt(next, tiles, stride);
+                        // In the frame buffer's coordinates (the region's), then traced at the frame's.
                         int x0 = (t % tilesX) * TILE, y0 = (t / tilesX) * TILE;
-                        int x1 = Math.min(x0 + TILE, w), y1 = Math.min(y0 + TILE, h);
-                        renderTile(scene.camera(), integrator, st, pass, sampler, scratch, ray, colour, fb, aovs, x0, y0, x1, y1);
+                        int x1 = Math.min(x0 + TILE, region.width()), y1 = Math.min(y0 + TILE, region.height());
+                        renderTile(scene.camera(), integrator, st, pass, sampler, scratch, ray, colour, fb, aovs, region.x0(), region.y0(),
+                                x0, y0, x1, y1);
                         if (tileListener != null) tileListener.tileDone(fb, x0, y0, x1, y1);
-                        progress.progress(donePixels.addAndGet((long) (x1 - x0) * (y1 - y0)), (long) w * h);
+                        progress.progress(donePixels.addAndGet((long) (x1 - x0) * (y1 - y0)), pixels);
                     }
                 } catch (Throwable e) {
                     failure.compareAndSet(null, e);
@@ -226,14 +250,17 @@ public final class Renderer {
     }
 
     private static void renderTile(Camera camera, WhittedIntegrator integrator, RenderSettings st, Pass pass, PixelSampler sampler,
-                                   TracerScratch scratch, Ray ray, double[] colour, FrameBuffer fb, AovFrame aovs,
-                                   int x0, int y0, int x1, int y1) {
-        int w = st.width(), h = st.height(), n = sampler.samplesPerPixel();
+                                   TracerScratch scratch, Ray ray, double[] colour, FrameBuffer fb, AovFrame aovs, int ox, int oy,
+                                   int fx0, int fy0, int fx1, int fy1) {
+        int w = st.width(), h = st.height(), n = sampler.samplesPerPixel(), fw = fb.width();
         double aspect = st.aspect();
         boolean ownTimes = Double.isNaN(pass.time);
         double[] data = fb.data();
-        for (int y = y0; y < y1; y++) {
-            for (int x = x0; x < x1; x++) {
+        // The frame buffer's pixel (fx, fy) is the frame's (ox + fx, oy + fy): the pixel the samples are seeded from and traced through.
+        for (int fy = fy0; fy < fy1; fy++) {
+            int y = oy + fy;
+            for (int fx = fx0; fx < fx1; fx++) {
+                int x = ox + fx;
                 sampler.startPixel(pass.seed, x, y);
                 double r = 0, g = 0, b = 0;
                 for (int i = 0; i < n; i++) {
@@ -246,11 +273,11 @@ public final class Renderer {
                 }
                 r /= n; g /= n; b /= n;
                 if (pass.accumulate) {
-                    int o = 3 * (y * w + x);
+                    int o = 3 * (fy * fw + fx);
                     r += data[o]; g += data[o + 1]; b += data[o + 2];
                 }
                 if (pass.divide != 1) { r /= pass.divide; g /= pass.divide; b /= pass.divide; }
-                fb.set(x, y, r, g, b);
+                fb.set(fx, fy, r, g, b);
                 if (aovs != null) {
                     // One more ray, through the exact pixel centre from the lens centre when the
                     // shutter opens, so the passes do not depend on the sample pattern.
