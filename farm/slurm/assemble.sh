@@ -9,6 +9,6 @@ source "$jobdir/settings"
 while read -r frame count; do
   if [ "$frame" = "-" ]; then stem="$NAME"; else stem=$(printf '%s_%04d' "$NAME" "$frame"); fi
   tiles=()
-  for ((i = 0; i < count; i++)); do tiles+=("$OUTDIR/tiles/$stem.tile_${i}_of_${count}.png"); done
+  for ((i = 1; i <= count; i++)); do tiles+=("$OUTDIR/tiles/$stem.tile_${i}_of_${count}.png"); done
   "$RENDER" assemble "${tiles[@]}" -o "$OUTDIR/$stem.png"
 done < "$jobdir/assemble"

@@ -5,7 +5,7 @@
 # JOBDIR holds what submit.sh wrote: "settings" (RENDER, SCENE, NAME, OUTDIR as shell
 # assignments), "tasks" (one line per task) and "render-args" (one render option a line).
 #   FRAMES  "-" for a scene without animation, else one frame N or a chunk A-B of whole frames
-#   TILE    "-" for whole frames, else I/N: band I of N (from 0) of the frame, into a tile
+#   TILE    "-" for whole frames, else I/N: band I of N (from 1) of the frame, into a tile
 # Exits with render's status, so a task that fails is reported failed by Slurm (and the
 # dependent assemble job never starts).
 set -euo pipefail

@@ -87,7 +87,7 @@ else
 fi
 for f in "${tile_list[@]}"; do
   [ -n "$f" ] || continue
-  for ((i = 0; i < tiles; i++)); do echo "$f $i/$tiles" >> "$jobdir/tasks"; done
+  for ((i = 1; i <= tiles; i++)); do echo "$f $i/$tiles" >> "$jobdir/tasks"; done
   echo "$f $tiles" >> "$jobdir/assemble"
 done
 count=$(wc -l < "$jobdir/tasks")

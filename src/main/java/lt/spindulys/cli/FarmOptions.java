@@ -15,7 +15,7 @@ import lt.spindulys.scene.RenderSettings;
 /**
  * The options of {@code render} that a render farm's manager uses to split a frame and follow a
  * task (docs/farm.md): {@code --region X0,X1,Y0,Y1} (half-open pixel bounds, as pbrt's
- * {@code --pixelbounds}), {@code --tile I/N} (band I of N bands of whole rows, from 0) and
+ * {@code --pixelbounds}), {@code --tile I/N} (band I of N bands of whole rows, from 1) and
  * {@code --progress openjd|plain}.
  */
 final class FarmOptions {
@@ -23,13 +23,13 @@ final class FarmOptions {
               --region X0,X1,Y0,Y1  render only the pixels X0 <= x < X1, Y0 <= y < Y1 (row 0 at the top) of the
                                  frame, exactly as a whole render gives them, into a PNG tile that records its
                                  place; render assemble puts tiles back together
-              --tile I/N         render tile I of N (0 <= I < N) as --region does: band I of N bands of whole
-                                 rows, which cover the frame exactly once (N at most the frame's height)
+              --tile I/N         render tile I of N (1 <= I <= N) as --region does: band I of N bands of whole
+                                 rows from the top, which cover the frame exactly once (N at most its height)
               --progress MODE    one line at least every 2 s, for a farm's manager: openjd (openjd_status: and
                                  openjd_progress: lines on stdout, openjd_fail: on failure) or plain (on stderr)""";
 
     private PixelRegion region;
-    private int tileIndex = -1, tileCount;
+    private int tileNumber = -1, tileCount;
     private String regionOption;
     private FarmProgress.Mode progress;
 
@@ -57,11 +57,11 @@ final class FarmOptions {
                 int slash = v.indexOf('/');
                 try {
                     if (slash < 0) throw new NumberFormatException();
-                    tileIndex = Integer.parseInt(v.substring(0, slash));
+                    tileNumber = Integer.parseInt(v.substring(0, slash));
                     tileCount = Integer.parseInt(v.substring(slash + 1));
-                    PixelRegion.checkTile(tileIndex, tileCount);
+                    PixelRegion.checkTile(tileNumber, tileCount);
                 } catch (NumberFormatException e) {
-                    throw new UsageException(a + " expects I/N, tile I of N counted from 0 (e.g. 0/4 to 3/4), found '" + v + "'");
+                    throw new UsageException(a + " expects I/N, tile I of N counted from 1 (1/4 to 4/4), found '" + v + "'");
                 } catch (IllegalArgumentException e) {
                     throw new UsageException(a + " " + v + ": " + e.getMessage());
                 }
@@ -105,7 +105,7 @@ final class FarmOptions {
         if (regionOption == null) return;
         try {
             if (region != null) region.checkInside(s.width(), s.height());
-            else PixelRegion.band(tileIndex, tileCount, s.width(), s.height());
+            else PixelRegion.band(tileNumber, tileCount, s.width(), s.height());
         } catch (IllegalArgumentException e) {
             throw new UsageException(regionOption + ": " + e.getMessage());
         }
@@ -118,7 +118,7 @@ final class FarmOptions {
     /** Gives the job the region or tile asked for. */
     void apply(RenderJob job) {
         if (region != null) job.region(region);
-        else if (tileCount > 0) job.tile(tileIndex, tileCount);
+        else if (tileCount > 0) job.tile(tileNumber, tileCount);
     }
 
     /** The option that chose a part of the frame ("--tile 2/4"), for messages; null when the whole frame is rendered. */

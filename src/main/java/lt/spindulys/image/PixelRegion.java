@@ -33,39 +33,39 @@ public record PixelRegion(int x0, int x1, int y0, int y1) {
     public static PixelRegion whole(int width, int height) { return new PixelRegion(0, width, 0, height); }
 
     /**
-     * Tile {@code index} of {@code count} (counted from 0) of a {@code width x height} frame: a
-     * band of whole rows, rows {@code floor(index * height / count)} up to
-     * {@code floor((index + 1) * height / count)}. The bands cover every row exactly once, in order
+     * Tile {@code number} of {@code count} (counted from 1) of a {@code width x height} frame: a
+     * band of whole rows, rows {@code floor((number - 1) * height / count)} up to
+     * {@code floor(number * height / count)}. The bands cover every row exactly once, in order
      * from the top, and differ in height by at most one row; there can be as many as the frame has
      * rows (bands of one row each).
      *
-     * @param index  which band, {@code 0 <= index < count}
+     * @param number which band, {@code 1 <= number <= count}
      * @param count  how many bands, from 1 to {@code height}
      * @param width  the frame's width
      * @param height the frame's height
      * @return the band
-     * @throws IllegalArgumentException if {@code index} is outside [0, count) or {@code count} is more than the rows
+     * @throws IllegalArgumentException if {@code number} is outside [1, count] or {@code count} is more than the rows
      */
-    public static PixelRegion band(int index, int count, int width, int height) {
-        checkTile(index, count);
+    public static PixelRegion band(int number, int count, int width, int height) {
+        checkTile(number, count);
         if (count > height) {
             throw new IllegalArgumentException("the " + width + "x" + height + " frame has " + height + " row" + (height == 1 ? "" : "s")
                     + ", too few for " + count + " tiles of whole rows");
         }
-        int y0 = (int) ((long) index * height / count), y1 = (int) ((long) (index + 1) * height / count);
+        int y0 = (int) ((long) (number - 1) * height / count), y1 = (int) ((long) number * height / count);
         return new PixelRegion(0, width, y0, y1);
     }
 
     /**
-     * Refuses a tile number outside [0, count), or a count below 1, before the frame's size is known.
+     * Refuses a tile number outside [1, count], or a count below 1, before the frame's size is known.
      *
-     * @param index which tile
-     * @param count how many tiles
-     * @throws IllegalArgumentException "tile 4/4 does not exist (tiles are numbered from 0 to the count less one)"
+     * @param number which tile
+     * @param count  how many tiles
+     * @throws IllegalArgumentException "tile 5/4 does not exist (tiles are numbered from 1 to their count)"
      */
-    public static void checkTile(int index, int count) {
-        if (count < 1 || index < 0 || index >= count) {
-            throw new IllegalArgumentException("tile " + index + "/" + count + " does not exist (tiles are numbered from 0 to the count less one)");
+    public static void checkTile(int number, int count) {
+        if (count < 1 || number < 1 || number > count) {
+            throw new IllegalArgumentException("tile " + number + "/" + count + " does not exist (tiles are numbered from 1 to their count)");
         }
     }
 

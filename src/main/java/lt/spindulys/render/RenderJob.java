@@ -233,19 +233,19 @@ public final class RenderJob {
     }
 
     /**
-     * Renders only tile {@code index} of {@code count} of the frame: the band of whole rows
+     * Renders only tile {@code number} of {@code count} of the frame: the band of whole rows
      * {@link PixelRegion#band} gives, as {@link #region(PixelRegion)} does. The tiles of one count
      * cover the frame exactly once, for any size (down to bands of one row).
      *
-     * @param index which tile, from 0 to {@code count - 1}
-     * @param count how many tiles, at least 1 and at most the frame's height (checked when the size is known)
+     * @param number which tile, from 1 to {@code count}
+     * @param count  how many tiles, at least 1 and at most the frame's height (checked when the size is known)
      * @return this job
-     * @throws IllegalArgumentException if {@code index} is not in [0, count)
+     * @throws IllegalArgumentException if {@code number} is not in [1, count]
      */
-    public RenderJob tile(int index, int count) {
+    public RenderJob tile(int number, int count) {
         configurable(false);
-        PixelRegion.checkTile(index, count);
-        regionOf = (w, h) -> PixelRegion.band(index, count, w, h);
+        PixelRegion.checkTile(number, count);
+        regionOf = (w, h) -> PixelRegion.band(number, count, w, h);
         return this;
     }
 

@@ -66,7 +66,7 @@ class FarmCliTest {
         // 23 rows: 5 bands of 4 and 5 rows, one band, and 23 bands of one row each.
         for (int n : new int[] {5, 1, 23}) {
             List<String> tiles = new ArrayList<>();
-            for (int i = 0; i < n; i++) {
+            for (int i = 1; i <= n; i++) {
                 Path t = dir.resolve("t" + n + "_" + i + ".png");
                 CliTest.Run r = run(scene.toString(), "--tile", i + "/" + n, "-o", t.toString(), "--threads", "1");
                 assertEquals(0, r.status(), r.err());
@@ -129,10 +129,10 @@ class FarmCliTest {
         String[] t = new String[3];
         for (int i = 0; i < 3; i++) {
             t[i] = dir.resolve("b" + i + ".png").toString();
-            assertEquals(0, run(scene.toString(), "--tile", i + "/3", "-o", t[i], "--quiet").status());
+            assertEquals(0, run(scene.toString(), "--tile", (i + 1) + "/3", "-o", t[i], "--quiet").status());
         }
         String other = dir.resolve("other.png").toString();
-        assertEquals(0, run(scene.toString(), "--tile", "1/3", "--width", "36", "-o", other, "--quiet").status());
+        assertEquals(0, run(scene.toString(), "--tile", "2/3", "--width", "36", "-o", other, "--quiet").status());
         String overlapping = dir.resolve("overlap.png").toString();
         assertEquals(0, run(scene.toString(), "--region", "5,9,7,9", "-o", overlapping, "--quiet").status());
         Path notTile = whole(scene);
@@ -154,9 +154,10 @@ class FarmCliTest {
         Path scene = scene();
         String out = dir.resolve("x.png").toString();
         String[][] cases = {
-                {"--tile", "3/3", "render: --tile 3/3: tile 3/3 does not exist (tiles are numbered from 0 to the count less one)"},
-                {"--tile", "1-3", "render: --tile expects I/N, tile I of N counted from 0 (e.g. 0/4 to 3/4), found '1-3'"},
-                {"--tile", "0/24", "render: --tile 0/24: the 37x23 frame has 23 rows, too few for 24 tiles of whole rows"},
+                {"--tile", "0/3", "render: --tile 0/3: tile 0/3 does not exist (tiles are numbered from 1 to their count)"},
+                {"--tile", "4/3", "render: --tile 4/3: tile 4/3 does not exist (tiles are numbered from 1 to their count)"},
+                {"--tile", "1-3", "render: --tile expects I/N, tile I of N counted from 1 (1/4 to 4/4), found '1-3'"},
+                {"--tile", "1/24", "render: --tile 1/24: the 37x23 frame has 23 rows, too few for 24 tiles of whole rows"},
                 {"--region", "0,38,0,1", "render: --region 0,38,0,1: the region 0,38,0,1 reaches past the 37x23 frame (x1 is at most 37)"},
                 {"--region", "4,4,0,1", "render: --region: the region 4,4,0,1 is empty (x1 must be greater than x0)"},
                 {"--region", "0,1,0", "render: --region: expected X0,X1,Y0,Y1 (four whole numbers separated by commas), found '0,1,0'"},
@@ -167,14 +168,14 @@ class FarmCliTest {
             assertEquals(2, r.status(), r.err());
             assertEquals(c[2] + System.lineSeparator(), r.err());
         }
-        CliTest.Run r = run(scene.toString(), "--tile", "0/2", "--region", "0,1,0,1", "-o", out);
-        assertEquals("render: --region 0,1,0,1: the part of the frame was already given by --tile 0/2" + System.lineSeparator(), r.err());
-        r = run(scene.toString(), "--tile", "0/2", "-o", dir.resolve("x.jpg").toString());
+        CliTest.Run r = run(scene.toString(), "--tile", "1/2", "--region", "0,1,0,1", "-o", out);
+        assertEquals("render: --region 0,1,0,1: the part of the frame was already given by --tile 1/2" + System.lineSeparator(), r.err());
+        r = run(scene.toString(), "--tile", "1/2", "-o", dir.resolve("x.jpg").toString());
         assertEquals(2, r.status());
-        assertTrue(r.err().startsWith("render: --tile 0/2: a region of a frame is written as a PNG tile"), r.err());
-        r = run(scene.toString(), "--tile", "0/2", "--aov", "depth", "-o", out);
+        assertTrue(r.err().startsWith("render: --tile 1/2: a region of a frame is written as a PNG tile"), r.err());
+        r = run(scene.toString(), "--tile", "1/2", "--aov", "depth", "-o", out);
         assertEquals(2, r.status());
-        assertTrue(r.err().startsWith("render: --tile 0/2: render passes (aov depth) are made for whole frames only"), r.err());
+        assertTrue(r.err().startsWith("render: --tile 1/2: render passes (aov depth) are made for whole frames only"), r.err());
         assertFalse(Files.exists(Path.of(out)));
     }
 
@@ -182,7 +183,7 @@ class FarmCliTest {
     void openjdProgressIsLinesAManagerParsesAndTheStatusSaysHowItEnded() throws IOException {
         Path scene = scene();
         Path out = dir.resolve("p.png");
-        CliTest.Run r = run(scene.toString(), "--progress", "openjd", "-o", out.toString(), "--tile", "1/2");
+        CliTest.Run r = run(scene.toString(), "--progress", "openjd", "-o", out.toString(), "--tile", "2/2");
         assertEquals(0, r.status(), r.err());
         List<String> lines = r.out().lines().toList();
         for (String line : lines) assertTrue(line.matches("openjd_status: .+|openjd_progress: (\\d|[1-9]\\d|100)\\.\\d"), line);

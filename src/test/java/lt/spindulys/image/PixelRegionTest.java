@@ -10,7 +10,7 @@ class PixelRegionTest {
         for (int h = 1; h <= 70; h++) {
             for (int n = 1; n <= h; n++) {
                 int next = 0, min = Integer.MAX_VALUE, max = 0;
-                for (int i = 0; i < n; i++) {
+                for (int i = 1; i <= n; i++) {
                     PixelRegion b = PixelRegion.band(i, n, 13, h);
                     assertEquals(next, b.y0(), h + " rows, tile " + i + "/" + n);
                     assertEquals(0, b.x0());
@@ -23,17 +23,18 @@ class PixelRegionTest {
                 assertTrue(max - min <= 1 && min >= 1, h + " rows in " + n + " bands: " + min + " to " + max);
             }
         }
-        PixelRegion last = PixelRegion.band(2_999_999, 3_000_000, 1, 3_000_000); // no overflow in i * h
+        PixelRegion last = PixelRegion.band(3_000_000, 3_000_000, 1, 3_000_000); // no overflow in i * h
         assertEquals(new PixelRegion(0, 1, 2_999_999, 3_000_000), last);
     }
 
     @Test
     void refusals() {
         assertEquals("the 10x5 frame has 5 rows, too few for 6 tiles of whole rows",
-                assertThrows(IllegalArgumentException.class, () -> PixelRegion.band(0, 6, 10, 5)).getMessage());
-        assertEquals("tile -1/3 does not exist (tiles are numbered from 0 to the count less one)",
-                assertThrows(IllegalArgumentException.class, () -> PixelRegion.band(-1, 3, 10, 5)).getMessage());
-        assertThrows(IllegalArgumentException.class, () -> PixelRegion.checkTile(0, 0));
+                assertThrows(IllegalArgumentException.class, () -> PixelRegion.band(1, 6, 10, 5)).getMessage());
+        assertEquals("tile 0/3 does not exist (tiles are numbered from 1 to their count)",
+                assertThrows(IllegalArgumentException.class, () -> PixelRegion.band(0, 3, 10, 5)).getMessage());
+        assertThrows(IllegalArgumentException.class, () -> PixelRegion.band(4, 3, 10, 5));
+        assertThrows(IllegalArgumentException.class, () -> PixelRegion.checkTile(1, 0));
         assertThrows(IllegalArgumentException.class, () -> new PixelRegion(-1, 2, 0, 1));
         assertThrows(IllegalArgumentException.class, () -> new PixelRegion(0, 2, 1, 1));
         assertThrows(IllegalArgumentException.class, () -> PixelRegion.parse("1,2,3"));
