@@ -232,7 +232,7 @@ final class RenderCommand {
             if (farmProgress != null) farmProgress.close();
         }
         String done = MessageText.escape(doneLine(output, result, (System.nanoTime() - t0) / 1e9));
-        if (farmProgress != null) farmProgress.succeeded(done);
+        if (farmProgress != null) farmProgress.wrote(done);
         // On stderr with the progress bar it replaces: stdout carries only what was asked for (--stats).
         if (!quiet) err.println(done);
         if (stats) {

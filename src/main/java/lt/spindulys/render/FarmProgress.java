@@ -17,11 +17,15 @@ import lt.spindulys.limits.MessageText;
  *   <li>{@link Mode#OPENJD}: the Open Job Description directives, which Deadline Cloud and other
  *       OpenJD runtimes read from a task's output: {@code openjd_status: MESSAGE} when the job
  *       enters a step (loading, building, rendering, writing), {@code openjd_progress: P} (percent,
- *       one decimal) every interval while it renders, {@code openjd_progress: 100.0} once the files
- *       are written, and {@code openjd_fail: MESSAGE} with the one-line error when it fails.</li>
+ *       one decimal) every interval while it renders, {@code openjd_progress: 100.0} and
+ *       {@code openjd_status: wrote ...} once the files are written, and
+ *       {@code openjd_fail: MESSAGE} with the one-line error when it fails.</li>
  *   <li>{@link Mode#PLAIN}: {@code render: STEP, P% done, M:SS elapsed, about M:SS to go}, the
  *       share and the estimate only while rendering.</li>
  * </ul>
+ *
+ * <p>A task that renders several frames reports them as one piece of work: {@link #item} starts
+ * frame {@code index} of {@code count}, and the share done is that of all of them.
  */
 public final class FarmProgress implements ProgressListener, AutoCloseable {
     /** The most seconds between two lines. */
@@ -53,7 +57,8 @@ public final class FarmProgress implements ProgressListener, AutoCloseable {
     private final Mode mode;
     private final PrintStream out;
     private final Supplier<RenderJob.Stage> stage;
-    private final String what;
+    private String what;
+    private int index, count = 1;
     private final long start;
     private long done, total;
     private RenderJob.Stage lastStage;
@@ -66,7 +71,7 @@ public final class FarmProgress implements ProgressListener, AutoCloseable {
      *
      * @param mode  the form of the lines
      * @param out   where to print them (the command line prints OpenJD lines on standard output, plain ones on standard error)
-     * @param stage tells the step the job is in ({@link RenderJob#stage})
+     * @param stage tells the step the job now running is in ({@link RenderJob#stage})
      * @param what  what is rendered, for status lines, e.g. the output file's name
      * @param startNanos the {@link System#nanoTime} the run started at
      */
@@ -118,16 +123,18 @@ public final class FarmProgress implements ProgressListener, AutoCloseable {
         if (!changed && !due) return;
         double elapsed = (now - start) / 1e9;
         boolean rendering = s == RenderJob.Stage.RENDER;
-        double share = rendering && total > 0 ? (double) done / total : 0;
+        double share = (index + (rendering && total > 0 ? (double) done / total : 0)) / count;
         if (mode == Mode.OPENJD) {
             // The status again on each interval outside rendering: a sign of life while a large scene loads.
             if (changed || !rendering) out.println("openjd_status: " + step(s));
             if (rendering) out.println(String.format(Locale.ROOT, "openjd_progress: %.1f", Math.floor(share * 1000) / 10));
         } else {
             StringBuilder line = new StringBuilder("render: ").append(step(s));
+            if (count > 1) line.append(" (").append(index + 1).append(" of ").append(count).append(')');
             if (rendering) line.append(String.format(Locale.ROOT, ", %d%% done", (int) Math.floor(share * 100)));
             line.append(", ").append(TerminalProgress.clock(elapsed)).append(" elapsed");
-            double remaining = rendering ? TerminalProgress.remainingSeconds(done, total, elapsed) : Double.NaN;
+            // The rate so far over all the items: the first one's load and build weigh on it less and less.
+            double remaining = rendering ? TerminalProgress.remainingSeconds(Math.round(share * 1e9), 1_000_000_000L, elapsed) : Double.NaN;
             if (!Double.isNaN(remaining)) line.append(", about ").append(TerminalProgress.clock(remaining)).append(" to go");
             out.println(line);
         }
@@ -149,15 +156,34 @@ public final class FarmProgress implements ProgressListener, AutoCloseable {
     }
 
     /**
-     * Stops the thread and reports success: with OpenJD, {@code openjd_progress: 100.0} and a status
-     * naming what was written.
+     * Starts item {@code index} of {@code count} (a frame of several), rendered to {@code what}; its
+     * step is reported as soon as it is seen.
+     *
+     * @param what  what the item writes, for status lines
+     * @param index which item, from 0
+     * @param count how many items the task renders, at least {@code index + 1}
+     */
+    public synchronized void item(String what, int index, int count) {
+        if (index < 0 || count <= index) throw new IllegalArgumentException("item " + index + " of " + count);
+        this.what = MessageText.escape(what);
+        this.index = index;
+        this.count = count;
+        done = 0;
+        total = 0;
+        lastStage = null;
+    }
+
+    /**
+     * Reports an item written: with OpenJD, the share of the task now done
+     * ({@code openjd_progress: 100.0} after the last item) and a status naming what was written.
+     * After the last item the thread stops.
      *
      * @param message what was done, e.g. the closing "wrote ..." line
      */
-    public synchronized void succeeded(String message) {
-        close();
+    public synchronized void wrote(String message) {
+        if (index + 1 == count) close();
         if (mode == Mode.OPENJD) {
-            out.println("openjd_progress: 100.0");
+            out.println(String.format(Locale.ROOT, "openjd_progress: %.1f", Math.floor((index + 1) * 1000.0 / count) / 10));
             out.println("openjd_status: " + MessageText.escape(message));
             out.flush();
         }

@@ -50,10 +50,38 @@ class FarmProgressTest {
         p.tick(5 * S + FarmProgress.INTERVAL_SECONDS * S);
         assertEquals(List.of("openjd_progress: 99.9"), lines(), "never 100 before the files are written");
         stage.set(RenderJob.Stage.WRITE);
-        p.succeeded("wrote out.png (8x8, 1 spp) in 7.0 s");
+        p.wrote("wrote out.png (8x8, 1 spp) in 7.0 s");
         assertEquals(List.of("openjd_progress: 100.0", "openjd_status: wrote out.png (8x8, 1 spp) in 7.0 s"), lines());
         p.tick(60 * S);
         assertEquals(List.of(), lines(), "nothing after the end");
+    }
+
+    @Test
+    void severalFramesAreOnePieceOfWork() {
+        FarmProgress p = sink(FarmProgress.Mode.OPENJD);
+        p.item("f_0001.png", 0, 4);
+        stage.set(RenderJob.Stage.RENDER);
+        p.progress(1, 2);
+        p.tick(0);
+        assertEquals(List.of("openjd_status: rendering f_0001.png", "openjd_progress: 12.5"), lines());
+        p.wrote("wrote f_0001.png");
+        assertEquals(List.of("openjd_progress: 25.0", "openjd_status: wrote f_0001.png"), lines());
+        p.item("f_0002.png", 1, 4);
+        stage.set(RenderJob.Stage.LOAD);
+        p.tick(S);
+        assertEquals(List.of("openjd_status: loading the scene for f_0002.png"), lines(), "a new item's step at once");
+        p.item("f_0004.png", 3, 4);
+        p.wrote("wrote f_0004.png");
+        assertEquals(List.of("openjd_progress: 100.0", "openjd_status: wrote f_0004.png"), lines());
+        p.tick(100 * S);
+        assertEquals(List.of(), lines(), "the last item ends the reports");
+
+        FarmProgress plain = sink(FarmProgress.Mode.PLAIN);
+        plain.item("f_0003.png", 2, 4);
+        stage.set(RenderJob.Stage.RENDER);
+        plain.progress(1, 2);
+        plain.tick(10 * S);
+        assertEquals(List.of("render: rendering f_0003.png (3 of 4), 62% done, 0:10 elapsed, about 0:06 to go"), lines());
     }
 
     @Test
