@@ -55,6 +55,7 @@ class CiRunScriptTest {
         Path ci = Files.createDirectories(stage.resolve("repo/.ci"));
         Files.copy(Path.of(".ci/run"), ci.resolve("run"));
         script(ci.resolve("library-example"), "#!/bin/bash\necho library-example >> \"$LOG\"\n");
+        script(ci.resolve("slurm"), "#!/bin/bash\necho slurm >> \"$LOG\"\n");
         bin = Files.createDirectories(stage.resolve("bin"));
         log = stage.resolve("log");
         for (String tool : List.of("bash", "cat", "dirname", "mktemp", "rm", "true")) {
@@ -123,11 +124,11 @@ class CiRunScriptTest {
     }
 
     @Test
-    void runsTheSuiteUnderTheVirtualServerThenTheLibraryExample() throws Exception {
+    void runsTheSuiteUnderTheVirtualServerThenTheLibraryExampleAndTheSchedulerProof() throws Exception {
         withXvfb();
         Run r = run(Map.of());
         assertEquals(0, r.status, r.stderr);
-        assertEquals(List.of("xvfb-run -a -f AUTH -s -screen 0 1600x1000x24", "mvn -B test DISPLAY=:99", "library-example"), r.log);
+        assertEquals(List.of("xvfb-run -a -f AUTH -s -screen 0 1600x1000x24", "mvn -B test DISPLAY=:99", "library-example", "slurm"), r.log);
         try (java.util.stream.Stream<Path> left = Files.list(stage)) {
             assertEquals(List.of(), left.map(p -> p.getFileName().toString()).filter(n -> n.startsWith("tmp.")).toList(),
                     "the status and authority files are removed");
@@ -166,10 +167,10 @@ class CiRunScriptTest {
                 "apt-get install -y -q --no-install-recommends xvfb xauth",
                 "apt-get update -q",
                 "apt-get install -y -q --no-install-recommends xvfb xauth",
-                "xvfb-run -a -f AUTH -s -screen 0 1600x1000x24", "mvn -B test DISPLAY=:99", "library-example"), r.log);
+                "xvfb-run -a -f AUTH -s -screen 0 1600x1000x24", "mvn -B test DISPLAY=:99", "library-example", "slurm"), r.log);
         Files.delete(log);
         Run again = run(Map.of());
-        assertEquals(List.of("xvfb-run -a -f AUTH -s -screen 0 1600x1000x24", "mvn -B test DISPLAY=:99", "library-example"), again.log,
+        assertEquals(List.of("xvfb-run -a -f AUTH -s -screen 0 1600x1000x24", "mvn -B test DISPLAY=:99", "library-example", "slurm"), again.log,
                 "installed once, used from then on");
     }
 
@@ -202,7 +203,7 @@ class CiRunScriptTest {
         assertEquals(0, broken.status, broken.stderr);
         assertTrue(broken.stderr.contains("could not install xvfb"), broken.stderr);
         assertTrue(broken.stderr.contains("on the existing display DISPLAY=:5"), broken.stderr);
-        assertEquals("mvn -B test DISPLAY=:5", broken.log.get(broken.log.size() - 2));
+        assertEquals("mvn -B test DISPLAY=:5", broken.log.get(broken.log.size() - 3));
 
         Files.delete(log);
         withXvfb();
@@ -217,6 +218,6 @@ class CiRunScriptTest {
         Run r = run(Map.of());
         assertEquals(0, r.status, r.stderr);
         assertTrue(r.stderr.contains("xvfb-run is missing and there is no apt-get to install it"), r.stderr);
-        assertEquals(List.of("mvn -B test DISPLAY=", "library-example"), r.log);
+        assertEquals(List.of("mvn -B test DISPLAY=", "library-example", "slurm"), r.log);
     }
 }
