@@ -28,12 +28,15 @@ import lt.spindulys.limits.MessageText;
  */
 final class AssembleCommand {
     static final String USAGE = """
-            usage: render assemble TILE.png... -o OUT [--quiet]
+            usage: render assemble TILE.png... -o OUT [--frame N] [--quiet]
 
               TILE.png           tiles written by render --region or --tile; a name with * or ? that names no
                                  file is a pattern, matched in its directory (for managers that run no shell):
                                  'out_0001.tile*.png'
               -o, --output OUT   the frame to write: .png, .tga or .jpg (written atomically)
+              --frame N          the frame number for the run of '#' in the tile names and in OUT, padded
+                                 with zeros to the run's length, as render writes them:
+                                 --frame 7 'tiles/shot_####.tile_*_of_4.png' -o 'shot_####.png'
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
               --quiet            no closing 'assembled N tiles into OUT (WxH)' line
             The tiles must be of one frame size and cover it exactly once. Exit status: 0 success,
@@ -46,6 +49,7 @@ final class AssembleCommand {
     private Path output;
     private double quality = ImageOptions.DEFAULT.jpegQuality();
     private boolean quiet;
+    private Integer frame;
 
     AssembleCommand(String[] args) throws UsageException {
         for (int i = 0; i < args.length; i++) {
@@ -64,6 +68,17 @@ final class AssembleCommand {
                     }
                     if (!(quality >= 0 && quality <= 1)) throw new UsageException(a + " must be between 0 and 1, found " + args[i]);
                 }
+                case "--frame" -> {
+                    if (++i >= args.length) throw new UsageException("option " + a + " needs a value");
+                    try {
+                        frame = Integer.parseInt(args[i]);
+                    } catch (NumberFormatException e) {
+                        frame = -1;
+                    }
+                    if (frame < 0 || !args[i].chars().allMatch(c -> c >= '0' && c <= '9')) {
+                        throw new UsageException(a + " expects a frame number (0 or more), found '" + args[i] + "'");
+                    }
+                }
                 case "--quiet", "-q" -> quiet = true;
                 default -> {
                     if (a.startsWith("-") && a.length() > 1) throw new UsageException("unknown option '" + a + "' (see render assemble --help)");
@@ -73,6 +88,10 @@ final class AssembleCommand {
         }
         if (tiles.isEmpty()) throw new UsageException("no tiles given (see render assemble --help)");
         if (output == null) throw new UsageException("no output given: render assemble TILE.png... -o OUT");
+        if (frame != null) {
+            output = forFrame(output, frame);
+            for (int k = 0; k < tiles.size(); k++) tiles.set(k, forFrame(Path.of(tiles.get(k)), frame).toString());
+        }
         ImageFormat format;
         try {
             format = ImageWriter.checkFormat(output);
@@ -112,6 +131,18 @@ final class AssembleCommand {
         }
         if (!quiet) err.println(MessageText.escape("assembled " + files.size() + " tile" + (files.size() == 1 ? "" : "s") + " into " + output + " (" + w + "x" + h + ")"));
         return 0;
+    }
+
+    /** {@code path} with the run of '#' in its file name replaced by the frame number, padded to the run's length. */
+    static Path forFrame(Path path, int frame) throws UsageException {
+        Path name = path.getFileName();
+        String n = name == null ? "" : name.toString();
+        int start = n.indexOf('#'), end = start;
+        if (start < 0) throw new UsageException("--frame " + frame + ": " + path + " has no run of '#' for the frame number, such as shot_####.png");
+        while (end < n.length() && n.charAt(end) == '#') end++;
+        if (n.indexOf('#', end) >= 0) throw new UsageException("--frame " + frame + ": " + path + " has more than one run of '#'");
+        String digits = Integer.toString(frame);
+        return path.resolveSibling(n.substring(0, start) + "0".repeat(Math.max(0, end - start - digits.length())) + digits + n.substring(end));
     }
 
     /**

@@ -110,6 +110,28 @@ class FarmCliTest {
         assertSameImage(whole, dir.resolve("grid.png"));
     }
 
+    @Test
+    void assembleFillsTheFrameNumberIntoTheTileNamesAndTheOutput() throws IOException {
+        Path scene = scene();
+        Files.createDirectories(dir.resolve("tiles"));
+        for (int i = 1; i <= 3; i++) {
+            Path t = dir.resolve("tiles/shot_0042.tile_" + i + "_of_3.png");
+            assertEquals(0, run(scene.toString(), "--tile", i + "/3", "-o", t.toString(), "--quiet").status());
+        }
+        Path decoy = dir.resolve("tiles/shot_0043.tile_1_of_3.png");
+        Files.copy(dir.resolve("tiles/shot_0042.tile_1_of_3.png"), decoy);
+        CliTest.Run r = run("assemble", "--frame", "42", dir.resolve("tiles/shot_####.tile_*_of_3.png").toString(), "-o", dir.resolve("shot_###.png").toString());
+        assertEquals(0, r.status(), r.err());
+        assertEquals("assembled 3 tiles into " + dir.resolve("shot_042.png") + " (37x23)" + System.lineSeparator(), r.err());
+        assertSameImage(whole(scene), dir.resolve("shot_042.png"));
+
+        r = run("assemble", "--frame", "7", dir.resolve("tiles/shot_0042.tile_*_of_3.png").toString(), "-o", dir.resolve("x_#.png").toString());
+        assertEquals(2, r.status());
+        assertTrue(r.err().startsWith("render: --frame 7: " + dir.resolve("tiles/shot_0042.tile_*_of_3.png") + " has no run of '#'"), r.err());
+        r = run("assemble", "--frame", "-1", "a.png", "-o", "b.png");
+        assertEquals("render: --frame expects a frame number (0 or more), found '-1'" + System.lineSeparator(), r.err());
+    }
+
     /** Runs assemble with these tiles; expects status 2, one line containing {@code message}, and no output. */
     private void assertRefused(String message, String... tiles) {
         Path out = dir.resolve("refused.png");
