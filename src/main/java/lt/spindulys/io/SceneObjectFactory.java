@@ -196,9 +196,12 @@ final class SceneObjectFactory {
     /** A light block's point light. */
     /** An environment block's environment: its image read once per parse (shared with textures naming the same file). */
     Environment environment(Props p) {
+        boolean light = (Boolean) p.get("light");
+        if (!light && p.prop("samples") != null) throw err.error(p.prop("samples").at(), "environment samples needs 'light true' (an environment that is not a light sends no shadow rays)");
         TextureImage map = assets.image(p.prop("file"), "environment image");
         try {
-            return new Environment(map, p.num("rotate"), p.num("intensity"));
+            Integer samples = (Integer) p.get("samples");
+            return new Environment(map, p.num("rotate"), p.num("intensity"), light, samples == null ? 1 : samples);
         } catch (IllegalArgumentException e) {
             throw err.blame(p, e);
         }
