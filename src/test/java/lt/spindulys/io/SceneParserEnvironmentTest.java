@@ -77,6 +77,29 @@ class SceneParserEnvironmentTest {
                 + " (only -Y height +X width, rows top-down, is read)", e.getMessage());
     }
 
+    @Test
+    void lightAndSamplesMakeItALightAndBadValuesAreLocated() {
+        Environment lit = parse("environment { file \"sky.hdr\"  light true  samples 16 }").environment();
+        assertTrue(lit.isLight());
+        assertEquals(16, lit.samples());
+        Environment one = parse("environment { file \"sky.hdr\"  light true }").environment();
+        assertTrue(one.isLight());
+        assertEquals(1, one.samples());
+        assertTrue(!parse("environment { file \"sky.hdr\" }").environment().isLight(), "not a light by default");
+        assertTrue(!parse("environment { file \"sky.hdr\"  light false }").environment().isLight());
+        assertTrue(parse("environment { file \"sky.hdr\"  light true }").build().environmentLight() != null, "built when frozen");
+
+        assertEquals("t.dat:1:43: environment samples must be 1..1024, found 0",
+                error("environment { file \"sky.hdr\"  light true  samples 0 }"));
+        assertEquals("t.dat:1:43: environment samples must be 1..1024, found 1025",
+                error("environment { file \"sky.hdr\"  light true  samples 1025 }"));
+        assertEquals("t.dat:1:31: environment samples needs 'light true' (an environment that is not a light sends no shadow rays)",
+                error("environment { file \"sky.hdr\"  samples 4 }"));
+        assertEquals("t.dat:1:31: unknown property 'ligth' in environment (did you mean 'light'?)",
+                firstLine(error("environment { file \"sky.hdr\"  ligth true }")));
+        assertTrue(error("environment { file \"sky.hdr\"  light 1 }").startsWith("t.dat:1:"), error("environment { file \"sky.hdr\"  light 1 }"));
+    }
+
     private static String firstLine(String s) {
         int nl = s.indexOf('\n');
         return nl < 0 ? s : s.substring(0, nl);
