@@ -80,10 +80,22 @@ public final class EnvironmentLight {
      * @throws lt.spindulys.limits.InsufficientMemoryException if the tables do not fit
      */
     public static EnvironmentLight of(Environment environment) {
-        int w = environment.map().width(), h = environment.map().height();
+        requireTables(environment.map());
+        return new EnvironmentLight(environment);
+    }
+
+    /**
+     * Checks that the sampling tables of a light over {@code map} fit in the heap now. The scene
+     * reader calls it where the statement makes the environment a light, so that a map too large
+     * is reported there; {@link #of} checks again when the scene is built and the tables are made.
+     *
+     * @param map the environment's image
+     * @throws lt.spindulys.limits.InsufficientMemoryException if they do not fit
+     */
+    public static void requireTables(TextureImage map) {
+        int w = map.width(), h = map.height();
         long bytes = HeapBudget.sum(Distribution2D.bytes(w, h), HeapBudget.product(8, HeapBudget.sum(2L * h + 1, 5L * w)));
         HeapBudget.require(bytes, "the environment light's sampling tables for the " + w + "x" + h + " map");
-        return new EnvironmentLight(environment);
     }
 
     /** The environment. @return it */

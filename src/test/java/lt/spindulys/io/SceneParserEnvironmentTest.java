@@ -100,6 +100,25 @@ class SceneParserEnvironmentTest {
         assertTrue(error("environment { file \"sky.hdr\"  light 1 }").startsWith("t.dat:1:"), error("environment { file \"sky.hdr\"  light 1 }"));
     }
 
+    /**
+     * The light's sampling tables (8 bytes a texel) are checked where the statement asks for
+     * them: a grey 1024 x 512 PNG takes a little less heap as an image than its tables do, so a
+     * budget between the two reads the image and refuses the light, at 'light'.
+     */
+    @Test
+    void theLightsTablesAreCheckedAtItsStatement() throws IOException {
+        java.awt.image.BufferedImage grey = new java.awt.image.BufferedImage(1024, 512, java.awt.image.BufferedImage.TYPE_BYTE_GRAY);
+        javax.imageio.ImageIO.write(grey, "png", dir.resolve("grey.png").toFile());
+        String text = "environment { file \"grey.png\"\n  light true }";
+        // The tables: 8 * (1025 * 512 + 513) + 8 * (2 * 512 + 1 + 5 * 1024) = 4,251,664 bytes.
+        try (lt.spindulys.limits.HeapBudget.Scope cap = lt.spindulys.limits.HeapBudget.cap(4_251_000)) {
+            assertTrue(!SceneParser.parse("environment { file \"grey.png\" }", "t.dat", dir).environment().isLight(), "the image alone fits");
+            SceneException e = assertThrows(SceneException.class, () -> SceneParser.parse(text, "t.dat", dir));
+            assertTrue(e.getMessage().startsWith("t.dat:2:3: the environment light's sampling tables for the 1024x512 map needs 4"), e.getMessage());
+        }
+        assertTrue(SceneParser.parse(text, "t.dat", dir).environment().isLight(), "fits without the cap");
+    }
+
     private static String firstLine(String s) {
         int nl = s.indexOf('\n');
         return nl < 0 ? s : s.substring(0, nl);
