@@ -26,7 +26,8 @@ final class FarmOptions {
               --tile I/N         render tile I of N (1 <= I <= N) as --region does: band I of N bands of whole
                                  rows from the top, which cover the frame exactly once (N at most its height)
               --progress MODE    one line at least every 2 s, for a farm's manager: openjd (openjd_status: and
-                                 openjd_progress: lines on stdout, openjd_fail: on failure) or plain (on stderr)""";
+                                 openjd_progress: lines on stdout, openjd_fail: on failure) or plain (on stderr)
+            """;
 
     private PixelRegion region;
     private int tileNumber = -1, tileCount;

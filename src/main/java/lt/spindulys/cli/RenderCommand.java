@@ -44,7 +44,7 @@ final class RenderCommand {
                                     [--subdiv-target PX] [--subdiv-memory MIB] [--subdiv-cache MIB]
                                     [--quality Q] [--region X0,X1,Y0,Y1 | --tile I/N] [--progress openjd|plain]
                                     [--stats] [--quiet] [--debug]
-                   render assemble TILE.png... -o OUT                             (see render assemble --help)
+                   render assemble TILE.png... -o OUT [--frame N]                (see render assemble --help)
                    render subdivide MESH.obj|MESH.dat --level N|--scene SCENE.dat -o OUT.obj [...]   (see render subdivide --help)
                    render bench [--only NAME] [--runs N] [--accel A] [--list]      (see render bench --help)
                    render view [MESH.obj|MESH.dat|UNWRAP.tex ...]                  (see render view --help)
@@ -69,8 +69,7 @@ final class RenderCommand {
               --subdiv-memory MIB  heap for adaptive subdivision, eager and cached together (0: automatic)
               --subdiv-cache MIB the lazy patches' cache, part of the subdivision memory (default 64)
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
-""" + FarmOptions.USAGE + """
-
+            """ + FarmOptions.USAGE + """
               --stats            print load, build and render times, rays by kind, Mrays/s, peak heap,
                                  per mesh its triangles and its tree's SAH cost, and per adaptive
                                  subdiv its levels, patches, cache hits and misses

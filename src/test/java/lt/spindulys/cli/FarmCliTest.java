@@ -202,6 +202,18 @@ class FarmCliTest {
     }
 
     @Test
+    void theHelpListsTheFarmOptionsInItsColumns() {
+        CliTest.Run r = run("--help");
+        assertEquals(0, r.status());
+        assertTrue(r.out().startsWith("usage: render SCENE.dat "), r.out());
+        for (String option : new String[] {"--region X0,X1,Y0,Y1  render", "--tile I/N         render", "--progress MODE    one line"}) {
+            assertTrue(r.out().contains(System.lineSeparator() + "  " + option) || r.out().contains("\n  " + option), option);
+        }
+        r = run("assemble", "--help");
+        assertTrue(r.out().startsWith("usage: render assemble TILE.png... -o OUT"), r.out());
+    }
+
+    @Test
     void openjdProgressIsLinesAManagerParsesAndTheStatusSaysHowItEnded() throws IOException {
         Path scene = scene();
         Path out = dir.resolve("p.png");
