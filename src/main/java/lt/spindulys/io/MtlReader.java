@@ -43,7 +43,10 @@ import lt.spindulys.texture.Wrap;
  *     transmission filter;</li>
  * <li>{@code Ni} is the index of refraction, used by the refracting illum models 6 and 7;</li>
  * <li>{@code Ke} is an emitted colour (a uniform texture on the emission channel);</li>
- * <li>{@code illum} 0 to 9 says which terms are on (see {@link #illum});</li>
+ * <li>{@code illum} 0 to 9 says which terms are on: 0 the colour Kd as it is (emitted, unlit),
+ *     1 ambient and diffuse, 2 (the default) with the highlight, 3 to 9 with reflection (kr
+ *     the mean of Ks, at most 1 − kt), 5 and 7 with Fresnel, 6 and 7 refracting with ior Ni;
+ *     10 is refused;</li>
  * <li>{@code map_Kd}, {@code map_Ks}, {@code map_d}, {@code map_Bump} (or {@code bump}) bind
  *     image textures to the diffuse, specular, transparency and bump channels through the mesh's
  *     UVs, with the options {@code -o}, {@code -s}, {@code -clamp} and (bump only) {@code -bm}.</li>
@@ -99,9 +102,11 @@ public final class MtlReader {
         return new Parser(text, fileName, folder, textures).run();
     }
 
-    /** The statements read, lower case, in documentation order. */
-    static final List<String> KEYS = List.of("newmtl", "kd", "ka", "ks", "ns", "d", "tr", "tf", "ni", "ke", "illum",
-            "map_kd", "map_ks", "map_d", "map_bump", "bump");
+    /** The statements read, as the format spells them, in documentation order. */
+    static final List<String> KEYS = List.of("newmtl", "Kd", "Ka", "Ks", "Ns", "d", "Tr", "Tf", "Ni", "Ke", "illum",
+            "map_Kd", "map_Ks", "map_d", "map_Bump", "bump");
+    /** {@link #KEYS} in lower case, as keywords are matched. */
+    private static final List<String> LOWER_KEYS = KEYS.stream().map(k -> k.toLowerCase(Locale.ROOT)).toList();
 
     /** Statements of the format that are known but not supported, with why. */
     private static String unsupported(String key) {
@@ -195,11 +200,12 @@ public final class MtlReader {
                 if (spec != null) finish(spec);
                 return new Spec(name, line);
             }
-            if (!KEYS.contains(key)) {
+            if (!LOWER_KEYS.contains(key)) {
                 String why = unsupported(key);
                 if (why != null) throw error(kw.column(), "'" + kw.text() + "' is not supported (" + why + "); supported: " + keyList());
-                throw error(kw.column(), "unknown material statement " + MessageText.quote(kw.text()) + SceneGrammar.didYouMean(key, KEYS)
-                        + " (supported: " + keyList() + ")");
+                String near = SceneGrammar.nearest(key, LOWER_KEYS);
+                throw error(kw.column(), "unknown material statement " + MessageText.quote(kw.text())
+                        + (near == null ? "" : " (did you mean '" + KEYS.get(LOWER_KEYS.indexOf(near)) + "'?)") + " (supported: " + keyList() + ")");
             }
             if (spec == null) throw error(kw.column(), "'" + kw.text() + "' before any 'newmtl' (a material's statements follow its newmtl line)");
             Integer earlier = spec.given.putIfAbsent(key.equals("tr") ? "d" : key.equals("bump") ? "map_bump" : key, line);
@@ -233,7 +239,7 @@ public final class MtlReader {
         }
 
         private static String keyList() {
-            return "newmtl, Kd, Ka, Ks, Ns, d, Tr, Tf, Ni, Ke, illum, map_Kd, map_Ks, map_d, map_Bump, bump";
+            return String.join(", ", KEYS);
         }
 
         /** The material of a complete spec, through the builder; refusals are reported at the newmtl line. */
