@@ -175,7 +175,7 @@ final class SceneAssetCache {
                             + ") defines it" + SceneGrammar.didYouMean(name, fromFiles.keySet());
                     throw new SceneException(obj.toString(), at.line(), at.column(), "no material " + MessageText.quote(name) + ": " + libs
                             + ", and the scene gives none (write usemtl \"" + MessageText.cut(name, 40) + "\" followed by a material in the '"
-                            + p.block.keyword() + "' block at " + p.opener.position() + ")");
+                            + p.block.keyword() + "' block at " + err.where(p.opener) + ")");
                 }
             }
             setter.set(name, m);
