@@ -374,7 +374,7 @@ public final class MtlReader {
                         bm = number(value(toks, i++, "a number after '-bm'"), "-bm", -Ranges.MAX_NUMBER, Ranges.MAX_NUMBER);
                     }
                     default -> throw error(opt.column(), "texture option " + MessageText.quote(opt.text()) + " is not supported"
-                            + SceneGrammar.didYouMean(o, OPTIONS) + " (supported: -o, -s, -clamp" + (bump ? ", -bm" : "") + ")");
+                            + SceneGrammar.didYouMean(o, bump ? OPTIONS : OPTIONS.subList(0, 3)) + " (supported: -o, -s, -clamp" + (bump ? ", -bm" : "") + ")");
                 }
             }
             if (i >= toks.size()) throw error(current.length() + 1, "expected a texture file name for '" + key + "', found end of line");

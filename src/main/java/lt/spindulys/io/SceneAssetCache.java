@@ -174,8 +174,8 @@ final class SceneAssetCache {
                             : "no material library it names (" + MessageText.cut(String.join(", ", read.libraries().stream().map(ObjReader.Ref::name).toList()), 200)
                             + ") defines it" + SceneGrammar.didYouMean(name, fromFiles.keySet());
                     throw new SceneException(obj.toString(), at.line(), at.column(), "no material " + MessageText.quote(name) + ": " + libs
-                            + ", and the scene gives none (write usemtl \"" + MessageText.cut(name, 40) + "\" followed by a material in the '"
-                            + p.block.keyword() + "' block at " + err.where(p.opener) + ")");
+                            + ", and the scene gives none (write usemtl \"" + MessageText.cut(name, 40) + "\" and a material in the '"
+                            + p.block.keyword() + "' block at " + p.opener.position() + ")");
                 }
             }
             setter.set(name, m);

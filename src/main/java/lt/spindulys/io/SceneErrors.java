@@ -21,11 +21,6 @@ final class SceneErrors {
         this.file = file;
     }
 
-    /** "file:line:column" of a token, as messages name a place in the scene file. */
-    String where(Token at) {
-        return SceneException.location(file, at.line(), at.column());
-    }
-
     SceneException error(Token at, String message) {
         return new SceneException(file, at.line(), at.column(), message);
     }

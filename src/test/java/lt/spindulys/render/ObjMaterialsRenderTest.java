@@ -164,7 +164,7 @@ class ObjMaterialsRenderTest {
         Files.writeString(dir.resolve("cube.mtl"), "newmtl Red\nKd 1 0 0\nnewmtl Back\n");
         SceneException e = assertThrows(SceneException.class, () -> render("mesh { file \"cube.obj\" }"));
         assertEquals(dir.resolve("cube.obj") + ":15:8: no material 'Blue': no material library it names (cube.mtl) defines it, and the scene gives none"
-                + " (write usemtl \"Blue\" followed by a material in the 'mesh' block at s.dat:4:1)", e.getMessage());
+                + " (write usemtl \"Blue\" and a material in the 'mesh' block at 4:1)", e.getMessage());
         // The scene giving it is enough.
         render("mesh { file \"cube.obj\"  usemtl \"Blue\" { color 0 0 1 } }");
         // As is the object's own material, which overrides them all.
