@@ -118,6 +118,9 @@ public final class MtlReader {
         };
     }
 
+    /** Tokens of a line looked at: more than the longest statement (a map with every option) has. */
+    private static final int MAX_TOKENS = 32;
+
     /** The options a map statement takes: -o, -s, -clamp, and -bm on bump maps. */
     private static final List<String> OPTIONS = List.of("-o", "-s", "-clamp", "-bm");
 
@@ -137,8 +140,8 @@ public final class MtlReader {
         }
     }
 
-    /** A texture statement: the texture, its mapping's scale and offset, and the bump multiplier. */
-    private record MapSpec(Texture texture, Uv mapping, double bm, int line, int column) {}
+    /** A texture statement: the texture, its mapping (scale and offset), and the bump multiplier. */
+    private record MapSpec(Texture texture, Uv mapping, double bm) {}
 
     /** A token of a line: its text and where it starts (0-based index into the line, 1-based column). */
     private record Tok(String text, int index, int column) {}
@@ -399,7 +402,7 @@ public final class MtlReader {
                 throw error(nameTok.column(), "cannot read texture image " + MessageText.quote(name) + ": " + reason);
             }
             // -s multiplies the coordinates: the mapping's scale is the repeat's length, 1/s.
-            return new MapSpec(texture, new Uv(1 / su, 1 / sv, ou, ov), bm, line, toks.get(0).column());
+            return new MapSpec(texture, new Uv(1 / su, 1 / sv, ou, ov), bm);
         }
 
         private static boolean isNumber(String s) {
@@ -440,10 +443,15 @@ public final class MtlReader {
             return current.substring(t.index()).strip();
         }
 
+        /**
+         * The first {@link #MAX_TOKENS} tokens of a line: no statement has more (a map's file name
+         * is the rest of the line), and a line of millions of numbers must not become as many
+         * objects (a statement with too many values is refused at its first extra one, among them).
+         */
         private List<Tok> tokens(String s) {
             List<Tok> out = new ArrayList<>();
             int i = 0, n = s.length(), column = 1;
-            while (i < n) {
+            while (i < n && out.size() < MAX_TOKENS) {
                 char c = s.charAt(i);
                 if (c == ' ' || c == '\t' || c == '\f' || c == 0x0B) {
                     i++;
