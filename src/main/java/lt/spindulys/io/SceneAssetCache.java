@@ -3,7 +3,6 @@ package lt.spindulys.io;
 import java.io.IOException;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -46,8 +45,13 @@ final class SceneAssetCache {
     private final Map<SubdivKey, SubdivisionSurface> surfaces = new HashMap<>();
     /** Adaptive surfaces by control mesh and scheme (level -1): later statements share the first one's refiner. */
     private final Map<SubdivKey, AdaptiveSubdivisionSurface> adaptiveSurfaces = new HashMap<>();
-    /** What each OBJ file read says about materials: its mtllib and first usemtl places. */
-    private final Map<Path, ObjReader.Read> objMaterials = new HashMap<>();
+    /** What each OBJ file read says about materials (not the mesh, which is not kept here). */
+    private final Map<Path, MaterialRefs> objMaterials = new HashMap<>();
+
+    /** An OBJ file's mtllib file names and each face group's first usemtl, in group order. */
+    private record MaterialRefs(List<ObjReader.Ref> libraries, List<ObjReader.Ref> groups) {
+        static MaterialRefs of(ObjReader.Read r) { return new MaterialRefs(r.libraries(), r.groups()); }
+    }
     /** Each OBJ file's libraries' materials by name, read when a statement first needs them. */
     private final Map<Path, Map<String, Material>> objLibraries = new HashMap<>();
     /** Every material library of this parse, read once however many OBJ files name it. */
@@ -107,7 +111,7 @@ final class SceneAssetCache {
         MeshData data;
         try {
             ObjReader.Read read = ObjReader.readMesh(path);
-            objMaterials.put(path, read);
+            objMaterials.put(path, MaterialRefs.of(read));
             data = read.mesh();
         } catch (IOException e) {
             throw err.error(f.valueAt(), "cannot read mesh file " + MessageText.quote(rel) + ": " + e.getMessage());
@@ -157,7 +161,7 @@ final class SceneAssetCache {
             }
         }
         if (groups == null || p.prop("material") != null) return;
-        ObjReader.Read read = objMaterials.get(obj);
+        MaterialRefs read = objMaterials.get(obj);
         Map<String, Material> fromFiles = null;
         for (int g = 0; g < groups.length; g++) {
             String name = groups[g];
@@ -187,7 +191,7 @@ final class SceneAssetCache {
      * once per OBJ file); a library that is missing is an error at its mtllib, and a name that two
      * of them define an error at the second's.
      */
-    private Map<String, Material> libraryMaterials(Path obj, ObjReader.Read read) {
+    private Map<String, Material> libraryMaterials(Path obj, MaterialRefs read) {
         Map<String, Material> all = objLibraries.get(obj);
         if (all != null) return all;
         all = new HashMap<>();
@@ -353,7 +357,7 @@ final class SceneAssetCache {
         try {
             if (ext.equals("obj")) {
                 ObjReader.Read read = ObjReader.readSubdivision(path);
-                objMaterials.put(path, read);
+                objMaterials.put(path, MaterialRefs.of(read));
                 input = read.subdiv();
             } else {
                 input = SubdivInput.of(WorkframeReader.readMesh(path));

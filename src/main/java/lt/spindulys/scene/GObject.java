@@ -180,6 +180,9 @@ public abstract class GObject implements TracedObject, Cloneable {
      * Sets the material of the face group named {@code name} among {@code names} (the shape's
      * public {@code groupMaterial} methods call this).
      *
+     * @param names the object's group names, by index, or null when it has none
+     * @param name the group's name
+     * @param m the material, or null for the object's
      * @throws IllegalArgumentException if there is no group of that name
      */
     protected final void setGroupMaterial(String[] names, String name, Material m) {
@@ -194,6 +197,7 @@ public abstract class GObject implements TracedObject, Cloneable {
         next[g] = m;
         groupMaterials = next;
     }
+
     /**
      * Names this object for messages (null: none, then it is named by its {@link #kind()}).
      *

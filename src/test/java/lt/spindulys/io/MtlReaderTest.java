@@ -211,6 +211,7 @@ class MtlReaderTest {
                 org.junit.jupiter.params.provider.Arguments.of("newmtl a\nKd 1 x 1\n", "2:6: expected a number for 'Kd', found 'x'"),
                 org.junit.jupiter.params.provider.Arguments.of("newmtl a\nKd 1 1\n", "2:7: expected 1 or 3 numbers for 'Kd', found 2"),
                 org.junit.jupiter.params.provider.Arguments.of("newmtl a\nKd 1 1 1 1\n", "2:10: unexpected '1' after the colour of 'Kd' (expected 1 or 3 numbers)"),
+                org.junit.jupiter.params.provider.Arguments.of("newmtl a\nKd" + " 1".repeat(100_000) + "\n", "2:10: unexpected '1' after the colour of 'Kd' (expected 1 or 3 numbers)"),
                 org.junit.jupiter.params.provider.Arguments.of("newmtl a\nKd 200\n", "2:4: 'Kd' must be between 0 and 100, found 200"),
                 org.junit.jupiter.params.provider.Arguments.of("newmtl a\nKa spectral ka.rfl\n", "2:4: 'Ka spectral' is not supported; give r g b (or one number for grey)"),
                 org.junit.jupiter.params.provider.Arguments.of("newmtl a\nKs\n", "2:3: expected 1 or 3 numbers for 'Ks', found end of line"),
