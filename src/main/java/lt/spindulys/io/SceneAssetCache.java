@@ -207,7 +207,7 @@ final class SceneAssetCache {
             String problem = InputFiles.problem(path);
             if (problem != null) {
                 throw new SceneException(obj.toString(), lib.line(), lib.column(), "material library " + MessageText.quote(lib.name()) + " " + problem
-                        + " (looked in " + MessageText.cut(path.toString(), 200) + ")");
+                        + " (looked in " + MessageText.cut(path.toString(), 200) + "; a 'material' key on the object replaces the file's materials)");
             }
             Map<String, Material> one = libraries.get(path);
             if (one == null) {

@@ -467,7 +467,7 @@ public final class BadInputCases {
                 withFile("subdiv .dat point over 1e15", "subdiv { file \"m.dat\" }", "m.dat", "4 1\n0 0 0\n1 0 0\n1 1e300 0\n0 1 0\n4 0 1 2 3\n", true,
                         "4:3: number 1e300 is too large for point 2 y (mesh numbers are at most 1e15 in magnitude)"),
                 // OBJ materials (mtllib, usemtl, .mtl files, the scene's usemtl key).
-                new Case("OBJ mtllib not found", "mesh { file \"m.obj\" }", "4:8: material library 'none.mtl' not found (looked in ${dir}/none.mtl)",
+                new Case("OBJ mtllib not found", "mesh { file \"m.obj\" }", "4:8: material library 'none.mtl' not found (looked in ${dir}/none.mtl; a 'material' key on the object replaces the file's materials)",
                         Map.of("m.obj", TRI_OBJ + "mtllib none.mtl\nusemtl red\nf 1 2 3\n"), "m.obj"),
                 new Case("OBJ usemtl that no library defines", "subdiv { file \"m.obj\"  level 1 }",
                         "7:8: no material 'blue': no material library it names (m.mtl) defines it, and the scene gives none"
