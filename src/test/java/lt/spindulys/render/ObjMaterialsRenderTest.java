@@ -160,6 +160,29 @@ class ObjMaterialsRenderTest {
     }
 
     @Test
+    void placementsOfOneFileHaveTheirOwnGroupMaterials() {
+        Scene s = SceneParser.parse("material green { color 0 1 0 }\nmaterial white { color 1 1 1 }\n"
+                + "mesh { file \"cube.obj\" }\nmesh { file \"cube.obj\"  usemtl \"Red\" green }\nmesh { file \"cube.obj\"  material white }\n"
+                + "subdiv { file \"cube.obj\"  level 1 }\nsubdiv { file \"cube.obj\"  level 1  usemtl \"Red\" green }", "s.dat", dir).build();
+        TriangleMesh a = (TriangleMesh) s.objects().get(0), b = (TriangleMesh) s.objects().get(1), c = (TriangleMesh) s.objects().get(2);
+        assertTrue(b.isInstance(), "the second statement places the first's geometry again");
+        int red = -1;
+        for (int i = 0; i < a.triangleCount() && red < 0; i++) if (a.data().faceGroups()[i] == 0) red = i;
+        assertEquals("Red", a.material(red, 0).name());
+        assertEquals("green", b.material(red, 0).name(), "the instance's own usemtl");
+        assertEquals("white", c.material(red, 0).name(), "the object's material overrides the groups");
+        lt.spindulys.scene.SubdivisionSurface d = (lt.spindulys.scene.SubdivisionSurface) s.objects().get(3),
+                e = (lt.spindulys.scene.SubdivisionSurface) s.objects().get(4);
+        assertTrue(e.isInstance());
+        int[] groups = d.triangleData().faceGroups();
+        for (int i = 0; i < groups.length; i++) {
+            if (groups[i] != 0) continue;
+            assertEquals("Red", d.material(i, 0).name());
+            assertEquals("green", e.material(i, 0).name());
+        }
+    }
+
+    @Test
     void groupsWithoutMaterialsAreLocated() throws IOException, InterruptedException {
         Files.writeString(dir.resolve("cube.mtl"), "newmtl Red\nKd 1 0 0\nnewmtl Back\n");
         SceneException e = assertThrows(SceneException.class, () -> render("mesh { file \"cube.obj\" }"));
