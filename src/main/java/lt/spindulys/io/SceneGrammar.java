@@ -57,7 +57,9 @@ final class SceneGrammar {
         /** Two numbers. */
         INTERVAL,
         /** A nested { ... } block of {@link SceneGrammar#MOTION} keys: how an object moves during the shutter. */
-        MOTION
+        MOTION,
+        /** A double-quoted face group (OBJ usemtl) name, then a material as {@link #MATERIAL} takes it. */
+        GROUP_MATERIAL
     }
 
     /** What a block makes, which decides how the parser turns its keys into builder calls. */
@@ -288,9 +290,11 @@ final class SceneGrammar {
             req("vertices", Kind.VERTICES));
 
     // No default for shading: absent means "smooth if the OBJ has normals", decided after reading it.
+    // 'usemtl' gives the faces of one OBJ usemtl name a scene material (over the .mtl file's).
     static final Block MESH = solid("mesh",
             req("file", Kind.STRING),
-            choice("shading", null, "smooth", "flat"));
+            choice("shading", null, "smooth", "flat"),
+            repeat("usemtl", Kind.GROUP_MATERIAL));
 
     // No defaults for the scheme options: absent means "as the file's tags say, else OpenSubdiv's default".
     static final Block SUBDIV = solid("subdiv",
@@ -307,7 +311,8 @@ final class SceneGrammar {
             choice("triangles", null, "catmark", "smooth"),
             choice("shading", "smooth", "smooth", "flat"),
             opt("uv", Kind.STRING),
-            choice("positions", "refined", "refined", "limit"));
+            choice("positions", "refined", "refined", "limit"),
+            repeat("usemtl", Kind.GROUP_MATERIAL));
 
     // CSG: only the common keys; the operands are the object statements nested in the block.
     static final Block UNION = new Block("union", Category.CSG, true, OBJECT_COMMON);
