@@ -46,9 +46,11 @@ public final class TracerScratch {
     /** Per area light: its strata in the order the pixel's samples take them, and the generation they were drawn for. */
     int[][] lightStrata = new int[0][];
     int[] lightStrataGeneration = new int[0];
+    /** Per area light: the columns of its strata's grid (rows = strata / cols). */
+    int[] lightStrataCols = new int[0];
     final lt.spindulys.sampling.Rng lightRng = new lt.spindulys.sampling.Rng();
-    /** An area-light sample: the point on the light and the weight of its radiance. */
-    final double[] lightSample = new double[4];
+    /** An area-light sample: the point on the light, the weight of its radiance and its distance from the shaded point. */
+    final double[] lightSample = new double[5];
 
     /**
      * Says which pixel sample the next camera ray is, so that area-light samples are stratified
