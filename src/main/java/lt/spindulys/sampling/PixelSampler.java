@@ -70,7 +70,7 @@ public final class PixelSampler {
             if (!times && lens == null) return;
             double u = rng.nextDouble(), v = rng.nextDouble();
             lensSample(0, 0, u, v);
-            time[0] = rng.nextDouble();
+            time[0] = times ? rng.nextDouble() : 0;
             return;
         }
         for (int i = 0; i < n; i++) {
