@@ -57,7 +57,9 @@ final class SceneGrammar {
         /** Two numbers. */
         INTERVAL,
         /** A nested { ... } block of {@link SceneGrammar#MOTION} keys: how an object moves during the shutter. */
-        MOTION
+        MOTION,
+        /** A double-quoted face group (OBJ usemtl) name, then a material as {@link #MATERIAL} takes it. */
+        GROUP_MATERIAL
     }
 
     /** What a block makes, which decides how the parser turns its keys into builder calls. */
@@ -199,11 +201,14 @@ final class SceneGrammar {
             opt("power", Kind.NUMBER),
             opt("samples", Kind.INTEGER, 1)));
 
-    // Rotation about the up axis (+Y) in degrees; intensity scales every value (scene.Environment).
+    // Rotation about the up axis (+Y) in degrees; intensity scales every value; light makes it
+    // light surfaces with 'samples' shadow rays per pixel sample (scene.Environment; samples only with light true).
     static final Block ENVIRONMENT = new Block("environment", Category.ENVIRONMENT, false, List.of(
             req("file", Kind.STRING),
             opt("rotate", Kind.NUMBER, 0.0),
-            opt("intensity", Kind.NUMBER, 1.0)));
+            opt("intensity", Kind.NUMBER, 1.0),
+            opt("light", Kind.BOOLEAN, false),
+            opt("samples", Kind.INTEGER)));
 
     static final Block MATERIAL = new Block("material", Category.MATERIAL, false, List.of(
             opt("color", Kind.COLOR),
@@ -285,9 +290,11 @@ final class SceneGrammar {
             req("vertices", Kind.VERTICES));
 
     // No default for shading: absent means "smooth if the OBJ has normals", decided after reading it.
+    // 'usemtl' gives the faces of one OBJ usemtl name a scene material (over the .mtl file's).
     static final Block MESH = solid("mesh",
             req("file", Kind.STRING),
-            choice("shading", null, "smooth", "flat"));
+            choice("shading", null, "smooth", "flat"),
+            repeat("usemtl", Kind.GROUP_MATERIAL));
 
     // No defaults for the scheme options: absent means "as the file's tags say, else OpenSubdiv's default".
     static final Block SUBDIV = solid("subdiv",
@@ -304,7 +311,8 @@ final class SceneGrammar {
             choice("triangles", null, "catmark", "smooth"),
             choice("shading", "smooth", "smooth", "flat"),
             opt("uv", Kind.STRING),
-            choice("positions", "refined", "refined", "limit"));
+            choice("positions", "refined", "refined", "limit"),
+            repeat("usemtl", Kind.GROUP_MATERIAL));
 
     // CSG: only the common keys; the operands are the object statements nested in the block.
     static final Block UNION = new Block("union", Category.CSG, true, OBJECT_COMMON);

@@ -43,14 +43,17 @@ public final class TracerScratch {
     int pixelX, pixelY, sample, samplesPerPixel = 1;
     /** Bumped whenever the pixel or sample count changes, so per-pixel light strata are redrawn. */
     int pixelGeneration = 1;
-    /** Per area light: its strata in the order the pixel's samples take them, and the generation they were drawn for. */
+    /** Per sampled light (the area lights, then the environment if it is a light): its strata in the order the pixel's samples take them, and the generation they were drawn for. */
     int[][] lightStrata = new int[0][];
     int[] lightStrataGeneration = new int[0];
-    /** Per area light: the columns of its strata's grid (rows = strata / cols). */
+    /** Per sampled light, as lightStrata: the columns of its strata's grid (rows = strata / cols). */
     int[] lightStrataCols = new int[0];
     final lt.spindulys.sampling.Rng lightRng = new lt.spindulys.sampling.Rng();
-    /** An area-light sample: the point on the light, the weight of its radiance and its distance from the shaded point. */
-    final double[] lightSample = new double[5];
+    /**
+     * A light sample: an area light's point, the weight of its radiance and its distance from the
+     * shaded point (5 values), or an environment light's direction, solid angle and radiance (7).
+     */
+    final double[] lightSample = new double[7];
 
     /**
      * Says which pixel sample the next camera ray is, so that area-light samples are stratified
