@@ -12,6 +12,7 @@ import java.util.Set;
 
 import lt.spindulys.scene.AcceleratorKind;
 import lt.spindulys.scene.AdaptiveSettings;
+import lt.spindulys.camera.AnimatedCamera;
 import lt.spindulys.camera.Camera;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.camera.ThinLensCamera;
@@ -40,6 +41,7 @@ final class RenderCommand {
             usage: render SCENE.dat [-o OUT] [--width W] [--height H] [--spp N] [--aperture R] [--focus D]
                                     [--threads N] [--seed S] [--accel A] [--aov LIST] [--shutter OPEN,CLOSE] [--timesteps N]
                                     [--subdiv-target PX] [--subdiv-memory MIB] [--subdiv-cache MIB]
+                                    [--frame N | --frames A-B[:STEP]] [--skip-existing]
                                     [--quality Q] [--stats] [--quiet] [--debug]
                    render subdivide MESH.obj|MESH.dat --level N|--scene SCENE.dat -o OUT.obj [...]   (see render subdivide --help)
                    render bench [--only NAME] [--runs N] [--accel A] [--list]      (see render bench --help)
@@ -64,6 +66,7 @@ final class RenderCommand {
               --subdiv-target PX target edge length in pixels of every adaptive subdiv (overrides the scene's)
               --subdiv-memory MIB  heap for adaptive subdivision, eager and cached together (0: automatic)
               --subdiv-cache MIB the lazy patches' cache, part of the subdivision memory (default 64)
+            """ + FrameOptions.USAGE + """
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
               --stats            print load, build and render times, rays by kind, Mrays/s, peak heap,
                                  per mesh its triangles and its tree's SAH cost, and per adaptive
@@ -83,6 +86,8 @@ final class RenderCommand {
     private Double subdivTarget, subdivMemory, subdivCache;
     private double quality = ImageOptions.DEFAULT.jpegQuality();
     private boolean stats, quiet;
+    private final FrameOptions frames = new FrameOptions();
+    private boolean outputDefaulted;
 
     /** Parses arguments (after --debug was taken out). */
     RenderCommand(String[] args) throws UsageException {
@@ -121,6 +126,7 @@ final class RenderCommand {
                     subdivCache = doubleValue(args, ++i, a, 0, AdaptiveSettings.MAX_BYTES >> 20);
                     if (!(subdivCache * (1 << 20) >= 1)) throw new UsageException(a + " must be more than 0 (mebibytes of the lazy patches' cache), found " + args[i]);
                 }
+                case "--frame", "--frames", "--skip-existing" -> i = frames.option(args, i);
                 case "--stats" -> stats = true;
                 case "--quiet", "-q" -> quiet = true;
                 default -> {
@@ -132,6 +138,7 @@ final class RenderCommand {
         }
         if (scene == null) throw new UsageException("no scene file given (see render --help)");
         if (output == null) {
+            outputDefaulted = true;
             String name = scene.getFileName().toString();
             int dot = name.lastIndexOf('.');
             output = Path.of((dot > 0 ? name.substring(0, dot) : name) + ".png");
@@ -143,8 +150,40 @@ final class RenderCommand {
         }
     }
 
-    /** Runs the command; returns the exit status. Bad input surfaces as exceptions handled by {@link Main}. */
+    /**
+     * Runs the command; returns the exit status. Bad input surfaces as exceptions handled by {@link Main}.
+     * The scene is read by the first render; an animated one (or frames asked for) then goes on
+     * frame by frame from the scene as read.
+     */
     int run(PrintStream out, PrintStream err) throws IOException, InterruptedException, UsageException {
+        try {
+            return render(out, err, output, null, null);
+        } catch (Animated a) {
+            if (shutter != null) throw new UsageException("--shutter does not combine with an animation's frames: each frame's shutter is set by its shutter angle");
+            FrameRange list = frames.frames(a.builder.animation(), scene);
+            OutputPattern pattern = frames.pattern(output, outputDefaulted, list);
+            frames.render(list, pattern, override(a.builder.settings()).aovs(), quiet ? null : err,
+                    (path, n) -> render(out, err, path, n, a.builder));
+            return 0;
+        }
+    }
+
+    /** Thrown when the scene read is animated, or frames were asked for: the frames are rendered from {@link #builder}. */
+    private static final class Animated extends RuntimeException {
+        final SceneBuilder builder;
+
+        Animated(SceneBuilder builder) {
+            super("animated", null, false, false);
+            this.builder = builder;
+        }
+    }
+
+    /**
+     * Renders once to {@code output}: the scene file as a still (frame null, builder null), or
+     * one frame from the scene as read.
+     */
+    private int render(PrintStream out, PrintStream err, Path output, Integer frame, SceneBuilder builder)
+            throws IOException, InterruptedException, UsageException {
         // Refused before anything is opened: a pipe would block, a device never end.
         String problem = InputFiles.problem(scene);
         if (problem != null) throw new NoSuchFileException(scene, problem);
@@ -159,12 +198,16 @@ final class RenderCommand {
         TerminalProgress bar = !quiet && System.console() != null ? new TerminalProgress(err) : null;
         SceneBuilder[] loaded = new SceneBuilder[1];
         double[] warmup = new double[1];
-        RenderJob job = RenderJob.of(scene).output(output).jpegQuality(quality).threads(n).progress(bar)
+        RenderJob job = (builder != null ? RenderJob.of(builder).frame(frame) : RenderJob.of(scene)).output(output).jpegQuality(quality).threads(n).progress(bar)
                 .settings(this::override);
-        if (aperture != null || focus != null) job.camera(c -> withLens(c, aperture, focus));
+        // An animated camera's lens rides along with it.
+        if (aperture != null || focus != null) {
+            job.camera(c -> c instanceof AnimatedCamera a ? a.withBase(withLens(a.base(), aperture, focus)) : withLens(c, aperture, focus));
+        }
         RenderResult result;
         try (JitWarmup warm = JitWarmup.start()) {
             job.onLoaded(b -> {
+                if (frame == null && (b.animation() != null || frames.given())) throw new Animated(b);
                 loaded[0] = b;
                 long w0 = System.nanoTime();
                 try {

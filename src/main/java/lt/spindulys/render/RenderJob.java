@@ -67,6 +67,7 @@ public final class RenderJob {
     private UnaryOperator<Camera> cameraOverride;
     private Consumer<SceneBuilder> onLoaded;
     private Path output;
+    private Integer frame;
     private double jpegQuality = ImageOptions.DEFAULT.jpegQuality();
     private int threads = Runtime.getRuntime().availableProcessors();
     private ProgressListener progress;
@@ -130,6 +131,21 @@ public final class RenderJob {
     public RenderJob camera(UnaryOperator<Camera> change) {
         configurable(true);
         cameraOverride = Objects.requireNonNull(change, "change");
+        return this;
+    }
+
+    /**
+     * Renders one frame of the scene's animation: after the setting overrides, the settings get
+     * that frame's shutter and seed ({@link lt.spindulys.scene.Animation#settingsFor}), so the
+     * image depends on the frame number alone.
+     *
+     * @param n the frame number; the run fails if the scene has no animation or n is outside its range
+     * @return this job
+     * @throws IllegalStateException if the job has started or was given a built scene
+     */
+    public RenderJob frame(int n) {
+        configurable(true);
+        frame = n;
         return this;
     }
 
@@ -287,8 +303,9 @@ public final class RenderJob {
             long t1 = System.nanoTime();
             load = (t1 - t0) / 1e9;
             enter(Stage.SETTINGS);
-            RenderSettings s = Objects.requireNonNull(settingsOverride.apply(b.settings()), "the settings override returned null")
-                    .checkTimeSteps();
+            RenderSettings s = Objects.requireNonNull(settingsOverride.apply(b.settings()), "the settings override returned null");
+            if (frame != null) s = b.copy().settings(s).forFrame(frame).settings();
+            s.checkTimeSteps();
             // The frame is asked for by input: checked before anything is built for it.
             FrameBuffer.checkHeap(s.width(), s.height(), s.aovs());
             if (output != null) ImageWriter.checkPassOutputs(output, s.aovs()); // the image itself was checked first
