@@ -74,7 +74,7 @@ public final class Keyframes implements Moving {
             for (double s : new double[] {scale.x(), scale.y(), scale.z()}) {
                 // Interpolating to a zero or negative scale would pass through a singular transform.
                 if (!(s >= 1 / Ranges.MAX_SCALE && s <= Ranges.MAX_SCALE)) {
-                    throw new IllegalArgumentException("key scale must be positive, between " + Ranges.show(1 / Ranges.MAX_SCALE) + " and " + Ranges.show(Ranges.MAX_SCALE) + ", found " + scale);
+                    throw new IllegalArgumentException("key scale must be positive, between 1e-15 and " + Ranges.show(Ranges.MAX_SCALE) + ", found " + scale);
                 }
             }
         }

@@ -120,7 +120,7 @@ public final class BadInputCases {
                 c("unknown statement", "shpere { radius 1 }", "1:1: unknown statement 'shpere' (did you mean 'sphere'?)"),
                 c("property outside a block", "sphere { } radius 2", "1:12: unknown statement 'radius' ('radius' is a property of disclight, spherelight, sphere or cylinder: was a block closed too early?)"),
                 // A decimal: a scene whose first token is an integer is taken for a Workframe mesh (see CliBadInputTest).
-                c("number as statement", "4.2", "1:1: expected a statement (settings, camera, light, rectlight, disclight, spherelight, environment, texture, material, sphere, plane, box, cylinder, triangle, mesh, subdiv, "
+                c("number as statement", "4.2", "1:1: expected a statement (settings, animation, camera, light, rectlight, disclight, spherelight, environment, texture, material, sphere, plane, box, cylinder, triangle, mesh, subdiv, "
                         + "union, intersection, difference), found '4.2'"),
                 c("stray closing brace", cam + "}", "2:1: unexpected '}': no block is open"),
                 c("missing '{'", "sphere radius 1 }", "1:8: expected '{' after 'sphere', found 'radius'"),
