@@ -87,7 +87,7 @@ final class RenderCommand {
     private double quality = ImageOptions.DEFAULT.jpegQuality();
     private boolean stats, quiet;
     private final FrameOptions frames = new FrameOptions();
-    private boolean outputDefaulted;
+    private boolean outputDefaulted, warmedUp;
 
     /** Parses arguments (after --debug was taken out). */
     RenderCommand(String[] args) throws UsageException {
@@ -162,7 +162,7 @@ final class RenderCommand {
             if (shutter != null) throw new UsageException("--shutter does not combine with an animation's frames: each frame's shutter is set by its shutter angle");
             FrameRange list = frames.frames(a.builder.animation(), scene);
             OutputPattern pattern = frames.pattern(output, outputDefaulted, list);
-            frames.render(list, pattern, override(a.builder.settings()).aovs(), quiet ? null : err,
+            frames.render(list, pattern, aovs != null ? aovs : a.builder.settings().aovs(), quiet ? null : err,
                     (path, n) -> render(out, err, path, n, a.builder));
             return 0;
         }
@@ -205,13 +205,15 @@ final class RenderCommand {
             job.camera(c -> c instanceof AnimatedCamera a ? a.withBase(withLens(a.base(), aperture, focus)) : withLens(c, aperture, focus));
         }
         RenderResult result;
-        try (JitWarmup warm = JitWarmup.start()) {
+        // One warm-up per process: the frames after the first find the code compiled.
+        try (JitWarmup warm = warmedUp ? null : JitWarmup.start()) {
             job.onLoaded(b -> {
                 if (frame == null && (b.animation() != null || frames.given())) throw new Animated(b);
                 loaded[0] = b;
                 long w0 = System.nanoTime();
                 try {
-                    warm.finishFor(b, accel != null ? accel : b.settings().accelerator());
+                    if (warm != null) warm.finishFor(b, accel != null ? accel : b.settings().accelerator());
+                    warmedUp = true;
                 } catch (InterruptedException e) {
                     Thread.currentThread().interrupt();
                     job.cancel();

@@ -304,7 +304,10 @@ public final class RenderJob {
             load = (t1 - t0) / 1e9;
             enter(Stage.SETTINGS);
             RenderSettings s = Objects.requireNonNull(settingsOverride.apply(b.settings()), "the settings override returned null");
-            if (frame != null) s = b.copy().settings(s).forFrame(frame).settings();
+            if (frame != null) {
+                if (b.animation() == null) throw new IllegalArgumentException("frame " + frame + " asked of a scene without an animation");
+                s = b.animation().settingsFor(s, frame);
+            }
             s.checkTimeSteps();
             // The frame is asked for by input: checked before anything is built for it.
             FrameBuffer.checkHeap(s.width(), s.height(), s.aovs());
