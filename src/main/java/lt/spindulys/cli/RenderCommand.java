@@ -88,6 +88,8 @@ final class RenderCommand {
     private boolean stats, quiet;
     private final FrameOptions frames = new FrameOptions();
     private boolean outputDefaulted, warmedUp;
+    /** The scene file's reading time, shown by the first frame's statistics, which render from the scene as read. */
+    private double readSeconds;
 
     /** Parses arguments (after --debug was taken out). */
     RenderCommand(String[] args) throws UsageException {
@@ -161,6 +163,7 @@ final class RenderCommand {
         } catch (Animated a) {
             if (shutter != null) throw new UsageException("--shutter does not combine with an animation's frames: each frame's shutter is set by its shutter angle");
             FrameRange list = frames.frames(a.builder.animation(), scene);
+            readSeconds = a.loadSeconds;
             OutputPattern pattern = frames.pattern(output, outputDefaulted, list);
             frames.render(list, pattern, aovs != null ? aovs : a.builder.settings().aovs(), quiet ? null : err,
                     (path, n) -> render(out, err, path, n, a.builder));
@@ -171,10 +174,12 @@ final class RenderCommand {
     /** Thrown when the scene read is animated, or frames were asked for: the frames are rendered from {@link #builder}. */
     private static final class Animated extends RuntimeException {
         final SceneBuilder builder;
+        final double loadSeconds;
 
-        Animated(SceneBuilder builder) {
+        Animated(SceneBuilder builder, double loadSeconds) {
             super("animated", null, false, false);
             this.builder = builder;
+            this.loadSeconds = loadSeconds;
         }
     }
 
@@ -208,7 +213,7 @@ final class RenderCommand {
         // One warm-up per process: the frames after the first find the code compiled.
         try (JitWarmup warm = warmedUp ? null : JitWarmup.start()) {
             job.onLoaded(b -> {
-                if (frame == null && (b.animation() != null || frames.given())) throw new Animated(b);
+                if (frame == null && (b.animation() != null || frames.given())) throw new Animated(b, (System.nanoTime() - t0) / 1e9);
                 loaded[0] = b;
                 long w0 = System.nanoTime();
                 try {
@@ -246,10 +251,11 @@ final class RenderCommand {
         // On stderr with the progress bar it replaces: stdout carries only what was asked for (--stats).
         if (!quiet) err.println(MessageText.escape(doneLine(output, result.settings(), (System.nanoTime() - t0) / 1e9)));
         if (stats) {
-            printStats(out, result.loadSeconds() - warmup[0], warmup[0], result.buildSeconds(), result.settings().accelerator(), result.stats(), n);
+            printStats(out, result.loadSeconds() + readSeconds - warmup[0], warmup[0], result.buildSeconds(), result.settings().accelerator(), result.stats(), n);
             for (String line : result.structureStatistics()) out.println(MessageText.escape(line));
             for (String line : result.subdivisionStatistics()) out.println(MessageText.escape(line));
         }
+        readSeconds = 0; // read once, shown once
         return 0;
     }
 
