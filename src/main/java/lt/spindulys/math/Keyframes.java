@@ -204,7 +204,12 @@ public final class Keyframes implements Moving {
 
     /** {@return the number of keys} */
     public int size() { return times.length; }
-    /** {@return the time of key i} @param i from 0 */
+    /**
+     * The time of a key.
+     *
+     * @param i the key, from 0
+     * @return its time
+     */
     public double time(int i) { return times[i]; }
     /** {@return how values between keys are made} */
     public Interpolation interpolation() { return interpolation; }
