@@ -75,6 +75,9 @@ class CliFramesTest {
         assertArrayEquals(bytes("whole_0004.pfm"), bytes("single.pfm"));
         // And the frames do differ: the animation moves.
         assertFalse(Arrays.equals(bytes("whole_0001.pfm"), bytes("whole_0002.pfm")));
+        // A lens given on the command line rides along with the turning camera.
+        assertEquals(0, run(s.toString(), "--frame", "4", "--aperture", "0.2", "-o", out("lens.pfm"), "--quiet").status());
+        assertFalse(Arrays.equals(bytes("whole_0004.pfm"), bytes("lens.pfm")));
     }
 
     /** At a key, with the shutter closed, a keyed object is exactly where a still puts it at that pose. */
