@@ -165,7 +165,7 @@ final class SceneObjectFactory {
     }
 
     /** A camera block's camera: a pinhole, or a thin lens when any of the lens keys is given. */
-    Camera camera(Props p, Token kw) {
+    Camera camera(Props p) {
         Camera still = restingCamera(p);
         Prop keys = keysOf(p);
         if (keys == null) return still;
@@ -203,7 +203,7 @@ final class SceneObjectFactory {
      * keys { interpolation I  pivot P  key FRAME { translate T  rotate X Y Z  scale S } ... }: key
      * frames in increasing order, each at most once, timed on the animation's clock (frame / fps).
      */
-    Keyframes keyframes(Props p, Animation a, Token animationAt) {
+    Keyframes keyframes(Props p, Animation a) {
         List<Prop> keys = new ArrayList<>();
         for (Prop pr : p.all) if (pr.key().name().equals("key")) keys.add(pr);
         if (keys.isEmpty()) throw err.error(p.opener, "keys needs at least one 'key FRAME { translate ... rotate ... scale ... }'");

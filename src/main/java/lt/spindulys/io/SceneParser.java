@@ -201,7 +201,7 @@ public final class SceneParser {
     private void camera(Token kw) {
         if (cameraAt != null) throw error(kw, "camera is already defined at " + cameraAt.position());
         cameraAt = kw;
-        builder.camera(objects.camera(in.block(SceneGrammar.CAMERA, kw, null), kw));
+        builder.camera(objects.camera(in.block(SceneGrammar.CAMERA, kw, null)));
     }
 
     private void light(Token kw) {
@@ -294,7 +294,7 @@ public final class SceneParser {
         }
 
         @Override
-        public Keyframes keyframes(Props p, Token keyToken) { return objects.keyframes(p, requireAnimation(keyToken), animationAt); }
+        public Keyframes keyframes(Props p, Token keyToken) { return objects.keyframes(p, requireAnimation(keyToken)); }
 
         @Override
         public Keyframes turntable(Props p, Token keyToken) { return objects.turntable(p, requireAnimation(keyToken)); }
