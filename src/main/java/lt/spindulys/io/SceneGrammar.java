@@ -239,11 +239,14 @@ final class SceneGrammar {
             opt("power", Kind.NUMBER),
             opt("samples", Kind.INTEGER, 1)));
 
-    // Rotation about the up axis (+Y) in degrees; intensity scales every value (scene.Environment).
+    // Rotation about the up axis (+Y) in degrees; intensity scales every value; light makes it
+    // light surfaces with 'samples' shadow rays per pixel sample (scene.Environment; samples only with light true).
     static final Block ENVIRONMENT = new Block("environment", Category.ENVIRONMENT, false, List.of(
             req("file", Kind.STRING),
             opt("rotate", Kind.NUMBER, 0.0),
-            opt("intensity", Kind.NUMBER, 1.0)));
+            opt("intensity", Kind.NUMBER, 1.0),
+            opt("light", Kind.BOOLEAN, false),
+            opt("samples", Kind.INTEGER)));
 
     static final Block MATERIAL = new Block("material", Category.MATERIAL, false, List.of(
             opt("color", Kind.COLOR),

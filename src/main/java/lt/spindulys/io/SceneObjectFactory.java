@@ -37,6 +37,7 @@ import lt.spindulys.material.Material;
 import lt.spindulys.scene.Plane;
 import lt.spindulys.scene.AreaLight;
 import lt.spindulys.scene.Environment;
+import lt.spindulys.scene.EnvironmentLight;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Sphere;
@@ -281,9 +282,19 @@ final class SceneObjectFactory {
     /** A light block's point light. */
     /** An environment block's environment: its image read once per parse (shared with textures naming the same file). */
     Environment environment(Props p) {
+        boolean light = (Boolean) p.get("light");
+        if (!light && p.prop("samples") != null) throw err.error(p.prop("samples").at(), "environment samples needs 'light true' (an environment that is not a light sends no shadow rays)");
         TextureImage map = assets.image(p.prop("file"), "environment image");
+        if (light) {
+            try {
+                EnvironmentLight.requireTables(map);
+            } catch (IllegalArgumentException e) {
+                throw err.wrap(p.prop("light").at(), e);
+            }
+        }
         try {
-            return new Environment(map, p.num("rotate"), p.num("intensity"));
+            Integer samples = (Integer) p.get("samples");
+            return new Environment(map, p.num("rotate"), p.num("intensity"), light, samples == null ? 1 : samples);
         } catch (IllegalArgumentException e) {
             throw err.blame(p, e);
         }

@@ -11,7 +11,12 @@ import lt.spindulys.texture.TextureImage;
 /**
  * A background from a latitude-longitude (equirectangular) image: what a ray that hits nothing
  * sees, camera rays and reflected and refracted rays alike, in place of the settings' background
- * colour. It is not a light: it lights nothing but what mirrors and glass show of it.
+ * colour. By default it is not a light: it lights nothing but what mirrors and glass show of it.
+ * Made {@link #isLight() a light}, it also lights diffuse and specular surfaces: each shaded point
+ * sends {@link #samples()} shadow rays per pixel sample towards directions drawn in proportion to
+ * the map's brightness ({@link EnvironmentLight}), and those that leave the scene bring the
+ * radiance seen along them, as an area light's do (a white map of value L lights an open,
+ * upward-facing diffuse point as an area light filling the sky with radiance L would: pi L).
  *
  * <p>Convention (up is +Y, the default camera up): the image's top row is straight up (+Y), its
  * bottom row straight down, its middle row the horizon; across, u = 0 (the left edge) looks
@@ -31,6 +36,8 @@ public final class Environment {
 
     private final TextureImage map;
     private final double rotateDegrees, intensity;
+    private final boolean light;
+    private final int samples;
     /** The rotation as a fraction of a turn, added to u. */
     private final double uShift;
     private final int w, h;
@@ -44,6 +51,26 @@ public final class Environment {
      * @throws IllegalArgumentException if the rotation is not finite or the intensity is out of range
      */
     public Environment(TextureImage map, double rotateDegrees, double intensity) {
+        this(map, rotateDegrees, intensity, false, 1);
+    }
+
+    /**
+     * An environment showing {@code map}, and if {@code light} lighting the scene with
+     * {@code samples} shadow rays per shaded point and pixel sample.
+     *
+     * @param map           the lat-long image (linear values)
+     * @param rotateDegrees turn about the up axis, degrees (any finite value)
+     * @param intensity     scale of every value, 0 to {@link #MAX_INTENSITY}
+     * @param light         whether it lights surfaces
+     * @param samples       shadow rays per pixel sample when a light, 1..{@link AreaLight#MAX_SAMPLES}
+     * @throws IllegalArgumentException if a value is out of range
+     */
+    public Environment(TextureImage map, double rotateDegrees, double intensity, boolean light, int samples) {
+        if (samples < 1 || samples > AreaLight.MAX_SAMPLES) {
+            throw new IllegalArgumentException("environment samples must be 1.." + AreaLight.MAX_SAMPLES + ", found " + samples);
+        }
+        this.light = light;
+        this.samples = samples;
         this.map = Objects.requireNonNull(map);
         if (!Double.isFinite(rotateDegrees)) throw new IllegalArgumentException("environment rotate must be a finite number of degrees, found " + rotateDegrees);
         if (!(intensity >= 0 && intensity <= MAX_INTENSITY)) {
@@ -71,6 +98,18 @@ public final class Environment {
         return new Environment(new TextureCache().load(file), rotateDegrees, intensity);
     }
 
+    /**
+     * This environment as a light with {@code samples} shadow rays per shaded point and pixel
+     * sample (or, with {@code samples} 0, as a background only).
+     *
+     * @param samples 1..{@link AreaLight#MAX_SAMPLES}, or 0 for no light
+     * @return the environment with that setting
+     * @throws IllegalArgumentException if samples is out of range
+     */
+    public Environment asLight(int samples) {
+        return samples == 0 ? new Environment(map, rotateDegrees, intensity) : new Environment(map, rotateDegrees, intensity, true, samples);
+    }
+
     /** The image. @return the map */
     public TextureImage map() { return map; }
 
@@ -79,6 +118,15 @@ public final class Environment {
 
     /** The scale of every value. @return the intensity */
     public double intensity() { return intensity; }
+
+    /** Whether it lights surfaces (else it is only seen). @return true for a light */
+    public boolean isLight() { return light; }
+
+    /** Shadow rays per shaded point and pixel sample when it is a light. @return 1..{@link AreaLight#MAX_SAMPLES} */
+    public int samples() { return samples; }
+
+    /** The rotation as a fraction of a turn in [0, 1), added to a direction's u. */
+    double uShift() { return uShift; }
 
     /**
      * atan2(y, x) in [-pi, pi], within 1e-7 radians (a hundred-thousandth of a texel of a
@@ -120,6 +168,14 @@ public final class Environment {
     public void lookup(double dx, double dy, double dz, double[] out) {
         double u = atan2(dx, -dz) * (0.5 / Math.PI) + uShift;  // in (-0.5, 1.5)
         double v = atan2(Math.sqrt(dx * dx + dz * dz), dy) * (1 / Math.PI);  // acos(dy) for unit d
+        lookupImage(u, v, out, 0);
+    }
+
+    /**
+     * The value at image coordinates (u, v) (u wraps; v in [0, 1] from the top), written to
+     * out[at..at+2]: the blend that {@link #lookup} makes for the direction there.
+     */
+    void lookupImage(double u, double v, double[] out, int at) {
         double fx = u * w - 0.5, fy = v * h - 0.5;
         double x0f = Math.floor(fx);
         double tx = fx - x0f;
@@ -130,7 +186,7 @@ public final class Environment {
         for (int c = 0; c < 3; c++) {
             double top = map.texel(0, x0, y0, c) * (1 - tx) + map.texel(0, x1, y0, c) * tx;
             double bottom = map.texel(0, x0, y1, c) * (1 - tx) + map.texel(0, x1, y1, c) * tx;
-            out[c] = intensity * (top * (1 - ty) + bottom * ty);
+            out[at + c] = intensity * (top * (1 - ty) + bottom * ty);
         }
     }
 }

@@ -36,6 +36,8 @@ public final class Scene {
     private final int objectIds;
     private final boolean transparent;
     private final Environment environment;
+    /** The environment's sampling tables when it is a light with some brightness, else null. */
+    private final EnvironmentLight environmentLight;
 
     /**
      * Builds the scene from copies of {@code given}: see {@link SceneBuilder#build()}.
@@ -46,6 +48,8 @@ public final class Scene {
     Scene(RenderSettings settings, Camera camera, List<PointLight> lights, List<AreaLight> areaLights, List<GObject> given, Environment environment) {
         this.settings = settings.checkTimeSteps();
         this.environment = environment;
+        EnvironmentLight el = environment != null && environment.isLight() ? EnvironmentLight.of(environment) : null;
+        this.environmentLight = el == null || el.isBlack() ? null : el;
         this.camera = camera;
         this.lights = List.copyOf(lights);
         this.lightArray = lights.toArray(new PointLight[0]);
@@ -158,6 +162,14 @@ public final class Scene {
      * @return the environment, or null
      */
     public Environment environment() { return environment; }
+
+    /**
+     * The environment as a light, with its brightness distribution built when the scene was
+     * frozen: null unless the environment {@link Environment#isLight() is a light} and not black.
+     *
+     * @return the environment light, or null
+     */
+    public EnvironmentLight environmentLight() { return environmentLight; }
     /**
      * The camera the scene is rendered through.
      *

@@ -251,7 +251,9 @@ public final class SceneBuilder {
 
     /**
      * Sets what rays that hit nothing see: a lat-long image instead of the settings' background
-     * colour (see {@link Environment} for its orientation); null goes back to the colour.
+     * colour (see {@link Environment} for its orientation); null goes back to the colour. An
+     * environment that {@link Environment#isLight() is a light} also lights the scene; its
+     * sampling tables ({@link EnvironmentLight}) are made by {@link #build()}.
      *
      * @param e the environment, or null
      * @return this builder, for chaining

@@ -43,12 +43,15 @@ public final class TracerScratch {
     int pixelX, pixelY, sample, samplesPerPixel = 1;
     /** Bumped whenever the pixel or sample count changes, so per-pixel light strata are redrawn. */
     int pixelGeneration = 1;
-    /** Per area light: its strata in the order the pixel's samples take them, and the generation they were drawn for. */
+    /** Per sampled light (the area lights, then the environment if it is a light): its strata in the order the pixel's samples take them, and the generation they were drawn for. */
     int[][] lightStrata = new int[0][];
     int[] lightStrataGeneration = new int[0];
     final lt.spindulys.sampling.Rng lightRng = new lt.spindulys.sampling.Rng();
-    /** An area-light sample: the point on the light and the weight of its radiance. */
-    final double[] lightSample = new double[4];
+    /**
+     * A light sample: an area light's point and the weight of its radiance (4 values), or an
+     * environment light's direction, solid angle and radiance (7).
+     */
+    final double[] lightSample = new double[7];
 
     /**
      * Says which pixel sample the next camera ray is, so that area-light samples are stratified

@@ -10,6 +10,7 @@ import lt.spindulys.material.Material;
 import lt.spindulys.sampling.Rng;
 import lt.spindulys.scene.AreaLight;
 import lt.spindulys.scene.Environment;
+import lt.spindulys.scene.EnvironmentLight;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
@@ -35,6 +36,11 @@ import lt.spindulys.texture.Channel;
  * {@link TracerScratch#setSample}), through the same transmission walk as point lights' shadow
  * rays; rays that reach a light before any surface see its radiance.
  *
+ * <p>An environment that is a light ({@link EnvironmentLight}) is sampled the same way, as one
+ * more sampled light after the area lights (its own strata and seeds): {@link Environment#samples()}
+ * directions per pixel sample drawn in proportion to the map's brightness, each a shadow ray to
+ * infinity that brings the radiance seen along it, weighted by the solid angle it stands for.
+ *
  * <p>Textures ({@link TextureShading}): a material's bound channels are evaluated at each shaded
  * hit before lighting (colour, ks, kr, kt, emission, bumped shading normal), with a footprint from
  * the path length and the camera's pixel angle; shadow rays evaluate transparency textures.
@@ -52,6 +58,10 @@ public final class WhittedIntegrator {
     private final AreaLight[] areaLights;
     /** What rays that hit nothing see, or null for the background colour. */
     private final Environment environment;
+    /** The environment as a light, or null; sampled as light index areaLights.length. */
+    private final EnvironmentLight environmentLight;
+    /** Area lights plus the environment light if any: the lights that take strata. */
+    private final int sampledLights;
     private final boolean transparentShadows;
     /** Angle between the primary rays of neighbouring pixels at the image centre, radians (texture footprints). */
     private final double pixelAngle;
@@ -69,6 +79,8 @@ public final class WhittedIntegrator {
         this.lights = scene.lightArray();
         this.areaLights = scene.areaLightArray();
         this.environment = scene.environment();
+        this.environmentLight = scene.environmentLight();
+        this.sampledLights = areaLights.length + (environmentLight != null ? 1 : 0);
         this.transparentShadows = scene.hasTransparentObjects();
         this.pixelAngle = pixelAngle(scene);
         double power = 0;
@@ -101,18 +113,24 @@ public final class WhittedIntegrator {
     /** A scratch sized for this scene's recursion depth, for one thread. */
     public TracerScratch newScratch() {
         TracerScratch s = new TracerScratch(settings.maxDepth());
-        s.lightStrata = new int[areaLights.length][];
-        s.lightStrataGeneration = new int[areaLights.length];
-        if (areaLights.length > 0) {
+        s.lightStrata = new int[sampledLights][];
+        s.lightStrataGeneration = new int[sampledLights];
+        if (sampledLights > 0) {
             // Each light's strata (pixel samples times its samples, both from the input) are kept
             // per thread: checked against the heap, then made here, so the next thread's check sees them.
             int spp = settings.samplesPerPixel();
             long bytes = 0;
-            for (AreaLight l : areaLights) bytes = HeapBudget.sum(bytes, HeapBudget.product(4, spp, l.samples()));
-            HeapBudget.require(bytes, "the area lights' sample strata of one render thread");
-            for (int i = 0; i < areaLights.length; i++) s.lightStrata[i] = new int[spp * areaLights[i].samples()];
+            for (int i = 0; i < sampledLights; i++) bytes = HeapBudget.sum(bytes, HeapBudget.product(4, spp, samples(i)));
+            HeapBudget.require(bytes, environmentLight == null ? "the area lights' sample strata of one render thread"
+                    : "the area and environment lights' sample strata of one render thread");
+            for (int i = 0; i < sampledLights; i++) s.lightStrata[i] = new int[spp * samples(i)];
         }
         return s;
+    }
+
+    /** Shadow rays per pixel sample of sampled light i: an area light, or the environment after them. */
+    private int samples(int i) {
+        return i < areaLights.length ? areaLights[i].samples() : environmentLight.environment().samples();
     }
 
     /** Colour seen along a camera ray, written to out[0..2]. */
@@ -259,10 +277,11 @@ public final class WhittedIntegrator {
                 }
             }
         }
-        if (areaLights.length > 0 && (kd > 0 || ks > 0)) {
-            // The area lights' share goes through out: shadowTransmission reuses s.transmission.
+        if (sampledLights > 0 && (kd > 0 || ks > 0)) {
+            // The sampled lights' share goes through out: shadowTransmission reuses s.transmission.
             out[0] = r; out[1] = g; out[2] = b;
-            areaIllumination(m, v, s, out);
+            if (areaLights.length > 0) areaIllumination(m, v, s, out);
+            if (environmentLight != null) environmentIllumination(m, v, s, out);
             return;
         }
         out[0] = r; out[1] = g; out[2] = b;
@@ -329,13 +348,61 @@ public final class WhittedIntegrator {
     }
 
     /**
+     * Adds to out[0..2] the diffuse and Blinn-Phong specular light from the environment at vertex
+     * v (material m), as {@link #areaIllumination} does for an area light: its strata and seeds
+     * are light index areaLights.length's, each stratum's jittered point becomes a direction
+     * drawn by brightness, and a shadow ray to infinity along it brings the radiance seen there
+     * times the solid angle the sample stands for, over the light's sample count.
+     */
+    private void environmentIllumination(Material m, TracerScratch.PathVertex v, TracerScratch s, double[] out) {
+        double kd = m.kd(), ks = v.ks, shininess = m.shininess();
+        double cr = v.colourR, cg = v.colourG, cb = v.colourB;
+        double nfx = v.nfx, nfy = v.nfy, nfz = v.nfz, snx = v.snx, sny = v.sny, snz = v.snz;
+        double ox = v.px + nfx * v.eps, oy = v.py + nfy * v.eps, oz = v.pz + nfz * v.eps;
+        double[] ls = s.lightSample;
+        int li = areaLights.length;
+        int k = environmentLight.environment().samples(), n = s.samplesPerPixel * k;
+        int[] strata = strata(li, n, s);
+        int rows = (int) Math.floor(Math.sqrt(n));
+        while (n % rows != 0) rows--;
+        int cols = n / rows;
+        Rng rng = s.lightRng.seed(s.seed ^ JITTER_STREAM * (li + 1), s.pixelX, s.pixelY, s.sample);
+        for (int j = 0; j < k; j++) {
+            int st = strata[(s.sample * k + j) % n];
+            double su = (st % cols + rng.nextDouble()) / cols, sv = (st / cols + rng.nextDouble()) / rows;
+            environmentLight.sample(sv, su, ls);
+            double ux = ls[0], uy = ls[1], uz = ls[2];
+            if (ux * nfx + uy * nfy + uz * nfz <= 0) continue; // below the surface
+            double ndotl = ux * snx + uy * sny + uz * snz;
+            if (ndotl <= 0) continue;
+            Ray shadow = s.shadowRay.set(ox, oy, oz, ux, uy, uz, 0, Double.POSITIVE_INFINITY);
+            shadow.time = v.time;
+            double weight = ls[3] / k, lr = ls[4] * weight, lg = ls[5] * weight, lb = ls[6] * weight;
+            if (!shadowTransmission(shadow, 1, s)) continue;
+            double[] t = s.transmission;
+            double ir = lr * t[0], ig = lg * t[1], ib = lb * t[2];
+            double diff = kd * ndotl;
+            out[0] += diff * cr * ir; out[1] += diff * cg * ig; out[2] += diff * cb * ib;
+            if (ks > 0) {
+                double hx = ux - v.dx, hy = uy - v.dy, hz = uz - v.dz;
+                double hl = Math.sqrt(hx * hx + hy * hy + hz * hz);
+                double nh = hl > 0 ? (hx * snx + hy * sny + hz * snz) / hl : 0;
+                if (nh > 0) {
+                    double spec = ks * Math.pow(nh, shininess);
+                    out[0] += spec * ir; out[1] += spec * ig; out[2] += spec * ib;
+                }
+            }
+        }
+    }
+
+    /**
      * The order in which the pixel's samples take area light li's n strata: a shuffle seeded from
      * the pass seed, pixel and light, drawn once per pixel and thread.
      */
     private int[] strata(int li, int n, TracerScratch s) {
-        if (s.lightStrata.length < areaLights.length) { // a scratch not made by newScratch
-            s.lightStrata = new int[areaLights.length][];
-            s.lightStrataGeneration = new int[areaLights.length];
+        if (s.lightStrata.length < sampledLights) { // a scratch not made by newScratch
+            s.lightStrata = new int[sampledLights][];
+            s.lightStrataGeneration = new int[sampledLights];
         }
         int[] p = s.lightStrata[li];
         if (p != null && p.length == n && s.lightStrataGeneration[li] == s.pixelGeneration) return p;
@@ -454,8 +521,9 @@ public final class WhittedIntegrator {
 
     /**
      * Fraction of a light's colour that reaches the origin of {@code ray}, the scratch's shadow
-     * ray (t = 1 at the light, which is {@code dist} away), written to s.transmission; false if
-     * nothing arrives.
+     * ray (t = 1 at the light, which is {@code dist} away; or, with tMax infinite, a ray with a
+     * unit direction and {@code dist} 1 towards the environment), written to s.transmission;
+     * false if nothing arrives.
      */
     private boolean shadowTransmission(Ray ray, double dist, TracerScratch s) {
         s.shadowRays++;
@@ -471,9 +539,12 @@ public final class WhittedIntegrator {
         Material inside = null;
         TracedObject insideSolid = null;
         double enteredAt = 0;
+        // Where the light is, in t: a medium still entered there attenuates up to it (an
+        // environment is infinitely far: only the medium's channels with beta 0 pass).
+        double end = ray.tMax == Double.POSITIVE_INFINITY ? Double.POSITIVE_INFINITY : 1;
         for (int crossing = 0; crossing < MAX_SHADOW_CROSSINGS; crossing++) {
             if (!scene.intersect(ray, hit, s.ctx)) {
-                if (inside != null) attenuate(inside, (1 - enteredAt) * dist, t);
+                if (inside != null) attenuate(inside, (end - enteredAt) * dist, t);
                 return t[0] > 0 || t[1] > 0 || t[2] > 0;
             }
             Material m = hit.material;

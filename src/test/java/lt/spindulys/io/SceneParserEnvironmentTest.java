@@ -77,6 +77,48 @@ class SceneParserEnvironmentTest {
                 + " (only -Y height +X width, rows top-down, is read)", e.getMessage());
     }
 
+    @Test
+    void lightAndSamplesMakeItALightAndBadValuesAreLocated() {
+        Environment lit = parse("environment { file \"sky.hdr\"  light true  samples 16 }").environment();
+        assertTrue(lit.isLight());
+        assertEquals(16, lit.samples());
+        Environment one = parse("environment { file \"sky.hdr\"  light true }").environment();
+        assertTrue(one.isLight());
+        assertEquals(1, one.samples());
+        assertTrue(!parse("environment { file \"sky.hdr\" }").environment().isLight(), "not a light by default");
+        assertTrue(!parse("environment { file \"sky.hdr\"  light false }").environment().isLight());
+        assertTrue(parse("environment { file \"sky.hdr\"  light true }").build().environmentLight() != null, "built when frozen");
+
+        assertEquals("t.dat:1:43: environment samples must be 1..1024, found 0",
+                error("environment { file \"sky.hdr\"  light true  samples 0 }"));
+        assertEquals("t.dat:1:43: environment samples must be 1..1024, found 1025",
+                error("environment { file \"sky.hdr\"  light true  samples 1025 }"));
+        assertEquals("t.dat:1:31: environment samples needs 'light true' (an environment that is not a light sends no shadow rays)",
+                error("environment { file \"sky.hdr\"  samples 4 }"));
+        assertEquals("t.dat:1:31: unknown property 'ligth' in environment (did you mean 'light'?)",
+                firstLine(error("environment { file \"sky.hdr\"  ligth true }")));
+        assertTrue(error("environment { file \"sky.hdr\"  light 1 }").startsWith("t.dat:1:"), error("environment { file \"sky.hdr\"  light 1 }"));
+    }
+
+    /**
+     * The light's sampling tables (8 bytes a texel) are checked where the statement asks for
+     * them: a grey 1024 x 512 PNG takes a little less heap as an image than its tables do, so a
+     * budget between the two reads the image and refuses the light, at 'light'.
+     */
+    @Test
+    void theLightsTablesAreCheckedAtItsStatement() throws IOException {
+        java.awt.image.BufferedImage grey = new java.awt.image.BufferedImage(1024, 512, java.awt.image.BufferedImage.TYPE_BYTE_GRAY);
+        javax.imageio.ImageIO.write(grey, "png", dir.resolve("grey.png").toFile());
+        String text = "environment { file \"grey.png\"\n  light true }";
+        // The tables: 8 * (1025 * 512 + 513) + 8 * (2 * 512 + 1 + 5 * 1024) = 4,251,664 bytes.
+        try (lt.spindulys.limits.HeapBudget.Scope cap = lt.spindulys.limits.HeapBudget.cap(4_251_000)) {
+            assertTrue(!SceneParser.parse("environment { file \"grey.png\" }", "t.dat", dir).environment().isLight(), "the image alone fits");
+            SceneException e = assertThrows(SceneException.class, () -> SceneParser.parse(text, "t.dat", dir));
+            assertTrue(e.getMessage().startsWith("t.dat:2:3: the environment light's sampling tables for the 1024x512 map needs 4"), e.getMessage());
+        }
+        assertTrue(SceneParser.parse(text, "t.dat", dir).environment().isLight(), "fits without the cap");
+    }
+
     private static String firstLine(String s) {
         int nl = s.indexOf('\n');
         return nl < 0 ? s : s.substring(0, nl);
