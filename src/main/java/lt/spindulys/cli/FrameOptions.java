@@ -4,6 +4,8 @@ import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Set;
 
 import lt.spindulys.image.Aov;
@@ -85,30 +87,33 @@ final class FrameOptions {
                 + OutputPattern.defaultForFrames(output).getFileName() + ", or one frame (--frame N)");
     }
 
-    /** Renders one frame to its output. */
+    /** Renders one frame to its output: item {@code index} of the {@code count} this run renders. */
     interface FrameRenderer {
-        void render(Path output, int frame) throws IOException, InterruptedException, UsageException;
+        void render(Path output, int frame, int index, int count) throws IOException, InterruptedException, UsageException;
     }
 
     /**
      * Renders the frames in order; with --skip-existing a frame whose image and passes all exist
-     * is left as it is (writes are atomic, so an existing file is a finished one). Stops at the
-     * first failure, which propagates; the frames written before it stay.
+     * is left as it is (writes are atomic, so an existing file is a finished one), and the others
+     * are the run's items. Stops at the first failure, which propagates; the frames written before
+     * it stay.
      *
      * @param passes the render passes written beside each image
      * @param log where "skipped" lines go, or null
      */
     void render(FrameRange frames, OutputPattern pattern, Set<Aov> passes, PrintStream log, FrameRenderer renderer)
             throws IOException, InterruptedException, UsageException {
+        List<Integer> todo = new ArrayList<>();
         for (int i = 0; i < frames.count(); i++) {
             int n = frames.frame(i);
             Path out = pattern.forFrame(n);
             if (skipExisting && finished(out, passes)) {
                 if (log != null) log.println(MessageText.escape("skipped " + out + " (frame " + n + "): it exists (--skip-existing)"));
-                continue;
+            } else {
+                todo.add(n);
             }
-            renderer.render(out, n);
         }
+        for (int i = 0; i < todo.size(); i++) renderer.render(pattern.forFrame(todo.get(i)), todo.get(i), i, todo.size());
     }
 
     /** True if the image and each pass beside it are regular files. */

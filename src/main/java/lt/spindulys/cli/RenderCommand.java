@@ -166,7 +166,7 @@ final class RenderCommand {
             readSeconds = a.loadSeconds;
             OutputPattern pattern = frames.pattern(output, outputDefaulted, list);
             frames.render(list, pattern, aovs != null ? aovs : a.builder.settings().aovs(), quiet ? null : err,
-                    (path, n) -> render(out, err, path, n, a.builder));
+                    (path, n, index, count) -> render(out, err, path, n, a.builder));
             return 0;
         }
     }
