@@ -25,9 +25,12 @@ import lt.spindulys.subdiv.SubdivTags;
  * Reads Wavefront OBJ meshes: {@code v} (x y z, an optional w and an optional r g b colour are
  * ignored), {@code vn}, {@code vt} (u, optional v and w), and {@code f} with polygons of any size
  * whose corners are {@code v}, {@code v/vt}, {@code v//vn} or {@code v/vt/vn}, indices counted
- * from 1 or, when negative, back from the latest element. {@code o}, {@code g}, {@code s},
- * {@code usemtl}, {@code mtllib} and OpenSubdiv's {@code t} tags are skipped; {@code #} starts a
- * comment; a backslash at the end of a line continues it. Anything else is an error.
+ * from 1 or, when negative, back from the latest element. {@code usemtl NAME} starts a face group
+ * (faces until the next {@code usemtl} belong to it; the name is the rest of the line), recorded in
+ * {@link MeshData#faceGroups()}; {@code mtllib} names the material libraries (several file names
+ * allowed), kept for the scene to read ({@link #readMesh}). {@code o}, {@code g}, {@code s} and
+ * OpenSubdiv's {@code t} tags are skipped; {@code #} starts a comment; a backslash at the end of a
+ * line continues it. Anything else is an error.
  *
  * <p>{@link #readSubdiv} reads the same files as the control mesh of a subdivision surface: then the
  * {@code t} tags are parsed (OpenSubdiv's grammar {@code t name nints/nfloats/nstrings ints...
@@ -91,6 +94,42 @@ public final class ObjReader {
         return new Parser(text.getBytes(StandardCharsets.UTF_8), fileName, true).parseSubdiv();
     }
 
+    /** A name the file gives at a place (an mtllib file name, a usemtl name), for the scene's messages. */
+    record Ref(String name, int line, int column) {}
+
+    /**
+     * An OBJ file read with what it says about materials: the mesh (its face groups are the
+     * usemtl names), its tags when read as a subdivision control mesh (else null), the mtllib
+     * file names in the order given, and per face group the place of its first usemtl.
+     */
+    record Read(MeshData mesh, SubdivInput subdiv, List<Ref> libraries, List<Ref> groups) {}
+
+    /**
+     * {@link #read}, with the mtllib and usemtl statements' places for the scene to resolve.
+     *
+     * @param file the file
+     * @return the mesh and its material references
+     * @throws IOException if the file cannot be read
+     */
+    static Read readMesh(Path file) throws IOException {
+        byte[] bytes = readBytes(file);
+        int chunks = bytes.length < PARALLEL_BYTES ? 1 : (int) Math.min(MAX_CHUNKS, (bytes.length + CHUNK_BYTES - 1) / CHUNK_BYTES);
+        return read(bytes, file.toString(), chunks, parseThreads());
+    }
+
+    /**
+     * {@link #readSubdiv}, with the mtllib and usemtl statements' places for the scene to resolve.
+     *
+     * @param file the file
+     * @return the control mesh, its tags and its material references
+     * @throws IOException if the file cannot be read
+     */
+    static Read readSubdivision(Path file) throws IOException {
+        Parser p = new Parser(readBytes(file), file.toString(), true);
+        SubdivInput in = p.parseSubdiv();
+        return new Read(in.mesh(), in, List.copyOf(p.libraries), p.groupRefs());
+    }
+
     /** Parses a file's bytes as {@link #read} does after reading them: in chunks on several threads when the file is large. */
     static MeshData parse(byte[] bytes, String fileName) {
         int chunks = bytes.length < PARALLEL_BYTES ? 1 : (int) Math.min(MAX_CHUNKS, (bytes.length + CHUNK_BYTES - 1) / CHUNK_BYTES);
@@ -115,8 +154,17 @@ public final class ObjReader {
      * chunks and threads.
      */
     static MeshData parse(byte[] bytes, String fileName, int chunks, int threads) {
+        return read(bytes, fileName, chunks, threads).mesh();
+    }
+
+    /** {@link #parse(byte[], String, int, int)} with the material references. */
+    static Read read(byte[] bytes, String fileName, int chunks, int threads) {
         int[] starts = ChunkedParse.split(bytes, chunks);
-        if (starts.length == 2) return new Parser(bytes, fileName, false).parse();
+        if (starts.length == 2) {
+            Parser p = new Parser(bytes, fileName, false);
+            MeshData m = p.parse();
+            return new Read(m, null, List.copyOf(p.libraries), p.groupRefs());
+        }
         return new ChunkedParse(bytes, fileName, starts).run(threads);
     }
 
@@ -267,6 +315,18 @@ public final class ObjReader {
         private boolean firstFaceUv;
         private final TagCollector tags = new TagCollector();
 
+        /** The usemtl names in order of first use (a face group each), and each one's index. */
+        private final List<String> groupNames = new ArrayList<>();
+        private final java.util.Map<String, Integer> groupIndex = new java.util.HashMap<>();
+        /** Line and column of each group's first usemtl (line counted in this parser's part of the file). */
+        private final Ints groupLine = new Ints(), groupColumn = new Ints();
+        /** Group per face; null until the first usemtl (then filled for the faces before it). */
+        private Ints faceGroup;
+        /** The group of the faces being read: -1 before any usemtl, {@link #INHERIT} in a deferred chunk before its first. */
+        private int currentGroup;
+        /** The mtllib file names, in order. */
+        private final List<Ref> libraries = new ArrayList<>();
+
         Parser(byte[] bytes, String file, boolean subdiv) {
             this(bytes, 0, bytes.length, 1, file, subdiv, false);
         }
@@ -279,6 +339,7 @@ public final class ObjReader {
             this.subdiv = subdiv;
             this.deferred = deferred;
             this.relative = deferred ? new Ints[] {new Ints(), new Ints(), new Ints()} : null;
+            this.currentGroup = deferred ? INHERIT : -1;
             pos = lineStart = from;
             line = firstLine;
             // A UTF-8 byte order mark is not part of the first statement.
@@ -295,7 +356,17 @@ public final class ObjReader {
                     faceSizes.toArray(), vertexIndex.toArray(),
                     anyNormalIndex ? normalIndex.toArray() : null,
                     anyUvIndex ? uvIndex.toArray() : null,
-                    file);
+                    file,
+                    faceGroup != null ? faceGroup.toArray() : null,
+                    faceGroup != null ? groupNames.toArray(String[]::new) : null);
+        }
+
+        /** Each group's first usemtl, in group order. */
+        List<Ref> groupRefs() {
+            List<Ref> out = new ArrayList<>(groupNames.size());
+            int[] lines = groupLine.toArray(), columns = groupColumn.toArray();
+            for (int g = 0; g < groupNames.size(); g++) out.add(new Ref(groupNames.get(g), lines[g], columns[g]));
+            return List.copyOf(out);
         }
 
         /** Reads every statement up to the end. */
@@ -320,6 +391,10 @@ public final class ObjReader {
                     texture();
                 } else if (subdiv && len == 1 && c0 == 't') {
                     tag();
+                } else if (matches(start, len, "usemtl")) {
+                    usemtl();
+                } else if (matches(start, len, "mtllib")) {
+                    mtllib();
                 } else if (isSkipped(start, len)) {
                     skipStatement();
                 } else {
@@ -331,10 +406,9 @@ public final class ObjReader {
             }
         }
 
-        /** Statements that carry nothing a ray tracer's mesh needs (yet): o g s usemtl mtllib t. */
+        /** Statements that carry nothing a ray tracer's mesh needs: o g s, and t outside a control mesh. */
         private boolean isSkipped(int s, int len) {
-            return len == 1 && (b[s] == 'o' || b[s] == 'g' || b[s] == 's' || b[s] == 't')
-                    || matches(s, len, "usemtl") || matches(s, len, "mtllib");
+            return len == 1 && (b[s] == 'o' || b[s] == 'g' || b[s] == 's' || b[s] == 't');
         }
 
         private boolean matches(int s, int len, String word) {
@@ -444,10 +518,64 @@ public final class ObjReader {
                 }
             }
             faceSizes.add(corners);
+            if (faceGroup != null) faceGroup.add(currentGroup);
             anyUvIndex |= withUv;
             anyNormalIndex |= withNormal;
         }
 
+
+        // ---- materials ----
+
+        /**
+         * {@code usemtl NAME}: the faces that follow belong to the group NAME (the rest of the
+         * line, blanks around it dropped, as .mtl files write it after newmtl).
+         */
+        private void usemtl() {
+            skipBlanks();
+            int start = pos;
+            if (atLineEnd()) throw error(start, "expected a material name after 'usemtl', found " + describe(start));
+            int last = start;
+            while (pos < end && !isLineEnd(b[pos]) && b[pos] != '#') {
+                if (!isBlank(b[pos])) last = pos + 1;
+                pos++;
+            }
+            if (last - start > MAX_NAME) {
+                throw error(start, "material name " + quote(start, last, "'") + " is longer than " + MAX_NAME + " characters");
+            }
+            String name = text(start, last);
+            Integer g = groupIndex.get(name);
+            if (g == null) {
+                if (groupNames.size() == MeshData.MAX_GROUPS) {
+                    throw error(start, "more than " + MeshData.MAX_GROUPS + " different usemtl names in one file");
+                }
+                g = groupNames.size();
+                groupNames.add(name);
+                groupIndex.put(name, g);
+                groupLine.add(line);
+                groupColumn.add(column(start));
+            }
+            if (faceGroup == null) {
+                faceGroup = new Ints();
+                for (int f = faceSizes.size(); f > 0; f--) faceGroup.add(currentGroup);
+            }
+            currentGroup = g;
+        }
+
+        /** {@code mtllib FILE...}: material libraries, read by the scene relative to this file. */
+        private void mtllib() {
+            int n = 0;
+            while (true) {
+                skipBlanks();
+                if (atLineEnd()) break;
+                int start = pos;
+                skipToken();
+                if (pos - start > MAX_NAME) throw error(start, "file name " + quote(start, pos, "'") + " is longer than " + MAX_NAME + " characters");
+                if (libraries.size() == MAX_LIBRARIES) throw error(start, "more than " + MAX_LIBRARIES + " material libraries in one file");
+                libraries.add(new Ref(text(start, pos), line, column(start)));
+                n++;
+            }
+            if (n == 0) throw error(pos, "expected a material library file name after 'mtllib', found " + describe(pos));
+        }
 
         // ---- OpenSubdiv tags (subdivision mode) ----
 
@@ -934,6 +1062,13 @@ public final class ObjReader {
         }
     }
 
+    /** The group of a deferred chunk's faces before its first usemtl: the group the chunks before it end in. */
+    private static final int INHERIT = -2;
+    /** Longest usemtl name or mtllib file name, in bytes. */
+    static final int MAX_NAME = 4096;
+    /** Most mtllib file names in one OBJ file. */
+    static final int MAX_LIBRARIES = 1024;
+
     /** Index kinds, for {@link Parser#base} and the deferred checks. */
     private static final int VERTEX = 0, UV = 1, NORMAL = 2;
 
@@ -1011,7 +1146,7 @@ public final class ObjReader {
             return lineEnd == 0 || b[lineEnd - 1] != '\\';
         }
 
-        MeshData run(int threads) {
+        Read run(int threads) {
             PartThreads.run(Math.max(1, Math.min(threads, parsed.length)), "spindulys-obj-parse", k -> {
                 try {
                     work();
@@ -1038,7 +1173,7 @@ public final class ObjReader {
             }
         }
 
-        private MeshData merge() {
+        private Read merge() {
             int chunks = parsed.length;
             int[][] base = new int[chunks + 1][3];
             int[] firstLine = new int[chunks + 1];
@@ -1068,9 +1203,51 @@ public final class ObjReader {
             int[] sizes = new int[(int) faces], vi = new int[(int) corners];
             int[] ni = anyNormalIndex ? new int[(int) corners] : null, ti = anyUvIndex ? new int[(int) corners] : null;
             int p0 = 0, n0 = 0, t0 = 0, f0 = 0, c0 = 0;
+            boolean anyGroups = false;
+            for (Parser p : parsed) anyGroups |= p.faceGroup != null;
+            int[] groups = anyGroups ? new int[(int) faces] : null;
+            List<String> names = new ArrayList<>();
+            java.util.Map<String, Integer> index = new java.util.HashMap<>();
+            List<Ref> groupRefs = new ArrayList<>(), libraries = new ArrayList<>();
+            int current = -1;
             for (int k = 0; k < chunks; k++) {
                 Parser p = parsed[k];
                 parsed[k] = null;
+                // Groups: the chunk's names numbered as the whole file numbers them (by first use),
+                // its faces before its first usemtl in the group the chunks before it end in.
+                int lineOffset = firstLine[k] - 1;
+                int[] global = new int[p.groupNames.size()];
+                List<Ref> local = p.groupRefs();
+                for (int g = 0; g < global.length; g++) {
+                    Ref r = local.get(g);
+                    Integer gi = index.get(r.name());
+                    if (gi == null) {
+                        if (names.size() == MeshData.MAX_GROUPS) {
+                            throw new SceneException(file, r.line() + lineOffset, r.column(), "more than " + MeshData.MAX_GROUPS + " different usemtl names in one file");
+                        }
+                        gi = names.size();
+                        names.add(r.name());
+                        index.put(r.name(), gi);
+                        groupRefs.add(new Ref(r.name(), r.line() + lineOffset, r.column()));
+                    }
+                    global[g] = gi;
+                }
+                for (Ref r : p.libraries) {
+                    if (libraries.size() == MAX_LIBRARIES) {
+                        throw new SceneException(file, r.line() + lineOffset, r.column(), "more than " + MAX_LIBRARIES + " material libraries in one file");
+                    }
+                    libraries.add(new Ref(r.name(), r.line() + lineOffset, r.column()));
+                }
+                if (groups != null) {
+                    int nf = p.faceSizes.size();
+                    if (p.faceGroup == null) {
+                        Arrays.fill(groups, f0, f0 + nf, current);
+                    } else {
+                        p.faceGroup.copyTo(groups, f0);
+                        for (int f = f0; f < f0 + nf; f++) groups[f] = groups[f] == INHERIT ? current : global[groups[f]];
+                    }
+                }
+                if (p.currentGroup != INHERIT) current = global[p.currentGroup];
                 p.positions.copyTo(pos, p0);
                 if (nor != null) p.normals.copyTo(nor, n0);
                 if (uv != null) p.uvs.copyTo(uv, t0);
@@ -1091,7 +1268,8 @@ public final class ObjReader {
                 f0 += p.faceSizes.size();
                 c0 += p.vertexIndex.size();
             }
-            return new MeshData(pos, nor, uv, sizes, vi, ni, ti, file);
+            MeshData mesh = new MeshData(pos, nor, uv, sizes, vi, ni, ti, file, groups, groups != null ? names.toArray(String[]::new) : null);
+            return new Read(mesh, null, List.copyOf(libraries), List.copyOf(groupRefs));
         }
 
         /** Adds the base to the chunk's negative indices, which were counted back from its own latest element. */

@@ -4,13 +4,17 @@ import java.io.IOException;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 
+import lt.spindulys.io.SceneBlockReader.GroupMaterial;
 import lt.spindulys.io.SceneBlockReader.Prop;
 import lt.spindulys.io.SceneBlockReader.Props;
 import lt.spindulys.io.SceneLexer.Token;
 import lt.spindulys.limits.InputFiles;
 import lt.spindulys.limits.MessageText;
+import lt.spindulys.material.Material;
 import lt.spindulys.mesh.MeshData;
 import lt.spindulys.scene.AdaptiveSubdivisionSurface;
 import lt.spindulys.scene.GObject;
@@ -41,6 +45,17 @@ final class SceneAssetCache {
     private final Map<SubdivKey, SubdivisionSurface> surfaces = new HashMap<>();
     /** Adaptive surfaces by control mesh and scheme (level -1): later statements share the first one's refiner. */
     private final Map<SubdivKey, AdaptiveSubdivisionSurface> adaptiveSurfaces = new HashMap<>();
+    /** What each OBJ file read says about materials (not the mesh, which is not kept here). */
+    private final Map<Path, MaterialRefs> objMaterials = new HashMap<>();
+
+    /** An OBJ file's mtllib file names and each face group's first usemtl, in group order. */
+    private record MaterialRefs(List<ObjReader.Ref> libraries, List<ObjReader.Ref> groups) {
+        static MaterialRefs of(ObjReader.Read r) { return new MaterialRefs(r.libraries(), r.groups()); }
+    }
+    /** Each OBJ file's libraries' materials by name, read when a statement first needs them. */
+    private final Map<Path, Map<String, Material>> objLibraries = new HashMap<>();
+    /** Every material library of this parse, read once however many OBJ files name it. */
+    private final Map<Path, Map<String, Material>> libraries = new HashMap<>();
 
     /** @param baseDir the absolute folder against which relative file names are resolved */
     SceneAssetCache(SceneErrors err, Path baseDir) {
@@ -90,11 +105,14 @@ final class SceneAssetCache {
             TriangleMesh m = first.instance();
             Object shading = p.get("shading");
             m.smooth(shading != null ? "smooth".equals(shading) : first.hasNormals());
+            groupMaterials(p, path, m.groupNames(), m::groupMaterial);
             return m;
         }
         MeshData data;
         try {
-            data = ObjReader.read(path);
+            ObjReader.Read read = ObjReader.readMesh(path);
+            objMaterials.put(path, MaterialRefs.of(read));
+            data = read.mesh();
         } catch (IOException e) {
             throw err.error(f.valueAt(), "cannot read mesh file " + MessageText.quote(rel) + ": " + e.getMessage());
         }
@@ -107,7 +125,106 @@ final class SceneAssetCache {
         Object shading = p.get("shading");
         m.smooth(shading != null ? "smooth".equals(shading) : data.normals() != null);
         meshes.put(path, m);
+        groupMaterials(p, path, m.groupNames(), m::groupMaterial);
         return m;
+    }
+
+    /** How an object takes a face group's material (its {@code groupMaterial}). */
+    @FunctionalInterface
+    private interface GroupSetter {
+        void set(String group, Material m);
+    }
+
+    /**
+     * Gives every face group of an object made from the OBJ file at {@code obj} its material: the
+     * block's 'usemtl' for that name, else the file's material libraries'. A block with its own
+     * 'material' overrides every group, so nothing is resolved then. A 'usemtl' naming no group of
+     * the file is an error at its name; a group that neither gives a material is an error at the
+     * file's first 'usemtl' of it.
+     */
+    private void groupMaterials(Props p, Path obj, String[] groups, GroupSetter setter) {
+        Map<String, GroupMaterial> overrides = new LinkedHashMap<>();
+        for (Prop pr : p.all) {
+            if (!pr.key().name().equals("usemtl")) continue;
+            GroupMaterial g = (GroupMaterial) pr.value();
+            GroupMaterial earlier = overrides.putIfAbsent(g.group(), g);
+            if (earlier != null) {
+                throw err.error(g.at(), "usemtl " + MessageText.quote(g.group()) + " given twice (first at " + earlier.at().position() + ")");
+            }
+            boolean known = false;
+            if (groups != null) for (String n : groups) known |= n.equals(g.group());
+            if (!known) {
+                String file = (String) p.prop("file").value();
+                throw err.error(g.at(), "usemtl " + MessageText.quote(g.group()) + ": " + MessageText.quote(file)
+                        + (groups == null || groups.length == 0 ? " has no usemtl statements" : " has no usemtl of that name"
+                        + SceneGrammar.didYouMean(g.group(), List.of(groups)) + " (its names: " + MessageText.cut(String.join(", ", groups), 200) + ")"));
+            }
+        }
+        if (groups == null || p.prop("material") != null) return;
+        MaterialRefs read = objMaterials.get(obj);
+        Map<String, Material> fromFiles = null;
+        for (int g = 0; g < groups.length; g++) {
+            String name = groups[g];
+            GroupMaterial o = overrides.get(name);
+            Material m;
+            if (o != null) {
+                m = o.material();
+            } else {
+                if (fromFiles == null) fromFiles = libraryMaterials(obj, read);
+                m = fromFiles.get(name);
+                if (m == null) {
+                    ObjReader.Ref at = read.groups().get(g);
+                    String libs = read.libraries().isEmpty() ? "the file names no material library (mtllib)"
+                            : "no material library it names (" + MessageText.cut(String.join(", ", read.libraries().stream().map(ObjReader.Ref::name).toList()), 200)
+                            + ") defines it" + SceneGrammar.didYouMean(name, fromFiles.keySet());
+                    throw new SceneException(obj.toString(), at.line(), at.column(), "no material " + MessageText.quote(name) + ": " + libs
+                            + ", and the scene gives none (write usemtl \"" + MessageText.cut(name, 40) + "\" and a material in the '"
+                            + p.block.keyword() + "' block at " + p.opener.position() + ")");
+                }
+            }
+            setter.set(name, m);
+        }
+    }
+
+    /**
+     * The materials of the libraries an OBJ file names, by name (read once per library file and
+     * once per OBJ file); a library that is missing is an error at its mtllib, and a name that two
+     * of them define an error at the second's.
+     */
+    private Map<String, Material> libraryMaterials(Path obj, MaterialRefs read) {
+        Map<String, Material> all = objLibraries.get(obj);
+        if (all != null) return all;
+        all = new HashMap<>();
+        Map<String, String> definedIn = new HashMap<>();
+        Path folder = obj.toAbsolutePath().getParent();
+        for (ObjReader.Ref lib : read.libraries()) {
+            Path path;
+            try {
+                path = (folder == null ? Path.of(lib.name()) : folder.resolve(lib.name())).normalize();
+            } catch (InvalidPathException e) {
+                throw new SceneException(obj.toString(), lib.line(), lib.column(), "material library name " + MessageText.quote(lib.name()) + " is not a valid path: " + e.getReason());
+            }
+            String problem = InputFiles.problem(path);
+            if (problem != null) {
+                throw new SceneException(obj.toString(), lib.line(), lib.column(), "material library " + MessageText.quote(lib.name()) + " " + problem
+                        + " (looked in " + MessageText.cut(path.toString(), 200) + "; a 'material' key on the object replaces the file's materials)");
+            }
+            Map<String, Material> one = libraries.get(path);
+            if (one == null) {
+                one = MtlReader.read(path, textureCache);
+                libraries.put(path, one);
+            }
+            for (Map.Entry<String, Material> e : one.entrySet()) {
+                String before = definedIn.putIfAbsent(e.getKey(), lib.name());
+                if (before != null && !before.equals(lib.name())) {
+                    throw new SceneException(obj.toString(), lib.line(), lib.column(), "material " + MessageText.quote(e.getKey()) + " is defined both in "
+                            + MessageText.quote(before) + " and in " + MessageText.quote(lib.name()) + " (each name once)");
+                }
+                all.putIfAbsent(e.getKey(), e.getValue());
+            }
+        }
+        objLibraries.put(obj, all);
+        return all;
     }
 
     /**
@@ -154,7 +271,12 @@ final class SceneAssetCache {
                 (String) p.get("creasing"), (String) p.get("triangles"));
         if (method.equals("uniform")) {
             SubdivisionSurface same = surfaces.get(key);
-            if (same != null) return same.instance(); // the same surface again: refined once, placed twice
+            if (same != null) {
+                // The same surface again: refined once, placed twice.
+                SubdivisionSurface s = same.instance();
+                groupMaterials(p, path, s.groupNames(), s::groupMaterial);
+                return s;
+            }
             SubdivInput input = readSurface(p, f, rel, path);
             boolean limit = positions == SubdivisionSurface.Positions.LIMIT;
             try {
@@ -170,6 +292,7 @@ final class SceneAssetCache {
             try {
                 SubdivisionSurface made = new SubdivisionSurface(input.toControlMesh(), level, smooth, positions);
                 surfaces.put(key, made);
+                groupMaterials(p, path, made.groupNames(), made::groupMaterial);
                 return made;
             } catch (IllegalArgumentException e) {
                 throw err.wrap(f.valueAt(), e);
@@ -216,6 +339,7 @@ final class SceneAssetCache {
             }
             s.maxLevel(max);
         }
+        groupMaterials(p, key.file(), s.groupNames(), s::groupMaterial);
         return s;
     }
 
@@ -231,7 +355,13 @@ final class SceneAssetCache {
         }
         SubdivInput input;
         try {
-            input = ext.equals("obj") ? ObjReader.readSubdiv(path) : SubdivInput.of(WorkframeReader.readMesh(path));
+            if (ext.equals("obj")) {
+                ObjReader.Read read = ObjReader.readSubdivision(path);
+                objMaterials.put(path, MaterialRefs.of(read));
+                input = read.subdiv();
+            } else {
+                input = SubdivInput.of(WorkframeReader.readMesh(path));
+            }
         } catch (IOException e) {
             throw err.error(f.valueAt(), "cannot read subdivision mesh file " + MessageText.quote(rel) + ": " + e.getMessage());
         }

@@ -74,6 +74,9 @@ final class SceneBlockReader {
     /** One key as written: the key token, the first token of its value, and the value. */
     record Prop(Key key, Token at, Token valueAt, Object value) {}
 
+    /** A 'usemtl' value: the face group's name, where it is written, and the material its faces take. */
+    record GroupMaterial(String group, Token at, Material material) {}
+
     /** One operand of a CSG block: its statement keyword and the object it made. */
     record Operand(Token at, GObject object) {}
 
@@ -217,6 +220,11 @@ final class SceneBlockReader {
             case CHOICES -> choices(b, n, k.choices());
             case STRING -> string(n);
             case MATERIAL -> materialValue(keyToken);
+            case GROUP_MATERIAL -> {
+                Token nameAt = lex.peek();
+                String group = string(n);
+                yield new GroupMaterial(group, nameAt, materialValue(keyToken));
+            }
             case MAP -> values.binding(block(SceneGrammar.MAP, keyToken, null));
             case MOTION -> values.motion(block(SceneGrammar.MOTION, keyToken, null), keyToken);
             case FRAMES -> new int[] {(Integer) integer(n, false), (Integer) integer(n, false)};
@@ -349,7 +357,8 @@ final class SceneBlockReader {
         Token t = lex.peek();
         if (t.kind() == Kind.OPEN) return values.material(block(SceneGrammar.MATERIAL, keyToken, null));
         lex.next();
-        if (t.kind() != Kind.WORD) throw err.error(t, "expected a material name or '{' after 'material', found " + t.describe());
+        if (t.kind() != Kind.WORD) throw err.error(t, "expected a material name or '{' after '" + keyToken.text() + (keyToken.text().equals("material") ? "" : " NAME")
+                + "', found " + t.describe());
         return values.material(t);
     }
 

@@ -65,7 +65,9 @@ final class SceneGrammar {
         /** A frame number, then a nested { ... } block of {@link SceneGrammar#KEY} keys: one key's pose. */
         KEY,
         /** A nested { ... } block of {@link SceneGrammar#TURNTABLE} keys: whole turns over the frame range. */
-        TURNTABLE
+        TURNTABLE,
+        /** A double-quoted face group (OBJ usemtl) name, then a material as {@link #MATERIAL} takes it. */
+        GROUP_MATERIAL
     }
 
     /** What a block makes, which decides how the parser turns its keys into builder calls. */
@@ -328,9 +330,11 @@ final class SceneGrammar {
             req("vertices", Kind.VERTICES));
 
     // No default for shading: absent means "smooth if the OBJ has normals", decided after reading it.
+    // 'usemtl' gives the faces of one OBJ usemtl name a scene material (over the .mtl file's).
     static final Block MESH = solid("mesh",
             req("file", Kind.STRING),
-            choice("shading", null, "smooth", "flat"));
+            choice("shading", null, "smooth", "flat"),
+            repeat("usemtl", Kind.GROUP_MATERIAL));
 
     // No defaults for the scheme options: absent means "as the file's tags say, else OpenSubdiv's default".
     static final Block SUBDIV = solid("subdiv",
@@ -347,7 +351,8 @@ final class SceneGrammar {
             choice("triangles", null, "catmark", "smooth"),
             choice("shading", "smooth", "smooth", "flat"),
             opt("uv", Kind.STRING),
-            choice("positions", "refined", "refined", "limit"));
+            choice("positions", "refined", "refined", "limit"),
+            repeat("usemtl", Kind.GROUP_MATERIAL));
 
     // CSG: only the common keys; the operands are the object statements nested in the block.
     static final Block UNION = new Block("union", Category.CSG, true, OBJECT_COMMON);

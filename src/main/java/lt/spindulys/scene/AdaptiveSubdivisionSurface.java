@@ -299,6 +299,37 @@ public final class AdaptiveSubdivisionSurface extends GObject {
      */
     public PatchRefiner refiner() { return geometry.refiner(); }
 
+
+    /**
+     * The names of the face groups (the control mesh's, such as the OBJ file's usemtl names), by
+     * group index, or null when it has none; every refined face belongs to its control face's group.
+     *
+     * @return the names, or null
+     */
+    public String[] groupNames() { return geometry.refiner().control().groupNames(); }
+
+    /**
+     * Gives the faces of one group (one usemtl name of the OBJ file), and every face refined from
+     * them, a material of their own. The object's {@link #material(Material)}, when given,
+     * overrides every group's; faces of groups given none, and faces in no group, take the
+     * object's material (or the one it inherits).
+     *
+     * @param name the group's name, one of {@link #groupNames()}
+     * @param m the material, or null to take the object's again
+     * @return this surface, for chaining
+     * @throws IllegalArgumentException if the surface has no group of that name
+     */
+    public AdaptiveSubdivisionSurface groupMaterial(String name, Material m) {
+        setGroupMaterial(geometry.refiner().control().groupNames(), name, m);
+        return this;
+    }
+
+    @Override
+    protected int groupCount() { return geometry.refiner().control().groupCount(); }
+
+    @Override
+    protected int faceGroup(int prim, int sub) { return tessellation.faceGroup(prim, sub); }
+
     // ---- builder methods, returning this type (see GObject for what each does) ----
 
     /** {@inheritDoc} */

@@ -219,14 +219,37 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
     private void buildEager(BuildContext root) {
         MeshData[] parts = new MeshData[faces.length];
         IntStream.range(0, faces.length).parallel().forEach(i -> parts[i] = refine(faces[i]));
-        MeshData joined = join(parts, refiner.control().source());
+        MeshData joined = join(parts, refiner.control().source(), faceGroups(), refiner.control().groupNames());
         mesh = new TriangleMesh(joined);
         mesh.smooth(smooth);
         mesh.freeze(root.within(Placement.of(Transform.IDENTITY, root.shutterOpen(), root.shutterClose()), null), 0);
     }
 
-    /** One mesh of the parts, in face order: their vertices side by side (the census welds equal positions). */
-    static MeshData join(MeshData[] parts, String source) {
+    /** The control face group of each part (patch of {@link #faces}), or null when the control mesh has no groups. */
+    private int[] faceGroups() {
+        int[] control = refiner.control().faceGroups();
+        if (control == null) return null;
+        int[] out = new int[faces.length];
+        for (int i = 0; i < faces.length; i++) out[i] = control[faces[i]];
+        return out;
+    }
+
+    /**
+     * The face group of a hit's primitive: the eager mesh's triangle's, or the control face's of
+     * the lazy structure's primitive (a coarse face, whose every triangle is in its group).
+     */
+    int faceGroup(int prim, int sub) {
+        if (mesh != null) return mesh.faceGroup(prim, sub);
+        int[] control = refiner.control().faceGroups();
+        return control == null ? -1 : control[faces[prim]];
+    }
+
+    /**
+     * One mesh of the parts, in face order: their vertices side by side (the census welds equal
+     * positions); each part's faces in its group of {@code partGroups} (named by
+     * {@code groupNames}), when given.
+     */
+    static MeshData join(MeshData[] parts, String source, int[] partGroups, String[] groupNames) {
         long nv = 0, nn = 0, nu = 0, nfaces = 0, nc = 0;
         boolean normals = false, uvs = false;
         for (MeshData d : parts) {
@@ -239,8 +262,11 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
         if (nv > Integer.MAX_VALUE - 8 || nc > Integer.MAX_VALUE - 8) throw new IllegalArgumentException("the tessellation is too large for one mesh");
         double[] p = new double[(int) nv], n = normals ? new double[(int) nn] : null, t = uvs ? new double[(int) nu] : null;
         int[] sizes = new int[(int) nfaces], vi = new int[(int) nc], ni = normals ? new int[(int) nc] : null, ti = uvs ? new int[(int) nc] : null;
-        int op = 0, on = 0, ot = 0, of = 0, oc = 0;
+        int[] groups = partGroups != null ? new int[(int) nfaces] : null;
+        int op = 0, on = 0, ot = 0, of = 0, oc = 0, part = 0;
         for (MeshData d : parts) {
+            if (groups != null) Arrays.fill(groups, of, of + d.faceSizes().length, partGroups[part]);
+            part++;
             int vBase = op / 3, nBase = on / 3, tBase = ot / 2;
             System.arraycopy(d.positions(), 0, p, op, d.positions().length);
             op += d.positions().length;
@@ -256,7 +282,7 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
             }
             oc += dv.length;
         }
-        return new MeshData(p, n, t, sizes, vi, ni, ti, source);
+        return new MeshData(p, n, t, sizes, vi, ni, ti, source, groups, groups != null ? groupNames : null);
     }
 
     /**
@@ -271,7 +297,7 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
         HeapBudget.require(HeapBudget.product(need, 3), "the tessellation of " + name);
         MeshData[] parts = new MeshData[faces.length];
         IntStream.range(0, faces.length).parallel().forEach(i -> parts[i] = refine(faces[i]));
-        return weld(join(parts, refiner.control().source()));
+        return weld(join(parts, refiner.control().source(), faceGroups(), refiner.control().groupNames()));
     }
 
     /** {@code d} with vertices at equal positions joined and the triangles that collapse dropped. */
@@ -306,8 +332,10 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
             corners += sizes[f];
         }
         int[] os = new int[faces], ov = new int[corners], on = ni != null ? new int[corners] : null, ot = ti != null ? new int[corners] : null;
+        int[] fg = d.faceGroups(), og = fg != null ? new int[faces] : null;
         for (int f = 0, c = 0, of = 0, oc = 0; f < sizes.length; c += sizes[f], f++) {
             if (collapsed(map, vi, c, sizes[f])) continue;
+            if (og != null) og[of] = fg[f];
             os[of++] = sizes[f];
             for (int j = 0; j < sizes[f]; j++, oc++) {
                 ov[oc] = map[vi[c + j]];
@@ -315,7 +343,7 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
                 if (ot != null) ot[oc] = ti[c + j];
             }
         }
-        return new MeshData(Arrays.copyOf(q, 3 * (m + 1)), d.normals(), d.uvs(), os, ov, on, ot, d.source());
+        return new MeshData(Arrays.copyOf(q, 3 * (m + 1)), d.normals(), d.uvs(), os, ov, on, ot, d.source(), og, og != null ? d.groupNames() : null);
     }
 
     /** True if two corners of the face starting at corner {@code c} became one vertex. */

@@ -61,6 +61,17 @@ public abstract class GObject implements TracedObject, Cloneable {
     /** The shutter a frozen object was built for (what its keys are swept over); the default before. */
     private double shutterOpen = Placement.OPEN, shutterClose = Placement.CLOSE;
     private Material material;
+    /**
+     * Materials of the face groups given to this object (meshes and subdivision surfaces: their
+     * OBJ usemtl runs), by group index, null entries for none; null when none is given. Replaced,
+     * never changed in place, so copies may share it.
+     */
+    private Material[] groupMaterials;
+    /**
+     * Frozen: the material each face group is shaded with, or null when every face takes
+     * {@link #material} (the object has no groups, or its own material overrides theirs).
+     */
+    private Material[] palette;
     private String name;
     /**
      * Where the object was made, for messages only (see {@link #source(String)}): the whole text,
@@ -167,6 +178,60 @@ public abstract class GObject implements TracedObject, Cloneable {
      * it is shaded with (inherited ones filled in).
      */
     public Material material() { return material; }
+
+    /**
+     * The material a primitive of this frozen object is shaded with: its face group's, where the
+     * object has groups with materials, else the object's.
+     *
+     * @param prim the primitive, as a hit records it
+     * @param sub the primitive's part, as a hit records it
+     * @return the material
+     */
+    @Override
+    public final Material material(int prim, int sub) {
+        if (palette == null) return material;
+        int g = faceGroup(prim, sub);
+        return g < 0 ? material : palette[g];
+    }
+
+    /**
+     * The number of face groups (0 for objects without them); see {@link #faceGroup}.
+     *
+     * @return the number of groups
+     */
+    protected int groupCount() { return 0; }
+
+    /**
+     * The face group of a primitive, as {@link #intersectLocal} records it, or -1 for none. Called
+     * per hit of an object with group materials: it must not allocate.
+     *
+     * @param prim the primitive
+     * @param sub the primitive's part
+     * @return the group index, or -1
+     */
+    protected int faceGroup(int prim, int sub) { return -1; }
+
+    /**
+     * Sets the material of the face group named {@code name} among {@code names} (the shape's
+     * public {@code groupMaterial} methods call this).
+     *
+     * @param names the object's group names, by index, or null when it has none
+     * @param name the group's name
+     * @param m the material, or null for the object's
+     * @throws IllegalArgumentException if there is no group of that name
+     */
+    protected final void setGroupMaterial(String[] names, String name, Material m) {
+        checkMutable();
+        int g = -1;
+        if (names != null) for (int i = 0; i < names.length && g < 0; i++) if (names[i].equals(name)) g = i;
+        if (g < 0) {
+            throw new IllegalArgumentException(name() + " has no face group " + MessageText.quote(name)
+                    + (names == null || names.length == 0 ? " (it has no groups)" : " (its groups: " + MessageText.cut(String.join(", ", names), 200) + ")"));
+        }
+        Material[] next = groupMaterials == null ? new Material[names.length] : groupMaterials.clone();
+        next[g] = m;
+        groupMaterials = next;
+    }
 
     /**
      * Names this object for messages (null: none, then it is named by its {@link #kind()}).
@@ -290,6 +355,7 @@ public abstract class GObject implements TracedObject, Cloneable {
         motion = from.motion;
         keys = from.keys;
         material = from.material;
+        groupMaterials = from.groupMaterials;
         name = from.name;
         source = from.source;
         sourceLine = from.sourceLine;
@@ -325,7 +391,15 @@ public abstract class GObject implements TracedObject, Cloneable {
         frozen = true;
         if (p.isStatic()) objectToWorld = p.staticTransform();
         else moving = p;
-        if (material == null) material = context.material();
+        // The object's own material overrides its face groups'; without one, groups given none
+        // (and faces in no group) take the material it inherits.
+        boolean own = material != null;
+        if (!own) material = context.material();
+        int groups = groupCount();
+        if (!own && groups > 0 && groupMaterials != null) {
+            palette = new Material[groups];
+            for (int g = 0; g < groups; g++) palette[g] = groupMaterials[g] != null ? groupMaterials[g] : material;
+        }
         id = ids;
         worldBounds = computeWorldBounds();
         return ids + 1;
@@ -422,6 +496,7 @@ public abstract class GObject implements TracedObject, Cloneable {
      */
     public void forEachMaterial(java.util.function.Consumer<Material> visitor) {
         visitor.accept(material);
+        if (palette != null) for (Material m : palette) visitor.accept(m);
     }
 
     /**
@@ -455,7 +530,8 @@ public abstract class GObject implements TracedObject, Cloneable {
         hit.object = this;
         // A farther candidate found earlier on this ray may have been a subtracted CSG surface.
         hit.flipNormal = false;
-        hit.material = material; // a leaf's own; an enclosing object with a material overrides it after
+        // A leaf's own (its face group's, if it has group materials); an enclosing object with a material overrides it after.
+        hit.material = palette == null ? material : material(hit.prim, hit.sub);
         hit.materialSpace = null;
         return true;
     }

@@ -37,6 +37,20 @@ final class MeshTopology {
         checkOptional(w, "normal", d.normalIndex(), d.normals(), vi.length);
         checkOptional(w, "texture coordinate", d.uvIndex(), d.uvs(), vi.length);
         if (d.uvs() != null && d.uvs().length % 2 != 0) throw new IllegalArgumentException(w + "texture coordinates must hold two numbers each");
+        checkGroups(w, d.faceGroups(), d.groupNames(), sizes.length);
+    }
+
+    /** Face groups: one per face, each -1 or a name's index; names given exactly when groups are. */
+    static void checkGroups(String w, int[] groups, String[] names, int faces) {
+        if ((groups == null) != (names == null)) throw new IllegalArgumentException(w + "face groups and group names must be given together");
+        if (groups == null) return;
+        if (groups.length != faces) throw new IllegalArgumentException(w + groups.length + " face groups for " + faces + " faces");
+        if (names.length > MeshData.MAX_GROUPS) throw new IllegalArgumentException(w + names.length + " face groups, more than the " + MeshData.MAX_GROUPS + " allowed");
+        for (int f = 0; f < faces; f++) {
+            if (groups[f] < -1 || groups[f] >= names.length) {
+                throw new IllegalArgumentException(w + "face " + (f + 1) + " has group " + groups[f] + ", but there are " + names.length + " groups");
+            }
+        }
     }
 
     private static void checkOptional(String w, String what, int[] index, double[] values, int corners) {

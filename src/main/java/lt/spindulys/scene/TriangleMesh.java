@@ -59,6 +59,10 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     private final int[] triNormal;
     /** Three texture coordinate indices per triangle (-1 where a triangle has none), or null. */
     private final int[] triUv;
+    /** The face group of each triangle (its polygon's; -1: none), or null when the data has no groups. */
+    private final short[] triGroup;
+    /** The face groups' names, or null. */
+    private final String[] groupNames;
     private final int triangleCount, degenerateCount;
     private final boolean needsVertexNormals;
     private final boolean closed;
@@ -107,6 +111,8 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         normals = data.normals();
         uvs = data.uvs();
         int[] sizes = data.faceSizes(), vi = data.vertexIndex(), ni = data.normalIndex(), ti = data.uvIndex();
+        int[] groups = data.faceGroups();
+        groupNames = data.groupNames();
 
         long total = 0;
         for (int s : sizes) total += s - 2;
@@ -114,7 +120,8 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         int[] t = new int[(int) (3 * total)];
         int[] tn = ni != null ? new int[t.length] : null;
         int[] tu = ti != null ? new int[t.length] : null;
-        int k = 0, dropped = 0, corner = 0;
+        short[] tg = groups != null ? new short[(int) total] : null;
+        int k = 0, dropped = 0, corner = 0, face = 0;
         boolean anyNormal = false, anyWithout = false, anyUv = false;
         double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
         for (int size : sizes) {
@@ -127,6 +134,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
                 }
                 int o = 3 * k;
                 t[o] = a; t[o + 1] = b; t[o + 2] = c;
+                if (tg != null) tg[k] = (short) groups[face];
                 boolean hasN = ni != null && ni[ca] >= 0 && ni[cb] >= 0 && ni[cc] >= 0;
                 if (tn != null) {
                     tn[o] = hasN ? ni[ca] : -1; tn[o + 1] = hasN ? ni[cb] : -1; tn[o + 2] = hasN ? ni[cc] : -1;
@@ -147,12 +155,14 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
                 k++;
             }
             corner += size;
+            face++;
         }
         triangleCount = k;
         degenerateCount = dropped;
         tri = k == total ? t : Arrays.copyOf(t, 3 * k);
         triNormal = anyNormal ? (k == total ? tn : Arrays.copyOf(tn, 3 * k)) : null;
         triUv = anyUv ? (k == total ? tu : Arrays.copyOf(tu, 3 * k)) : null;
+        triGroup = tg == null || k == total ? tg : Arrays.copyOf(tg, k);
         needsVertexNormals = anyWithout;
         bounds = k == 0 ? Bounds.EMPTY : new Bounds(x0, y0, z0, x1, y1, z1);
         closed = k > 0 && MeshTopology.everyEdgeTwice(tri, triangleCount, pos);
@@ -174,6 +184,8 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         tri = p.tri;
         triNormal = p.triNormal;
         triUv = p.triUv;
+        triGroup = p.triGroup;
+        groupNames = p.groupNames;
         triangleCount = p.triangleCount;
         degenerateCount = p.degenerateCount;
         needsVertexNormals = p.needsVertexNormals;
@@ -286,8 +298,42 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         int[] sizes = new int[triangleCount];
         Arrays.fill(sizes, 3);
         // The owner's positions: an unfrozen instance's may predate the renumbering (reorder).
-        return new MeshData(root().pos, normals, uvs, sizes, tri, triNormal, triUv, source);
+        int[] groups = null;
+        if (triGroup != null) {
+            groups = new int[triangleCount];
+            for (int t = 0; t < triangleCount; t++) groups[t] = triGroup[t];
+        }
+        return new MeshData(root().pos, normals, uvs, sizes, tri, triNormal, triUv, source, groups, groupNames == null ? null : groupNames.clone());
     }
+
+    /**
+     * The names of the face groups (the OBJ file's usemtl names), by group index, or null when
+     * the mesh has none; see {@link #groupMaterial(String, Material)}.
+     *
+     * @return the names, or null
+     */
+    public String[] groupNames() { return groupNames == null ? null : groupNames.clone(); }
+
+    /**
+     * Gives the faces of one group (one usemtl name of the OBJ file) a material of their own. The
+     * object's {@link #material(Material)}, when given, overrides every group's; faces of groups
+     * given none, and faces in no group, take the object's material (or the one it inherits).
+     *
+     * @param name the group's name, one of {@link #groupNames()}
+     * @param m the material, or null to take the object's again
+     * @return this mesh, for chaining
+     * @throws IllegalArgumentException if the mesh has no group of that name
+     */
+    public TriangleMesh groupMaterial(String name, Material m) {
+        setGroupMaterial(groupNames, name, m);
+        return this;
+    }
+
+    @Override
+    protected int groupCount() { return groupNames == null ? 0 : groupNames.length; }
+
+    @Override
+    protected int faceGroup(int prim, int sub) { return triGroup == null ? -1 : triGroup[prim]; }
     /**
      * Triangles of area above zero, the ones rendered.
      *
@@ -313,7 +359,8 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         if (instance) return 0;
         TriangleMesh r = root();
         synchronized (r) {
-            long b = bytes(r.pos) + bytes(normals) + bytes(uvs) + bytes(tri) + bytes(triNormal) + bytes(triUv) + bytes(r.vertexNormals);
+            long b = bytes(r.pos) + bytes(normals) + bytes(uvs) + bytes(tri) + bytes(triNormal) + bytes(triUv) + bytes(r.vertexNormals)
+                    + (triGroup == null ? 0 : 2L * triGroup.length);
             for (Accelerator a : r.structures.values()) b += a.memoryBytes();
             return b;
         }
@@ -451,6 +498,10 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         permuteTriangles(tri, order, fork);
         if (triNormal != null) permuteTriangles(triNormal, order, fork);
         if (triUv != null) permuteTriangles(triUv, order, fork);
+        if (triGroup != null) {
+            short[] old = triGroup.clone();
+            for (int k = 0; k < n; k++) triGroup[k] = old[order[k]];
+        }
         int nv = pos.length / 3;
         int[] newId = new int[nv];
         Arrays.fill(newId, -1);

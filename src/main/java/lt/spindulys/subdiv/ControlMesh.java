@@ -28,6 +28,9 @@ public final class ControlMesh {
     private final int[] faceUvIndices;
     private final SubdivOptions options;
     private final String source;
+    /** Group per face (-1: none) and the groups' names, or both null (see {@link Builder#faceGroups}). */
+    private final int[] faceGroups;
+    private final String[] groupNames;
     /** The tags as given to the builder, for writing the mesh back out (the level holds them as applied). */
     private final SubdivTags tags;
     /** Level-0 topology with its tags. */
@@ -43,6 +46,8 @@ public final class ControlMesh {
         this.faceUvIndices = b.faceUvs;
         this.options = b.options;
         this.source = b.source;
+        this.faceGroups = b.faceGroups;
+        this.groupNames = b.groupNames;
         this.tags = new SubdivTags(Arrays.copyOf(b.creases, 2 * b.creaseCount), Arrays.copyOf(b.creaseSharp, b.creaseCount),
                 Arrays.copyOf(b.corners, b.cornerCount), Arrays.copyOf(b.cornerSharp, b.cornerCount),
                 Arrays.copyOf(b.holes, b.holeCount), b.options, java.util.List.of());
@@ -137,6 +142,25 @@ public final class ControlMesh {
     public SubdivOptions options() { return options; }
 
     /**
+     * The group of every face (-1 for none), or null when the faces have no groups: what every
+     * face refined from it inherits (the OBJ file's usemtl runs; the scene gives each group a
+     * material). The mesh's own array: do not modify.
+     *
+     * @return a group index per face, or null
+     */
+    public int[] faceGroups() { return faceGroups; }
+
+    /**
+     * The names of the face groups, by index, or null when the faces have no groups.
+     *
+     * @return the names, or null
+     */
+    public String[] groupNames() { return groupNames == null ? null : groupNames.clone(); }
+
+    /** The face groups' count, 0 without groups. */
+    public int groupCount() { return groupNames == null ? 0 : groupNames.length; }
+
+    /**
      * The creases, corners and holes as they were given to the builder, in that order (a later
      * value for the same edge or vertex, which replaced the earlier, is listed after it), with
      * the options: what a writer needs to write the mesh back out. The level the mesh refines
@@ -171,6 +195,8 @@ public final class ControlMesh {
         private int holeCount;
         private SubdivOptions options = SubdivOptions.DEFAULT;
         private String source;
+        private int[] faceGroups;
+        private String[] groupNames;
         /** Level 0 keeps per-face starts even when all faces are quads (see {@link PatchRefiner}). */
         boolean generalFaces;
 
@@ -260,6 +286,21 @@ public final class ControlMesh {
         public SubdivOptions options() { return options; }
 
         /**
+         * Groups of faces (such as an OBJ file's usemtl runs), which every refined face inherits
+         * from its control face; a scene gives each group a material.
+         *
+         * @param groups group index per face, -1 for a face in none; null with {@code names} null for no groups
+         * @param names the groups' names, by index (at most {@link lt.spindulys.mesh.MeshData#MAX_GROUPS})
+         * @return this builder
+         */
+        public Builder faceGroups(int[] groups, String[] names) {
+            if ((groups == null) != (names == null)) throw new IllegalArgumentException("face groups and group names must be given together");
+            this.faceGroups = groups;
+            this.groupNames = names;
+            return this;
+        }
+
+        /**
          * A name for error messages, such as the file the mesh came from.
          *
          * @param name the name, or null
@@ -328,6 +369,17 @@ public final class ControlMesh {
                     }
                 }
             }
+            if (faceGroups != null) {
+                if (faceGroups.length != nF) throw new IllegalArgumentException(at + faceGroups.length + " face groups for " + nF + " faces");
+                if (groupNames.length > lt.spindulys.mesh.MeshData.MAX_GROUPS) {
+                    throw new IllegalArgumentException(at + groupNames.length + " face groups, more than the " + lt.spindulys.mesh.MeshData.MAX_GROUPS + " allowed");
+                }
+                for (int f = 0; f < nF; f++) {
+                    if (faceGroups[f] < -1 || faceGroups[f] >= groupNames.length) {
+                        throw new IllegalArgumentException(at + "face " + f + " has group " + faceGroups[f] + ", but there are " + groupNames.length + " groups");
+                    }
+                }
+            }
             double[] pos = positions.clone();
             int[] sizes = faceSizes.clone(), verts = faceVertices.clone();
             BaseLevelBuilder levelBuilder = new BaseLevelBuilder(nV, sizes, verts, generalFaces);
@@ -367,6 +419,10 @@ public final class ControlMesh {
             Builder frozen = new Builder(pos, sizes, verts);
             frozen.options = options;
             frozen.source = source;
+            if (faceGroups != null) {
+                frozen.faceGroups = faceGroups.clone();
+                frozen.groupNames = groupNames.clone();
+            }
             frozen.creases = creases;
             frozen.creaseSharp = creaseSharp;
             frozen.creaseCount = creaseCount;

@@ -96,7 +96,11 @@ public final class RefinedTriangles {
         }
         int[] outN = smooth ? new int[corners] : null;
         double[] normals = !smooth ? null : vmap != null ? rangeNormals(r, f0, f1, outN) : cornerNormals(r, p, f0, f1, outN, false);
-        if (vmap == null) return new MeshData(p, normals, withUv ? uvs : null, outSizes, outV, outN, outUv, null);
+        if (vmap == null) {
+            ControlMesh control = r.controlMesh();
+            int[] groups = control.faceGroups() == null ? null : groups(r, f0, f1, faces);
+            return new MeshData(p, normals, withUv ? uvs : null, outSizes, outV, outN, outUv, null, groups, control.groupNames());
+        }
         // Compact: vertices and UVs renumbered in order of first use, values copied unchanged.
         Arrays.fill(vmap, -1);
         int nv = 0;
@@ -129,6 +133,47 @@ public final class RefinedTriangles {
             outUvs = Arrays.copyOf(u, 2 * nu);
         }
         return new MeshData(pos, normals, outUvs, outSizes, outV, outN, outUv, null);
+    }
+
+    /**
+     * The face group of every output face of faces {@code f0 .. f1-1} (in the order {@link #build}
+     * emits them): the group of the control face each refined face comes from.
+     */
+    private static int[] groups(RefinedMesh r, int f0, int f1, int faces) {
+        int[] control = r.controlMesh().faceGroups(), sizes = r.faceSizes();
+        int[] out = new int[faces];
+        int[] cornerFace = r.level() > 0 && !r.topo.triangleSplit ? cornerFaces(r.controlMesh().faceSizes()) : null;
+        for (int f = f0, o = 0; f < f1; f++) {
+            if (r.isHole(f)) continue;
+            int g = control[baseFace(r, f, cornerFace)];
+            out[o++] = g;
+            if (sizes[f] == 4) out[o++] = g;
+        }
+        return out;
+    }
+
+    /**
+     * The control face that refined face {@code f} comes from, by Far's numbering: a triangle
+     * split makes child faces 4f..4f+3 of face f at every level; a quad split makes one child per
+     * parent corner (half-edge) at the first level, numbered as the corners, then 4f..4f+3 of quad
+     * f at every further level.
+     *
+     * @param cornerFace the control face of each control corner (quad split, level above 0), else null
+     */
+    static int baseFace(RefinedMesh r, int f, int[] cornerFace) {
+        int level = r.level();
+        if (level == 0) return f;
+        if (r.topo.triangleSplit) return f >>> (2 * level);
+        return cornerFace[f >>> (2 * (level - 1))];
+    }
+
+    /** The face of every corner of faces of the given sizes, in order. */
+    static int[] cornerFaces(int[] sizes) {
+        int n = 0;
+        for (int s : sizes) n += s;
+        int[] out = new int[n];
+        for (int f = 0, c = 0; f < sizes.length; f++) for (int k = 0; k < sizes[f]; k++) out[c++] = f;
+        return out;
     }
 
     /**

@@ -62,7 +62,7 @@ public record SubdivInput(MeshData mesh, SubdivTags tags) {
     public SubdivInput withUvs(double[] uvs, int[] uvIndex) {
         MeshData m = mesh;
         return new SubdivInput(new MeshData(m.positions(), m.normals(), uvs, m.faceSizes(), m.vertexIndex(), m.normalIndex(),
-                uvIndex, m.source()), tags);
+                uvIndex, m.source(), m.faceGroups(), m.groupNames()), tags);
     }
 
     /**
@@ -125,6 +125,7 @@ public record SubdivInput(MeshData mesh, SubdivTags tags) {
     public ControlMesh toControlMesh() {
         ControlMesh.Builder b = ControlMesh.builder(mesh.positions(), mesh.faceSizes(), mesh.vertexIndex());
         if (mesh.source() != null) b.source(mesh.source());
+        if (mesh.faceGroups() != null) b.faceGroups(mesh.faceGroups(), mesh.groupNames());
         int[] uvIndex = mesh.uvIndex();
         if (uvIndex != null && mesh.uvs() != null) {
             for (int c = 0; c < uvIndex.length; c++) {

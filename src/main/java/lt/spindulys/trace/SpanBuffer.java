@@ -35,8 +35,8 @@ public final class SpanBuffer {
                     double tOut, TracedObject oOut, int pOut, int sOut, double uOut, double vOut) {
         int i = 2 * count;
         ensure(i + 2);
-        setEndpoint(i, tIn, oIn, pIn, sIn, uIn, vIn, false, oIn == null ? null : oIn.material(), null);
-        setEndpoint(i + 1, tOut, oOut, pOut, sOut, uOut, vOut, false, oOut == null ? null : oOut.material(), null);
+        setEndpoint(i, tIn, oIn, pIn, sIn, uIn, vIn, false, oIn == null ? null : oIn.material(pIn, sIn), null);
+        setEndpoint(i + 1, tOut, oOut, pOut, sOut, uOut, vOut, false, oOut == null ? null : oOut.material(pOut, sOut), null);
         count++;
     }
 
@@ -56,15 +56,14 @@ public final class SpanBuffer {
     }
 
     /**
-     * Makes {@code o} the surface (and {@code o.material()} the material) of every endpoint of the
+     * Makes {@code o} the surface (and its material for the endpoint's primitive) of every endpoint of the
      * spans from {@code fromSpan} on: for an object that reports the spans of an inner object it
      * owns, so that they are shaded through the outer one.
      */
     public void relabel(int fromSpan, TracedObject o) {
-        Material m = o.material();
         for (int i = 2 * fromSpan; i < 2 * count; i++) {
             object[i] = o;
-            material[i] = m;
+            material[i] = o.material(prim[i], sub[i]);
             space[i] = null;
         }
     }

@@ -39,4 +39,14 @@ public interface TracedObject {
      * @return the material
      */
     Material material();
+
+    /**
+     * The material a primitive of the object is shaded with after freezing: {@link #material()},
+     * or the primitive's face group's where the object gives its groups materials.
+     *
+     * @param prim the primitive, as a hit records it
+     * @param sub the primitive's part, as a hit records it
+     * @return the material
+     */
+    Material material(int prim, int sub);
 }

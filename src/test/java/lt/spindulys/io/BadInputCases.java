@@ -80,6 +80,7 @@ public final class BadInputCases {
 
     private static final String CUBE_DAT = "8 6\n-1 -1 -1\n1 -1 -1\n1 1 -1\n-1 1 -1\n-1 -1 1\n1 -1 1\n1 1 1\n-1 1 1\n"
             + "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 2 3 7 6\n4 1 2 6 5\n4 0 4 7 3\n";
+    private static final String TRI_OBJ = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
     private static final String QUAD_OBJ = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
 
     /**
@@ -464,6 +465,34 @@ public final class BadInputCases {
                 withFile("OBJ normal over 1e15", "mesh { file \"m.obj\" }", "m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 -1e16\nf 1//1 2//1 3//1\n", true,
                         "4:8: number -1e16 is too large for normal z (mesh numbers are at most 1e15 in magnitude)"),
                 withFile("subdiv .dat point over 1e15", "subdiv { file \"m.dat\" }", "m.dat", "4 1\n0 0 0\n1 0 0\n1 1e300 0\n0 1 0\n4 0 1 2 3\n", true,
-                        "4:3: number 1e300 is too large for point 2 y (mesh numbers are at most 1e15 in magnitude)"));
+                        "4:3: number 1e300 is too large for point 2 y (mesh numbers are at most 1e15 in magnitude)"),
+                // OBJ materials (mtllib, usemtl, .mtl files, the scene's usemtl key).
+                new Case("OBJ mtllib not found", "mesh { file \"m.obj\" }", "4:8: material library 'none.mtl' not found (looked in ${dir}/none.mtl; a 'material' key on the object replaces the file's materials)",
+                        Map.of("m.obj", TRI_OBJ + "mtllib none.mtl\nusemtl red\nf 1 2 3\n"), "m.obj"),
+                new Case("OBJ usemtl that no library defines", "subdiv { file \"m.obj\"  level 1 }",
+                        "7:8: no material 'blue': no material library it names (m.mtl) defines it, and the scene gives none"
+                                + " (write usemtl \"blue\" and a material in the 'subdiv' block at 1:1)",
+                        Map.of("m.obj", TRI_OBJ + "mtllib m.mtl\nusemtl red\nf 1 2 3\nusemtl blue\nf 1 3 2\n", "m.mtl", "newmtl red\nKd 1 0 0\n"), "m.obj"),
+                new Case("OBJ usemtl without any mtllib", "mesh { file \"m.obj\" }",
+                        "4:8: no material 'red': the file names no material library (mtllib), and the scene gives none"
+                                + " (write usemtl \"red\" and a material in the 'mesh' block at 1:1)",
+                        Map.of("m.obj", TRI_OBJ + "usemtl red\nf 1 2 3\n"), "m.obj"),
+                withFiles(".mtl unknown statement", "mesh { file \"m.obj\" }", "m.obj", TRI_OBJ + "mtllib m.mtl\nusemtl red\nf 1 2 3\n",
+                        "m.mtl", "newmtl red\nKd 1 0 0\nKf 1\n",
+                        "3:1: unknown material statement 'Kf' (did you mean 'Kd'?) (supported: newmtl, Kd, Ka, Ks, Ns, d, Tr, Tf, Ni, Ke, illum, map_Kd, map_Ks, map_d, map_Bump, bump)"),
+                withFiles(".mtl bad number", "mesh { file \"m.obj\" }", "m.obj", TRI_OBJ + "mtllib m.mtl\nusemtl red\nf 1 2 3\n",
+                        "m.mtl", "newmtl red\nNs 1e\n", "2:4: expected a number for 'Ns', found '1e'"),
+                withFiles(".mtl texture not found", "mesh { file \"m.obj\" }", "m.obj", TRI_OBJ + "mtllib m.mtl\nusemtl red\nf 1 2 3\n",
+                        "m.mtl", "newmtl red\nmap_Kd -s 2 red.png\n", "2:13: texture image 'red.png' not found (looked in ${dir}/red.png)"),
+                withFiles(".mtl texture option not supported", "mesh { file \"m.obj\" }", "m.obj", TRI_OBJ + "mtllib m.mtl\nusemtl red\nf 1 2 3\n",
+                        "m.mtl", "newmtl red\nmap_Kd -texres 512 red.png\n", "2:8: texture option '-texres' is not supported (supported: -o, -s, -clamp)"),
+                withFile("scene usemtl for a name the OBJ lacks", "mesh { file \"m.obj\"  usemtl \"blue\" { color 0 0 1 } }", "m.obj",
+                        TRI_OBJ + "usemtl red\nf 1 2 3\n", false, "1:29: usemtl 'blue': 'm.obj' has no usemtl of that name (its names: red)"),
+                withFile("scene usemtl twice", "mesh { file \"m.obj\"  usemtl \"red\" { color 1 0 0 }\n  usemtl \"red\" { color 0 0 1 } }", "m.obj",
+                        TRI_OBJ + "usemtl red\nf 1 2 3\n", false, "2:10: usemtl 'red' given twice (first at 1:29)"),
+                withFile("scene usemtl without a material", "mesh { file \"m.obj\"  usemtl \"red\" }", "m.obj",
+                        TRI_OBJ + "usemtl red\nf 1 2 3\n", false, "1:35: expected a material name or '{' after 'usemtl NAME', found '}'"),
+                withFile("scene usemtl on a mesh without usemtl", "subdiv { file \"m.dat\"  usemtl \"red\" { } }", "m.dat", CUBE_DAT, false,
+                        "1:31: usemtl 'red': 'm.dat' has no usemtl statements"));
     }
 }

@@ -338,7 +338,7 @@ class SchemeSurfacesTest {
                 }
                 parts[f] = r.refine(f, level, el, cl, true);
             }
-            MeshData welded = AdaptiveTessellation.weld(AdaptiveTessellation.join(parts, cage));
+            MeshData welded = AdaptiveTessellation.weld(AdaptiveTessellation.join(parts, cage, null, null));
             AdaptiveSubdivisionTest.assertCrackFree(welded, cage + ", trial " + trial);
         }
     }
