@@ -383,6 +383,25 @@ public final class Keyframes implements Moving {
     }
 
     /**
+     * True if the keys hold one pose all through [open, close] (a shutter of no length, or one
+     * open before the first key, after the last, or between two equal poses): an object can then
+     * take {@link #at the transform at open} and be placed as a still one.
+     *
+     * @param open the shutter's open time
+     * @param close the shutter's close time
+     * @return whether nothing changes in the interval
+     */
+    public boolean isStill(double open, double close) {
+        if (!(close > open)) return true;
+        double[] most = new double[CHANNELS], rate = new double[CHANNELS];
+        for (int c = 0; c < CHANNELS; c++) {
+            channelBounds(c, open, close, most, rate);
+            if (rate[c] != 0) return false;
+        }
+        return true;
+    }
+
+    /**
      * Bounds of {@code b} carried along the keys at every time of [open, close]. The eight
      * corners are moved to {@link #SWEEP_STEPS} + 1 times spread over the interval and unioned;
      * the union is padded by half a step times a bound on how fast a corner moves (from bounds on

@@ -427,7 +427,8 @@ public abstract class GObject implements TracedObject, Cloneable {
     protected final Placement placementIn(Placement parentToWorld) {
         try {
             Placement own = Placement.of(transform, parentToWorld.open(), parentToWorld.close());
-            if (keys != null) own = own.then(keys);
+            // Keys that hold one pose through this shutter place the object as a still one: no per-ray cost.
+            if (keys != null) own = keys.isStill(parentToWorld.open(), parentToWorld.close()) ? own.then(keys.at(parentToWorld.open())) : own.then(keys);
             if (motion != null) own = own.then(motion);
             return own.then(parentToWorld);
         } catch (IllegalArgumentException e) {

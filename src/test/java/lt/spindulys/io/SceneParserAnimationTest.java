@@ -73,6 +73,17 @@ class SceneParserAnimationTest {
         assertTrue(s.objects().get(0).bounds().maxX() >= 1);
     }
 
+    /** Where its keys hold one pose through a frame's shutter, an object is placed as a still one. */
+    @Test
+    void anObjectIsStillInFramesWhereItsKeysHold() {
+        SceneBuilder b = parse(ANIM + "sphere { keys { key 10 { } key 20 { translate 1 0 0 } } }");
+        assertTrue(!b.forFrame(5).build().objects().get(0).isMoving());
+        assertTrue(b.forFrame(15).build().objects().get(0).isMoving());
+        GObject after = b.forFrame(30).build().objects().get(0);
+        assertTrue(!after.isMoving());
+        assertEquals(new Vec3(1, 0, 0), after.objectToWorld(0).point(Vec3.ZERO));
+    }
+
     @Test
     void aFramesSettingsAreTheSceneSettingsWithItsShutterAndSeed() {
         SceneBuilder b = parse("settings { seed 5 samples 4 }\n" + ANIM + "sphere { }");

@@ -178,6 +178,19 @@ class KeyframesTest {
     }
 
     @Test
+    void stillWhereThePoseHolds() {
+        Keyframes k = track(Interpolation.SMOOTH, new double[] {1, 2, 3, 4}, 0, 5, 5, 1);
+        assertTrue(k.isStill(0, 0.9), "before the first key");
+        assertTrue(k.isStill(4, 9), "after the last");
+        assertTrue(k.isStill(2.5, 2.5), "an instant");
+        assertFalse(k.isStill(1.5, 1.6));
+        assertFalse(k.isStill(0.5, 1.01), "a shutter reaching into the first span");
+        // A smooth span between equal poses still bends (its neighbours' tangents); a linear one does not.
+        assertFalse(k.isStill(2.2, 2.8));
+        assertTrue(track(Interpolation.LINEAR, new double[] {1, 2, 3, 4}, 0, 5, 5, 1).isStill(2.2, 2.8));
+    }
+
+    @Test
     void refusesKeysOutOfOrderRepeatedOrTooMany() {
         Pose[] two = {Pose.IDENTITY, Pose.IDENTITY};
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> Keyframes.of(new double[] {2, 2}, two, Interpolation.LINEAR));
