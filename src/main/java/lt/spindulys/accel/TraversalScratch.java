@@ -32,6 +32,12 @@ public class TraversalScratch {
     /** Per-lane scratch of the wide BVH's vector box test, and its per-ray constants. */
     public final float[] lanes = new float[8], wideRay = new float[9];
 
+    /**
+     * The triangle whose any-hit test ({@link WatertightTriangles#test} without a hit record) last
+     * returned true on this thread, for the scene's occluder cache; not reset by other queries.
+     */
+    public int blockingPrimitive = -1;
+
     private int[] stack = new int[64];
 
     /** Makes the per-direction constants those of {@code ray}'s direction. */

@@ -41,7 +41,8 @@ public final class WatertightTriangles {
      * whichever triangle it is used by, and an edge's function in one triangle is exactly the
      * negation of its function in the neighbour (products commute, IEEE subtraction is
      * antisymmetric), so a ray can never pass between two triangles that share the edge. With
-     * {@code hit} null this is an any-hit query and returns at the first hit; otherwise every hit
+     * {@code hit} null this is an any-hit query and returns at the first hit (its triangle left in
+     * {@link TraversalScratch#blockingPrimitive}); otherwise every hit
      * nearer than ray.tMax is recorded and shrinks ray.tMax.
      */
     public static boolean test(int[] tri, double[] pos, int[] prims, int from, int to, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
@@ -67,7 +68,10 @@ public final class WatertightTriangles {
             if (det == 0) continue;
             final double t = (u * (sz * az) + v * (sz * bz) + w * (sz * cz)) / det;
             if (!(t > tMin && t < ray.tMax)) continue;
-            if (hit == null) return true;
+            if (hit == null) {
+                ctx.blockingPrimitive = i;
+                return true;
+            }
             double inv = 1 / det;
             hit.t = t;
             hit.prim = i;

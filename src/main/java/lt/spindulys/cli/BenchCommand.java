@@ -101,6 +101,10 @@ final class BenchCommand {
                     String.format(Locale.ROOT, "scenes/bench/soft-shadow-light16.dat: soft-shadow at 1 spp with 16 light samples, %d threads: "
                             + "the same rays per pixel as POV-Ray's 4x4 area_light (1 camera ray, 16 shadow rays)", BenchCommand.THREADS),
                     (b, out) -> b.peerScene(out, BenchMeshes.size("1k"), "soft-shadow-light16", PeerBench.Targets.issue20())),
+            new Row("soft-shadow-16k", "Soft shadows",
+                    String.format(Locale.ROOT, "scenes/bench/soft-shadow-16k.dat: soft-shadow-light16 with the 16k torus (32,768 triangles), %d threads: "
+                            + "1 camera ray and 16 shadow rays per pixel on both sides, beside POV-Ray's 4x4 area_light", BenchCommand.THREADS),
+                    (b, out) -> b.peerScene(out, BenchMeshes.size("16k"), "soft-shadow-16k", PeerBench.Targets.issue20())),
             new Row("csg-subdiv", "CSG",
                     "scenes/bench/csg-subdiv.dat: difference of two level-4 subdivision surfaces, 1280x720, 1 spp, 2 threads; "
                             + "beside csg-subdiv-plain.dat, the same two surfaces without CSG (target: at least half its speed)",

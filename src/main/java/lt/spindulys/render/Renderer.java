@@ -187,7 +187,9 @@ public final class Renderer {
                     counters[index] = new long[4];
                     return;
                 }
-                PixelSampler sampler = new PixelSampler(pass.samples, scene.camera().usesLens() ? scene.camera().lensPattern() : null);
+                // Time samples only where something moves and each sample has its own time.
+                PixelSampler sampler = new PixelSampler(pass.samples, scene.camera().usesLens() ? scene.camera().lensPattern() : null,
+                        scene.hasMovingObjects() && Double.isNaN(pass.time));
                 Ray ray = new Ray();
                 double[] colour = new double[4];
                 try {

@@ -18,6 +18,7 @@ public final class PixelSampler {
     private final LensPattern lens;
     private final double[] filmX, filmY, lensU, lensV, time;
     private final int[] perm;
+    private final boolean times;
     private final Rng rng = new Rng();
 
     /** A sampler with the default {@link LensPattern#CONCENTRIC} lens samples. */
@@ -31,7 +32,19 @@ public final class PixelSampler {
      *             same as with a pattern (the lens random numbers are drawn all the same)
      */
     public PixelSampler(int samplesPerPixel, LensPattern lens) {
+        this(samplesPerPixel, lens, true);
+    }
+
+    /**
+     * @param lens  as for {@link #PixelSampler(int, LensPattern)}
+     * @param times false when nothing reads the time samples (nothing in the scene moves, or a
+     *              time step fixes the time): they, and without a lens the lens samples drawn
+     *              before them, are then not drawn, and every time is 0. The film samples, drawn
+     *              first, and any lens samples stay exactly those drawn with times.
+     */
+    public PixelSampler(int samplesPerPixel, LensPattern lens, boolean times) {
         this.lens = lens;
+        this.times = times;
         if (samplesPerPixel < 1) throw new IllegalArgumentException("samples per pixel must be positive, found " + samplesPerPixel);
         n = samplesPerPixel;
         int c = (int) Math.floor(Math.sqrt(n));
@@ -54,9 +67,10 @@ public final class PixelSampler {
         rng.seed(seed, px, py, 0);
         if (n == 1) {
             filmX[0] = px + 0.5; filmY[0] = py + 0.5;
+            if (!times && lens == null) return;
             double u = rng.nextDouble(), v = rng.nextDouble();
             lensSample(0, 0, u, v);
-            time[0] = rng.nextDouble();
+            time[0] = times ? rng.nextDouble() : 0;
             return;
         }
         for (int i = 0; i < n; i++) {
@@ -64,6 +78,7 @@ public final class PixelSampler {
             filmX[i] = px + (cx + rng.nextDouble()) / cols;
             filmY[i] = py + (cy + rng.nextDouble()) / rows;
         }
+        if (!times && lens == null) return; // lens samples stay (0, 0), times 0
         // Lens: the same grid shape, assigned to film strata in a shuffled order. The ring pattern
         // uses the stratum index only, but the jitter is drawn anyway so that the time samples
         // below are the same whichever lens pattern is chosen.
@@ -74,6 +89,7 @@ public final class PixelSampler {
             double v = (s / cols + rng.nextDouble()) / rows;
             lensSample(i, s, u, v);
         }
+        if (!times) return;
         // Time: n one-dimensional strata, shuffled independently.
         shuffle();
         for (int i = 0; i < n; i++) time[i] = (perm[i] + rng.nextDouble()) / n;

@@ -219,6 +219,13 @@ public final class Bool extends GObject {
 
     @Override long objectCount() { return objectCount; }
 
+    @Override
+    boolean movesAnything() {
+        if (isMoving()) return true;
+        for (GObject o : operands) if (o.movesAnything()) return true;
+        return false;
+    }
+
     /**
      * Levels of CSG nesting in this node's tree, counting this one: 1 if no operand is a Bool.
      *

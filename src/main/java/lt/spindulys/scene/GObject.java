@@ -444,6 +444,9 @@ public abstract class GObject implements TracedObject, Cloneable {
      */
     public final boolean isMoving() { return moving != null; }
 
+    /** Whether this object or anything inside it (a CSG node's operands) moves while the shutter is open. */
+    boolean movesAnything() { return moving != null; }
+
     /**
      * The object-to-world transform at {@code time} (allocates; for tests and tools). Only after freezing.
      *
@@ -547,6 +550,28 @@ public abstract class GObject implements TracedObject, Cloneable {
     public boolean occluded(Ray ray, TraceContext ctx) {
         return intersect(ray, ctx.scratchHit.reset(ray.tMax), ctx);
     }
+
+    /**
+     * The part of this object that blocked the ray of its last {@link #occluded} call on this
+     * thread (which returned true), for the scene's occluder cache: a part that
+     * {@link #occludedByPart} tests alone for the cost of one primitive test, or -1 if there is
+     * none (testing the object again would cost a whole query; it is then not cached).
+     *
+     * @param ctx the thread's scratch, as given to that call
+     * @return the part, or -1
+     */
+    int blockingPart(TraceContext ctx) { return -1; }
+
+    /**
+     * Whether part {@code part} (from {@link #blockingPart}) alone blocks the ray in (tMin,
+     * tMax): true only where {@link #occluded} would be true.
+     *
+     * @param ray world-space ray
+     * @param part a part that {@link #blockingPart} gave
+     * @param ctx the calling thread's scratch space
+     * @return true if that part blocks the segment
+     */
+    boolean occludedByPart(Ray ray, int part, TraceContext ctx) { return occluded(ray, ctx); }
 
     /**
      * Appends every span inside this (closed) object that overlaps (ray.tMin, ray.tMax), with its

@@ -102,6 +102,9 @@ public final class Plane extends GObject {
     @Override public Bounds localBounds() { return Bounds.INFINITE; }
     @Override public boolean isClosed() { return true; }
 
+    /** The whole object is one cheap test: worth trying first as the thread's last occluder. */
+    @Override int blockingPart(TraceContext ctx) { return 0; }
+
     @Override protected boolean intersectLocal(Ray ray, Hit hit, TraceContext ctx) {
         double denom = nx * ray.dx + ny * ray.dy + nz * ray.dz;
         if (denom == 0) return false;

@@ -35,6 +35,7 @@ public final class Scene {
     private final Accelerator accel;
     private final int objectIds;
     private final boolean transparent;
+    private final boolean moving;
     private final Environment environment;
     /** The environment's sampling tables when it is a light with some brightness, else null. */
     private final EnvironmentLight environmentLight;
@@ -79,6 +80,9 @@ public final class Scene {
         boolean[] anyTransparent = {false};
         for (GObject o : frozen) o.forEachMaterial(m -> anyTransparent[0] |= m.isTransparent());
         transparent = anyTransparent[0];
+        boolean moves = false;
+        for (GObject o : frozen) moves |= o.movesAnything();
+        moving = moves;
         List<GObject> b = new ArrayList<>(), u = new ArrayList<>();
         for (GObject o : frozen) {
             if (o.bounds().isEmpty()) continue;
@@ -89,7 +93,7 @@ public final class Scene {
         // A handful of objects are each tested behind their own box, so that a ray enters only
         // the objects whose box it crosses (a mesh's own structure costs more to enter than a
         // box test, and a flat list of boxes less than a tree over them; docs/performance.md).
-        ObjectSet set = new ObjectSet(bounded);
+        ObjectSet set = new ObjectSet(this, bounded);
         accel = bounded.length > Bvh.DEFAULT_LEAF_SIZE ? settings.accelerator().build(set) : new BoxList(set);
     }
 
@@ -222,6 +226,13 @@ public final class Scene {
     public boolean hasTransparentObjects() { return transparent; }
 
     /**
+     * True if some object (or CSG operand) moves while the shutter is open, so that rays' times matter.
+     *
+     * @return true if an object's placement depends on the time
+     */
+    public boolean hasMovingObjects() { return moving; }
+
+    /**
      * Nearest hit along the ray in (tMin, tMax); ray.tMax is left unchanged.
      *
      * @param ray world-space ray; only hits with t in (tMin, tMax) count
@@ -252,8 +263,32 @@ public final class Scene {
      * @return true if some object blocks the segment
      */
     public boolean occluded(Ray ray, TraceContext ctx) {
-        for (GObject o : unbounded) if (o.occluded(ray, ctx)) return true;
+        // The slot's last occluder first: the same light stratum seen from a neighbouring point
+        // is often blocked by the same triangle, and one triangle test then replaces a traversal.
+        // It says true only where the query below would, so images are the same.
+        int slot = ctx.occluderSlot;
+        if (ctx.occluderScene != this) {
+            java.util.Arrays.fill(ctx.occluders, null);
+            ctx.occluderScene = this;
+        } else {
+            GObject last = (GObject) ctx.occluders[slot];
+            if (last != null && last.occludedByPart(ray, ctx.occluderParts[slot], ctx)) return true;
+        }
+        for (GObject o : unbounded) {
+            if (o.occluded(ray, ctx)) {
+                rememberOccluder(o, ctx);
+                return true;
+            }
+        }
         return accel.occluded(ray, ctx);
+    }
+
+    /** Keeps {@code o}, which has just blocked a shadow ray, in the thread's occluder cache if it names a cheap part. */
+    private void rememberOccluder(GObject o, TraceContext ctx) {
+        int part = o.blockingPart(ctx);
+        if (part < 0 || ctx.occluderScene != this) return;
+        ctx.occluders[ctx.occluderSlot] = o;
+        ctx.occluderParts[ctx.occluderSlot] = part;
     }
 
     /**
@@ -261,7 +296,7 @@ public final class Scene {
      * scene's own hit and context it was given (it knows them only as its base types), so the casts
      * below always succeed; they are checks against final classes, no extra call.
      */
-    private record ObjectSet(GObject[] objects) implements PrimitiveSet {
+    private record ObjectSet(Scene scene, GObject[] objects) implements PrimitiveSet {
         @Override public int size() { return objects.length; }
 
         @Override public void bounds(int i, double[] out) {
@@ -275,7 +310,9 @@ public final class Scene {
         }
 
         @Override public boolean occluded(int i, Ray ray, TraversalScratch ctx) {
-            return objects[i].occluded(ray, (TraceContext) ctx);
+            if (!objects[i].occluded(ray, (TraceContext) ctx)) return false;
+            scene.rememberOccluder(objects[i], (TraceContext) ctx);
+            return true;
         }
     }
 }

@@ -409,6 +409,12 @@ public final class SubdivisionSurface extends GObject {
     }
 
     @Override
+    int blockingPart(TraceContext ctx) { return mesh.blockingPart(ctx); }
+
+    @Override
+    boolean occludedByPart(Ray ray, int part, TraceContext ctx) { return mesh.occludedByPart(toLocal(ray, ctx), part, ctx); }
+
+    @Override
     protected void spansLocal(Ray ray, SpanBuffer out, TraceContext ctx) {
         int first = out.size();
         mesh.spansLocal(ray, out, ctx);

@@ -455,7 +455,17 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
 
     @Override
     public boolean occluded(Ray ray, TraceContext ctx) {
+        ctx.blockingPrimitive = -1; // set again by the triangle test that blocks
         return accel.occluded(toLocal(ray, ctx), ctx);
+    }
+
+    /** The triangle that blocked: the structure's leaves test this mesh's own triangles. */
+    @Override
+    int blockingPart(TraceContext ctx) { return ctx.blockingPrimitive; }
+
+    @Override
+    boolean occludedByPart(Ray ray, int part, TraceContext ctx) {
+        return WatertightTriangles.test(tri, pos, null, part, part + 1, toLocal(ray, ctx), null, ctx);
     }
 
     @Override

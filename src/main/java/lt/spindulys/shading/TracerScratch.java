@@ -46,10 +46,12 @@ public final class TracerScratch {
     /** Per sampled light (the area lights, then the environment if it is a light): its strata in the order the pixel's samples take them, and the generation they were drawn for. */
     int[][] lightStrata = new int[0][];
     int[] lightStrataGeneration = new int[0];
+    /** Per sampled light, as lightStrata: the columns of its strata's grid (rows = strata / cols). */
+    int[] lightStrataCols = new int[0];
     final lt.spindulys.sampling.Rng lightRng = new lt.spindulys.sampling.Rng();
     /**
-     * A light sample: an area light's point and the weight of its radiance (4 values), or an
-     * environment light's direction, solid angle and radiance (7).
+     * A light sample: an area light's point, the weight of its radiance and its distance from the
+     * shaded point (5 values), or an environment light's direction, solid angle and radiance (7).
      */
     final double[] lightSample = new double[7];
 

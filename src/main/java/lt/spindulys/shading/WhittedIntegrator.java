@@ -62,6 +62,8 @@ public final class WhittedIntegrator {
     private final EnvironmentLight environmentLight;
     /** Area lights plus the environment light if any: the lights that take strata. */
     private final int sampledLights;
+    /** The area lights' samples per pixel sample together (the occluder cache's slots after theirs are the environment's). */
+    private final int areaSamples;
     private final boolean transparentShadows;
     /** Angle between the primary rays of neighbouring pixels at the image centre, radians (texture footprints). */
     private final double pixelAngle;
@@ -81,6 +83,9 @@ public final class WhittedIntegrator {
         this.environment = scene.environment();
         this.environmentLight = scene.environmentLight();
         this.sampledLights = areaLights.length + (environmentLight != null ? 1 : 0);
+        int samples = 0;
+        for (AreaLight l : areaLights) samples += l.samples(); // each at most AreaLight.MAX_SAMPLES
+        this.areaSamples = samples;
         this.transparentShadows = scene.hasTransparentObjects();
         this.pixelAngle = pixelAngle(scene);
         double power = 0;
@@ -115,6 +120,7 @@ public final class WhittedIntegrator {
         TracerScratch s = new TracerScratch(settings.maxDepth());
         s.lightStrata = new int[sampledLights][];
         s.lightStrataGeneration = new int[sampledLights];
+        s.lightStrataCols = new int[sampledLights];
         if (sampledLights > 0) {
             // Each light's strata (pixel samples times its samples, both from the input) are kept
             // per thread: checked against the heap, then made here, so the next thread's check sees them.
@@ -123,7 +129,11 @@ public final class WhittedIntegrator {
             for (int i = 0; i < sampledLights; i++) bytes = HeapBudget.sum(bytes, HeapBudget.product(4, spp, samples(i)));
             HeapBudget.require(bytes, environmentLight == null ? "the area lights' sample strata of one render thread"
                     : "the area and environment lights' sample strata of one render thread");
-            for (int i = 0; i < sampledLights; i++) s.lightStrata[i] = new int[spp * samples(i)];
+            for (int i = 0; i < sampledLights; i++) {
+                int n = spp * samples(i);
+                s.lightStrata[i] = new int[n];
+                s.lightStrataCols[i] = strataCols(n);
+            }
         }
         return s;
     }
@@ -247,7 +257,8 @@ public final class WhittedIntegrator {
             double px = v.px, py = v.py, pz = v.pz;
             double nfx = v.nfx, nfy = v.nfy, nfz = v.nfz, snx = v.snx, sny = v.sny, snz = v.snz;
             double ox = px + nfx * v.eps, oy = py + nfy * v.eps, oz = pz + nfz * v.eps;
-            for (PointLight light : lights) {
+            for (int li = 0; li < lights.length; li++) {
+                PointLight light = lights[li];
                 // Shading uses the true point; only the shadow ray starts off the surface.
                 double lx = light.position().x() - px, ly = light.position().y() - py, lz = light.position().z() - pz;
                 double dist2 = lx * lx + ly * ly + lz * lz, dist = Math.sqrt(dist2);
@@ -258,6 +269,7 @@ public final class WhittedIntegrator {
                 if (ndotl <= 0) continue;
                 Ray shadow = s.shadowRay.set(ox, oy, oz, light.position().x() - ox, light.position().y() - oy, light.position().z() - oz, 0, 1);
                 shadow.time = v.time; // a moving object casts its shadow where it is at the shaded ray's time
+                s.ctx.occluderSlot = li & OCCLUDER_MASK;
                 if (!shadowTransmission(shadow, dist, s)) continue;
                 double[] t = s.transmission;
                 double scale = light.intensity();
@@ -287,6 +299,9 @@ public final class WhittedIntegrator {
         out[0] = r; out[1] = g; out[2] = b;
     }
 
+    /** Slots of the thread's occluder cache (TraceContext#occluders), less one: a mask. */
+    private static final int OCCLUDER_MASK = lt.spindulys.trace.TraceContext.OCCLUDER_SLOTS - 1;
+
     /** Distinguishes the area-light strata's shuffle from the per-sample jitter and the pixel sampler's streams. */
     private static final long STRATA_STREAM = 0x61726561L, JITTER_STREAM = 0x6a697474L;
 
@@ -302,23 +317,25 @@ public final class WhittedIntegrator {
         double nfx = v.nfx, nfy = v.nfy, nfz = v.nfz, snx = v.snx, sny = v.sny, snz = v.snz;
         double ox = px + nfx * v.eps, oy = py + nfy * v.eps, oz = pz + nfz * v.eps;
         double[] ls = s.lightSample;
+        int slots = lights.length; // the occluder cache's slots: the point lights', then each light's strata
         for (int li = 0; li < areaLights.length; li++) {
             AreaLight light = areaLights[li];
             int k = light.samples(), n = s.samplesPerPixel * k;
             int[] strata = strata(li, n, s);
-            int rows = (int) Math.floor(Math.sqrt(n));
-            while (n % rows != 0) rows--;
-            int cols = n / rows;
+            int cols = s.lightStrataCols[li], rows = n / cols;
+            int firstSlot = slots;
+            slots += n;
             Rng rng = s.lightRng.seed(s.seed ^ JITTER_STREAM * (li + 1), s.pixelX, s.pixelY, s.sample);
             Color lc = light.color();
             double scale = light.intensity() / k;
             double lr = lc.r() * scale, lg = lc.g() * scale, lb = lc.b() * scale;
             for (int j = 0; j < k; j++) {
-                int st = strata[(s.sample * k + j) % n];
-                double su = (st % cols + rng.nextDouble()) / cols, sv = (st / cols + rng.nextDouble()) / rows;
+                int at = s.sample * k + j; // below n for a sample index below the pixel's count
+                int st = strata[at < n ? at : at % n], row = st / cols;
+                double su = (st - row * cols + rng.nextDouble()) / cols, sv = (row + rng.nextDouble()) / rows;
                 if (!sampleLight(light, su, sv, px, py, pz, ls)) continue;
                 double lx = ls[0] - px, ly = ls[1] - py, lz = ls[2] - pz;
-                double dist = Math.sqrt(lx * lx + ly * ly + lz * lz);
+                double dist = ls[4];
                 if (!(dist > 0)) continue;
                 double ux = lx / dist, uy = ly / dist, uz = lz / dist;
                 if (ux * nfx + uy * nfy + uz * nfz <= 0) continue; // light behind the surface
@@ -328,6 +345,7 @@ public final class WhittedIntegrator {
                 // lies on (a disc on a ceiling) does not block it.
                 Ray shadow = s.shadowRay.set(ox, oy, oz, ls[0] - ox, ls[1] - oy, ls[2] - oz, 0, 1 - 1e-7);
                 shadow.time = v.time;
+                s.ctx.occluderSlot = (firstSlot + st) & OCCLUDER_MASK;
                 double weight = ls[3];
                 if (!shadowTransmission(shadow, dist, s)) continue;
                 double[] t = s.transmission;
@@ -363,13 +381,13 @@ public final class WhittedIntegrator {
         int li = areaLights.length;
         int k = environmentLight.environment().samples(), n = s.samplesPerPixel * k;
         int[] strata = strata(li, n, s);
-        int rows = (int) Math.floor(Math.sqrt(n));
-        while (n % rows != 0) rows--;
-        int cols = n / rows;
+        int cols = s.lightStrataCols[li], rows = n / cols;
+        int firstSlot = lights.length + s.samplesPerPixel * areaSamples; // after the point and area lights' slots
         Rng rng = s.lightRng.seed(s.seed ^ JITTER_STREAM * (li + 1), s.pixelX, s.pixelY, s.sample);
         for (int j = 0; j < k; j++) {
-            int st = strata[(s.sample * k + j) % n];
-            double su = (st % cols + rng.nextDouble()) / cols, sv = (st / cols + rng.nextDouble()) / rows;
+            int at = s.sample * k + j; // below n for a sample index below the pixel's count
+            int st = strata[at < n ? at : at % n], row = st / cols;
+            double su = (st - row * cols + rng.nextDouble()) / cols, sv = (row + rng.nextDouble()) / rows;
             environmentLight.sample(sv, su, ls);
             double ux = ls[0], uy = ls[1], uz = ls[2];
             if (ux * nfx + uy * nfy + uz * nfz <= 0) continue; // below the surface
@@ -378,6 +396,7 @@ public final class WhittedIntegrator {
             Ray shadow = s.shadowRay.set(ox, oy, oz, ux, uy, uz, 0, Double.POSITIVE_INFINITY);
             shadow.time = v.time;
             double weight = ls[3] / k, lr = ls[4] * weight, lg = ls[5] * weight, lb = ls[6] * weight;
+            s.ctx.occluderSlot = (firstSlot + st) & OCCLUDER_MASK;
             if (!shadowTransmission(shadow, 1, s)) continue;
             double[] t = s.transmission;
             double ir = lr * t[0], ig = lg * t[1], ib = lb * t[2];
@@ -403,10 +422,14 @@ public final class WhittedIntegrator {
         if (s.lightStrata.length < sampledLights) { // a scratch not made by newScratch
             s.lightStrata = new int[sampledLights][];
             s.lightStrataGeneration = new int[sampledLights];
+            s.lightStrataCols = new int[sampledLights];
         }
         int[] p = s.lightStrata[li];
         if (p != null && p.length == n && s.lightStrataGeneration[li] == s.pixelGeneration) return p;
-        if (p == null || p.length != n) p = s.lightStrata[li] = new int[n];
+        if (p == null || p.length != n) {
+            p = s.lightStrata[li] = new int[n];
+            s.lightStrataCols[li] = strataCols(n);
+        }
         for (int i = 0; i < n; i++) p[i] = i;
         Rng rng = s.lightRng.seed(s.seed ^ STRATA_STREAM * (li + 1), s.pixelX, s.pixelY, li);
         for (int i = n - 1; i > 0; i--) {
@@ -417,9 +440,16 @@ public final class WhittedIntegrator {
         return p;
     }
 
+    /** Columns of the grid of n strata over a light's unit square, as square as n allows (n = rows x cols, rows <= cols). */
+    private static int strataCols(int n) {
+        int rows = (int) Math.floor(Math.sqrt(n));
+        while (n % rows != 0) rows--;
+        return n / rows;
+    }
+
     /**
      * A point on {@code light} for the unit-square sample (su, sv), seen from (px, py, pz): writes
-     * it to out[0..2] and to out[3] the weight that turns radiance into this sample's irradiance
+     * it to out[0..2], its distance from (px, py, pz) to out[4] and to out[3] the weight that turns radiance into this sample's irradiance
      * share before the receiver's cosine (the solid angle per sample: cos at the light * area / d^2
      * for a rectangle or disc sampled by area, the cone's solid angle for a sphere sampled within
      * the cone it fills).
@@ -450,6 +480,8 @@ public final class WhittedIntegrator {
             double t = d * cos - Math.sqrt(Math.max(0, r * r - d2 * sin * sin));
             out[0] = px + t * dx; out[1] = py + t * dy; out[2] = pz + t * dz;
             out[3] = 2 * Math.PI * oneMinusCosMax;
+            double lx = out[0] - px, ly = out[1] - py, lz = out[2] - pz;
+            out[4] = Math.sqrt(lx * lx + ly * ly + lz * lz);
             return true;
         }
         double a = 2 * su - 1, b = 2 * sv - 1;
@@ -467,10 +499,12 @@ public final class WhittedIntegrator {
         double d2 = lx * lx + ly * ly + lz * lz;
         if (!(d2 > 0)) return false;
         lt.spindulys.math.Vec3 n = light.normal();
-        double cos = (lx * n.x() + ly * n.y() + lz * n.z()) / Math.sqrt(d2);
+        double d = Math.sqrt(d2);
+        double cos = (lx * n.x() + ly * n.y() + lz * n.z()) / d;
         if (light.oneSided() ? cos <= 0 : cos == 0) return false;
         out[0] = x; out[1] = y; out[2] = z;
         out[3] = Math.abs(cos) * light.area() / d2;
+        out[4] = d; // the same as from the point to the sample: (px - x)^2 = (x - px)^2 exactly
         return true;
     }
 

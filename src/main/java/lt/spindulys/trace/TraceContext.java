@@ -22,6 +22,22 @@ public final class TraceContext extends TraversalScratch {
     /** This thread's last two lazily refined patches (see lt.spindulys.adaptive.PatchCache). */
     public final RecentPatches recentPatches = new RecentPatches();
 
+    /** Slots of the occluder cache: a power of two. */
+    public static final int OCCLUDER_SLOTS = 1024;
+
+    /**
+     * The thread's shadow-ray occluder cache (see lt.spindulys.scene.Scene#occluded): per slot the
+     * top-level object that last blocked a shadow ray of that slot and the part of it that did,
+     * all of the scene {@link #occluderScene}. The caller picks the slot before each shadow ray
+     * ({@link #occluderSlot}, below {@link #OCCLUDER_SLOTS}): the light and, for an area light,
+     * the stratum of it, so that the same stratum seen from neighbouring points, which is often
+     * blocked by the same triangle, finds it.
+     */
+    public Object occluderScene;
+    public final TracedObject[] occluders = new TracedObject[OCCLUDER_SLOTS];
+    public final int[] occluderParts = new int[OCCLUDER_SLOTS];
+    public int occluderSlot;
+
     /** Grow-once scratch for the crossings of a line with a mesh (TriangleSpans), and how many are in it. */
     public double[] crossings = new double[64];
     public int crossingCount;

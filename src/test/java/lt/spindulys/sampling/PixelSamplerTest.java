@@ -128,4 +128,22 @@ class PixelSamplerTest {
         }
         assertTrue(off, "a lens pattern moves samples off the centre");
     }
+
+    /** Without time samples the film (and any lens) samples are exactly those drawn with them; every time is 0. */
+    @ParameterizedTest
+    @ValueSource(ints = {1, 4, 6, 16})
+    void leavingOutTheTimesKeepsFilmAndLensSamples(int n) {
+        for (LensPattern lens : new LensPattern[] {null, LensPattern.CONCENTRIC, LensPattern.RING}) {
+            PixelSampler with = new PixelSampler(n, lens, true), without = new PixelSampler(n, lens, false);
+            with.startPixel(5, 17, 9);
+            without.startPixel(5, 17, 9);
+            for (int i = 0; i < n; i++) {
+                assertEquals(with.filmX(i), without.filmX(i));
+                assertEquals(with.filmY(i), without.filmY(i));
+                assertEquals(with.lensU(i), without.lensU(i));
+                assertEquals(with.lensV(i), without.lensV(i));
+                assertEquals(0, without.time(i));
+            }
+        }
+    }
 }
