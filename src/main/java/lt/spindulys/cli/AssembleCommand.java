@@ -133,16 +133,11 @@ final class AssembleCommand {
         return 0;
     }
 
-    /** {@code path} with the run of '#' in its file name replaced by the frame number, padded to the run's length. */
+    /** {@code path} with the run of '#' in its file name replaced by the frame number, as render names frames ({@link OutputPattern}). */
     static Path forFrame(Path path, int frame) throws UsageException {
-        Path name = path.getFileName();
-        String n = name == null ? "" : name.toString();
-        int start = n.indexOf('#'), end = start;
-        if (start < 0) throw new UsageException("--frame " + frame + ": " + path + " has no run of '#' for the frame number, such as shot_####.png");
-        while (end < n.length() && n.charAt(end) == '#') end++;
-        if (n.indexOf('#', end) >= 0) throw new UsageException("--frame " + frame + ": " + path + " has more than one run of '#'");
-        String digits = Integer.toString(frame);
-        return path.resolveSibling(n.substring(0, start) + "0".repeat(Math.max(0, end - start - digits.length())) + digits + n.substring(end));
+        OutputPattern p = OutputPattern.of(path);
+        if (!p.hasFrame()) throw new UsageException("--frame " + frame + ": " + path + " has no run of '#' for the frame number, such as shot_####.png");
+        return p.forFrame(frame);
     }
 
     /**

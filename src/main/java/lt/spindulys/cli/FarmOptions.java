@@ -126,14 +126,14 @@ final class FarmOptions {
     String regionOption() { return regionOption; }
 
     /**
-     * The progress sink asked for, reporting on the job's steps; null when none was asked for.
+     * The progress sink asked for, reporting on the steps {@code stage} tells; null when none was asked for.
      *
      * @param out the command's standard output (OpenJD lines)
      * @param err its standard error (plain lines)
      */
-    FarmProgress progress(RenderJob job, PrintStream out, PrintStream err, String what, long startNanos) {
+    FarmProgress progress(java.util.function.Supplier<RenderJob.Stage> stage, PrintStream out, PrintStream err, String what, long startNanos) {
         if (progress == null) return null;
-        return new FarmProgress(progress, progress == FarmProgress.Mode.OPENJD ? out : err, job::stage, what, startNanos);
+        return new FarmProgress(progress, progress == FarmProgress.Mode.OPENJD ? out : err, stage, what, startNanos);
     }
 
     private static String value(String[] args, int i, String option) throws UsageException {

@@ -12,6 +12,7 @@ import java.util.Set;
 
 import lt.spindulys.scene.AcceleratorKind;
 import lt.spindulys.scene.AdaptiveSettings;
+import lt.spindulys.camera.AnimatedCamera;
 import lt.spindulys.camera.Camera;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.camera.ThinLensCamera;
@@ -42,6 +43,7 @@ final class RenderCommand {
             usage: render SCENE.dat [-o OUT] [--width W] [--height H] [--spp N] [--aperture R] [--focus D]
                                     [--threads N] [--seed S] [--accel A] [--aov LIST] [--shutter OPEN,CLOSE] [--timesteps N]
                                     [--subdiv-target PX] [--subdiv-memory MIB] [--subdiv-cache MIB]
+                                    [--frame N | --frames A-B[:STEP]] [--skip-existing]
                                     [--quality Q] [--region X0,X1,Y0,Y1 | --tile I/N] [--progress openjd|plain]
                                     [--stats] [--quiet] [--debug]
                    render assemble TILE.png... -o OUT [--frame N]                (see render assemble --help)
@@ -68,6 +70,7 @@ final class RenderCommand {
               --subdiv-target PX target edge length in pixels of every adaptive subdiv (overrides the scene's)
               --subdiv-memory MIB  heap for adaptive subdivision, eager and cached together (0: automatic)
               --subdiv-cache MIB the lazy patches' cache, part of the subdivision memory (default 64)
+            """ + FrameOptions.USAGE + """
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
             """ + FarmOptions.USAGE + """
               --stats            print load, build and render times, rays by kind, Mrays/s, peak heap,
@@ -90,6 +93,12 @@ final class RenderCommand {
     private boolean stats, quiet;
     private final FarmOptions farm = new FarmOptions();
     private FarmProgress farmProgress;
+    /** The job now running, whose step the farm progress reports (several frames: one job each). */
+    private volatile RenderJob current;
+    private final FrameOptions frames = new FrameOptions();
+    private boolean outputDefaulted, warmedUp;
+    /** The scene file's reading time, shown by the first frame's statistics, which render from the scene as read. */
+    private double readSeconds;
 
     /** Parses arguments (after --debug was taken out). */
     RenderCommand(String[] args) throws UsageException {
@@ -128,6 +137,7 @@ final class RenderCommand {
                     subdivCache = doubleValue(args, ++i, a, 0, AdaptiveSettings.MAX_BYTES >> 20);
                     if (!(subdivCache * (1 << 20) >= 1)) throw new UsageException(a + " must be more than 0 (mebibytes of the lazy patches' cache), found " + args[i]);
                 }
+                case "--frame", "--frames", "--skip-existing" -> i = frames.option(args, i);
                 case "--stats" -> stats = true;
                 case "--quiet", "-q" -> quiet = true;
                 default -> {
@@ -144,6 +154,7 @@ final class RenderCommand {
         }
         if (scene == null) throw new UsageException("no scene file given (see render --help)");
         if (output == null) {
+            outputDefaulted = true;
             String name = scene.getFileName().toString();
             int dot = name.lastIndexOf('.');
             output = Path.of((dot > 0 ? name.substring(0, dot) : name) + ".png");
@@ -156,10 +167,14 @@ final class RenderCommand {
         farm.checkOutput(output);
     }
 
-    /** Runs the command; returns the exit status. Bad input surfaces as exceptions handled by {@link Main}. */
+    /**
+     * Runs the command; returns the exit status. Bad input surfaces as exceptions handled by {@link Main}.
+     * The scene is read by the first render; an animated one (or frames asked for) then goes on
+     * frame by frame from the scene as read.
+     */
     int run(PrintStream out, PrintStream err) throws IOException, InterruptedException, UsageException {
         try {
-            return render(out, err);
+            return renderAll(out, err);
         } catch (UsageException e) {
             if (farmProgress != null) farmProgress.failed("render: " + e.getMessage());
             throw e;
@@ -167,22 +182,49 @@ final class RenderCommand {
             // The manager is told the line Main prints on stderr for the same failure.
             if (farmProgress != null) farmProgress.failed(e instanceof NoSuchFileException ? e.getMessage() : FailureMessage.of(e));
             throw e;
+        } finally {
+            if (farmProgress != null) farmProgress.close();
         }
     }
 
-    private int render(PrintStream out, PrintStream err) throws IOException, InterruptedException, UsageException {
-        long t0 = System.nanoTime();
-        int n = threads != null ? threads : Runtime.getRuntime().availableProcessors();
-        SceneBuilder[] loaded = new SceneBuilder[1];
-        double[] warmup = new double[1];
-        RenderJob job = RenderJob.of(scene).output(output).jpegQuality(quality).threads(n)
-                .settings(this::override);
-        farm.apply(job);
-        // A farm's manager reads lines; the bar redraws one line in place, for a person at a terminal.
-        farmProgress = farm.progress(job, out, err, output.toString(), t0);
-        TerminalProgress bar = farmProgress == null && !quiet && System.console() != null ? new TerminalProgress(err) : null;
-        job.progress(farmProgress != null ? farmProgress : bar);
+    /** The still, or the frames, with a farm's progress (one report for all the frames) when asked for. */
+    private int renderAll(PrintStream out, PrintStream err) throws IOException, InterruptedException, UsageException {
+        farmProgress = farm.progress(() -> current == null ? RenderJob.Stage.READY : current.stage(), out, err, output.toString(), System.nanoTime());
         if (farmProgress != null) farmProgress.start();
+        try {
+            return render(out, err, output, null, null);
+        } catch (Animated a) {
+            if (shutter != null) throw new UsageException("--shutter does not combine with an animation's frames: each frame's shutter is set by its shutter angle");
+            FrameRange list = frames.frames(a.builder.animation(), scene);
+            readSeconds = a.loadSeconds;
+            OutputPattern pattern = frames.pattern(output, outputDefaulted, list);
+            frames.render(list, pattern, aovs != null ? aovs : a.builder.settings().aovs(), quiet ? null : err,
+                    (path, n, index, count) -> {
+                        if (farmProgress != null) farmProgress.item(path.toString(), index, count);
+                        render(out, err, path, n, a.builder);
+                    });
+            return 0;
+        }
+    }
+
+    /** Thrown when the scene read is animated, or frames were asked for: the frames are rendered from {@link #builder}. */
+    private static final class Animated extends RuntimeException {
+        final SceneBuilder builder;
+        final double loadSeconds;
+
+        Animated(SceneBuilder builder, double loadSeconds) {
+            super("animated", null, false, false);
+            this.builder = builder;
+            this.loadSeconds = loadSeconds;
+        }
+    }
+
+    /**
+     * Renders once to {@code output}: the scene file as a still (frame null, builder null), or
+     * one frame from the scene as read.
+     */
+    private int render(PrintStream out, PrintStream err, Path output, Integer frame, SceneBuilder builder)
+            throws IOException, InterruptedException, UsageException {
         // Refused before anything is opened: a pipe would block, a device never end.
         String problem = InputFiles.problem(scene);
         if (problem != null) throw new NoSuchFileException(scene, problem);
@@ -192,14 +234,31 @@ final class RenderCommand {
                     + name + " } or subdiv { file " + name + " } block, or refine it with render subdivide");
         }
         if (aovs != null) checkAovOutputs(aovs);
-        if (aperture != null || focus != null) job.camera(c -> withLens(c, aperture, focus));
+        long t0 = System.nanoTime();
+        int n = threads != null ? threads : Runtime.getRuntime().availableProcessors();
+        SceneBuilder[] loaded = new SceneBuilder[1];
+        double[] warmup = new double[1];
+        RenderJob job = (builder != null ? RenderJob.of(builder).frame(frame) : RenderJob.of(scene)).output(output).jpegQuality(quality).threads(n)
+                .settings(this::override);
+        farm.apply(job);
+        // A farm's manager reads lines; the bar redraws one line in place, for a person at a terminal.
+        TerminalProgress bar = farmProgress == null && !quiet && System.console() != null ? new TerminalProgress(err) : null;
+        job.progress(farmProgress != null ? farmProgress : bar);
+        current = job;
+        // An animated camera's lens rides along with it.
+        if (aperture != null || focus != null) {
+            job.camera(c -> c instanceof AnimatedCamera a ? a.withBase(withLens(a.base(), aperture, focus)) : withLens(c, aperture, focus));
+        }
         RenderResult result;
-        try (JitWarmup warm = JitWarmup.start()) {
+        // One warm-up per process: the frames after the first find the code compiled.
+        try (JitWarmup warm = warmedUp ? null : JitWarmup.start()) {
             job.onLoaded(b -> {
+                if (frame == null && (b.animation() != null || frames.given())) throw new Animated(b, (System.nanoTime() - t0) / 1e9);
                 loaded[0] = b;
                 long w0 = System.nanoTime();
                 try {
-                    warm.finishFor(b, accel != null ? accel : b.settings().accelerator());
+                    if (warm != null) warm.finishFor(b, accel != null ? accel : b.settings().accelerator());
+                    warmedUp = true;
                 } catch (InterruptedException e) {
                     Thread.currentThread().interrupt();
                     job.cancel();
@@ -228,17 +287,17 @@ final class RenderCommand {
             throw new UsageException(given + ": " + e.getMessage());
         } finally {
             if (bar != null) bar.finish();
-            if (farmProgress != null) farmProgress.close();
         }
         String done = MessageText.escape(doneLine(output, result, (System.nanoTime() - t0) / 1e9));
         if (farmProgress != null) farmProgress.wrote(done);
         // On stderr with the progress bar it replaces: stdout carries only what was asked for (--stats).
         if (!quiet) err.println(done);
         if (stats) {
-            printStats(out, result.loadSeconds() - warmup[0], warmup[0], result.buildSeconds(), result.settings().accelerator(), result.stats(), n);
+            printStats(out, result.loadSeconds() + readSeconds - warmup[0], warmup[0], result.buildSeconds(), result.settings().accelerator(), result.stats(), n);
             for (String line : result.structureStatistics()) out.println(MessageText.escape(line));
             for (String line : result.subdivisionStatistics()) out.println(MessageText.escape(line));
         }
+        readSeconds = 0; // read once, shown once
         return 0;
     }
 

@@ -18,6 +18,7 @@ import lt.spindulys.math.Vec3;
 import lt.spindulys.scene.Bool;
 import lt.spindulys.scene.GObject;
 import lt.spindulys.material.Material;
+import lt.spindulys.math.Keyframes;
 import lt.spindulys.texture.Texture;
 
 /**
@@ -52,6 +53,12 @@ final class SceneBlockReader {
 
         /** An object's motion block, given after {@code keyToken}. */
         Motion motion(Props p, Token keyToken);
+
+        /** An object's or the camera's keys block, given after {@code keyToken}. */
+        Keyframes keyframes(Props p, Token keyToken);
+
+        /** An object's or the camera's turntable block, given after {@code keyToken}. */
+        Keyframes turntable(Props p, Token keyToken);
     }
 
     private final SceneLexer lex;
@@ -220,6 +227,14 @@ final class SceneBlockReader {
             }
             case MAP -> values.binding(block(SceneGrammar.MAP, keyToken, null));
             case MOTION -> values.motion(block(SceneGrammar.MOTION, keyToken, null), keyToken);
+            case FRAMES -> new int[] {(Integer) integer(n, false), (Integer) integer(n, false)};
+            case KEYS -> values.keyframes(block(SceneGrammar.KEYS, keyToken, null), keyToken);
+            case KEY -> {
+                Token frameAt = lex.peek();
+                double frame = number("expected a frame number after 'key'");
+                yield new KeyPose(frame, frameAt, block(SceneGrammar.KEY, keyToken, null));
+            }
+            case TURNTABLE -> values.turntable(block(SceneGrammar.TURNTABLE, keyToken, null), keyToken);
             case INTERVAL -> {
                 String m = "expected 2 numbers for '" + n + "'";
                 yield new double[] {number(m), number(m)};
@@ -239,7 +254,7 @@ final class SceneBlockReader {
                 boolean three = numberAhead();
                 double y = three ? number("expected 1 or 3 numbers for 'scale'") : x;
                 double z = three ? number("expected 1 or 3 numbers for 'scale'") : x;
-                if (b == SceneGrammar.MOTION) yield new Vec3(x, y, z);
+                if (b == SceneGrammar.MOTION || b == SceneGrammar.KEY) yield new Vec3(x, y, z);
                 yield transform(keyToken, () -> Transform.scale(x, y, z));
             }
         };
@@ -376,6 +391,9 @@ final class SceneBlockReader {
 
     /** A motion block's 'rotate' value. */
     record AxisAngle(Vec3 axis, double degrees) {}
+
+    /** A keys block's 'key' value: the frame number as written, where it was, and the pose's block. */
+    record KeyPose(double frame, Token frameAt, Props pose) {}
 
     private Transform transform(Token keyToken, java.util.function.Supplier<Transform> make) {
         try {

@@ -58,6 +58,14 @@ final class SceneGrammar {
         INTERVAL,
         /** A nested { ... } block of {@link SceneGrammar#MOTION} keys: how an object moves during the shutter. */
         MOTION,
+        /** Two integers: an animation's first and last frame. */
+        FRAMES,
+        /** A nested { ... } block of {@link SceneGrammar#KEYS} keys: keyframed transforms over the frames. */
+        KEYS,
+        /** A frame number, then a nested { ... } block of {@link SceneGrammar#KEY} keys: one key's pose. */
+        KEY,
+        /** A nested { ... } block of {@link SceneGrammar#TURNTABLE} keys: whole turns over the frame range. */
+        TURNTABLE,
         /** A double-quoted face group (OBJ usemtl) name, then a material as {@link #MATERIAL} takes it. */
         GROUP_MATERIAL
     }
@@ -76,6 +84,10 @@ final class SceneGrammar {
         MAP,
         /** An object's motion nested in an object statement (not a statement). */
         MOTION,
+        /** The scene's frame range, frame rate and shutter angle (scene.Animation). */
+        ANIMATION,
+        /** Keyframed transforms, their keys or a turntable, nested in an object or the camera (not statements). */
+        KEYS,
         /** A shape made from its own keys. */
         OBJECT,
         /**
@@ -130,7 +142,33 @@ final class SceneGrammar {
             repeat("rotate", Kind.ROTATE),
             repeat("scale", Kind.SCALE),
             opt("motion", Kind.MOTION),
+            opt("keys", Kind.KEYS),
+            opt("turntable", Kind.TURNTABLE),
             opt("name", Kind.STRING));
+
+    // Frame N is at time N / fps; the shutter is open for shutter / 360 of a frame interval, centred on it.
+    static final Block ANIMATION = new Block("animation", Category.ANIMATION, false, List.of(
+            req("frames", Kind.FRAMES),
+            opt("fps", Kind.NUMBER, 24.0),
+            opt("shutter", Kind.NUMBER, 180.0)));
+
+    /** The keys of an object's or the camera's nested 'keys' block: poses at frames, in increasing frame order. */
+    static final Block KEYS = new Block("keys", Category.KEYS, false, List.of(
+            choice("interpolation", "linear", "linear", "ease", "smooth"),
+            opt("pivot", Kind.VECTOR, Vec3.ZERO),
+            repeat("key", Kind.KEY)));
+
+    /** One key's pose (after 'key FRAME'): each absent part is the identity's. */
+    static final Block KEY = new Block("key", Category.KEYS, false, List.of(
+            opt("translate", Kind.VECTOR, Vec3.ZERO),
+            opt("rotate", Kind.VECTOR, Vec3.ZERO),
+            opt("scale", Kind.SCALE, new Vec3(1, 1, 1))));
+
+    /** Whole turns about an axis over the animation's frames (frame last + 1 would repeat the first). */
+    static final Block TURNTABLE = new Block("turntable", Category.KEYS, false, List.of(
+            opt("axis", Kind.VECTOR, Vec3.Y),
+            opt("center", Kind.VECTOR, Vec3.ZERO),
+            opt("turns", Kind.NUMBER, 1.0)));
 
     static final Block SETTINGS = new Block("settings", Category.SETTINGS, false, List.of(
             opt("width", Kind.INTEGER),
@@ -161,7 +199,9 @@ final class SceneGrammar {
             opt("aperture", Kind.NUMBER, 0.0),
             opt("focus", Kind.NUMBER),
             opt("focuspoint", Kind.VECTOR),
-            new Key("lens", Kind.CHOICE, false, false, LensPattern.CONCENTRIC.keyword(), LensPattern.keywords())));
+            new Key("lens", Kind.CHOICE, false, false, LensPattern.CONCENTRIC.keyword(), LensPattern.keywords()),
+            opt("keys", Kind.KEYS),
+            opt("turntable", Kind.TURNTABLE)));
 
     static final Block LIGHT = new Block("light", Category.LIGHT, false, List.of(
             req("position", Kind.VECTOR),
@@ -320,7 +360,7 @@ final class SceneGrammar {
     static final Block DIFFERENCE = new Block("difference", Category.CSG, true, OBJECT_COMMON);
 
     /** Every top-level statement, in documentation order. */
-    static final List<Block> STATEMENTS = List.of(SETTINGS, CAMERA, LIGHT, RECTLIGHT, DISCLIGHT, SPHERELIGHT, ENVIRONMENT, TEXTURE, MATERIAL, SPHERE, PLANE, BOX, CYLINDER, TRIANGLE, MESH, SUBDIV,
+    static final List<Block> STATEMENTS = List.of(SETTINGS, ANIMATION, CAMERA, LIGHT, RECTLIGHT, DISCLIGHT, SPHERELIGHT, ENVIRONMENT, TEXTURE, MATERIAL, SPHERE, PLANE, BOX, CYLINDER, TRIANGLE, MESH, SUBDIV,
             UNION, INTERSECTION, DIFFERENCE);
 
     /** An object statement whose objects may be CSG operands. */

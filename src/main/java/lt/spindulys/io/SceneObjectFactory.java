@@ -21,7 +21,11 @@ import lt.spindulys.io.SceneGrammar.Block;
 import lt.spindulys.io.SceneLexer.Token;
 import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Color;
+import lt.spindulys.math.Keyframes;
 import lt.spindulys.math.Motion;
+import lt.spindulys.scene.Animation;
+import lt.spindulys.camera.AnimatedCamera;
+import lt.spindulys.io.SceneBlockReader.KeyPose;
 import lt.spindulys.math.Transform;
 import lt.spindulys.math.Vec3;
 import lt.spindulys.camera.LensPattern;
@@ -163,6 +167,87 @@ final class SceneObjectFactory {
 
     /** A camera block's camera: a pinhole, or a thin lens when any of the lens keys is given. */
     Camera camera(Props p) {
+        Camera still = restingCamera(p);
+        Prop keys = keysOf(p);
+        if (keys == null) return still;
+        try {
+            return new AnimatedCamera(still, (Keyframes) keys.value());
+        } catch (IllegalArgumentException e) {
+            throw err.wrap(keys.at(), e);
+        }
+    }
+
+    /** The block's 'keys' or 'turntable', or null; both is an error at the later one. */
+    private Prop keysOf(Props p) {
+        Prop keys = p.prop("keys"), turntable = p.prop("turntable");
+        if (keys != null && turntable != null) {
+            Prop later = p.all.indexOf(keys) > p.all.indexOf(turntable) ? keys : turntable, earlier = later == keys ? turntable : keys;
+            throw err.error(later.at(), "'" + later.key().name() + "' and '" + earlier.key().name() + "' (at " + earlier.at().position()
+                    + ") exclude each other: a turntable is keys of its own");
+        }
+        return keys != null ? keys : turntable;
+    }
+
+    /** animation { frames FIRST LAST  fps F  shutter ANGLE }. */
+    Animation animation(Props p) {
+        int[] frames = (int[]) p.get("frames");
+        try {
+            return new Animation(frames[0], frames[1], p.num("fps"), p.num("shutter"));
+        } catch (IllegalArgumentException e) {
+            // "first frame", "last frame" name no key: the frames key is meant.
+            if (e.getMessage() != null && e.getMessage().contains("frame")) throw err.wrap(p.prop("frames").at(), e);
+            throw err.blame(p, e);
+        }
+    }
+
+    /**
+     * keys { interpolation I  pivot P  key FRAME { translate T  rotate X Y Z  scale S } ... }: key
+     * frames in increasing order, each at most once, timed on the animation's clock (frame / fps).
+     */
+    Keyframes keyframes(Props p, Animation a) {
+        List<Prop> keys = new ArrayList<>();
+        for (Prop pr : p.all) if (pr.key().name().equals("key")) keys.add(pr);
+        if (keys.isEmpty()) throw err.error(p.opener, "keys needs at least one 'key FRAME { translate ... rotate ... scale ... }'");
+        if (keys.size() > Keyframes.MAX_KEYS) throw err.error(keys.get(Keyframes.MAX_KEYS).at(), "more than " + Keyframes.MAX_KEYS + " keys in one keys block");
+        double[] times = new double[keys.size()];
+        Keyframes.Pose[] poses = new Keyframes.Pose[keys.size()];
+        KeyPose previous = null;
+        for (int i = 0; i < keys.size(); i++) {
+            KeyPose k = (KeyPose) keys.get(i).value();
+            if (previous != null && !(k.frame() > previous.frame())) {
+                throw err.error(k.frameAt(), "key frame " + fmt(k.frame()) + " is not after the previous key's frame " + fmt(previous.frame())
+                        + " (at " + previous.frameAt().position() + "): keys must be in increasing frame order, each frame once");
+            }
+            previous = k;
+            Props pose = k.pose();
+            try {
+                poses[i] = new Keyframes.Pose(pose.vec("translate"), pose.vec("rotate"), (Vec3) pose.get("scale"));
+            } catch (IllegalArgumentException e) {
+                throw err.blame(pose, e);
+            }
+            times[i] = a.time(k.frame());
+        }
+        try {
+            return Keyframes.of(times, poses, Keyframes.Interpolation.fromKeyword((String) p.get("interpolation")), Transform.translate(p.vec("pivot")));
+        } catch (IllegalArgumentException e) {
+            throw err.blame(p, e);
+        }
+    }
+
+    /** turntable { axis A  center C  turns N }: N turns from the animation's first frame to the one after its last. */
+    Keyframes turntable(Props p, Animation a) {
+        try {
+            return Keyframes.turntable(p.vec("axis"), p.vec("center"), p.num("turns"), a.time(a.first()), a.time(a.last() + 1.0));
+        } catch (IllegalArgumentException e) {
+            throw err.blame(p, e);
+        }
+    }
+
+    private static String fmt(double v) {
+        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v);
+    }
+
+    private Camera restingCamera(Props p) {
         PinholeCamera view;
         try {
             view = new PinholeCamera(p.vec("eye"), p.vec("lookat"), p.vec("up"), p.num("fov"));
@@ -422,11 +507,13 @@ final class SceneObjectFactory {
         // Errors found only when the scene is built name this statement.
         o.source(sourceName, p.opener.line(), p.opener.column());
         // Common keys; transforms compose in the order written (GObject.transform appends).
+        keysOf(p);
         for (Prop pr : p.all) {
             switch (pr.key().name()) {
                 case "material" -> o.material((Material) pr.value());
                 case "name" -> o.name((String) pr.value());
                 case "motion" -> o.motion((Motion) pr.value());
+                case "keys", "turntable" -> o.keys((Keyframes) pr.value());
                 case "translate", "rotate", "scale" -> {
                     try {
                         o.transform((Transform) pr.value());

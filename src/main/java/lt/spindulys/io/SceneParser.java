@@ -16,7 +16,9 @@ import lt.spindulys.io.SceneLexer.Kind;
 import lt.spindulys.io.SceneLexer.Token;
 import lt.spindulys.limits.InputFiles;
 import lt.spindulys.limits.MessageText;
+import lt.spindulys.math.Keyframes;
 import lt.spindulys.math.Motion;
+import lt.spindulys.scene.Animation;
 import lt.spindulys.scene.GObject;
 import lt.spindulys.material.Material;
 import lt.spindulys.scene.AreaLight;
@@ -46,7 +48,10 @@ public final class SceneParser {
     private final SceneBlockReader in;
     private final SceneObjectFactory objects;
     private final SceneBuilder builder = new SceneBuilder();
-    private Token settingsAt, cameraAt, environmentAt;
+    private Token settingsAt, cameraAt, environmentAt, animationAt;
+    /** The settings' 'shutter' key, which an animation's shutter angle replaces; null if not given. */
+    private Prop shutterAt;
+    private Animation animation;
     /** Where each named material was defined, for "already defined at" and suggestions. */
     private final Map<String, Token> materialsAt = new LinkedHashMap<>();
     /** Named textures and where each was defined. */
@@ -135,6 +140,7 @@ public final class SceneParser {
         if (b == null) throw unknownStatement(kw);
         switch (b.category()) {
             case SETTINGS -> settings(kw);
+            case ANIMATION -> animation(kw);
             case CAMERA -> camera(kw);
             case LIGHT -> light(kw);
             case AREA_LIGHT -> areaLight(b, kw);
@@ -142,7 +148,7 @@ public final class SceneParser {
             case MATERIAL -> namedMaterial(kw);
             case TEXTURE -> texture(kw);
             case OBJECT, CSG -> builder.add(objects.object(in.block(b, kw, null)));
-            case MAP, MOTION -> throw new IllegalStateException(b.keyword() + " is not a statement");
+            case MAP, MOTION, KEYS -> throw new IllegalStateException(b.keyword() + " is not a statement");
         }
     }
 
@@ -171,7 +177,25 @@ public final class SceneParser {
             if (k.equals("width") || k.equals("height") || k.equals("aov")) sizeAt = pr;
         }
         if (sizeAt != null) builder.frameSource(SceneException.location(file, sizeAt.at().line(), sizeAt.at().column()));
+        shutterAt = p.prop("shutter");
+        if (shutterAt != null && animationAt != null) throw shutterConflict();
         builder.settings(s);
+    }
+
+    /** animation { frames FIRST LAST  fps F  shutter ANGLE }: at most once, before any keys. */
+    private void animation(Token kw) {
+        if (animationAt != null) throw error(kw, "animation is already defined at " + animationAt.position());
+        animationAt = kw;
+        Props p = in.block(SceneGrammar.ANIMATION, kw, null);
+        animation = objects.animation(p);
+        if (shutterAt != null) throw shutterConflict();
+        builder.animation(animation);
+    }
+
+    /** A settings 'shutter' in an animated scene, reported at the settings key. */
+    private SceneException shutterConflict() {
+        return error(shutterAt.at(), "'shutter' in settings does not combine with the animation at " + animationAt.position()
+                + ": each frame's shutter is set by the animation's shutter angle");
     }
 
     private void camera(Token kw) {
@@ -268,6 +292,20 @@ public final class SceneParser {
             motions.add(new PendingMotion(m, p));
             return m;
         }
+
+        @Override
+        public Keyframes keyframes(Props p, Token keyToken) { return objects.keyframes(p, requireAnimation(keyToken)); }
+
+        @Override
+        public Keyframes turntable(Props p, Token keyToken) { return objects.turntable(p, requireAnimation(keyToken)); }
+    }
+
+    /** The animation keys are timed by: defined before them, else an error at the key. */
+    private Animation requireAnimation(Token keyToken) {
+        if (animation == null) {
+            throw error(keyToken, MessageText.quote(keyToken.text()) + " needs an animation statement before it (such as animation { frames 1 48  fps 24 }): key frames are read on its clock");
+        }
+        return animation;
     }
 
     /** A motion read, with its block, until its open times can be checked against the shutter. */
@@ -278,11 +316,16 @@ public final class SceneParser {
     /** Every motion's times, open ones filled in from the shutter, must give a finish after the start. */
     private void checkMotions() {
         RenderSettings st = builder.settings();
+        // Frames move the shutter along: an open finish closes earliest at the first frame, an open start opens latest at the last.
+        RenderSettings[] shutters = animation == null ? new RenderSettings[] {st}
+                : new RenderSettings[] {animation.settingsFor(st, animation.first()), animation.settingsFor(st, animation.last())};
         for (PendingMotion pm : motions) {
-            try {
-                pm.motion.resolve(st.shutterOpen(), st.shutterClose());
-            } catch (IllegalArgumentException e) {
-                throw err.blame(pm.block, e);
+            for (RenderSettings sh : shutters) {
+                try {
+                    pm.motion.resolve(sh.shutterOpen(), sh.shutterClose());
+                } catch (IllegalArgumentException e) {
+                    throw err.blame(pm.block, e);
+                }
             }
         }
     }

@@ -14,7 +14,7 @@ package lt.spindulys.math;
  * they are then the scene's shutter open and close times, filled in by {@link #resolve} when the
  * scene is built, and a linear motion's distance follows from them. Immutable.
  */
-public final class Motion {
+public final class Motion implements Moving {
     private final double sx, sy, sz;
     private final double ax, ay, az, radians;
     private final double tx, ty, tz;
@@ -186,6 +186,7 @@ public final class Motion {
      * @param m receives 12 doubles
      * @param inv receives 12 doubles, or null to skip the inverse
      */
+    @Override
     public void matrices(double time, double[] m, double[] inv) {
         double f = fraction(time);
         double ux = 1 + f * (sx - 1), uy = 1 + f * (sy - 1), uz = 1 + f * (sz - 1);
@@ -234,6 +235,12 @@ public final class Motion {
      * @return bounds that hold {@code b} at every time of the motion
      */
     public Bounds sweep(Bounds b) {
+        return sweep(b, start, finish);
+    }
+
+    /** {@inheritDoc} A motion is swept over its whole [start, finish], which holds every shutter time it is asked at. */
+    @Override
+    public Bounds sweep(Bounds b, double open, double close) {
         requireResolved();
         if (b.isEmpty()) return b;
         if (!b.isFinite()) return Bounds.INFINITE;

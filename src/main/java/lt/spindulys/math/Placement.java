@@ -3,7 +3,8 @@ package lt.spindulys.math;
 import java.util.Arrays;
 
 /**
- * An object-to-world mapping that may change with time: static transforms and {@link Motion}s in
+ * An object-to-world mapping that may change with time: static transforms and {@link Motion}s or
+ * {@link Keyframes} in
  * the order they apply, S0, M0(t), S1, M1(t), ..., Sk. An object's is its own transform, then its
  * own motion, then its parent's placement, so a moving operand of a moving CSG node carries both
  * motions. It also carries the shutter interval, which fills in motions' open start and finish
@@ -15,13 +16,13 @@ public final class Placement {
     public static final double OPEN = 0, CLOSE = 1;
 
     /** The identity with the default shutter. */
-    public static final Placement IDENTITY = new Placement(new Transform[] {Transform.IDENTITY}, new Motion[0], OPEN, CLOSE);
+    public static final Placement IDENTITY = new Placement(new Transform[] {Transform.IDENTITY}, new Moving[0], OPEN, CLOSE);
 
     private final Transform[] statics; // statics.length == motions.length + 1
-    private final Motion[] motions;
+    private final Moving[] motions;
     private final double open, close;
 
-    private Placement(Transform[] statics, Motion[] motions, double open, double close) {
+    private Placement(Transform[] statics, Moving[] motions, double open, double close) {
         this.statics = statics;
         this.motions = motions;
         this.open = open;
@@ -47,7 +48,7 @@ public final class Placement {
      */
     public static Placement of(Transform t, double open, double close) {
         checkShutter(open, close);
-        return new Placement(new Transform[] {t}, new Motion[0], open, close);
+        return new Placement(new Transform[] {t}, new Moving[0], open, close);
     }
 
     /**
@@ -104,8 +105,22 @@ public final class Placement {
     public Placement then(Motion m) {
         Transform[] s = Arrays.copyOf(statics, statics.length + 1);
         s[s.length - 1] = Transform.IDENTITY;
-        Motion[] ms = Arrays.copyOf(motions, motions.length + 1);
+        Moving[] ms = Arrays.copyOf(motions, motions.length + 1);
         ms[ms.length - 1] = m.resolve(open, close);
+        return new Placement(s, ms, open, close);
+    }
+
+    /**
+     * This placement followed by the keyframed transform {@code k}.
+     *
+     * @param k the keyframed transform applied after this placement
+     * @return the combined placement (this one is unchanged)
+     */
+    public Placement then(Keyframes k) {
+        Transform[] s = Arrays.copyOf(statics, statics.length + 1);
+        s[s.length - 1] = Transform.IDENTITY;
+        Moving[] ms = Arrays.copyOf(motions, motions.length + 1);
+        ms[ms.length - 1] = k;
         return new Placement(s, ms, open, close);
     }
 
@@ -120,7 +135,7 @@ public final class Placement {
         System.arraycopy(statics, 0, s, 0, statics.length);
         s[statics.length - 1] = statics[statics.length - 1].then(next.statics[0]);
         System.arraycopy(next.statics, 1, s, statics.length, next.statics.length - 1);
-        Motion[] ms = Arrays.copyOf(motions, motions.length + next.motions.length);
+        Moving[] ms = Arrays.copyOf(motions, motions.length + next.motions.length);
         System.arraycopy(next.motions, 0, ms, motions.length, next.motions.length);
         return new Placement(s, ms, next.open, next.close);
     }
@@ -177,7 +192,7 @@ public final class Placement {
     public Bounds bounds(Bounds local) {
         Bounds b = local.transformed(statics[0]);
         for (int i = 0; i < motions.length; i++) {
-            b = motions[i].sweep(b);
+            b = motions[i].sweep(b, open, close);
             if (!statics[i + 1].isIdentity()) b = b.transformed(statics[i + 1]);
         }
         return b;

@@ -68,6 +68,7 @@ public final class RenderJob {
     private UnaryOperator<Camera> cameraOverride;
     private Consumer<SceneBuilder> onLoaded;
     private Path output;
+    private Integer frame;
     private double jpegQuality = ImageOptions.DEFAULT.jpegQuality();
     private int threads = Runtime.getRuntime().availableProcessors();
     private ProgressListener progress;
@@ -133,6 +134,21 @@ public final class RenderJob {
     public RenderJob camera(UnaryOperator<Camera> change) {
         configurable(true);
         cameraOverride = Objects.requireNonNull(change, "change");
+        return this;
+    }
+
+    /**
+     * Renders one frame of the scene's animation: after the setting overrides, the settings get
+     * that frame's shutter and seed ({@link lt.spindulys.scene.Animation#settingsFor}), so the
+     * image depends on the frame number alone.
+     *
+     * @param n the frame number; the run fails if the scene has no animation or n is outside its range
+     * @return this job
+     * @throws IllegalStateException if the job has started or was given a built scene
+     */
+    public RenderJob frame(int n) {
+        configurable(true);
+        frame = n;
         return this;
     }
 
@@ -324,8 +340,12 @@ public final class RenderJob {
             long t1 = System.nanoTime();
             load = (t1 - t0) / 1e9;
             enter(Stage.SETTINGS);
-            RenderSettings s = Objects.requireNonNull(settingsOverride.apply(b.settings()), "the settings override returned null")
-                    .checkTimeSteps();
+            RenderSettings s = Objects.requireNonNull(settingsOverride.apply(b.settings()), "the settings override returned null");
+            if (frame != null) {
+                if (b.animation() == null) throw new IllegalArgumentException("frame " + frame + " asked of a scene without an animation");
+                s = b.animation().settingsFor(s, frame);
+            }
+            s.checkTimeSteps();
             region = region(s);
             // The frame is asked for by input: checked before anything is built for it.
             if (region == null) FrameBuffer.checkHeap(s.width(), s.height(), s.aovs());

@@ -314,11 +314,12 @@ public final class Bool extends GObject {
     }
 
     /**
-     * An operand's local bounds placed by its transform and carried along its motion (before
-     * freezing, a motion's open times are taken as the default shutter).
+     * An operand's local bounds placed by its transform and carried along its keys and its motion
+     * (before freezing, over the default shutter; after, over the one it was frozen for).
      */
     private static Bounds placed(GObject o) {
         Bounds b = o.localBounds().transformed(o.transform());
+        if (o.keys() != null) b = o.keys().sweep(b, o.shutterOpen(), o.shutterClose());
         Motion m = o.motion();
         return m == null ? b : m.resolve(Placement.OPEN, Placement.CLOSE).sweep(b);
     }

@@ -44,10 +44,13 @@ public final class BuildContext {
 
     /**
      * The context of a scene's top-level objects: placed in world space over the settings'
-     * shutter, inheriting the default material.
+     * shutter, inheriting the default material. A moving camera is the view halfway through the shutter.
      */
     static BuildContext of(RenderSettings settings, Camera camera) {
         double open = settings.shutterOpen(), close = settings.shutterClose();
+        // A moving camera is seen standing where it is halfway through the shutter (the view that
+        // chooses adaptive levels; the rays themselves move with it).
+        if (camera instanceof lt.spindulys.camera.AnimatedCamera a) camera = a.at((open + close) / 2);
         return new BuildContext(Placement.of(Transform.IDENTITY, open, close), Material.DEFAULT,
                 settings.accelerator(), camera, settings.width(), settings.height(), open, close,
                 new BuildShared(settings.adaptive(), camera, settings.width(), settings.height()));

@@ -8,6 +8,7 @@ import lt.spindulys.trace.SpanBuffer;
 
 import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Bounds;
+import lt.spindulys.math.Keyframes;
 import lt.spindulys.math.Motion;
 import lt.spindulys.math.ObjectMapping;
 import lt.spindulys.math.Placement;
@@ -44,6 +45,9 @@ import lt.spindulys.trace.TracedObject;
  * transform, own motion at t, then the parent's mapping at t (a {@link Placement}). A ray is
  * answered at its {@link Ray#time}, and shading uses the same time. Objects with no motion
  * anywhere in their chain keep one composed transform and pay nothing per ray for the feature.
+ * {@link #keys(Keyframes) Keys} (an animation's keyframed transforms) are placed the same way,
+ * between the transform and the motion, and move the object across the frames of an
+ * {@link Animation} and, within a frame, while its shutter is open.
  *
  * <p><b>Not for subclassing outside this library.</b> The per-ray methods ({@link #intersect},
  * {@link #shade}, {@link #spans} and the {@code *Local} ones) take the renderer's hit records,
@@ -53,6 +57,9 @@ import lt.spindulys.trace.TracedObject;
 public abstract class GObject implements TracedObject, Cloneable {
     private Transform transform = Transform.IDENTITY;
     private Motion motion;
+    private Keyframes keys;
+    /** The shutter a frozen object was built for (what its keys are swept over); the default before. */
+    private double shutterOpen = Placement.OPEN, shutterClose = Placement.CLOSE;
     private Material material;
     /**
      * Materials of the face groups given to this object (meshes and subdivision surfaces: their
@@ -124,6 +131,34 @@ public abstract class GObject implements TracedObject, Cloneable {
      * @return the motion, or null if the object has none of its own
      */
     public Motion motion() { return motion; }
+
+    /**
+     * Gives this object keyframed transforms (an animation's keys or a turntable), applied after
+     * its transform and before its motion (null: none). The keys' times are the scene's: an
+     * animation's frame N is at N / fps (see {@link Animation}).
+     *
+     * @param k the keys, or null for none
+     * @return this object, for chaining
+     * @throws IllegalStateException if this is a frozen object of a built scene
+     */
+    public GObject keys(Keyframes k) {
+        checkMutable();
+        keys = k;
+        return this;
+    }
+
+    /**
+     * This object's own keyframed transforms, or null.
+     *
+     * @return the keys, or null if the object has none of its own
+     */
+    public Keyframes keys() { return keys; }
+
+    /** The shutter's open time this object was frozen for (the default shutter's before). */
+    final double shutterOpen() { return shutterOpen; }
+
+    /** The shutter's close time this object was frozen for (the default shutter's before). */
+    final double shutterClose() { return shutterClose; }
 
     /**
      * Sets this object's material; null inherits the enclosing object's or the scene default.
@@ -318,6 +353,7 @@ public abstract class GObject implements TracedObject, Cloneable {
     final void describeLike(GObject from) {
         transform = from.transform;
         motion = from.motion;
+        keys = from.keys;
         material = from.material;
         groupMaterials = from.groupMaterials;
         name = from.name;
@@ -346,6 +382,8 @@ public abstract class GObject implements TracedObject, Cloneable {
         Placement p;
         try {
             if (motion != null) motion = motion.resolve(parentToWorld.open(), parentToWorld.close());
+            shutterOpen = parentToWorld.open();
+            shutterClose = parentToWorld.close();
             p = placementIn(parentToWorld);
         } catch (IllegalArgumentException e) {
             throw SceneBuildException.of(this, e);
@@ -389,6 +427,8 @@ public abstract class GObject implements TracedObject, Cloneable {
     protected final Placement placementIn(Placement parentToWorld) {
         try {
             Placement own = Placement.of(transform, parentToWorld.open(), parentToWorld.close());
+            // Keys that hold one pose through this shutter place the object as a still one: no per-ray cost.
+            if (keys != null) own = keys.isStill(parentToWorld.open(), parentToWorld.close()) ? own.then(keys.at(parentToWorld.open())) : own.then(keys);
             if (motion != null) own = own.then(motion);
             return own.then(parentToWorld);
         } catch (IllegalArgumentException e) {

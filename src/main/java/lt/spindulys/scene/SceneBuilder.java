@@ -46,6 +46,7 @@ public final class SceneBuilder {
     private final Map<String, Material> materials = new LinkedHashMap<>();
     private String frameSource;
     private Environment environment;
+    private Animation animation;
 
     /**
      * A new builder with everything given to this one so far (settings, camera, lights, environment, objects,
@@ -65,6 +66,7 @@ public final class SceneBuilder {
         c.materials.putAll(materials);
         c.frameSource = frameSource;
         c.environment = environment;
+        c.animation = animation;
         return c;
     }
 
@@ -264,6 +266,36 @@ public final class SceneBuilder {
      * @return the environment, or null
      */
     public Environment environment() { return environment; }
+
+    /**
+     * Sets the scene's frame range, frame rate and shutter angle (null: none, a still). The
+     * builder still builds with its own settings; a frame is built from the settings
+     * {@link Animation#settingsFor} gives, which {@link #forFrame} applies.
+     *
+     * @param a the animation, or null
+     * @return this builder, for chaining
+     */
+    public SceneBuilder animation(Animation a) { animation = a; return this; }
+
+    /**
+     * The animation set, or null.
+     *
+     * @return the animation, or null for a still
+     */
+    public Animation animation() { return animation; }
+
+    /**
+     * A copy of this builder set up for one frame of its animation: its settings with that
+     * frame's shutter and seed ({@link Animation#settingsFor}). Build it to get the frame's scene.
+     *
+     * @param frame the frame number, within the animation's range
+     * @return a new builder for the frame; this one is unchanged
+     * @throws IllegalArgumentException if there is no animation or the frame is outside its range
+     */
+    public SceneBuilder forFrame(int frame) {
+        if (animation == null) throw new IllegalArgumentException("frame " + frame + " asked of a scene without an animation");
+        return copy().settings(animation.settingsFor(settings, frame));
+    }
 
     /**
      * Convenience for code: the ambient light intensity.

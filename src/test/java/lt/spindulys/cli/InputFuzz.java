@@ -89,7 +89,7 @@ public final class InputFuzz {
         AtomicReference<Object> result = new AtomicReference<>();
         Thread t = new Thread(() -> {
             try {
-                result.set(Main.run(new String[] {scene.toString(), "-o", out.toString(), "--quiet", "--threads", "2"},
+                result.set(Main.run(arguments(scene, out),
                         new PrintStream(stdout, true, StandardCharsets.UTF_8), new PrintStream(stderr, true, StandardCharsets.UTF_8)));
             } catch (Throwable e) {
                 result.set(e);
@@ -128,6 +128,19 @@ public final class InputFuzz {
         if (msg.length() > 400) return "exit 2 with a line of " + msg.length() + " characters: " + msg.substring(0, 200) + "...";
         if (!LOCATED.matcher(msg).matches()) return "exit 2 without file:line:column: " + msg;
         return null;
+    }
+
+    /**
+     * The command line of a case: an animated scene renders one frame, its first as written (so
+     * that one image is the promise); if the mutations left no such number, the scene is refused
+     * before frames are chosen.
+     */
+    private static String[] arguments(Path scene, Path out) throws IOException {
+        List<String> args = new ArrayList<>(List.of(scene.toString(), "-o", out.toString(), "--quiet", "--threads", "2"));
+        String text = Files.readString(scene, StandardCharsets.ISO_8859_1);
+        Matcher first = Pattern.compile("\\banimation\\s*\\{[^}]*?\\bframes\\s+(\\d{1,7})(?![\\w.])").matcher(text);
+        if (first.find()) args.addAll(List.of("--frame", first.group(1)));
+        return args.toArray(new String[0]);
     }
 
     private static String firstLines(String err) {

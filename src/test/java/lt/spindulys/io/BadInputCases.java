@@ -121,7 +121,7 @@ public final class BadInputCases {
                 c("unknown statement", "shpere { radius 1 }", "1:1: unknown statement 'shpere' (did you mean 'sphere'?)"),
                 c("property outside a block", "sphere { } radius 2", "1:12: unknown statement 'radius' ('radius' is a property of disclight, spherelight, sphere or cylinder: was a block closed too early?)"),
                 // A decimal: a scene whose first token is an integer is taken for a Workframe mesh (see CliBadInputTest).
-                c("number as statement", "4.2", "1:1: expected a statement (settings, camera, light, rectlight, disclight, spherelight, environment, texture, material, sphere, plane, box, cylinder, triangle, mesh, subdiv, "
+                c("number as statement", "4.2", "1:1: expected a statement (settings, animation, camera, light, rectlight, disclight, spherelight, environment, texture, material, sphere, plane, box, cylinder, triangle, mesh, subdiv, "
                         + "union, intersection, difference), found '4.2'"),
                 c("stray closing brace", cam + "}", "2:1: unexpected '}': no block is open"),
                 c("missing '{'", "sphere radius 1 }", "1:8: expected '{' after 'sphere', found 'radius'"),
@@ -434,6 +434,23 @@ public final class BadInputCases {
                         "1:36: motion finish must be after its start, found start 2.0 and finish 1.0 (finish is the shutter close time)"),
                 c("motion given twice", "sphere { motion { translate 1 0 0 }  motion { translate 0 1 0 } }", "1:38: 'motion' given twice in sphere (first at 1:10)"),
                 c("motion translate given twice", "sphere { motion { translate 1 0 0  translate 0 1 0 } }", "1:36: 'translate' given twice in motion (first at 1:19)"),
+                // Animation: keys, turntables and the animation statement (docs/scene-format.md "Animation").
+                c("keys without an animation", "sphere { keys { key 1 { } } }",
+                        "1:10: 'keys' needs an animation statement before it (such as animation { frames 1 48  fps 24 }): key frames are read on its clock"),
+                c("keys out of order", "animation { frames 1 9 }\nsphere { keys { key 5 { } key 3 { } } }",
+                        "2:31: key frame 3 is not after the previous key's frame 5 (at 2:21): keys must be in increasing frame order, each frame once"),
+                c("keys at one frame twice", "animation { frames 1 9 }\nsphere { keys { key 4 { } key 4.0 { } } }",
+                        "2:31: key frame 4 is not after the previous key's frame 4 (at 2:21): keys must be in increasing frame order, each frame once"),
+                c("keys without a key", "animation { frames 1 9 }\nsphere { keys { } }", "2:10: keys needs at least one 'key FRAME { translate ... rotate ... scale ... }'"),
+                c("misspelt key pose key", "animation { frames 1 9 }\nsphere { keys { key 1 { rotat 0 90 0 } } }",
+                        "2:25: unknown property 'rotat' in key (did you mean 'rotate'?)"),
+                c("keys and a turntable", "animation { frames 1 9 }\nbox { min 0 0 0  max 1 1 1  turntable { }  keys { key 1 { } } }",
+                        "2:44: 'keys' and 'turntable' (at 2:29) exclude each other: a turntable is keys of its own"),
+                c("camera keys that scale", "animation { frames 1 9 }\ncamera { eye 0 0 -5  lookat 0 0 0  keys { key 1 { scale 2 } } }",
+                        "2:36: a camera's keys may translate and rotate it but not scale it"),
+                c("animation frames backwards", "animation { frames 9 1 }", "1:13: last frame must be between the first (9) and 9999999, found 1"),
+                c("animation shutter with a settings shutter", "settings { shutter 0 1 }\nanimation { frames 1 9 }",
+                        "1:12: 'shutter' in settings does not combine with the animation at 2:1: each frame's shutter is set by the animation's shutter angle"),
                 // Ranges that keep every pixel finite (lt.spindulys.math.Ranges, docs/scene-format.md "Ranges of numbers").
                 c("light intensity 1e308", "light { position 0 5 0  intensity 1e308 }", "1:35: number '1e308' is out of range: scene numbers are at most 1e15 in magnitude"),
                 c("light intensity just over 1e15", "light { position 0 5 0  intensity 1.0000001e15 }", "1:35: number '1.0000001e15' is out of range: scene numbers are at most 1e15 in magnitude"),

@@ -91,6 +91,15 @@ class SceneFormatDocTest {
         assertEquals(new LinkedHashSet<>(names(SceneGrammar.MOTION.keys())), keyRows(section(doc(), "Motion (`motion`)")));
     }
 
+    /** The keys, key pose and turntable blocks of an animation are not statements either. */
+    @Test
+    void animationBlockKeysAreDocumented() throws IOException {
+        String doc = doc();
+        assertEquals(new LinkedHashSet<>(names(SceneGrammar.KEYS.keys())), keyRows(section(doc, "Keys (`keys`)")));
+        assertEquals(new LinkedHashSet<>(names(SceneGrammar.KEY.keys())), keyRows(section(doc, "Key poses (`key`)")));
+        assertEquals(new LinkedHashSet<>(names(SceneGrammar.TURNTABLE.keys())), keyRows(section(doc, "Turntable (`turntable`)")));
+    }
+
     @Test
     void everyExampleParses() throws IOException {
         Matcher m = DAT_BLOCK.matcher(doc());

@@ -23,7 +23,7 @@ import lt.spindulys.scene.SceneBuilder;
  * Renders every scene in scenes/ (and its subfolders) small and compares it with its golden image
  * in src/test/resources/golden/ (the path below scenes/, '/' as '_', .png). A pixel fails when a
  * channel differs by more than {@value #THRESHOLD}/255; the test fails when more than
- * {@value #ALLOWED_FRACTION} of the pixels fail. On failure it writes the actual image and an
+ * {@value #ALLOWED_FRACTION} of the pixels fail. An animated scene is rendered at its first frame. On failure it writes the actual image and an
  * amplified diff under target/regression/.
  *
  * <p>Regenerate the goldens after an intended change with
@@ -60,6 +60,8 @@ class RegressionRenderTest {
         RenderSettings s = b.settings();
         int h = Math.max(1, (int) Math.round(WIDTH / s.aspect()));
         b.settings(s.toBuilder().size(WIDTH, h).samplesPerPixel(Math.min(s.samplesPerPixel(), MAX_SPP)).build());
+        // An animation is compared at its first frame (its shutter and seed).
+        if (b.animation() != null) b = b.forFrame(b.animation().first());
         boolean srgb = s.srgb();
         FrameBuffer actual = Renderer.render(b.build(), 2, ProgressListener.NONE).frame();
 
