@@ -111,6 +111,9 @@ final class AssembleCommand {
         List<TileFile.Placement> placements = new ArrayList<>(files.size());
         for (Path f : files) placements.add(TileFile.readPlacement(f));
         TileFile.Placement first = placements.get(0);
+        if (frame != null && first.frame() != null && !first.frame().equals(frame)) {
+            throw new IllegalArgumentException(files.get(0) + ": a tile of frame " + first.frame() + ", but --frame " + frame + " was given");
+        }
         int w = first.frameWidth(), h = first.frameHeight();
         checkCover(files, placements, w, h);
 
@@ -186,6 +189,10 @@ final class AssembleCommand {
                 throw new IllegalArgumentException(files.get(k) + ": a tile of a " + p.frameWidth() + "x" + p.frameHeight() + " frame, but "
                         + files.get(0) + " is of a " + w + "x" + h + " frame");
             }
+            if (!java.util.Objects.equals(p.frame(), placements.get(0).frame())) {
+                throw new IllegalArgumentException(files.get(k) + ": a tile of " + frameName(p.frame()) + ", but " + files.get(0) + " is of "
+                        + frameName(placements.get(0).frame()) + ": tiles of one frame only");
+            }
             area += p.region().pixels();
         }
         // Sorted by top row, a tile can only overlap those that start above its bottom: nearly linear for bands.
@@ -208,6 +215,8 @@ final class AssembleCommand {
                     + missing(placements, w, h) + ": a tile is missing");
         }
     }
+
+    private static String frameName(Integer frame) { return frame == null ? "a still" : "frame " + frame; }
 
     /** ", e.g. rows 40 to 59 (no tile has them)" for tiles that cover whole rows and leave some out, else "". */
     private static String missing(List<TileFile.Placement> placements, int w, int h) {

@@ -20,7 +20,8 @@ import lt.spindulys.limits.InputFiles;
 /**
  * A rendered region of a frame as a file: an 8-bit RGB PNG of the region's size whose placement
  * in the frame is recorded in a PNG {@code tEXt} chunk, keyword {@value #KEYWORD}, text
- * {@code X0,X1,Y0,Y1 of WxH} (the region's half-open pixel bounds and the whole frame's size),
+ * {@code X0,X1,Y0,Y1 of WxH} (the region's half-open pixel bounds and the whole frame's size,
+ * followed by {@code , frame N} for a frame of an animation),
  * e.g. {@code 0,200,37,75 of 200x150}. The chunk comes right after the header, so the placement is
  * read without decoding the pixels. Any PNG viewer shows a tile as an ordinary image; the
  * {@code render assemble} command reads the placements, checks that the tiles cover the frame
@@ -40,25 +41,40 @@ public final class TileFile {
     private TileFile() {}
 
     /**
-     * Where a tile belongs: its region of a {@code frameWidth x frameHeight} frame.
+     * Where a tile belongs: its region of a {@code frameWidth x frameHeight} frame, and the
+     * animation's frame number it was rendered for (null for a still), so that tiles of different
+     * frames are not put together.
      *
      * @param region      the pixels the tile holds
      * @param frameWidth  the whole frame's width
      * @param frameHeight the whole frame's height
+     * @param frame       the animation frame, or null for a still
      */
-    public record Placement(PixelRegion region, int frameWidth, int frameHeight) {
+    public record Placement(PixelRegion region, int frameWidth, int frameHeight, Integer frame) {
+        private static final String FORM = "expected 'X0,X1,Y0,Y1 of WxH' or 'X0,X1,Y0,Y1 of WxH, frame N'";
+
         /**
          * Checks that the region lies inside the frame.
          *
-         * @throws IllegalArgumentException if it does not, or the frame is empty
+         * @throws IllegalArgumentException if it does not, the frame is empty or its number negative
          */
         public Placement {
             if (frameWidth < 1 || frameHeight < 1) throw new IllegalArgumentException("a frame is at least 1x1, found " + frameWidth + "x" + frameHeight);
+            if (frame != null && frame < 0) throw new IllegalArgumentException("a frame number is 0 or more, found " + frame);
             region.checkInside(frameWidth, frameHeight);
         }
 
-        /** {@return the chunk's text, e.g. {@code 0,200,37,75 of 200x150}} */
-        public String text() { return region + " of " + frameWidth + "x" + frameHeight; }
+        /**
+         * A still's placement.
+         *
+         * @param region      the pixels the tile holds
+         * @param frameWidth  the whole frame's width
+         * @param frameHeight the whole frame's height
+         */
+        public Placement(PixelRegion region, int frameWidth, int frameHeight) { this(region, frameWidth, frameHeight, null); }
+
+        /** {@return the chunk's text, e.g. {@code 0,200,37,75 of 200x150} or {@code 0,200,37,75 of 200x150, frame 7}} */
+        public String text() { return region + " of " + frameWidth + "x" + frameHeight + (frame == null ? "" : ", frame " + frame); }
 
         /**
          * Reads {@link #text()}.
@@ -70,12 +86,15 @@ public final class TileFile {
         public static Placement parse(String text) {
             int of = text.indexOf(" of ");
             int x = of < 0 ? -1 : text.indexOf('x', of);
-            if (of < 0 || x < 0) throw new IllegalArgumentException("expected 'X0,X1,Y0,Y1 of WxH', found '" + text + "'");
+            if (of < 0 || x < 0) throw new IllegalArgumentException(FORM + ", found '" + text + "'");
             PixelRegion r = PixelRegion.parse(text.substring(0, of));
+            int comma = text.indexOf(", frame ", x);
+            String height = comma < 0 ? text.substring(x + 1) : text.substring(x + 1, comma);
             try {
-                return new Placement(r, Integer.parseInt(text.substring(of + 4, x)), Integer.parseInt(text.substring(x + 1)));
+                Integer frame = comma < 0 ? null : Integer.valueOf(text.substring(comma + ", frame ".length()));
+                return new Placement(r, Integer.parseInt(text.substring(of + 4, x)), Integer.parseInt(height), frame);
             } catch (NumberFormatException e) {
-                throw new IllegalArgumentException("expected 'X0,X1,Y0,Y1 of WxH', found '" + text + "'");
+                throw new IllegalArgumentException(FORM + ", found '" + text + "'");
             }
         }
     }

@@ -363,7 +363,7 @@ public final class RenderJob {
             if (output != null) ImageWriter.checkPassOutputs(output, s.aovs()); // the image itself was checked first
         }
         enter(Stage.RENDER);
-        RenderResult result = Renderer.render(built, threads, progress, cancelled, tiles, region).withTimes(load, build);
+        RenderResult result = Renderer.render(built, threads, progress, cancelled, tiles, region).withTimes(load, build).ofFrame(frame);
         if (output != null) {
             enter(Stage.WRITE);
             result.write(output, jpegQuality);

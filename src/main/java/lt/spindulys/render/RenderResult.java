@@ -28,6 +28,8 @@ public final class RenderResult {
     private final RenderStats stats;
     private final double loadSeconds, buildSeconds;
     private final PixelRegion region;
+    /** The animation frame rendered, or null for a still: recorded in a tile's placement. */
+    private final Integer animationFrame;
     private final java.util.List<String> subdivision, structures;
 
     RenderResult(RenderSettings settings, FrameBuffer frame, AovFrame passes, RenderStats stats, java.util.List<String> subdivision,
@@ -37,12 +39,14 @@ public final class RenderResult {
 
     private RenderResult(RenderSettings settings, FrameBuffer frame, AovFrame passes, RenderStats stats, java.util.List<String> subdivision,
                          java.util.List<String> structures, double loadSeconds, double buildSeconds) {
-        this(settings, frame, passes, stats, subdivision, structures, loadSeconds, buildSeconds, null);
+        this(settings, frame, passes, stats, subdivision, structures, loadSeconds, buildSeconds, null, null);
     }
 
     private RenderResult(RenderSettings settings, FrameBuffer frame, AovFrame passes, RenderStats stats, java.util.List<String> subdivision,
-                         java.util.List<String> structures, double loadSeconds, double buildSeconds, PixelRegion region) {
+                         java.util.List<String> structures, double loadSeconds, double buildSeconds, PixelRegion region,
+                         Integer animationFrame) {
         this.region = region;
+        this.animationFrame = animationFrame;
         this.subdivision = java.util.List.copyOf(subdivision);
         this.structures = java.util.List.copyOf(structures);
         this.settings = Objects.requireNonNull(settings);
@@ -55,12 +59,17 @@ public final class RenderResult {
 
     /** This result with the times a job spent before rendering. */
     RenderResult withTimes(double load, double build) {
-        return new RenderResult(settings, frame, passes, stats, subdivision, structures, load, build, region);
+        return new RenderResult(settings, frame, passes, stats, subdivision, structures, load, build, region, animationFrame);
     }
 
     /** This result as the render of {@code part} of the frame its settings describe (null: a render of the frame, not of a region). */
     RenderResult inRegion(PixelRegion part) {
-        return new RenderResult(settings, frame, passes, stats, subdivision, structures, loadSeconds, buildSeconds, part);
+        return new RenderResult(settings, frame, passes, stats, subdivision, structures, loadSeconds, buildSeconds, part, animationFrame);
+    }
+
+    /** This result as the render of animation frame {@code n} (null: a still). */
+    RenderResult ofFrame(Integer n) {
+        return new RenderResult(settings, frame, passes, stats, subdivision, structures, loadSeconds, buildSeconds, region, n);
     }
 
     /**
@@ -183,7 +192,7 @@ public final class RenderResult {
             return;
         }
         checkTileOutput(out);
-        ImageWriter.writeAtomically(out, TileFile.encoder(frame, opts, new TileFile.Placement(region, settings.width(), settings.height())));
+        ImageWriter.writeAtomically(out, TileFile.encoder(frame, opts, new TileFile.Placement(region, settings.width(), settings.height(), animationFrame)));
     }
 
     /**

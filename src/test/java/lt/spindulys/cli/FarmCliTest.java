@@ -146,6 +146,33 @@ class FarmCliTest {
     }
 
     @Test
+    void tilesRecordTheirAnimationFrameAndTilesOfTwoFramesAreRefused() throws IOException {
+        Path scene = dir.resolve("anim.dat");
+        Files.writeString(scene, SCENE + "animation { frames 1 2  fps 2  shutter 90 }\n");
+        for (int f = 1; f <= 2; f++) {
+            for (int i = 1; i <= 2; i++) {
+                CliTest.Run r = run(scene.toString(), "--frame", String.valueOf(f), "--tile", i + "/2",
+                        "-o", dir.resolve("a_000" + f + ".tile_" + i + "_of_2.png").toString(), "--quiet");
+                assertEquals(0, r.status(), r.err());
+            }
+        }
+        assertEquals(Integer.valueOf(2), lt.spindulys.image.TileFile.readPlacement(dir.resolve("a_0002.tile_1_of_2.png")).frame());
+        // A still's tile records no frame.
+        assertEquals(null, lt.spindulys.image.TileFile.readPlacement(whole(scene(), "--tile", "1/2")).frame());
+        assertRefused("a tile of frame 2, but", dir.resolve("a_0001.tile_1_of_2.png").toString(), dir.resolve("a_0002.tile_2_of_2.png").toString());
+        // The frame asked for must be the one the tiles were rendered for, whatever their names say.
+        for (int i = 1; i <= 2; i++) Files.copy(dir.resolve("a_0001.tile_" + i + "_of_2.png"), dir.resolve("c_0002.tile_" + i + "_of_2.png"));
+        Path out = dir.resolve("b_2.png");
+        CliTest.Run r = run("assemble", "--frame", "2", dir.resolve("c_####.tile_*_of_2.png").toString(), "-o", dir.resolve("b_#.png").toString());
+        assertEquals(2, r.status(), r.err());
+        assertTrue(r.err().contains("a tile of frame 1, but --frame 2 was given"), r.err());
+        assertFalse(Files.exists(out));
+        r = run("assemble", "--frame", "2", dir.resolve("a_####.tile_*_of_2.png").toString(), "-o", dir.resolve("b_#.png").toString(), "--quiet");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(Files.exists(out));
+    }
+
+    @Test
     void tilesThatDoNotCoverTheFrameExactlyOnceAreRefused() throws IOException {
         Path scene = scene();
         String[] t = new String[3];
