@@ -100,8 +100,9 @@ final class FrameOptions {
      *
      * @param passes the render passes written beside each image
      * @param log where "skipped" lines go, or null
+     * @return how many frames were rendered (0 when --skip-existing found them all)
      */
-    void render(FrameRange frames, OutputPattern pattern, Set<Aov> passes, PrintStream log, FrameRenderer renderer)
+    int render(FrameRange frames, OutputPattern pattern, Set<Aov> passes, PrintStream log, FrameRenderer renderer)
             throws IOException, InterruptedException, UsageException {
         List<Integer> todo = new ArrayList<>();
         for (int i = 0; i < frames.count(); i++) {
@@ -114,6 +115,7 @@ final class FrameOptions {
             }
         }
         for (int i = 0; i < todo.size(); i++) renderer.render(pattern.forFrame(todo.get(i)), todo.get(i), i, todo.size());
+        return todo.size();
     }
 
     /** True if the image and each pass beside it are regular files. */

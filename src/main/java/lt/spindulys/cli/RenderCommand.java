@@ -198,11 +198,13 @@ final class RenderCommand {
             FrameRange list = frames.frames(a.builder.animation(), scene);
             readSeconds = a.loadSeconds;
             OutputPattern pattern = frames.pattern(output, outputDefaulted, list);
-            frames.render(list, pattern, aovs != null ? aovs : a.builder.settings().aovs(), quiet ? null : err,
+            int rendered = frames.render(list, pattern, aovs != null ? aovs : a.builder.settings().aovs(), quiet ? null : err,
                     (path, n, index, count) -> {
                         if (farmProgress != null) farmProgress.item(path.toString(), index, count);
                         render(out, err, path, n, a.builder);
                     });
+            // A retried task whose frames all exist is done too: the manager is told so.
+            if (rendered == 0 && farmProgress != null) farmProgress.wrote("every frame of " + list + " exists (--skip-existing)");
             return 0;
         }
     }

@@ -170,6 +170,13 @@ class FarmCliTest {
         r = run("assemble", "--frame", "2", dir.resolve("a_####.tile_*_of_2.png").toString(), "-o", dir.resolve("b_#.png").toString(), "--quiet");
         assertEquals(0, r.status(), r.err());
         assertTrue(Files.exists(out));
+
+        // A retried task whose frames all exist still tells an OpenJD manager it is done.
+        String frames = dir.resolve("d_####.png").toString();
+        assertEquals(0, run(scene.toString(), "--frames", "1-2", "-o", frames, "--quiet").status());
+        r = run(scene.toString(), "--frames", "1-2", "-o", frames, "--skip-existing", "--progress", "openjd");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().contains("openjd_progress: 100.0"), r.out());
     }
 
     @Test
