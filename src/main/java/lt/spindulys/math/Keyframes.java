@@ -439,23 +439,10 @@ public final class Keyframes implements Moving {
             speed = Math.max(speed, norm * (move + turn * scaled + growing));
             size = Math.max(size, Math.abs(x) + Math.abs(y) + Math.abs(z) + scaled + most[0] + most[1] + most[2]);
         }
-        double minX = Double.POSITIVE_INFINITY, minY = minX, minZ = minX, maxX = -minX, maxY = maxX, maxZ = maxX;
         double dt = (close - open) / SWEEP_STEPS;
-        for (int k = 0; k <= SWEEP_STEPS; k++) {
-            matrices(k == SWEEP_STEPS ? close : open + k * dt, m, null);
-            for (int i = 0; i < 8; i++) {
-                double x = (i & 1) == 0 ? b.minX() : b.maxX(), y = (i & 2) == 0 ? b.minY() : b.maxY(), z = (i & 4) == 0 ? b.minZ() : b.maxZ();
-                double X = m[0] * x + m[1] * y + m[2] * z + m[3];
-                double Y = m[4] * x + m[5] * y + m[6] * z + m[7];
-                double Z = m[8] * x + m[9] * y + m[10] * z + m[11];
-                minX = Math.min(minX, X); maxX = Math.max(maxX, X);
-                minY = Math.min(minY, Y); maxY = Math.max(maxY, Y);
-                minZ = Math.min(minZ, Z); maxZ = Math.max(maxZ, Z);
-            }
-        }
         // Half a step at the corner's top speed, and a little for the rounding of the per-ray transform.
         double pad = dt / 2 * speed + 1e-12 * norm * size;
-        return new Bounds(minX - pad, minY - pad, minZ - pad, maxX + pad, maxY + pad, maxZ + pad);
+        return cornersAtSteps(b, open, close, SWEEP_STEPS, pad, m);
     }
 
     /**

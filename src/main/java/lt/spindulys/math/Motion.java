@@ -254,7 +254,6 @@ public final class Motion implements Moving {
         }
         int steps = (int) Math.min(1 << 16, Math.max(SWEEP_STEPS, Math.ceil(Math.abs(Math.toDegrees(radians)) / SWEEP_DEGREES)));
         double w = Math.abs(radians) / (finish - start), dt = (finish - start) / steps;
-        double minX = Double.POSITIVE_INFINITY, minY = minX, minZ = minX, maxX = -minX, maxY = maxX, maxZ = maxX;
         double pad = 0, size = 0;
         for (int i = 0; i < 8; i++) {
             double x = (i & 1) == 0 ? b.minX() : b.maxX(), y = (i & 2) == 0 ? b.minY() : b.maxY(), z = (i & 4) == 0 ? b.minZ() : b.maxZ();
@@ -265,21 +264,9 @@ public final class Motion implements Moving {
             pad = Math.max(pad, dt * dt / 8 * (w * w * Math.max(q0, q1) + 2 * w * dq));
             size = Math.max(size, Math.max(q0, q1) + Math.abs(px) + Math.abs(py) + Math.abs(pz) + Math.abs(tx) + Math.abs(ty) + Math.abs(tz));
         }
-        for (int k = 0; k <= steps; k++) {
-            matrices(k == steps ? finish : start + k * dt, m, null);
-            for (int i = 0; i < 8; i++) {
-                double x = (i & 1) == 0 ? b.minX() : b.maxX(), y = (i & 2) == 0 ? b.minY() : b.maxY(), z = (i & 4) == 0 ? b.minZ() : b.maxZ();
-                double X = m[0] * x + m[1] * y + m[2] * z + m[3];
-                double Y = m[4] * x + m[5] * y + m[6] * z + m[7];
-                double Z = m[8] * x + m[9] * y + m[10] * z + m[11];
-                minX = Math.min(minX, X); maxX = Math.max(maxX, X);
-                minY = Math.min(minY, Y); maxY = Math.max(maxY, Y);
-                minZ = Math.min(minZ, Z); maxZ = Math.max(maxZ, Z);
-            }
-        }
         // And a little for the rounding of the transform evaluated per ray.
         pad += 1e-12 * size;
-        return new Bounds(minX - pad, minY - pad, minZ - pad, maxX + pad, maxY + pad, maxZ + pad);
+        return cornersAtSteps(b, start, finish, steps, pad, m);
     }
 
     private static void checkOrder(double start, double finish) {

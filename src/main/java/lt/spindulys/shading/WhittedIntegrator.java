@@ -312,7 +312,6 @@ public final class WhittedIntegrator {
      */
     private void areaIllumination(Material m, TracerScratch.PathVertex v, TracerScratch s, double[] out) {
         double kd = m.kd(), ks = v.ks, shininess = m.shininess();
-        double cr = v.colourR, cg = v.colourG, cb = v.colourB;
         double px = v.px, py = v.py, pz = v.pz;
         double nfx = v.nfx, nfy = v.nfy, nfz = v.nfz, snx = v.snx, sny = v.sny, snz = v.snz;
         double ox = px + nfx * v.eps, oy = py + nfy * v.eps, oz = pz + nfz * v.eps;
@@ -349,18 +348,7 @@ public final class WhittedIntegrator {
                 double weight = ls[3];
                 if (!shadowTransmission(shadow, dist, s)) continue;
                 double[] t = s.transmission;
-                double ir = lr * weight * t[0], ig = lg * weight * t[1], ib = lb * weight * t[2];
-                double diff = kd * ndotl;
-                out[0] += diff * cr * ir; out[1] += diff * cg * ig; out[2] += diff * cb * ib;
-                if (ks > 0) {
-                    double hx = ux - v.dx, hy = uy - v.dy, hz = uz - v.dz;
-                    double hl = Math.sqrt(hx * hx + hy * hy + hz * hz);
-                    double nh = hl > 0 ? (hx * snx + hy * sny + hz * snz) / hl : 0;
-                    if (nh > 0) {
-                        double spec = ks * Math.pow(nh, shininess);
-                        out[0] += spec * ir; out[1] += spec * ig; out[2] += spec * ib;
-                    }
-                }
+                addLight(v, kd, ks, shininess, ux, uy, uz, ndotl, lr * weight * t[0], lg * weight * t[1], lb * weight * t[2], out);
             }
         }
     }
@@ -374,7 +362,6 @@ public final class WhittedIntegrator {
      */
     private void environmentIllumination(Material m, TracerScratch.PathVertex v, TracerScratch s, double[] out) {
         double kd = m.kd(), ks = v.ks, shininess = m.shininess();
-        double cr = v.colourR, cg = v.colourG, cb = v.colourB;
         double nfx = v.nfx, nfy = v.nfy, nfz = v.nfz, snx = v.snx, sny = v.sny, snz = v.snz;
         double ox = v.px + nfx * v.eps, oy = v.py + nfy * v.eps, oz = v.pz + nfz * v.eps;
         double[] ls = s.lightSample;
@@ -399,17 +386,26 @@ public final class WhittedIntegrator {
             s.ctx.occluderSlot = (firstSlot + st) & OCCLUDER_MASK;
             if (!shadowTransmission(shadow, 1, s)) continue;
             double[] t = s.transmission;
-            double ir = lr * t[0], ig = lg * t[1], ib = lb * t[2];
-            double diff = kd * ndotl;
-            out[0] += diff * cr * ir; out[1] += diff * cg * ig; out[2] += diff * cb * ib;
-            if (ks > 0) {
-                double hx = ux - v.dx, hy = uy - v.dy, hz = uz - v.dz;
-                double hl = Math.sqrt(hx * hx + hy * hy + hz * hz);
-                double nh = hl > 0 ? (hx * snx + hy * sny + hz * snz) / hl : 0;
-                if (nh > 0) {
-                    double spec = ks * Math.pow(nh, shininess);
-                    out[0] += spec * ir; out[1] += spec * ig; out[2] += spec * ib;
-                }
+            addLight(v, kd, ks, shininess, ux, uy, uz, ndotl, lr * t[0], lg * t[1], lb * t[2], out);
+        }
+    }
+
+    /**
+     * Adds to out[0..2] the diffuse and Blinn-Phong specular reflection at v of light (ir, ig, ib)
+     * arriving from unit direction (ux, uy, uz), whose cosine with the shading normal is ndotl:
+     * one sample of an area light or of the environment.
+     */
+    private static void addLight(TracerScratch.PathVertex v, double kd, double ks, double shininess,
+                                 double ux, double uy, double uz, double ndotl, double ir, double ig, double ib, double[] out) {
+        double diff = kd * ndotl;
+        out[0] += diff * v.colourR * ir; out[1] += diff * v.colourG * ig; out[2] += diff * v.colourB * ib;
+        if (ks > 0) {
+            double hx = ux - v.dx, hy = uy - v.dy, hz = uz - v.dz;
+            double hl = Math.sqrt(hx * hx + hy * hy + hz * hz);
+            double nh = hl > 0 ? (hx * v.snx + hy * v.sny + hz * v.snz) / hl : 0;
+            if (nh > 0) {
+                double spec = ks * Math.pow(nh, shininess);
+                out[0] += spec * ir; out[1] += spec * ig; out[2] += spec * ib;
             }
         }
     }
