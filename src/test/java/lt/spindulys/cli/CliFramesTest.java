@@ -23,13 +23,7 @@ import lt.spindulys.scene.Animation;
 class CliFramesTest {
     @TempDir Path dir;
 
-    record Run(int status, String out, String err) {}
-
-    static Run run(String... args) {
-        ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
-        int status = Main.run(args, new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8));
-        return new Run(status, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
-    }
+    private static CliTest.Run run(String... args) { return CliTest.run(args); }
 
     /**
      * Everything that moves across and within frames: a lens on a turntable camera, smooth keys, a
@@ -61,7 +55,7 @@ class CliFramesTest {
     @Test
     void framesRenderedInChunksEqualTheSameFramesFromOneRun() throws IOException {
         Path s = scene(ANIMATED);
-        Run whole = run(s.toString(), "-o", out("whole_####.pfm"), "--quiet");
+        CliTest.Run whole = run(s.toString(), "-o", out("whole_####.pfm"), "--quiet");
         assertEquals(0, whole.status(), whole.err());
         for (int f = 1; f <= 6; f++) assertTrue(Files.exists(dir.resolve("whole_000" + f + ".pfm")), "frame " + f);
         assertEquals(0, run(s.toString(), "--frames", "1-2", "-o", out("chunk_####.pfm"), "--quiet").status());
@@ -94,7 +88,7 @@ class CliFramesTest {
         Path still = dir.resolve("still.dat");
         Files.writeString(still, body + "sphere { radius 0.4  rotate z 90  translate 1 0.5 0 }");
         assertEquals(0, run(animated.toString(), "--frame", "3", "-o", out("frame.pfm"), "--quiet").status());
-        Run r = run(still.toString(), "--seed", Long.toString(Animation.frameSeed(0, 3)), "-o", out("still.pfm"), "--quiet");
+        CliTest.Run r = run(still.toString(), "--seed", Long.toString(Animation.frameSeed(0, 3)), "-o", out("still.pfm"), "--quiet");
         assertEquals(0, r.status(), r.err());
         assertArrayEquals(bytes("still.pfm"), bytes("frame.pfm"));
     }
@@ -102,7 +96,7 @@ class CliFramesTest {
     @Test
     void severalFramesNeedAPlaceForTheFrameNumber() throws IOException {
         Path s = scene(ANIMATED);
-        Run r = run(s.toString(), "-o", out("out.png"), "--quiet");
+        CliTest.Run r = run(s.toString(), "-o", out("out.png"), "--quiet");
         assertEquals(2, r.status());
         assertEquals("render: -o " + out("out.png") + ": 6 frames (1-6) need a run of '#' in the output name for the frame number, such as out_####.png, or one frame (--frame N)\n", r.err());
         r = run(s.toString(), "--frames", "2-4:2", "-o", out("out.png"), "--quiet");
@@ -158,7 +152,7 @@ class CliFramesTest {
         byte[] marker = "finished by an earlier task".getBytes(StandardCharsets.UTF_8);
         Files.write(dir.resolve("s_0001.pfm"), marker);
         Files.delete(dir.resolve("s_0002.pfm"));
-        Run r = run(s.toString(), "--frames", "1-3", "-o", out("s_####.pfm"), "--skip-existing");
+        CliTest.Run r = run(s.toString(), "--frames", "1-3", "-o", out("s_####.pfm"), "--skip-existing");
         assertEquals(0, r.status(), r.err());
         assertArrayEquals(marker, bytes("s_0001.pfm"), "a finished frame is not rendered again");
         assertArrayEquals(second, bytes("s_0002.pfm"), "a missing one is, the same as before");
@@ -175,7 +169,7 @@ class CliFramesTest {
         Path s = scene(ANIMATED);
         assertEquals(0, run(s.toString(), "--frame", "2", "--aov", "depth", "-o", out("p_####.png"), "--quiet").status());
         Files.delete(dir.resolve("p_0002.depth.pfm"));
-        Run r = run(s.toString(), "--frame", "2", "--aov", "depth", "-o", out("p_####.png"), "--skip-existing");
+        CliTest.Run r = run(s.toString(), "--frame", "2", "--aov", "depth", "-o", out("p_####.png"), "--skip-existing");
         assertEquals(0, r.status(), r.err());
         assertTrue(r.err().contains("wrote " + out("p_0002.png")), r.err());
         assertTrue(Files.exists(dir.resolve("p_0002.depth.pfm")));
@@ -207,7 +201,7 @@ class CliFramesTest {
                 "render: ",
         };
         for (int i = 0; i < cases.length; i++) {
-            Run r = run(cases[i]);
+            CliTest.Run r = run(cases[i]);
             assertEquals(2, r.status(), String.join(" ", cases[i]) + ": " + r.err());
             assertTrue(r.err().startsWith(messages[i]), r.err());
             assertEquals(1, r.err().lines().count(), r.err());
@@ -222,7 +216,7 @@ class CliFramesTest {
     void aFailingFrameStopsTheRun() throws IOException {
         Path s = scene(ANIMATED);
         Files.createDirectory(dir.resolve("w_0002.png")); // frame 2's output cannot be written
-        Run r = run(s.toString(), "--frames", "1-3", "-o", out("w_####.png"), "--quiet");
+        CliTest.Run r = run(s.toString(), "--frames", "1-3", "-o", out("w_####.png"), "--quiet");
         assertTrue(r.status() != 0);
         assertEquals(1, r.err().lines().count(), r.err());
         assertTrue(r.err().contains("w_0002.png"), r.err());
