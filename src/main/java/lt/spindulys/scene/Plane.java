@@ -102,6 +102,8 @@ public final class Plane extends GObject {
     @Override public Bounds localBounds() { return Bounds.INFINITE; }
     @Override public boolean isClosed() { return true; }
 
+    @Override public boolean flat() { return true; }
+
     /** The whole object is one cheap test: worth trying first as the thread's last occluder. */
     @Override int blockingPart(TraceContext ctx) { return 0; }
 

@@ -275,7 +275,7 @@ public final class Scene {
             if (last != null && last.occludedByPart(ray, ctx.occluderParts[slot], ctx)) return true;
         }
         for (GObject o : unbounded) {
-            if (o.occluded(ray, ctx)) {
+            if (o != ctx.shadowReceiver && o.occluded(ray, ctx)) {
                 rememberOccluder(o, ctx);
                 return true;
             }
@@ -310,8 +310,9 @@ public final class Scene {
         }
 
         @Override public boolean occluded(int i, Ray ray, TraversalScratch ctx) {
-            if (!objects[i].occluded(ray, (TraceContext) ctx)) return false;
-            scene.rememberOccluder(objects[i], (TraceContext) ctx);
+            TraceContext c = (TraceContext) ctx;
+            if (objects[i] == c.shadowReceiver || !objects[i].occluded(ray, c)) return false;
+            scene.rememberOccluder(objects[i], c);
             return true;
         }
     }

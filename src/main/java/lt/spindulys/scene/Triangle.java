@@ -150,6 +150,8 @@ public final class Triangle extends GObject {
     @Override public Bounds localBounds() { return Bounds.of(a, b).union(c.x(), c.y(), c.z()); }
     @Override public boolean isClosed() { return false; }
 
+    @Override public boolean flat() { return true; }
+
     /** Möller–Trumbore; every rejection is written so that a NaN rejects too. */
     /** The whole object is one cheap test: worth trying first as the thread's last occluder. */
     @Override int blockingPart(TraceContext ctx) { return 0; }

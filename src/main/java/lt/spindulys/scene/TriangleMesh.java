@@ -66,6 +66,8 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     private final int triangleCount, degenerateCount;
     private final boolean needsVertexNormals;
     private final boolean closed;
+    /** Every vertex of the triangles on one plane (see {@link #flat()}). */
+    private final boolean flat;
     private final Bounds bounds;
     /** Set by {@link #freeze}, before the scene is shared: the structure of {@link #root()} for the scene's kind. */
     private Accelerator accel;
@@ -166,6 +168,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         needsVertexNormals = anyWithout;
         bounds = k == 0 ? Bounds.EMPTY : new Bounds(x0, y0, z0, x1, y1, z1);
         closed = k > 0 && MeshTopology.everyEdgeTwice(tri, triangleCount, pos);
+        flat = k > 0 && planar(tri, k, pos, bounds);
         smooth(data.normalIndex() != null);
     }
 
@@ -190,6 +193,7 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
         degenerateCount = p.degenerateCount;
         needsVertexNormals = p.needsVertexNormals;
         closed = p.closed;
+        flat = p.flat;
         bounds = p.bounds;
         smooth = p.smooth;
     }
@@ -429,6 +433,31 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     @Override public String kind() { return "mesh"; }
     @Override public Bounds localBounds() { return bounds; }
     @Override public boolean isClosed() { return closed; }
+
+    @Override public boolean flat() { return flat; }
+
+    /**
+     * True if every vertex of the k triangles lies on the plane of the first, to within 1e-12 of
+     * the bounds' size: far below the offset a shadow ray starts at, so no such ray can meet the
+     * mesh again.
+     */
+    private static boolean planar(int[] tri, int k, double[] pos, Bounds b) {
+        int a = 3 * tri[0], c1 = 3 * tri[1], c2 = 3 * tri[2];
+        double ux = pos[c1] - pos[a], uy = pos[c1 + 1] - pos[a + 1], uz = pos[c1 + 2] - pos[a + 2];
+        double vx = pos[c2] - pos[a], vy = pos[c2 + 1] - pos[a + 1], vz = pos[c2 + 2] - pos[a + 2];
+        double nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+        double len = Math.sqrt(nx * nx + ny * ny + nz * nz);
+        if (!(len > 0)) return false;
+        nx /= len; ny /= len; nz /= len;
+        double size = Math.max(b.maxX() - b.minX(), Math.max(b.maxY() - b.minY(), b.maxZ() - b.minZ()));
+        double tolerance = 1e-12 * size;
+        for (int i = 0; i < 3 * k; i++) {
+            int v = 3 * tri[i];
+            double d = (pos[v] - pos[a]) * nx + (pos[v + 1] - pos[a + 1]) * ny + (pos[v + 2] - pos[a + 2]) * nz;
+            if (!(Math.abs(d) <= tolerance)) return false;
+        }
+        return true;
+    }
 
     /** Places the mesh and takes the shared structure of the context's kind, built if it is the first to ask. */
     @Override

@@ -253,6 +253,18 @@ public final class WhittedIntegrator {
         double cr = v.colourR, cg = v.colourG, cb = v.colourB, ks = v.ks;
         double r = ka * ia.r() * cr, g = ka * ia.g() * cg, b = ka * ia.b() * cb;
         double kd = m.kd();
+        // A flat receiver cannot shadow itself: its shadow rays skip it (opaque shadows only).
+        s.ctx.shadowReceiver = v.hit.object.flat() ? v.hit.object : null;
+        try {
+            localLights(m, v, s, out, r, g, b, kd, ks);
+        } finally {
+            s.ctx.shadowReceiver = null;
+        }
+    }
+
+    /** {@link #localIllumination}'s lights, from the ambient term (r, g, b) on. */
+    private void localLights(Material m, TracerScratch.PathVertex v, TracerScratch s, double[] out, double r, double g, double b, double kd, double ks) {
+        double cr = v.colourR, cg = v.colourG, cb = v.colourB;
         if (kd > 0 || ks > 0) {
             double px = v.px, py = v.py, pz = v.pz;
             double nfx = v.nfx, nfy = v.nfy, nfz = v.nfz, snx = v.snx, sny = v.sny, snz = v.snz;

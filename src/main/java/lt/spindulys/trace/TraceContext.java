@@ -38,6 +38,13 @@ public final class TraceContext extends TraversalScratch {
     public final int[] occluderParts = new int[OCCLUDER_SLOTS];
     public int occluderSlot;
 
+    /**
+     * The flat top-level object the current shadow rays leave from, or null: it cannot block
+     * them (TracedObject#flat), so the shadow query skips it without a test. Set by the
+     * integrator for one shaded point's lights and cleared after.
+     */
+    public TracedObject shadowReceiver;
+
     /** Grow-once scratch for the crossings of a line with a mesh (TriangleSpans), and how many are in it. */
     public double[] crossings = new double[64];
     public int crossingCount;

@@ -49,4 +49,13 @@ public interface TracedObject {
      * @return the material
      */
     Material material(int prim, int sub);
+
+    /**
+     * True if the object's whole surface lies in one plane (a plane, a triangle, a planar mesh):
+     * a shadow ray leaving a point of it, off the surface towards the light, cannot meet it
+     * again, so the shadow query skips it (Scene#occluded with TraceContext#shadowReceiver).
+     *
+     * @return whether the surface is flat
+     */
+    default boolean flat() { return false; }
 }
