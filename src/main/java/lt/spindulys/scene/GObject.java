@@ -535,7 +535,7 @@ public abstract class GObject implements TracedObject, Cloneable {
         // A farther candidate found earlier on this ray may have been a subtracted CSG surface.
         hit.flipNormal = false;
         // A leaf's own (its face group's, if it has group materials); an enclosing object with a material overrides it after.
-        hit.material = palette == null ? material : material(hit.prim, hit.sub);
+        hit.material = material(hit.prim, hit.sub);
         hit.materialSpace = null;
         return true;
     }

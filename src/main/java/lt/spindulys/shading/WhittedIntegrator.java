@@ -250,65 +250,42 @@ public final class WhittedIntegrator {
     private void localIllumination(Material m, TracerScratch.PathVertex v, TracerScratch s, double[] out) {
         Color ia = settings.ambient();
         double ka = m.ka();
-        double cr = v.colourR, cg = v.colourG, cb = v.colourB, ks = v.ks;
-        double r = ka * ia.r() * cr, g = ka * ia.g() * cg, b = ka * ia.b() * cb;
-        double kd = m.kd();
+        out[0] = ka * ia.r() * v.colourR; out[1] = ka * ia.g() * v.colourG; out[2] = ka * ia.b() * v.colourB;
+        if (!(m.kd() > 0 || v.ks > 0)) return;
         // A flat receiver cannot shadow itself: its shadow rays skip it (opaque shadows only).
         s.ctx.shadowReceiver = v.hit.object.flat() ? v.hit.object : null;
-        try {
-            localLights(m, v, s, out, r, g, b, kd, ks);
-        } finally {
-            s.ctx.shadowReceiver = null;
-        }
+        pointIllumination(m, v, s, out);
+        if (areaLights.length > 0) areaIllumination(m, v, s, out);
+        if (environmentLight != null) environmentIllumination(m, v, s, out);
+        s.ctx.shadowReceiver = null;
     }
 
-    /** {@link #localIllumination}'s lights, from the ambient term (r, g, b) on. */
-    private void localLights(Material m, TracerScratch.PathVertex v, TracerScratch s, double[] out, double r, double g, double b, double kd, double ks) {
-        double cr = v.colourR, cg = v.colourG, cb = v.colourB;
-        if (kd > 0 || ks > 0) {
-            double px = v.px, py = v.py, pz = v.pz;
-            double nfx = v.nfx, nfy = v.nfy, nfz = v.nfz, snx = v.snx, sny = v.sny, snz = v.snz;
-            double ox = px + nfx * v.eps, oy = py + nfy * v.eps, oz = pz + nfz * v.eps;
-            for (int li = 0; li < lights.length; li++) {
-                PointLight light = lights[li];
-                // Shading uses the true point; only the shadow ray starts off the surface.
-                double lx = light.position().x() - px, ly = light.position().y() - py, lz = light.position().z() - pz;
-                double dist2 = lx * lx + ly * ly + lz * lz, dist = Math.sqrt(dist2);
-                if (!(dist > 0)) continue;
-                double ux = lx / dist, uy = ly / dist, uz = lz / dist;
-                if (ux * nfx + uy * nfy + uz * nfz <= 0) continue; // light behind the surface
-                double ndotl = ux * snx + uy * sny + uz * snz;
-                if (ndotl <= 0) continue;
-                Ray shadow = s.shadowRay.set(ox, oy, oz, light.position().x() - ox, light.position().y() - oy, light.position().z() - oz, 0, 1);
-                shadow.time = v.time; // a moving object casts its shadow where it is at the shaded ray's time
-                s.ctx.occluderSlot = li & OCCLUDER_MASK;
-                if (!shadowTransmission(shadow, dist, s)) continue;
-                double[] t = s.transmission;
-                double scale = light.intensity();
-                if (light.falloff() == PointLight.Falloff.INVERSE_SQUARE) scale /= Math.max(dist2, minDistance2);
-                Color lc = light.color();
-                double ir = lc.r() * scale * t[0], ig = lc.g() * scale * t[1], ib = lc.b() * scale * t[2];
-                double diff = kd * ndotl;
-                r += diff * cr * ir; g += diff * cg * ig; b += diff * cb * ib;
-                if (ks > 0) {
-                    double hx = ux - v.dx, hy = uy - v.dy, hz = uz - v.dz;
-                    double hl = Math.sqrt(hx * hx + hy * hy + hz * hz);
-                    double nh = hl > 0 ? (hx * snx + hy * sny + hz * snz) / hl : 0;
-                    if (nh > 0) {
-                        double spec = ks * Math.pow(nh, m.shininess());
-                        r += spec * ir; g += spec * ig; b += spec * ib;
-                    }
-                }
-            }
+    /** Adds to out[0..2] the diffuse and Blinn-Phong specular light from every point light at vertex v (material m). */
+    private void pointIllumination(Material m, TracerScratch.PathVertex v, TracerScratch s, double[] out) {
+        double kd = m.kd(), ks = v.ks, shininess = m.shininess();
+        double px = v.px, py = v.py, pz = v.pz;
+        double nfx = v.nfx, nfy = v.nfy, nfz = v.nfz, snx = v.snx, sny = v.sny, snz = v.snz;
+        double ox = px + nfx * v.eps, oy = py + nfy * v.eps, oz = pz + nfz * v.eps;
+        for (int li = 0; li < lights.length; li++) {
+            PointLight light = lights[li];
+            // Shading uses the true point; only the shadow ray starts off the surface.
+            double lx = light.position().x() - px, ly = light.position().y() - py, lz = light.position().z() - pz;
+            double dist2 = lx * lx + ly * ly + lz * lz, dist = Math.sqrt(dist2);
+            if (!(dist > 0)) continue;
+            double ux = lx / dist, uy = ly / dist, uz = lz / dist;
+            if (ux * nfx + uy * nfy + uz * nfz <= 0) continue; // light behind the surface
+            double ndotl = ux * snx + uy * sny + uz * snz;
+            if (ndotl <= 0) continue;
+            Ray shadow = s.shadowRay.set(ox, oy, oz, light.position().x() - ox, light.position().y() - oy, light.position().z() - oz, 0, 1);
+            shadow.time = v.time; // a moving object casts its shadow where it is at the shaded ray's time
+            s.ctx.occluderSlot = li & OCCLUDER_MASK;
+            if (!shadowTransmission(shadow, dist, s)) continue;
+            double[] t = s.transmission;
+            double scale = light.intensity();
+            if (light.falloff() == PointLight.Falloff.INVERSE_SQUARE) scale /= Math.max(dist2, minDistance2);
+            Color lc = light.color();
+            addLight(v, kd, ks, shininess, ux, uy, uz, ndotl, lc.r() * scale * t[0], lc.g() * scale * t[1], lc.b() * scale * t[2], out);
         }
-        if (sampledLights > 0 && (kd > 0 || ks > 0)) {
-            // The sampled lights' share goes through out: shadowTransmission reuses s.transmission.
-            out[0] = r; out[1] = g; out[2] = b;
-            if (areaLights.length > 0) areaIllumination(m, v, s, out);
-            if (environmentLight != null) environmentIllumination(m, v, s, out);
-            return;
-        }
-        out[0] = r; out[1] = g; out[2] = b;
     }
 
     /** Slots of the thread's occluder cache (TraceContext#occluders), less one: a mask. */
@@ -405,7 +382,7 @@ public final class WhittedIntegrator {
     /**
      * Adds to out[0..2] the diffuse and Blinn-Phong specular reflection at v of light (ir, ig, ib)
      * arriving from unit direction (ux, uy, uz), whose cosine with the shading normal is ndotl:
-     * one sample of an area light or of the environment.
+     * a point light, or one sample of an area light or of the environment.
      */
     private static void addLight(TracerScratch.PathVertex v, double kd, double ks, double shininess,
                                  double ux, double uy, double uz, double ndotl, double ir, double ig, double ib, double[] out) {
