@@ -53,6 +53,8 @@ public final class AnimatedCamera implements Camera {
 
     @Override public boolean usesLens() { return base.usesLens(); }
 
+    @Override public boolean moves() { return true; }
+
     /**
      * The camera standing still where it is at {@code time}: for what needs one view of the
      * frame, such as choosing adaptive subdivision levels.

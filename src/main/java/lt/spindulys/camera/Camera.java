@@ -33,4 +33,12 @@ public interface Camera {
      * @return whether the lens sample moves the ray
      */
     default boolean usesLens() { return false; }
+
+    /**
+     * True if this camera's rays depend on their time (a camera carried by keys): the renderer
+     * then draws each sample's time even when no object moves.
+     *
+     * @return whether the camera moves while the shutter is open
+     */
+    default boolean moves() { return false; }
 }

@@ -209,9 +209,9 @@ public final class Renderer {
                     counters[index] = new long[4];
                     return;
                 }
-                // Time samples only where something moves and each sample has its own time.
+                // Time samples only where something moves (an object or the camera) and each sample has its own time.
                 PixelSampler sampler = new PixelSampler(pass.samples, scene.camera().usesLens() ? scene.camera().lensPattern() : null,
-                        scene.hasMovingObjects() && Double.isNaN(pass.time));
+                        (scene.hasMovingObjects() || scene.camera().moves()) && Double.isNaN(pass.time));
                 Ray ray = new Ray();
                 double[] colour = new double[4];
                 try {

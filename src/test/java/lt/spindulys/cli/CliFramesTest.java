@@ -72,6 +72,30 @@ class CliFramesTest {
         assertFalse(Arrays.equals(bytes("whole_0004.pfm"), bytes("lens.pfm")));
     }
 
+    /** A turning camera blurs a still scene across its shutter: the samples draw times though no object moves. */
+    @Test
+    void aMovingCameraAloneBlursTheFrame() throws IOException {
+        String body = """
+                settings { width 64 height 48 samples 16 background 0 0 0 ambient 1 1 1 }
+                camera { eye 0 1 -6 lookat 0 0 0 fov 40 turntable { axis 0 1 0 center 0 0 0 } }
+                sphere { center 1.5 0 0 radius 0.5 material { color 1 1 1 ka 1 kd 0 } }
+                """;
+        Path blurred = scene("animation { frames 1 2 fps 1 shutter 180 }\n" + body);
+        assertEquals(0, run(blurred.toString(), "--frame", "1", "-o", out("blurred.png"), "--quiet").status());
+        Path sharp = Files.writeString(dir.resolve("sharp.dat"), "animation { frames 1 2 fps 1 shutter 0 }\n" + body);
+        assertEquals(0, run(sharp.toString(), "--frame", "1", "-o", out("sharp.png"), "--quiet").status());
+        int streak = partlyCovered(dir.resolve("blurred.png")), edge = partlyCovered(dir.resolve("sharp.png"));
+        assertTrue(streak > 3 * edge, "partly covered pixels: " + streak + " blurred, " + edge + " sharp");
+    }
+
+    /** Pixels the white sphere covers only in part: its anti-aliased edge, or its motion streak. */
+    private static int partlyCovered(Path image) throws IOException {
+        lt.spindulys.image.FrameBuffer f = lt.spindulys.image.Images.read(image);
+        int n = 0;
+        for (int y = 0; y < f.height(); y++) for (int x = 0; x < f.width(); x++) if (f.get(x, y, 0) > 0.05 && f.get(x, y, 0) < 0.95) n++;
+        return n;
+    }
+
     /** At a key, with the shutter closed, a keyed object is exactly where a still puts it at that pose. */
     @Test
     void aKeyedObjectAtItsKeyIsWhereTheStillPutsIt() throws IOException {
