@@ -67,6 +67,61 @@ class LauncherTest {
         assertFalse(output.contains("building"), "the launcher must use the jar beside the real script: " + output);
     }
 
+    /**
+     * A stale jar is rebuilt by Maven, whose quiet batch mode still prints bare colour resets
+     * (ESC[0m): what reaches the user or a farm's log is plain text, and a failed build is said
+     * in one line with exit status 1.
+     */
+    @Test
+    void buildsTheJarWithoutColourCodesAndReportsAFailedBuild() throws Exception {
+        Path bash = Stream.of("/bin/bash", "/usr/bin/bash", "/usr/local/bin/bash").map(Path::of).filter(Files::isExecutable).findFirst().orElse(null);
+        assumeTrue(bash != null, "no bash on this system: the launcher is a bash script");
+        Path repo = Files.createDirectories(dir.resolve("repo"));
+        Path script = repo.resolve("render");
+        Files.copy(Path.of("render"), script);
+        Files.createDirectories(repo.resolve("src/main"));
+        Files.writeString(repo.resolve("pom.xml"), "<project/>\n");
+        Path built = dir.resolve("built.jar");
+        writeJar(built);
+        // A stand-in for Maven: prints what Maven 3.8 prints, then "builds" the jar by copying one,
+        // or fails when told to.
+        Path fakeBin = Files.createDirectories(dir.resolve("fake-bin"));
+        Path mvn = fakeBin.resolve("mvn");
+        Files.writeString(mvn, "#!/usr/bin/env bash\n"
+                + "printf '\\033[0m\\033[0m'\n"
+                + "if [ -n \"${FAIL_BUILD:-}\" ]; then printf '\\033[1;31m[ERROR]\\033[m compilation failed\\n' >&2; exit 1; fi\n"
+                + "mkdir -p target && cp '" + built + "' target/render.jar\n"
+                + "printf '\\033[0m\\033[0m' >&2\n");
+        assumeTrue(mvn.toFile().setExecutable(true), "cannot mark the stand-in for Maven executable");
+        String javaBin = Path.of(System.getProperty("java.home"), "bin").toString();
+
+        ProcessBuilder failing = new ProcessBuilder(List.of(bash.toString(), script.toString(), "--version")).directory(dir.toFile()).redirectErrorStream(true);
+        failing.environment().put("PATH", fakeBin + java.io.File.pathSeparator + javaBin + java.io.File.pathSeparator + failing.environment().get("PATH"));
+        failing.environment().put("FAIL_BUILD", "1");
+        String[] out = new String[1];
+        int status = run(failing, out);
+        assertEquals(1, status, out[0]);
+        assertFalse(out[0].contains("\u001b"), "colour codes reached the output: " + out[0]);
+        assertTrue(out[0].contains("[ERROR] compilation failed") && out[0].contains("render: the Maven build failed"), out[0]);
+        assertFalse(Files.exists(repo.resolve("target/render.jar")));
+
+        ProcessBuilder building = new ProcessBuilder(List.of(bash.toString(), script.toString(), "--version")).directory(dir.toFile()).redirectErrorStream(true);
+        building.environment().put("PATH", fakeBin + java.io.File.pathSeparator + javaBin + java.io.File.pathSeparator + building.environment().get("PATH"));
+        building.environment().remove("SPINDULYS_JAVA_OPTS");
+        status = run(building, out);
+        assertEquals(0, status, out[0]);
+        assertFalse(out[0].contains("\u001b"), "colour codes reached the output: " + out[0]);
+        assertEquals("render: building target/render.jar with Maven...\nspindulys ", out[0].substring(0, Math.min(out[0].length(), 59)));
+    }
+
+    private static int run(ProcessBuilder pb, String[] output) throws Exception {
+        Process p = pb.start();
+        p.getOutputStream().close();
+        output[0] = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS), "the launcher did not finish");
+        return p.exitValue();
+    }
+
     /** A runnable jar of the classes under test. */
     private static void writeJar(Path jar) throws Exception {
         Path classes = Path.of(Main.class.getProtectionDomain().getCodeSource().getLocation().toURI());
