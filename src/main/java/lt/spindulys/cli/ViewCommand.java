@@ -98,7 +98,8 @@ final class ViewCommand {
         // Found before the window opens, so a bad plugin folder is one line on the terminal.
         List<OutputPlugin> plugins;
         try {
-            plugins = OutputPlugins.available(pluginFolders);
+            // A plugin without a usable id or name is left out with one line naming its jar; the viewer goes on.
+            plugins = OutputPlugins.available(pluginFolders, line -> err.println("render view: " + line));
         } catch (IOException e) {
             err.println("render view: cannot list a plugin folder: " + e.getMessage());
             return 1;
