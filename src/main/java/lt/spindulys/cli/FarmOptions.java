@@ -88,6 +88,18 @@ final class FarmOptions {
         regionOption = given;
     }
 
+    /**
+     * True if {@code --progress openjd} is among the arguments, wherever it stands and whatever
+     * else is wrong with them: an argument refused before it is read is still reported as
+     * {@code openjd_fail:}.
+     */
+    static boolean asksForOpenjd(String[] args) {
+        for (int i = 0; i + 1 < args.length; i++) {
+            if (args[i].equals("--progress") && args[i + 1].equals("openjd")) return true;
+        }
+        return false;
+    }
+
     /** Refuses an output a tile cannot be written to, once the output is known. */
     void checkOutput(Path output) throws UsageException {
         if (regionOption == null) return;

@@ -2,11 +2,20 @@ package lt.spindulys.cli;
 
 import java.io.IOException;
 import java.io.PrintStream;
+import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
+import java.nio.file.attribute.BasicFileAttributes;
+import java.nio.file.attribute.FileTime;
+import java.time.Duration;
+import java.time.Instant;
 import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
+
+import lt.spindulys.files.AtomicFile;
 
 import lt.spindulys.image.Aov;
 import lt.spindulys.limits.MessageText;
@@ -25,7 +34,8 @@ final class FrameOptions {
                                  animated scene renders all its frames. Several frames need a run of '#'
                                  in the output name, replaced by the zero-padded frame number
                                  (-o out_####.png: out_0007.png; default SCENE_####.png)
-              --skip-existing    leave frames whose image (and passes) exist already, for a retried task
+              --skip-existing    leave frames whose image (and passes) exist already, for a retried task;
+                                 remove temporary files a killed run left beside them (untouched 15 min)
             """;
 
     private FrameRange range;
@@ -104,6 +114,7 @@ final class FrameOptions {
      */
     int render(FrameRange frames, OutputPattern pattern, Set<Aov> passes, PrintStream log, FrameRenderer renderer)
             throws IOException, InterruptedException, UsageException {
+        if (skipExisting) removeStaleTemporaries(frames, pattern, log);
         List<Integer> todo = new ArrayList<>();
         for (int i = 0; i < frames.count(); i++) {
             int n = frames.frame(i);
@@ -116,6 +127,52 @@ final class FrameOptions {
         }
         for (int i = 0; i < todo.size(); i++) renderer.render(pattern.forFrame(todo.get(i)), todo.get(i), i, todo.size());
         return todo.size();
+    }
+
+    /**
+     * How long a temporary file of ours must have been left untouched before --skip-existing takes
+     * it for one a killed run left. A writer writes its temporary file from start to end without
+     * pausing (the frame is rendered before the file is created) and renames it as soon as the
+     * frame's files are all written, so a live run's file is touched every moment; this leaves
+     * room for the passes of a huge frame written one after another, and for clocks a little apart
+     * on shared storage.
+     */
+    static final Duration STALE_AFTER = Duration.ofMinutes(15);
+
+    /**
+     * Deletes, in the folders the outputs of these frames go to (and only there), the temporary
+     * files of our atomic writes ({@link AtomicFile#isTemporaryName}) untouched for
+     * {@link #STALE_AFTER}: what a run killed without a chance to clean up (SIGKILL, a crash, a
+     * lost node) left. A temporary file being written now, by another task of the same farm in
+     * that folder, is fresh and stays. Each removal is one line on {@code log}; a file that cannot
+     * be removed is left as it is.
+     */
+    static void removeStaleTemporaries(FrameRange frames, OutputPattern pattern, PrintStream log) {
+        Set<Path> folders = new LinkedHashSet<>();
+        for (int i = 0; i < frames.count(); i++) {
+            Path parent = pattern.forFrame(frames.frame(i)).toAbsolutePath().getParent();
+            if (parent != null) folders.add(parent);
+        }
+        FileTime before = FileTime.from(Instant.now().minus(STALE_AFTER));
+        for (Path folder : folders) {
+            try (DirectoryStream<Path> in = Files.newDirectoryStream(folder, p -> AtomicFile.isTemporaryName(p.getFileName().toString()))) {
+                for (Path p : in) {
+                    try {
+                        BasicFileAttributes a = Files.readAttributes(p, BasicFileAttributes.class, LinkOption.NOFOLLOW_LINKS);
+                        if (!a.isRegularFile() || a.lastModifiedTime().compareTo(before) >= 0) continue;
+                        Files.delete(p);
+                        if (log != null) {
+                            log.println(MessageText.escape("removed " + p + ": a temporary file untouched for " + STALE_AFTER.toMinutes()
+                                    + " minutes, left by a run that was killed (--skip-existing)"));
+                        }
+                    } catch (IOException e) {
+                        // Gone already (another task cleaned it), or not ours to delete: left as it is.
+                    }
+                }
+            } catch (IOException | java.nio.file.DirectoryIteratorException e) {
+                // A folder that cannot be listed: the frames' own writes will say what is wrong with it.
+            }
+        }
     }
 
     /** True if the image and each pass beside it are regular files. */

@@ -9,6 +9,7 @@ import lt.spindulys.image.NonFinitePixelException;
 import lt.spindulys.io.SceneException;
 import lt.spindulys.frontend.FailureMessage;
 import lt.spindulys.limits.MessageText;
+import lt.spindulys.render.FarmProgress;
 
 /**
  * The {@code render} command line: {@code render SCENE.dat ...} renders ({@link RenderCommand}),
@@ -31,6 +32,9 @@ public final class Main {
     public static int run(String[] args, PrintStream out, PrintStream err) {
         List<String> rest = new ArrayList<>(Arrays.asList(args));
         boolean debug = rest.remove("--debug");
+        // A farm's manager told to read OpenJD lines reads openjd_fail: for an error in the
+        // arguments too: asked for anywhere on the line, it is known before any other argument is read.
+        PrintStream openjd = null;
         try {
             if (!rest.isEmpty() && rest.get(0).equals("subdivide")) {
                 rest.remove(0);
@@ -72,26 +76,36 @@ public final class Main {
                 out.println("spindulys " + version());
                 return 0;
             }
-            return new RenderCommand(rest.toArray(new String[0])).run(out, err);
+            String[] renderArgs = rest.toArray(new String[0]);
+            if (FarmOptions.asksForOpenjd(renderArgs)) openjd = out;
+            RenderCommand command = new RenderCommand(renderArgs);
+            openjd = null; // from here on the command reports its own failures to the manager
+            return command.run(out, err);
         } catch (UsageException e) {
-            line(err, "render: " + e.getMessage());
+            line(err, openjd, "render: " + e.getMessage());
             return 2;
         } catch (SceneException | RenderCommand.NoSuchFileException | IllegalArgumentException e) {
             // Bad input: the message already names the place (file:line:column or the object).
-            line(err, e instanceof RenderCommand.NoSuchFileException ? e.getMessage() : FailureMessage.of(e));
+            line(err, openjd, e instanceof RenderCommand.NoSuchFileException ? e.getMessage() : FailureMessage.of(e));
             if (debug) e.printStackTrace(err);
             return 2;
         } catch (InterruptedException | java.io.IOException | NonFinitePixelException | OutOfMemoryError e) {
             // The same line the viewer shows for the same failure (FailureMessage); a non-finite
             // pixel is unreachable from any input the readers accept (their ranges keep pixels finite): a bug.
-            line(err, FailureMessage.of(e));
+            line(err, openjd, FailureMessage.of(e));
             if (debug && !(e instanceof InterruptedException) && !(e instanceof OutOfMemoryError)) e.printStackTrace(err);
             return 1;
         } catch (RuntimeException e) {
-            line(err, FailureMessage.of(e) + (debug ? "" : " (run with --debug for details)"));
+            line(err, openjd, FailureMessage.of(e) + (debug ? "" : " (run with --debug for details)"));
             if (debug) e.printStackTrace(err);
             return 1;
         }
+    }
+
+    /** The message on stderr, and as {@code openjd_fail:} on {@code openjd} unless that is null. */
+    private static void line(PrintStream err, PrintStream openjd, String message) {
+        line(err, message);
+        if (openjd != null) FarmProgress.failedBeforeStart(openjd, message);
     }
 
     /**

@@ -1,5 +1,6 @@
 package lt.spindulys.cli;
 
+import java.awt.AWTError;
 import java.awt.GraphicsEnvironment;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
@@ -16,14 +17,16 @@ import java.util.function.BooleanSupplier;
 
 import javax.swing.SwingUtilities;
 
+import lt.spindulys.limits.MessageText;
 import lt.spindulys.plugin.OutputPlugin;
 import lt.spindulys.plugin.OutputPlugins;
 import lt.spindulys.viewer.ViewerFrame;
 
 /**
  * {@code render view [MESH...]}: opens the viewer's window with the meshes given, with a Plugins
- * menu of every output plugin found, and returns when it is closed. Without a display it prints
- * one line saying so and fails, instead of the JDK's HeadlessException.
+ * menu of every output plugin found, and returns when it is closed. Without a display, or with a
+ * DISPLAY no X server answers, it prints one line saying so and fails (status 1), instead of the
+ * JDK's HeadlessException or AWTError.
  */
 final class ViewCommand {
     static final String USAGE = """
@@ -71,6 +74,21 @@ final class ViewCommand {
         this(args, GraphicsEnvironment::isHeadless);
     }
 
+    /**
+     * The display the JDK cannot connect to, as "':99' (DISPLAY)"; null when it can (or when
+     * there is no X server to ask: another platform, or headless).
+     */
+    static String unreachableDisplay() {
+        try {
+            GraphicsEnvironment.getLocalGraphicsEnvironment();
+            return null;
+        } catch (AWTError | LinkageError e) {
+            // The first attempt throws AWTError; a later one finds the class's failed initialisation.
+            String display = System.getenv("DISPLAY");
+            return display == null ? "(" + e.getMessage() + ")" : "'" + display + "' (DISPLAY)";
+        }
+    }
+
     int run(PrintStream out, PrintStream err) throws InterruptedException {
         if (headless.getAsBoolean()) {
             err.println("render view: the viewer needs a display, and there is none (no DISPLAY, or java.awt.headless is set); "
@@ -80,12 +98,21 @@ final class ViewCommand {
         // Found before the window opens, so a bad plugin folder is one line on the terminal.
         List<OutputPlugin> plugins;
         try {
-            plugins = OutputPlugins.available(pluginFolders);
+            // A plugin without a usable id or name is left out with one line naming its jar; the viewer goes on.
+            plugins = OutputPlugins.available(pluginFolders, line -> err.println("render view: " + line));
         } catch (IOException e) {
             err.println("render view: cannot list a plugin folder: " + e.getMessage());
             return 1;
         } catch (IllegalArgumentException e) {
             err.println("render view: " + e.getMessage());
+            return 1;
+        }
+        // A DISPLAY that no X server answers (a stale ssh forwarding, a container) is not headless:
+        // the JDK finds out only when it connects, with an AWTError. Asked here, it is one line too.
+        String unreachable = unreachableDisplay();
+        if (unreachable != null) {
+            err.println(MessageText.escape("render view: cannot connect to the display " + unreachable
+                    + "; run it on a desktop or under a virtual X server, or set DISPLAY to a display that is running"));
             return 1;
         }
         CountDownLatch closed = new CountDownLatch(1);

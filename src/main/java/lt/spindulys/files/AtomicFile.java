@@ -105,6 +105,7 @@ public final class AtomicFile {
         }
         try {
             try (FileChannel ch = channel) {
+                TemporaryFiles.register(tmp);
                 OutputStream buffered = new BufferedOutputStream(Channels.newOutputStream(ch), 1 << 16);
                 body.write(new NonClosingStream(buffered));
                 buffered.flush();
@@ -133,6 +134,7 @@ public final class AtomicFile {
             for (int i = 0; i < n; i++) {
                 if (i < n - 1 && Files.isRegularFile(targets[i])) backups[i] = backup(targets[i]);
                 move(tmps[i], targets[i]);
+                TemporaryFiles.unregister(tmps[i]);
                 moved[i] = true;
             }
         } catch (Throwable t) {
@@ -182,6 +184,20 @@ public final class AtomicFile {
         }
     }
 
+    /**
+     * True if {@code name} is the name of a temporary file {@link #write} makes:
+     * {@code .NAME.RANDOM.tmp}, RANDOM 1 to 16 hexadecimal digits. Other programs' temporary
+     * files, and ours' {@code .bak} copies, are not.
+     *
+     * @param name a file name, without its folder
+     * @return whether it has the form of one of our temporary files
+     */
+    public static boolean isTemporaryName(String name) {
+        return TEMPORARY_NAME.matcher(name).matches();
+    }
+
+    private static final java.util.regex.Pattern TEMPORARY_NAME = java.util.regex.Pattern.compile("\\..+\\.[0-9a-f]{1,16}\\.tmp", java.util.regex.Pattern.DOTALL);
+
     private static Path hiddenSibling(Path dir, String name, String ext) {
         return dir.resolve("." + name + "." + Long.toHexString(ThreadLocalRandom.current().nextLong()) + ext);
     }
@@ -190,6 +206,7 @@ public final class AtomicFile {
         if (p == null) return;
         try {
             Files.deleteIfExists(p);
+            TemporaryFiles.unregister(p);
         } catch (IOException e) {
             into.addSuppressed(e);
         }
@@ -236,6 +253,7 @@ public final class AtomicFile {
             Path probe = hiddenSibling(dir, name, ".tmp");
             try {
                 FileChannel.open(probe, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE).close();
+                TemporaryFiles.register(probe);
             } catch (FileAlreadyExistsException e) {
                 if (attempt < 20) continue;
                 throw new IOException("cannot write '" + out + "': cannot create a file in '" + shown + "': " + reason(e), e);
@@ -243,6 +261,7 @@ public final class AtomicFile {
                 throw new IOException("cannot write '" + out + "': cannot create a file in '" + shown + "': " + reason(e), e);
             }
             Files.deleteIfExists(probe);
+            TemporaryFiles.unregister(probe);
             return;
         }
     }

@@ -203,6 +203,17 @@ public final class FarmProgress implements ProgressListener, AutoCloseable {
         }
     }
 
+    /**
+     * Reports a failure before any progress was started, as {@link #failed} does with OpenJD: a
+     * task whose arguments are refused ({@code --tile 9/3}) still tells its manager why it ended.
+     *
+     * @param out     where the OpenJD lines go (standard output)
+     * @param message the one-line error
+     */
+    public static void failedBeforeStart(PrintStream out, String message) {
+        new FarmProgress(Mode.OPENJD, out, () -> RenderJob.Stage.READY, "", System.nanoTime()).failed(message);
+    }
+
     /** Stops the thread; prints nothing. */
     @Override
     public void close() {

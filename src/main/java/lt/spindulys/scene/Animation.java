@@ -14,7 +14,7 @@ import java.util.Locale;
  *
  * @param first the first frame, at least 0
  * @param last the last frame, at least {@code first}, at most {@link #MAX_FRAME}
- * @param fps frames per unit of the scene's time (per second), more than 0 and at most 1000
+ * @param fps frames per unit of the scene's time (per second), {@link #MIN_FPS} to {@link #MAX_FPS}
  * @param shutterAngle the exposure as a fraction of the frame interval, in degrees: 0 (no motion
  *        blur) to 360 (the whole interval)
  */
@@ -23,6 +23,12 @@ public record Animation(int first, int last, double fps, double shutterAngle) {
     public static final int MAX_FRAME = 9_999_999;
     /** The largest frame rate. */
     public static final double MAX_FPS = 1000;
+    /**
+     * The smallest frame rate: a frame every 1000 units of scene time. Frame times N / fps then
+     * stay at most 10^10, and key times (key frames are scene numbers, at most 10^15) at most 10^18,
+     * finite whatever the shutter; a rate just above 0 would put every frame but 0 at infinity.
+     */
+    public static final double MIN_FPS = 0.001;
 
     /**
      * Checks the values.
@@ -32,7 +38,7 @@ public record Animation(int first, int last, double fps, double shutterAngle) {
     public Animation {
         if (first < 0 || first > MAX_FRAME) throw new IllegalArgumentException("first frame must be between 0 and " + MAX_FRAME + ", found " + first);
         if (last < first || last > MAX_FRAME) throw new IllegalArgumentException("last frame must be between the first (" + first + ") and " + MAX_FRAME + ", found " + last);
-        if (!(fps > 0 && fps <= MAX_FPS)) throw new IllegalArgumentException("fps must be more than 0 and at most " + (int) MAX_FPS + ", found " + fmt(fps));
+        if (!(fps >= MIN_FPS && fps <= MAX_FPS)) throw new IllegalArgumentException("fps must be between " + MIN_FPS + " and " + (int) MAX_FPS + ", found " + fmt(fps));
         if (!(shutterAngle >= 0 && shutterAngle <= 360)) throw new IllegalArgumentException("shutter angle must be between 0 and 360 degrees, found " + fmt(shutterAngle));
     }
 

@@ -274,6 +274,36 @@ class FarmCliTest {
         assertEquals("openjd_fail: " + r.err().strip(), r.out().lines().reduce((a, b) -> b).orElseThrow());
     }
 
+    /**
+     * An error in the arguments themselves, before anything is rendered, is an openjd_fail: line
+     * too when --progress openjd is asked for, wherever it stands on the line.
+     */
+    @Test
+    void argumentErrorsUnderOpenjdProgressEndWithOpenjdFail() throws IOException {
+        String scene = scene().toString(), out = dir.resolve("x.png").toString();
+        String[][] cases = {
+                {scene, "--progress", "openjd", "--tile", "9/3", "-o", out},
+                {scene, "--region", "0,1,0", "-o", out, "--progress", "openjd"},
+                {scene, "--progress", "openjd", "--spp", "0"},
+                {scene, "--progress", "openjd", "--fast"},
+                {scene, "--progress", "openjd", "-o", dir.resolve("x.gif").toString()},
+                {"--progress", "openjd"},
+                {scene, "--progress", "openjd", "--tile", "1/2", "-o", dir.resolve("x.jpg").toString()},
+        };
+        for (String[] c : cases) {
+            CliTest.Run r = run(c);
+            assertEquals(2, r.status(), r.err());
+            assertEquals(1, r.err().lines().count(), r.err());
+            assertTrue(r.err().startsWith("render: "), r.err());
+            assertEquals("openjd_fail: " + r.err().strip() + System.lineSeparator(), r.out(), String.join(" ", c));
+        }
+        // Without it, stdout stays empty.
+        CliTest.Run r = run(scene, "--tile", "9/3", "-o", out);
+        assertEquals(2, r.status());
+        assertEquals("", r.out());
+        assertFalse(Files.exists(Path.of(out)));
+    }
+
     @Test
     void plainProgressPrintsLinesOnStderrAndNothingOnStdout() throws IOException {
         Path scene = scene();

@@ -37,6 +37,35 @@ class ViewCommandTest {
         assertTrue(e.startsWith("render view: the viewer needs a display"), e);
     }
 
+    /**
+     * A DISPLAY no X server answers (a stale ssh forwarding, a container): one line, the status of
+     * the no-display case, no AWTError stack trace. The display is one with no X socket, named or abstract.
+     */
+    @Test
+    void aDisplayThatNoServerAnswersIsOneLine() throws Exception {
+        int n = 99;
+        while (n < 1000 && xSocketExists(n)) n++;
+        Path classes = Path.of(Main.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+        ProcessBuilder b = new ProcessBuilder(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", classes.toString(), Main.class.getName(), "view", "scenes/models/cube.dat")).redirectOutput(ProcessBuilder.Redirect.DISCARD);
+        b.environment().put("DISPLAY", ":" + n);
+        b.environment().remove("XAUTHORITY");
+        Process p = b.start();
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS), "render view returned");
+        String e = new String(p.getErrorStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertEquals(1, p.exitValue(), e);
+        assertEquals("render view: cannot connect to the display ':" + n + "' (DISPLAY); run it on a desktop or under a virtual X server,"
+                + " or set DISPLAY to a display that is running" + System.lineSeparator(), e);
+    }
+
+    /** True if an X server may listen on display {@code n}: its socket file, or its abstract socket (Linux). */
+    private static boolean xSocketExists(int n) throws java.io.IOException {
+        if (java.nio.file.Files.exists(Path.of("/tmp/.X11-unix/X" + n))) return true;
+        Path unix = Path.of("/proc/net/unix");
+        String name = "@/tmp/.X11-unix/X" + n;
+        return java.nio.file.Files.isReadable(unix) && java.nio.file.Files.readAllLines(unix).stream().anyMatch(l -> l.endsWith(" " + name));
+    }
+
     @Test
     void helpAndBadOptions() {
         ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();

@@ -449,6 +449,12 @@ public final class BadInputCases {
                 c("camera keys that scale", "animation { frames 1 9 }\ncamera { eye 0 0 -5  lookat 0 0 0  keys { key 1 { scale 2 } } }",
                         "2:36: a camera's keys may translate and rotate it but not scale it"),
                 c("animation frames backwards", "animation { frames 9 1 }", "1:13: last frame must be between the first (9) and 9999999, found 1"),
+                c("animation fps near 0", "animation { frames 1 9  fps 1e-320 }", "1:25: fps must be between 0.001 and 1000, found 1.0E-320"),
+                c("animation fps near 0 at frame 0", "animation { frames 0 0  fps 1e-300 }", "1:25: fps must be between 0.001 and 1000, found 1.0E-300"),
+                c("animation fps 0", "animation { frames 1 9  fps 0 }", "1:25: fps must be between 0.001 and 1000, found 0.0"),
+                c("animation fps over 1000", "animation { frames 1 9  fps 1001 }", "1:25: fps must be between 0.001 and 1000, found 1001.0"),
+                c("animation shutter over 360", "animation { frames 1 9  shutter 361 }", "1:25: shutter angle must be between 0 and 360 degrees, found 361.0"),
+                c("animation last frame too large", "animation { frames 1 10000000 }", "1:13: last frame must be between the first (1) and 9999999, found 10000000"),
                 c("animation shutter with a settings shutter", "settings { shutter 0 1 }\nanimation { frames 1 9 }",
                         "1:12: 'shutter' in settings does not combine with the animation at 2:1: each frame's shutter is set by the animation's shutter angle"),
                 // Ranges that keep every pixel finite (lt.spindulys.math.Ranges, docs/scene-format.md "Ranges of numbers").

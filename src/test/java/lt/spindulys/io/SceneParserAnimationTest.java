@@ -116,7 +116,7 @@ class SceneParserAnimationTest {
         assertTrue(error(ANIM + "sphere { turntable { axis 0 0 0 } }").startsWith("a.dat:2:22: turntable axis must be non-zero"));
         assertEquals("a.dat:1:1: animation needs 'frames'", error("animation { fps 24 }"));
         assertTrue(error("animation { frames 5 2 }").startsWith("a.dat:1:13: last frame must be between the first (5)"));
-        assertTrue(error("animation { frames 1 2 fps 0 }").startsWith("a.dat:1:24: fps must be more than 0"));
+        assertTrue(error("animation { frames 1 2 fps 0 }").startsWith("a.dat:1:24: fps must be between 0.001 and 1000"));
         assertTrue(error("animation { frames 1 2 shutter 400 }").startsWith("a.dat:1:24: shutter angle must be between 0 and 360"));
         assertTrue(error("animation { frames 1 2.5 }").startsWith("a.dat:1:22: expected an integer for 'frames'"));
         assertTrue(error(ANIM + "animation { frames 1 2 }").startsWith("a.dat:2:1: animation is already defined at 1:1"));

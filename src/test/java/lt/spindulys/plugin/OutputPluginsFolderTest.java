@@ -52,6 +52,29 @@ class OutputPluginsFolderTest {
         assertEquals(ids(OutputPlugins.available()), ids(OutputPlugins.available(List.of())));
     }
 
+    /**
+     * A plugin whose name is null, throws or is blank, or whose id is taken, is left out with one
+     * line naming its class and where it came from; the others are listed as ever.
+     */
+    @Test
+    void aPluginWithoutAUsableNameIsSkippedWithOneLineNamingItsJar() throws Exception {
+        String b = BrokenNamePlugins.class.getName();
+        jar("broken-names.jar", b + "$NullName\n" + b + "$ThrowingName\n" + b + "$BlankName\n" + b + "$DuplicateId\n"
+                + FolderTestPlugin.class.getName() + "\n");
+        List<String> skipped = new java.util.ArrayList<>();
+        List<String> ids = ids(OutputPlugins.available(List.of(dir), skipped::add));
+        assertEquals(List.of("folder-test", "obj", "raytrace"), ids);
+        // The classes are on the test class path, which the jar's loader asks first: that is where they come from.
+        String from = " (from " + Path.of(BrokenNamePlugins.class.getProtectionDomain().getCodeSource().getLocation().toURI()) + "): ";
+        String tracer = lt.spindulys.plugin.raytrace.RayTracePlugin.class.getName() + " (from "
+                + Path.of(lt.spindulys.plugin.raytrace.RayTracePlugin.class.getProtectionDomain().getCodeSource().getLocation().toURI()) + ")";
+        assertEquals(List.of(
+                "skipped output plugin " + b + "$NullName" + from + "its name() is null",
+                "skipped output plugin " + b + "$ThrowingName" + from + "its id(), name() or description() threw java.lang.IllegalStateException: no name\\nat all",
+                "skipped output plugin " + b + "$BlankName" + from + "its name() is blank",
+                "skipped output plugin " + b + "$DuplicateId" + from + "its id 'raytrace' is that of " + tracer + ", found first"), skipped);
+    }
+
     @Test
     void badFoldersAndJarsAreOneLine() throws IOException {
         IllegalArgumentException missing = assertThrows(IllegalArgumentException.class,
