@@ -435,8 +435,18 @@ final class RenderCommand {
         out.printf(Locale.ROOT, "render:  %.3f s (%d threads)%n", r.seconds(), threads);
         out.printf(Locale.ROOT, "rays:    %d camera, %d shadow, %d reflection, %d refraction%n",
                 r.cameraRays(), r.shadowRays(), r.reflectionRays(), r.refractionRays());
-        out.printf(Locale.ROOT, "speed:   %.1f Mrays/s%n", r.mraysPerSecond());
+        out.printf(Locale.ROOT, "speed:   %s Mrays/s%n", threeFigures(r.mraysPerSecond()));
         out.printf(Locale.ROOT, "heap:    %.1f MiB peak%n", peakHeapBytes() / 1048576.0);
+    }
+
+    /**
+     * At least three significant figures, one decimal at the least: 12.3, 0.0412, 1234.5. A slow
+     * render (a lazily refined surface) must not print 0.0.
+     */
+    static String threeFigures(double v) {
+        if (!(v > 0) || v >= 10) return String.format(Locale.ROOT, "%.1f", v);
+        int decimals = Math.min(12, 2 - (int) Math.floor(Math.log10(v)));
+        return String.format(Locale.ROOT, "%." + decimals + "f", v);
     }
 
     /**

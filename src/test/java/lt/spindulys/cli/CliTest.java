@@ -129,7 +129,7 @@ class CliTest {
         Run r = run(scene(SMALL).toString(), "-o", dir.resolve("a.png").toString(), "--stats", "--threads", "1");
         assertEquals(0, r.status(), r.err());
         assertTrue(r.out().contains("rays:    384 camera"), r.out());
-        assertTrue(r.out().matches("(?s).*speed: +\\d+\\.\\d Mrays/s.*"), r.out());
+        assertTrue(r.out().matches("(?s).*speed: +\\d+\\.\\d+ Mrays/s.*"), r.out());
     }
 
     @Test
