@@ -119,7 +119,8 @@ public final class FarmProgress implements ProgressListener, AutoCloseable {
     public synchronized void tick(long now) {
         if (closed) return; // the ticker may wait for the lock while the end is reported: nothing after it
         RenderJob.Stage s = stage.get();
-        boolean changed = s != lastStage, due = lastStage == null || now - lastLine >= INTERVAL_SECONDS * 1_000_000_000L;
+        // Steps that read the same (ready and checking, settings and building) are one status.
+        boolean changed = lastStage == null || !step(s).equals(step(lastStage)), due = changed || now - lastLine >= INTERVAL_SECONDS * 1_000_000_000L;
         if (!changed && !due) return;
         double elapsed = (now - start) / 1e9;
         boolean rendering = s == RenderJob.Stage.RENDER;

@@ -34,6 +34,9 @@ class FarmProgressTest {
         FarmProgress p = sink(FarmProgress.Mode.OPENJD);
         p.tick(0);
         assertEquals(List.of("openjd_status: starting out.png"), lines());
+        stage.set(RenderJob.Stage.CHECK);
+        p.tick(S / 20);
+        assertEquals(List.of(), lines(), "checking the output is still starting: no second status");
         stage.set(RenderJob.Stage.LOAD);
         p.tick(S / 10);
         assertEquals(List.of("openjd_status: loading the scene for out.png"), lines());
