@@ -11,7 +11,8 @@
 module lt.spindulys {
     // ImageIO for PNG/JPEG and texture images; transitive because the API hands out BufferedImages
     requires transitive java.desktop;
-    requires jdk.management; // the bench's process CPU time (com.sun.management)
+    requires java.management; // heap pools for the peak heap (render --stats, the bench), the JVM's options (the bench)
+    requires jdk.management; // only for the bench: the process's CPU time (com.sun.management)
     // The wide BVH's vector box test: compiled against the incubating Vector API but optional at
     // run time, resolved only when the JVM is started with --add-modules jdk.incubator.vector;
     // without it WideBvh's probe falls back to the scalar binary BVH.

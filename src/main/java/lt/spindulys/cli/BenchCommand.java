@@ -10,6 +10,8 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 
+import lt.spindulys.frontend.HeapPeak;
+import lt.spindulys.frontend.Version;
 import lt.spindulys.io.ObjReader;
 import lt.spindulys.scene.AcceleratorKind;
 import lt.spindulys.io.SceneParser;
@@ -233,7 +235,7 @@ final class BenchCommand {
         }
         Runtime rt = Runtime.getRuntime();
         out.printf(Locale.ROOT, "Spindulys %s benchmark: Java %s, %d cores, max heap %.1f GiB, %d timed runs per row (median)%n",
-                Main.version(), System.getProperty("java.version"), rt.availableProcessors(), rt.maxMemory() / (double) (1L << 30), runs);
+                Version.text(), System.getProperty("java.version"), rt.availableProcessors(), rt.maxMemory() / (double) (1L << 30), runs);
         out.printf(Locale.ROOT, "Structure of the peer-scene rows: %s%n", (accel != null ? accel : AcceleratorKind.DEFAULT).description());
         String section = null;
         for (Row r : ROWS) {
@@ -452,7 +454,7 @@ final class BenchCommand {
     /** {@link #renderOnce(Path, AcceleratorKind)} with the scene's settings changed by {@code settings}. */
     static Measured renderOnce(Path file, AcceleratorKind accel, java.util.function.UnaryOperator<RenderSettings> settings) throws IOException {
         System.gc();
-        RenderCommand.resetPeakHeap();
+        HeapPeak.reset();
         long t0 = System.nanoTime();
         SceneBuilder builder = SceneParser.parse(file);
         if (accel != null) builder.settings(builder.settings().toBuilder().accelerator(accel).build());
@@ -469,7 +471,7 @@ final class BenchCommand {
             throw new IOException("interrupted", e);
         }
         long cpu1 = processCpuNanos();
-        long peak = RenderCommand.peakHeapBytes();
+        long peak = HeapPeak.bytes();
         long triangles = 0, bytes = 0;
         for (GObject o : scene.objects()) {
             if (o instanceof TriangleMesh m && !m.isInstance()) { // an instance shares its original's arrays

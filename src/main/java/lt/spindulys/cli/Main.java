@@ -8,6 +8,7 @@ import java.util.List;
 import lt.spindulys.image.NonFinitePixelException;
 import lt.spindulys.io.SceneException;
 import lt.spindulys.frontend.FailureMessage;
+import lt.spindulys.frontend.Version;
 import lt.spindulys.limits.MessageText;
 
 /**
@@ -104,12 +105,6 @@ public final class Main {
     }
 
     static String version() {
-        String v = Main.class.getPackage().getImplementationVersion();
-        // A jar's manifest gives the version on the class path; on the module path the
-        // descriptor carries it (the compiler records the project's version there).
-        if (v == null && Main.class.getModule().getDescriptor() != null) {
-            v = Main.class.getModule().getDescriptor().rawVersion().orElse(null);
-        }
-        return v != null ? v : "development build";
+        return Version.text();
     }
 }

@@ -2,9 +2,6 @@ package lt.spindulys.cli;
 
 import java.io.IOException;
 import java.io.PrintStream;
-import java.lang.management.ManagementFactory;
-import java.lang.management.MemoryPoolMXBean;
-import java.lang.management.MemoryType;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
@@ -27,6 +24,7 @@ import lt.spindulys.limits.InsufficientMemoryException;
 import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.frontend.FailureMessage;
+import lt.spindulys.frontend.HeapPeak;
 import lt.spindulys.render.FarmProgress;
 import lt.spindulys.render.RenderStats;
 import lt.spindulys.render.RenderJob;
@@ -436,27 +434,7 @@ final class RenderCommand {
         out.printf(Locale.ROOT, "rays:    %d camera, %d shadow, %d reflection, %d refraction%n",
                 r.cameraRays(), r.shadowRays(), r.reflectionRays(), r.refractionRays());
         out.printf(Locale.ROOT, "speed:   %.1f Mrays/s%n", r.mraysPerSecond());
-        out.printf(Locale.ROOT, "heap:    %.1f MiB peak%n", peakHeapBytes() / 1048576.0);
-    }
-
-    /**
-     * The most heap the process has used so far: the sum over the heap pools of each pool's peak
-     * (the JVM tracks these between collections, so a short-lived spike still counts). The pools
-     * peak at different moments, so the sum can exceed the true peak a little; it never misses it.
-     */
-    static long peakHeapBytes() {
-        long sum = 0;
-        for (MemoryPoolMXBean pool : ManagementFactory.getMemoryPoolMXBeans()) {
-            if (pool.getType() == MemoryType.HEAP && pool.isValid()) sum += pool.getPeakUsage().getUsed();
-        }
-        return sum;
-    }
-
-    /** Starts a new peak: {@link #peakHeapBytes()} then reports the peak since this call. */
-    static void resetPeakHeap() {
-        for (MemoryPoolMXBean pool : ManagementFactory.getMemoryPoolMXBeans()) {
-            if (pool.getType() == MemoryType.HEAP && pool.isValid()) pool.resetPeakUsage();
-        }
+        out.printf(Locale.ROOT, "heap:    %.1f MiB peak%n", HeapPeak.bytes() / 1048576.0);
     }
 
     private static String value(String[] args, int i, String option) throws UsageException {
