@@ -5,6 +5,8 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 
+import lt.spindulys.bench.BenchCommand;
+import lt.spindulys.bench.BenchUsageException;
 import lt.spindulys.image.NonFinitePixelException;
 import lt.spindulys.io.SceneException;
 import lt.spindulys.frontend.FailureMessage;
@@ -14,7 +16,8 @@ import lt.spindulys.limits.MessageText;
 /**
  * The {@code render} command line: {@code render SCENE.dat ...} renders ({@link RenderCommand}),
  * {@code render subdivide ...} refines a mesh ({@link SubdivideCommand}), {@code render view ...} opens the viewer
- * ({@link ViewCommand}), {@code render assemble ...} puts tiles back into a frame ({@link AssembleCommand}). {@link #run} does the work and returns the exit status, so
+ * ({@link ViewCommand}), {@code render assemble ...} puts tiles back into a frame ({@link AssembleCommand}),
+ * {@code render bench ...} runs the benchmark suite ({@link BenchCommand}, a front end of its own). {@link #run} does the work and returns the exit status, so
  * tests call it in-process; {@link #main} only exits with that status. Bad usage and bad input
  * print one line to stderr and exit 2; a failure while rendering or writing exits 1. Stack traces
  * appear only with {@code --debug}.
@@ -63,7 +66,7 @@ public final class Main {
                     out.println(BenchCommand.USAGE);
                     return 0;
                 }
-                return new BenchCommand(rest.toArray(new String[0])).run(out);
+                return new BenchCommand(rest.toArray(new String[0]), Main.class).run(out);
             }
             if (rest.isEmpty() || rest.contains("--help") || rest.contains("-h")) {
                 (rest.isEmpty() ? err : out).println(RenderCommand.USAGE);
@@ -74,7 +77,7 @@ public final class Main {
                 return 0;
             }
             return new RenderCommand(rest.toArray(new String[0])).run(out, err);
-        } catch (UsageException e) {
+        } catch (UsageException | BenchUsageException e) {
             line(err, "render: " + e.getMessage());
             return 2;
         } catch (SceneException | RenderCommand.NoSuchFileException | IllegalArgumentException e) {

@@ -1,7 +1,7 @@
-package lt.spindulys.cli;
+package lt.spindulys.bench;
 
-import static lt.spindulys.cli.BenchTable.fmt;
-import static lt.spindulys.cli.BenchTable.median;
+import static lt.spindulys.bench.BenchTable.fmt;
+import static lt.spindulys.bench.BenchTable.median;
 
 import java.io.IOException;
 import java.io.PrintStream;
@@ -37,8 +37,8 @@ import lt.spindulys.subdiv.SubdivOptions.Scheme;
  * input is run through it in the same session and the ratio is printed beside our figure. Inputs are read
  * from scenes/bench/ under the current folder (the repository root).
  */
-final class BenchCommand {
-    static final String USAGE = """
+public final class BenchCommand {
+    public static final String USAGE = """
             usage: render bench [--only NAME] [--runs N] [--accel A] [--peers LIST] [--cell-timeout S] [--list]
 
               --only NAME   run only the row NAME, or the rows of the group NAME (see --list), or those of a
@@ -175,57 +175,68 @@ final class BenchCommand {
     /** Seconds an adaptive-row cell (a child JVM) may take before it is stopped. */
     private int cellTimeout = 600;
     private final Path benchDir = Path.of("scenes", "bench");
+    /** The main class of the command line, which the cold-process rows and the adaptive cells start in new JVMs. */
+    private final String commandLine;
 
-    BenchCommand(String[] args) throws UsageException {
+    /**
+     * The bench as {@code args} ask.
+     *
+     * @param args the options after {@code render bench}
+     * @param commandLine the main class of {@code render}, started in new JVMs to time whole processes
+     * @throws BenchUsageException when an option is unknown or its value is bad
+     */
+    public BenchCommand(String[] args, Class<?> commandLine) throws BenchUsageException {
+        this.commandLine = commandLine.getName();
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--only" -> {
-                    if (++i >= args.length) throw new UsageException("option --only needs a value");
+                    if (++i >= args.length) throw new BenchUsageException("option --only needs a value");
                     only = List.of(args[i].split(",", -1));
                     for (String o : only) {
                         if (ROWS.stream().noneMatch(r -> r.name().equals(o) || o.equals(r.group()))) {
-                            throw new UsageException("unknown bench row '" + o + "' (rows: " + String.join(", ", ROWS.stream().map(Row::name).toList())
+                            throw new BenchUsageException("unknown bench row '" + o + "' (rows: " + String.join(", ", ROWS.stream().map(Row::name).toList())
                                     + "; groups: " + ADAPTIVE + ", " + VIEWER + ")");
                         }
                     }
                 }
                 case "--runs" -> {
-                    if (++i >= args.length) throw new UsageException("option --runs needs a value");
+                    if (++i >= args.length) throw new BenchUsageException("option --runs needs a value");
                     try {
                         runs = Integer.parseInt(args[i]);
                     } catch (NumberFormatException e) {
-                        throw new UsageException("--runs expects a whole number, found '" + args[i] + "'");
+                        throw new BenchUsageException("--runs expects a whole number, found '" + args[i] + "'");
                     }
-                    if (runs < 1 || runs > 100) throw new UsageException("--runs must be between 1 and 100, found " + runs);
+                    if (runs < 1 || runs > 100) throw new BenchUsageException("--runs must be between 1 and 100, found " + runs);
                 }
                 case "--accel" -> {
-                    if (++i >= args.length) throw new UsageException("option --accel needs a value");
+                    if (++i >= args.length) throw new BenchUsageException("option --accel needs a value");
                     try {
                         accel = AcceleratorKind.fromKeyword(args[i]);
                     } catch (IllegalArgumentException e) {
-                        throw new UsageException(e.getMessage());
+                        throw new BenchUsageException(e.getMessage());
                     }
                 }
                 case "--cell-timeout" -> {
-                    if (++i >= args.length) throw new UsageException("option --cell-timeout needs a value");
+                    if (++i >= args.length) throw new BenchUsageException("option --cell-timeout needs a value");
                     try {
                         cellTimeout = Integer.parseInt(args[i]);
                     } catch (NumberFormatException e) {
-                        throw new UsageException("--cell-timeout expects a whole number of seconds, found '" + args[i] + "'");
+                        throw new BenchUsageException("--cell-timeout expects a whole number of seconds, found '" + args[i] + "'");
                     }
-                    if (cellTimeout < 1 || cellTimeout > 86400) throw new UsageException("--cell-timeout must be between 1 and 86400 seconds, found " + cellTimeout);
+                    if (cellTimeout < 1 || cellTimeout > 86400) throw new BenchUsageException("--cell-timeout must be between 1 and 86400 seconds, found " + cellTimeout);
                 }
                 case "--peers" -> {
-                    if (++i >= args.length) throw new UsageException("option --peers needs a value");
+                    if (++i >= args.length) throw new BenchUsageException("option --peers needs a value");
                     peers = PeerBench.Peer.parse(args[i]);
                 }
                 case "--list" -> list = true;
-                default -> throw new UsageException("unknown bench option '" + args[i] + "' (see render bench --help)");
+                default -> throw new BenchUsageException("unknown bench option '" + args[i] + "' (see render bench --help)");
             }
         }
     }
 
-    int run(PrintStream out) throws IOException {
+    /** Runs the rows asked for (or lists them), printing to {@code out}; returns the exit status. */
+    public int run(PrintStream out) throws IOException {
         if (list) {
             for (Row r : ROWS) out.printf("%-22s %s%s%n", r.name(), r.group() != null ? "[" + r.group() + "] " : "", r.description());
             return 0;
@@ -267,7 +278,7 @@ final class BenchCommand {
 
     /** The adaptive rows, in a scratch folder that is removed afterwards. */
     private void adaptive(PrintStream out, AdaptiveAction action) throws IOException {
-        AdaptiveBench a = new AdaptiveBench(runs, cellTimeout, out);
+        AdaptiveBench a = new AdaptiveBench(runs, cellTimeout, out, commandLine);
         try {
             action.run(a);
         } finally {
@@ -487,7 +498,7 @@ final class BenchCommand {
      * Median wall time of {@code runs} whole new processes rendering {@code scene} with this
      * program's own classes, after one untimed run; NaN if a run fails.
      */
-    private static double coldSeconds(Path scene, int runs, AcceleratorKind accel) throws IOException {
+    private double coldSeconds(Path scene, int runs, AcceleratorKind accel) throws IOException {
         double[] t = new double[runs];
         for (int i = -1; i < runs; i++) {
             double s = coldOnce(scene, accel);
@@ -498,7 +509,7 @@ final class BenchCommand {
     }
 
     /** Wall time of one whole new process rendering {@code scene} with this program's own classes; NaN if it fails. */
-    static double coldOnce(Path scene, AcceleratorKind accel) throws IOException {
+    private double coldOnce(Path scene, AcceleratorKind accel) throws IOException {
         String javaExe = Path.of(System.getProperty("java.home"), "bin", "java").toString();
         String cp;
         try {
@@ -512,7 +523,7 @@ final class BenchCommand {
             // The new process gets this one's JVM options (those ./render passes: the vector
             // module, the collector), so it measures what a render from the launcher does.
             cmd.addAll(java.lang.management.ManagementFactory.getRuntimeMXBean().getInputArguments());
-            cmd.addAll(List.of("-cp", cp, Main.class.getName(), scene.toString(), "-o", image.toString(),
+            cmd.addAll(List.of("-cp", cp, commandLine, scene.toString(), "-o", image.toString(),
                     "--quiet", "--threads", Integer.toString(THREADS)));
             if (accel != null) cmd.addAll(List.of("--accel", accel.keyword()));
             long t0 = System.nanoTime();

@@ -1,7 +1,7 @@
-package lt.spindulys.cli;
+package lt.spindulys.bench;
 
-import static lt.spindulys.cli.BenchTable.fmt;
-import static lt.spindulys.cli.BenchTable.median;
+import static lt.spindulys.bench.BenchTable.fmt;
+import static lt.spindulys.bench.BenchTable.median;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -52,12 +52,12 @@ final class PeerBench {
         }
 
         /** The peers named in a comma-separated list of keywords, or none for "none". */
-        static Set<Peer> parse(String list) throws UsageException {
+        static Set<Peer> parse(String list) throws BenchUsageException {
             Set<Peer> s = EnumSet.noneOf(Peer.class);
             if (list.equals("none")) return s;
             for (String k : list.split(",", -1)) {
                 Peer p = Arrays.stream(values()).filter(x -> x.keyword.equals(k)).findFirst().orElse(null);
-                if (p == null) throw new UsageException("unknown peer '" + k + "' in --peers (expected embree, povray, cycles or none)");
+                if (p == null) throw new BenchUsageException("unknown peer '" + k + "' in --peers (expected embree, povray, cycles or none)");
                 s.add(p);
             }
             return s;
