@@ -27,7 +27,7 @@ import lt.spindulys.scene.SceneBuilder;
 import lt.spindulys.subdiv.PatchRefiner;
 
 /**
- * The adaptive-subdivision rows of {@code render bench} (issue 16): the thesis's Table 1 (the
+ * The adaptive-subdivision rows of {@code render bench}: the thesis's Table 1 (the
  * projected, lazy and combined methods side by side at four image sizes on two scenes), the lazy
  * method against the eager one at the same tessellation, and the lazy cache's policy and size.
  *
@@ -42,7 +42,7 @@ import lt.spindulys.subdiv.PatchRefiner;
 final class AdaptiveBench {
     /** The thesis's image sizes (Table 1) and full HD. */
     static final int[][] TABLE_SIZES = {{150, 100}, {300, 200}, {450, 300}, {1920, 1080}};
-    /** Heap of the child JVMs: the issue's "does not fit in a 2 GB heap". */
+    /** Heap of the child JVMs: 2 GiB, in which the huge scene's eager tessellation does not fit. */
     static final int CHILD_HEAP_MIB = 2048;
     /**
      * Heap of the close scene's Table 1 cells: its eager tessellation at 1920x1080 (levels 7 and 8,

@@ -42,9 +42,8 @@ public final class BenchCommand {
             usage: render bench [--only NAME] [--runs N] [--accel A] [--peers LIST] [--cell-timeout S] [--list]
 
               --only NAME   run only the row NAME, or the rows of the group NAME (see --list), or those of a
-                            comma-separated list of names; the group
-                            'adaptive' (issue 16's rows, long: each cell is a new JVM) and the group 'viewer' (the
-                            viewer's frame rate) run only when asked for
+                            comma-separated list of names; the groups 'adaptive' (adaptive subdivision, long: each
+                            cell is a new JVM) and 'viewer' (the viewer's frame rate) run only when asked for
               --runs N      timed runs per row after the warm-up (default 5); the median is reported
                             (adaptive rows: alternated pairs of new JVMs; Table 1 cells run once each)
               --cell-timeout S  stop an adaptive-row cell after S seconds (default 600) and report it as stopped
@@ -69,12 +68,12 @@ public final class BenchCommand {
     @FunctionalInterface
     private interface Action { void run(BenchCommand bench, PrintStream out) throws IOException; }
 
-    /** The section of the views where a dense mesh fills the frame (issue 18). */
+    /** The section of the views where a dense mesh fills the frame. */
     private static final String FILLING = "Peer scene, mesh-filling views";
 
-    /** The group of the issue-16 rows. */
+    /** The group of the adaptive-subdivision rows. */
     static final String ADAPTIVE = "adaptive";
-    /** The group of the viewer's row (issue 17). */
+    /** The group of the viewer's row. */
     static final String VIEWER = "viewer";
 
     private static final List<Row> ROWS = List.of(
@@ -89,24 +88,24 @@ public final class BenchCommand {
             new Row("knot-1m", FILLING,
                     String.format(Locale.ROOT, "scenes/bench/knot-1m.dat: a tube of %,d triangles around a trefoil knot filling the frame, on the ground quad, "
                             + "1280x720, 1 spp, %d threads; in-process and cold process; beside the peers", BenchMeshes.KNOT_1M.triangles(), BenchCommand.THREADS),
-                    (b, out) -> b.peerScene(out, BenchMeshes.KNOT_1M, "knot-1m", PeerBench.Targets.issue18(0.8))),
+                    (b, out) -> b.peerScene(out, BenchMeshes.KNOT_1M, "knot-1m", PeerBench.Targets.meshTracing(0.8))),
             new Row("torus-1m-close", FILLING,
                     String.format(Locale.ROOT, "scenes/bench/torus-1m-close.dat: the 1m torus close up, filling the frame, "
                             + "1280x720, 1 spp, %d threads; in-process and cold process; beside the peers", BenchCommand.THREADS),
-                    (b, out) -> b.peerScene(out, BenchMeshes.size("1m"), "torus-1m-close", PeerBench.Targets.issue18(0.8))),
+                    (b, out) -> b.peerScene(out, BenchMeshes.size("1m"), "torus-1m-close", PeerBench.Targets.meshTracing(0.8))),
             new Row("soft-shadow", "Soft shadows",
                     String.format(Locale.ROOT, "scenes/bench/soft-shadow.dat: the 1k torus on the ground quad under a 3x3 rectangle light, "
                             + "1280x720, 16 spp with 1 light sample each, %d threads; beside POV-Ray's 4x4 jittered area_light "
                             + "(1 primary ray and 16 shadow rays per pixel; target: at least 2x its speed)", BenchCommand.THREADS),
-                    (b, out) -> b.peerScene(out, BenchMeshes.size("1k"), "soft-shadow", PeerBench.Targets.issue20())),
+                    (b, out) -> b.peerScene(out, BenchMeshes.size("1k"), "soft-shadow", PeerBench.Targets.softShadows())),
             new Row("soft-shadow-light16", "Soft shadows",
                     String.format(Locale.ROOT, "scenes/bench/soft-shadow-light16.dat: soft-shadow at 1 spp with 16 light samples, %d threads: "
                             + "the same rays per pixel as POV-Ray's 4x4 area_light (1 camera ray, 16 shadow rays)", BenchCommand.THREADS),
-                    (b, out) -> b.peerScene(out, BenchMeshes.size("1k"), "soft-shadow-light16", PeerBench.Targets.issue20())),
+                    (b, out) -> b.peerScene(out, BenchMeshes.size("1k"), "soft-shadow-light16", PeerBench.Targets.softShadows())),
             new Row("soft-shadow-16k", "Soft shadows",
                     String.format(Locale.ROOT, "scenes/bench/soft-shadow-16k.dat: soft-shadow-light16 with the 16k torus (32,768 triangles), %d threads: "
                             + "1 camera ray and 16 shadow rays per pixel on both sides, beside POV-Ray's 4x4 area_light", BenchCommand.THREADS),
-                    (b, out) -> b.peerScene(out, BenchMeshes.size("16k"), "soft-shadow-16k", PeerBench.Targets.issue20())),
+                    (b, out) -> b.peerScene(out, BenchMeshes.size("16k"), "soft-shadow-16k", PeerBench.Targets.softShadows())),
             new Row("csg-subdiv", "CSG",
                     "scenes/bench/csg-subdiv.dat: difference of two level-4 subdivision surfaces, 1280x720, 1 spp, 2 threads; "
                             + "beside csg-subdiv-plain.dat, the same two surfaces without CSG (target: at least half its speed)",
@@ -151,8 +150,8 @@ public final class BenchCommand {
 
     private static Row torusRow(String size) {
         BenchMeshes.Size s = BenchMeshes.size(size);
-        // The 1m torus is the size issue 18 sets targets for beside the peers.
-        PeerBench.Targets targets = size.equals("1m") ? PeerBench.Targets.issue18(1.0) : null;
+        // The 1m torus is the size with targets beside the peers.
+        PeerBench.Targets targets = size.equals("1m") ? PeerBench.Targets.meshTracing(1.0) : null;
         return new Row("torus-" + size, "Peer scene",
                 String.format(Locale.ROOT, "scenes/bench/torus-%s.dat: torus of %,d triangles on a ground quad, 1280x720, 1 spp, %d threads; in-process and cold process%s",
                         size, s.triangles(), THREADS, targets != null ? "; beside the peers" : ""),
@@ -359,7 +358,7 @@ public final class BenchCommand {
 
     /**
      * The CSG scene and its plain twin, timed alternately (so drift on a shared machine hits both
-     * alike), with the throughput ratio the issue sets a floor for.
+     * alike), with the throughput ratio (target: at least half the plain scene's).
      */
     private void csgScene(PrintStream out) throws IOException {
         Path csg = benchDir.resolve("csg-subdiv.dat"), plain = benchDir.resolve("csg-subdiv-plain.dat");
