@@ -26,6 +26,7 @@ import lt.spindulys.math.Ranges;
 import lt.spindulys.frontend.FailureMessage;
 import lt.spindulys.frontend.HeapPeak;
 import lt.spindulys.render.FarmProgress;
+import lt.spindulys.render.JitWarmup;
 import lt.spindulys.render.RenderStats;
 import lt.spindulys.render.RenderJob;
 import lt.spindulys.render.RenderResult;
