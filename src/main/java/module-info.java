@@ -5,7 +5,7 @@
  * write the image with {@link lt.spindulys.image.ImageWriter}.
  *
  * <p>Only the packages a library user needs are exported; the per-ray machinery (hit records,
- * traversal scratch, acceleration structures, shading, sampling) and the command line stay inside.
+ * traversal scratch, acceleration structures, shading, sampling), the command line and the bench stay inside.
  * The same jar also runs from the class path, where every package is visible.
  */
 module lt.spindulys {
