@@ -5,13 +5,14 @@
  * write the image with {@link lt.spindulys.image.ImageWriter}.
  *
  * <p>Only the packages a library user needs are exported; the per-ray machinery (hit records,
- * traversal scratch, acceleration structures, shading, sampling) and the command line stay inside.
+ * traversal scratch, acceleration structures, shading, sampling), the command line and the bench stay inside.
  * The same jar also runs from the class path, where every package is visible.
  */
 module lt.spindulys {
     // ImageIO for PNG/JPEG and texture images; transitive because the API hands out BufferedImages
     requires transitive java.desktop;
-    requires jdk.management; // the bench's process CPU time (com.sun.management)
+    requires java.management; // heap pools for the peak heap (render --stats, the bench), the JVM's options (the bench)
+    requires jdk.management; // only for the bench: the process's CPU time (com.sun.management)
     // The wide BVH's vector box test: compiled against the incubating Vector API but optional at
     // run time, resolved only when the JVM is started with --add-modules jdk.incubator.vector;
     // without it WideBvh's probe falls back to the scalar binary BVH.

@@ -13,6 +13,7 @@ import java.util.ArrayList;
 import java.util.Deque;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeMap;
 import java.util.TreeSet;
 import java.util.regex.Matcher;
@@ -23,7 +24,9 @@ import org.junit.jupiter.api.Test;
 /**
  * Keeps the package graph of src/main one-way (math at the bottom, cli at the top): reads every main source file's
  * imports and fully qualified {@code lt.spindulys.x.Y} references and fails on any cycle, naming it with one
- * source line per edge so the fix can start from the message.
+ * source line per edge so the fix can start from the message. The two front ends at the top are held to the arrows
+ * they are meant to have: the bench to the exported API and the few internals its package-info names, the command
+ * line to the packages it uses now, none of the per-ray machinery.
  */
 class PackageCyclesTest {
 
@@ -40,6 +43,56 @@ class PackageCyclesTest {
         if (!cycles.isEmpty()) {
             fail("the package graph of src/main has cycles (math must stay at the bottom, cli at the top):\n  " + String.join("\n  ", cycles));
         }
+    }
+
+    /**
+     * The bench measures the library as a user would, through the exported packages (read from module-info), and
+     * beyond them only what its package-info names and why: {@code frontend} (the version, the peak heap),
+     * {@code files} (atomic writes of generated inputs), {@code limits} (patch sizes in the library's words) and
+     * {@code viewer} (the row that times the viewer's rasterizer). It never uses the command line.
+     */
+    @Test
+    void theBenchUsesTheExportedApi() throws IOException {
+        Set<String> allowed = new TreeSet<>(exported());
+        allowed.addAll(Set.of("frontend", "files", "limits", "viewer"));
+        assertUsesOnly("bench", allowed);
+    }
+
+    /**
+     * The command line: {@code render} and {@code io} (the render job, the readers), {@code bench} (one dispatch),
+     * {@code frontend} (failure lines, version, peak heap), and what its commands still reach for themselves: scene,
+     * image, camera, math and limits in the render command's options and checks, files, mesh and subdiv in
+     * {@code render subdivide}, plugin and viewer in {@code render view}. Not the per-ray machinery (accel, trace,
+     * shading, sampling, adaptive) nor materials and textures: a command that needs more goes through the library.
+     */
+    @Test
+    void theCommandLineUsesTheRenderJobTheReadersAndItsCommandsNeeds() throws IOException {
+        assertUsesOnly("cli", Set.of("render", "io", "bench", "frontend", "scene", "image", "camera", "math", "limits",
+                "files", "mesh", "subdiv", "plugin", "viewer"));
+    }
+
+    private static void assertUsesOnly(String from, Set<String> allowed) throws IOException {
+        Map<String, String> uses = graph(MAIN).get(from);
+        assertTrue(uses != null && !uses.isEmpty(), "found the package " + from);
+        List<String> beyond = new ArrayList<>();
+        for (Map.Entry<String, String> e : uses.entrySet()) {
+            if (!allowed.contains(e.getKey())) {
+                beyond.add(e.getValue());
+            }
+        }
+        assertTrue(beyond.isEmpty(), from + " uses packages beyond " + new TreeSet<>(allowed) + ":\n  " + String.join("\n  ", beyond));
+    }
+
+    /** The packages module-info exports, without the prefix. */
+    private static Set<String> exported() throws IOException {
+        Set<String> exported = new TreeSet<>();
+        Matcher m = Pattern.compile("(?m)^\\s*exports\\s+lt\\.spindulys\\.([a-z][a-z0-9_]*)\\s*;")
+                .matcher(code(Files.readString(MAIN.getParent().getParent().resolve("module-info.java"), StandardCharsets.UTF_8)));
+        while (m.find()) {
+            exported.add(m.group(1));
+        }
+        assertTrue(exported.size() > 5, "read the exports of module-info.java: " + exported);
+        return exported;
     }
 
     @Test

@@ -7,7 +7,6 @@ import java.util.stream.Collectors;
 
 import lt.spindulys.image.Aov;
 import lt.spindulys.image.PixelRegion;
-import lt.spindulys.render.FarmProgress;
 import lt.spindulys.render.RenderJob;
 import lt.spindulys.render.RenderResult;
 import lt.spindulys.scene.RenderSettings;

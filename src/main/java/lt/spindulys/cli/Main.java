@@ -5,16 +5,19 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 
+import lt.spindulys.bench.BenchCommand;
+import lt.spindulys.bench.BenchUsageException;
 import lt.spindulys.image.NonFinitePixelException;
 import lt.spindulys.io.SceneException;
 import lt.spindulys.frontend.FailureMessage;
+import lt.spindulys.frontend.Version;
 import lt.spindulys.limits.MessageText;
-import lt.spindulys.render.FarmProgress;
 
 /**
  * The {@code render} command line: {@code render SCENE.dat ...} renders ({@link RenderCommand}),
  * {@code render subdivide ...} refines a mesh ({@link SubdivideCommand}), {@code render view ...} opens the viewer
- * ({@link ViewCommand}), {@code render assemble ...} puts tiles back into a frame ({@link AssembleCommand}). {@link #run} does the work and returns the exit status, so
+ * ({@link ViewCommand}), {@code render assemble ...} puts tiles back into a frame ({@link AssembleCommand}),
+ * {@code render bench ...} runs the benchmark suite ({@link BenchCommand}, a front end of its own). {@link #run} does the work and returns the exit status, so
  * tests call it in-process; {@link #main} only exits with that status. Bad usage and bad input
  * print one line to stderr and exit 2; a failure while rendering or writing exits 1. Stack traces
  * appear only with {@code --debug}.
@@ -66,7 +69,7 @@ public final class Main {
                     out.println(BenchCommand.USAGE);
                     return 0;
                 }
-                return new BenchCommand(rest.toArray(new String[0])).run(out);
+                return new BenchCommand(rest.toArray(new String[0]), Main.class).run(out);
             }
             if (rest.isEmpty() || rest.contains("--help") || rest.contains("-h")) {
                 (rest.isEmpty() ? err : out).println(RenderCommand.USAGE);
@@ -81,7 +84,7 @@ public final class Main {
             RenderCommand command = new RenderCommand(renderArgs);
             openjd = null; // from here on the command reports its own failures to the manager
             return command.run(out, err);
-        } catch (UsageException e) {
+        } catch (UsageException | BenchUsageException e) {
             line(err, openjd, "render: " + e.getMessage());
             return 2;
         } catch (SceneException | RenderCommand.NoSuchFileException | IllegalArgumentException e) {
@@ -118,12 +121,6 @@ public final class Main {
     }
 
     static String version() {
-        String v = Main.class.getPackage().getImplementationVersion();
-        // A jar's manifest gives the version on the class path; on the module path the
-        // descriptor carries it (the compiler records the project's version there).
-        if (v == null && Main.class.getModule().getDescriptor() != null) {
-            v = Main.class.getModule().getDescriptor().rawVersion().orElse(null);
-        }
-        return v != null ? v : "development build";
+        return Version.text();
     }
 }

@@ -2,9 +2,6 @@ package lt.spindulys.cli;
 
 import java.io.IOException;
 import java.io.PrintStream;
-import java.lang.management.ManagementFactory;
-import java.lang.management.MemoryPoolMXBean;
-import java.lang.management.MemoryType;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
@@ -27,11 +24,11 @@ import lt.spindulys.limits.InsufficientMemoryException;
 import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.frontend.FailureMessage;
-import lt.spindulys.render.FarmProgress;
+import lt.spindulys.frontend.HeapPeak;
+import lt.spindulys.render.JitWarmup;
 import lt.spindulys.render.RenderStats;
 import lt.spindulys.render.RenderJob;
 import lt.spindulys.render.RenderResult;
-import lt.spindulys.render.TerminalProgress;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.SceneBuildException;
@@ -436,7 +433,7 @@ final class RenderCommand {
         out.printf(Locale.ROOT, "rays:    %d camera, %d shadow, %d reflection, %d refraction%n",
                 r.cameraRays(), r.shadowRays(), r.reflectionRays(), r.refractionRays());
         out.printf(Locale.ROOT, "speed:   %s Mrays/s%n", threeFigures(r.mraysPerSecond()));
-        out.printf(Locale.ROOT, "heap:    %.1f MiB peak%n", peakHeapBytes() / 1048576.0);
+        out.printf(Locale.ROOT, "heap:    %.1f MiB peak%n", HeapPeak.bytes() / 1048576.0);
     }
 
     /**
@@ -447,26 +444,6 @@ final class RenderCommand {
         if (!(v > 0) || v >= 10) return String.format(Locale.ROOT, "%.1f", v);
         int decimals = Math.min(12, 2 - (int) Math.floor(Math.log10(v)));
         return String.format(Locale.ROOT, "%." + decimals + "f", v);
-    }
-
-    /**
-     * The most heap the process has used so far: the sum over the heap pools of each pool's peak
-     * (the JVM tracks these between collections, so a short-lived spike still counts). The pools
-     * peak at different moments, so the sum can exceed the true peak a little; it never misses it.
-     */
-    static long peakHeapBytes() {
-        long sum = 0;
-        for (MemoryPoolMXBean pool : ManagementFactory.getMemoryPoolMXBeans()) {
-            if (pool.getType() == MemoryType.HEAP && pool.isValid()) sum += pool.getPeakUsage().getUsed();
-        }
-        return sum;
-    }
-
-    /** Starts a new peak: {@link #peakHeapBytes()} then reports the peak since this call. */
-    static void resetPeakHeap() {
-        for (MemoryPoolMXBean pool : ManagementFactory.getMemoryPoolMXBeans()) {
-            if (pool.getType() == MemoryType.HEAP && pool.isValid()) pool.resetPeakUsage();
-        }
     }
 
     private static String value(String[] args, int i, String option) throws UsageException {

@@ -1,5 +1,6 @@
 /**
- * What the front ends (the command line and the viewer) share with each other and no library
- * user needs: the one line a user is shown for a failure. Not exported.
+ * What the front ends (the command line, the viewer and the bench) share with each other and no
+ * library user needs: the one line a user is shown for a failure, the program's version and the
+ * process's peak heap. Not exported.
  */
 package lt.spindulys.frontend;

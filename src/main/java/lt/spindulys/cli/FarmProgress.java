@@ -1,4 +1,4 @@
-package lt.spindulys.render;
+package lt.spindulys.cli;
 
 import java.io.PrintStream;
 import java.util.Locale;
@@ -6,6 +6,8 @@ import java.util.Objects;
 import java.util.function.Supplier;
 
 import lt.spindulys.limits.MessageText;
+import lt.spindulys.render.ProgressListener;
+import lt.spindulys.render.RenderJob;
 
 /**
  * Progress for a render farm's manager, one line at a time (never redrawn in place), printed by a
@@ -27,7 +29,7 @@ import lt.spindulys.limits.MessageText;
  * <p>A task that renders several frames reports them as one piece of work: {@link #item} starts
  * frame {@code index} of {@code count}, and the share done is that of all of them.
  */
-public final class FarmProgress implements ProgressListener, AutoCloseable {
+final class FarmProgress implements ProgressListener, AutoCloseable {
     /** The most seconds between two lines. */
     public static final int INTERVAL_SECONDS = 2;
 

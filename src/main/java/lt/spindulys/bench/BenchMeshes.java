@@ -1,4 +1,4 @@
-package lt.spindulys.cli;
+package lt.spindulys.bench;
 
 import java.io.BufferedOutputStream;
 import java.io.IOException;
@@ -17,7 +17,7 @@ import lt.spindulys.files.AtomicFile;
  * coordinates, and a 40 x 40 ground quad at y = -0.4. The text is the same, byte for byte, as
  * the peer kit's generator writes, so every renderer reads identical numbers; quads are split
  * along their v0-v2 diagonal by every reader, ours included. Large sizes are generated on demand
- * rather than kept in the repository. Also the mesh of the mesh-filling view knot-1m (issue 18):
+ * rather than kept in the repository. Also the mesh of the mesh-filling view knot-1m:
  * a tube around a (2, 3) torus knot, resting on the same ground.
  */
 final class BenchMeshes {

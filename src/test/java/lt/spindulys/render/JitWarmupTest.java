@@ -1,4 +1,4 @@
-package lt.spindulys.cli;
+package lt.spindulys.render;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -19,8 +19,6 @@ import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
-import lt.spindulys.render.ProgressListener;
-import lt.spindulys.render.Renderer;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;

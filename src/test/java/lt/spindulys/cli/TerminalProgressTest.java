@@ -1,4 +1,4 @@
-package lt.spindulys.render;
+package lt.spindulys.cli;
 
 import static org.junit.jupiter.api.Assertions.*;
 
@@ -10,9 +10,11 @@ import java.util.function.IntBinaryOperator;
 
 import org.junit.jupiter.api.Test;
 
+import lt.spindulys.render.TileOrder;
+
 /**
  * The remaining-time estimate, headless: renders simulated with synthetic tile costs (no clock),
- * handed out as {@link Renderer} hands them out, on one or more simulated threads.
+ * handed out as the Renderer hands them out ({@link TileOrder}), on one or more simulated threads.
  */
 class TerminalProgressTest {
     /** 800x450 in 16-pixel tiles. */
@@ -66,7 +68,7 @@ class TerminalProgressTest {
 
     /** The Renderer's order. */
     private static int rendererOrder(int k, int tiles) {
-        return Renderer.tileAt(k, tiles, Renderer.spreadStride(tiles));
+        return TileOrder.tileAt(k, tiles, TileOrder.spreadStride(tiles));
     }
 
     @Test
@@ -88,14 +90,14 @@ class TerminalProgressTest {
     void everyTileComesExactlyOnce() {
         for (int tiles = 1; tiles <= 2000; tiles++) assertPermutation(tiles);
         // The largest frame: 32768 x 32768 pixels in 16-pixel tiles.
-        assertPermutation((32768 / Renderer.TILE) * (32768 / Renderer.TILE));
+        assertPermutation((32768 / TileOrder.TILE) * (32768 / TileOrder.TILE));
     }
 
     private static void assertPermutation(int tiles) {
-        int stride = Renderer.spreadStride(tiles);
+        int stride = TileOrder.spreadStride(tiles);
         java.util.BitSet seen = new java.util.BitSet(tiles);
         for (int k = 0; k < tiles; k++) {
-            int t = Renderer.tileAt(k, tiles, stride);
+            int t = TileOrder.tileAt(k, tiles, stride);
             assertTrue(t >= 0 && t < tiles && !seen.get(t), tiles + " tiles: tile " + t + " at " + k);
             seen.set(t);
         }

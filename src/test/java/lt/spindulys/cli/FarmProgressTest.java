@@ -1,4 +1,4 @@
-package lt.spindulys.render;
+package lt.spindulys.cli;
 
 import static org.junit.jupiter.api.Assertions.*;
 
@@ -9,6 +9,8 @@ import java.util.List;
 import java.util.concurrent.atomic.AtomicReference;
 
 import org.junit.jupiter.api.Test;
+
+import lt.spindulys.render.RenderJob;
 
 /** The lines of {@link FarmProgress}, driven by a fake clock and job step. */
 class FarmProgressTest {

@@ -1,4 +1,4 @@
-# Written by `render bench` (cli/PeerInputs) into a scratch folder and run as
+# Written by `render bench` (bench/PeerInputs) into a scratch folder and run as
 #   blender -b --factory-startup -noaudio -P cycles_view.py -- ARGS
 # Renders one bench view with Cycles on the CPU: OBJ meshes in grey Lambert 0.8 with flat
 # normals, a pinhole camera, one point light without radius (hard shadows), black background,

@@ -1,7 +1,7 @@
-package lt.spindulys.cli;
+package lt.spindulys.bench;
 
-import static lt.spindulys.cli.BenchTable.fmt;
-import static lt.spindulys.cli.BenchTable.median;
+import static lt.spindulys.bench.BenchTable.fmt;
+import static lt.spindulys.bench.BenchTable.median;
 
 import java.io.IOException;
 import java.io.PrintStream;
@@ -10,6 +10,8 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 
+import lt.spindulys.frontend.HeapPeak;
+import lt.spindulys.frontend.Version;
 import lt.spindulys.io.ObjReader;
 import lt.spindulys.scene.AcceleratorKind;
 import lt.spindulys.io.SceneParser;
@@ -35,14 +37,13 @@ import lt.spindulys.subdiv.SubdivOptions.Scheme;
  * input is run through it in the same session and the ratio is printed beside our figure. Inputs are read
  * from scenes/bench/ under the current folder (the repository root).
  */
-final class BenchCommand {
-    static final String USAGE = """
+public final class BenchCommand {
+    public static final String USAGE = """
             usage: render bench [--only NAME] [--runs N] [--accel A] [--peers LIST] [--cell-timeout S] [--list]
 
               --only NAME   run only the row NAME, or the rows of the group NAME (see --list), or those of a
-                            comma-separated list of names; the group
-                            'adaptive' (issue 16's rows, long: each cell is a new JVM) and the group 'viewer' (the
-                            viewer's frame rate) run only when asked for
+                            comma-separated list of names; the groups 'adaptive' (adaptive subdivision, long: each
+                            cell is a new JVM) and 'viewer' (the viewer's frame rate) run only when asked for
               --runs N      timed runs per row after the warm-up (default 5); the median is reported
                             (adaptive rows: alternated pairs of new JVMs; Table 1 cells run once each)
               --cell-timeout S  stop an adaptive-row cell after S seconds (default 600) and report it as stopped
@@ -67,12 +68,12 @@ final class BenchCommand {
     @FunctionalInterface
     private interface Action { void run(BenchCommand bench, PrintStream out) throws IOException; }
 
-    /** The section of the views where a dense mesh fills the frame (issue 18). */
+    /** The section of the views where a dense mesh fills the frame. */
     private static final String FILLING = "Peer scene, mesh-filling views";
 
-    /** The group of the issue-16 rows. */
+    /** The group of the adaptive-subdivision rows. */
     static final String ADAPTIVE = "adaptive";
-    /** The group of the viewer's row (issue 17). */
+    /** The group of the viewer's row. */
     static final String VIEWER = "viewer";
 
     private static final List<Row> ROWS = List.of(
@@ -87,24 +88,24 @@ final class BenchCommand {
             new Row("knot-1m", FILLING,
                     String.format(Locale.ROOT, "scenes/bench/knot-1m.dat: a tube of %,d triangles around a trefoil knot filling the frame, on the ground quad, "
                             + "1280x720, 1 spp, %d threads; in-process and cold process; beside the peers", BenchMeshes.KNOT_1M.triangles(), BenchCommand.THREADS),
-                    (b, out) -> b.peerScene(out, BenchMeshes.KNOT_1M, "knot-1m", PeerBench.Targets.issue18(0.8))),
+                    (b, out) -> b.peerScene(out, BenchMeshes.KNOT_1M, "knot-1m", PeerBench.Targets.meshTracing(0.8))),
             new Row("torus-1m-close", FILLING,
                     String.format(Locale.ROOT, "scenes/bench/torus-1m-close.dat: the 1m torus close up, filling the frame, "
                             + "1280x720, 1 spp, %d threads; in-process and cold process; beside the peers", BenchCommand.THREADS),
-                    (b, out) -> b.peerScene(out, BenchMeshes.size("1m"), "torus-1m-close", PeerBench.Targets.issue18(0.8))),
+                    (b, out) -> b.peerScene(out, BenchMeshes.size("1m"), "torus-1m-close", PeerBench.Targets.meshTracing(0.8))),
             new Row("soft-shadow", "Soft shadows",
                     String.format(Locale.ROOT, "scenes/bench/soft-shadow.dat: the 1k torus on the ground quad under a 3x3 rectangle light, "
                             + "1280x720, 16 spp with 1 light sample each, %d threads; beside POV-Ray's 4x4 jittered area_light "
                             + "(1 primary ray and 16 shadow rays per pixel; target: at least 2x its speed)", BenchCommand.THREADS),
-                    (b, out) -> b.peerScene(out, BenchMeshes.size("1k"), "soft-shadow", PeerBench.Targets.issue20())),
+                    (b, out) -> b.peerScene(out, BenchMeshes.size("1k"), "soft-shadow", PeerBench.Targets.softShadows())),
             new Row("soft-shadow-light16", "Soft shadows",
                     String.format(Locale.ROOT, "scenes/bench/soft-shadow-light16.dat: soft-shadow at 1 spp with 16 light samples, %d threads: "
                             + "the same rays per pixel as POV-Ray's 4x4 area_light (1 camera ray, 16 shadow rays)", BenchCommand.THREADS),
-                    (b, out) -> b.peerScene(out, BenchMeshes.size("1k"), "soft-shadow-light16", PeerBench.Targets.issue20())),
+                    (b, out) -> b.peerScene(out, BenchMeshes.size("1k"), "soft-shadow-light16", PeerBench.Targets.softShadows())),
             new Row("soft-shadow-16k", "Soft shadows",
                     String.format(Locale.ROOT, "scenes/bench/soft-shadow-16k.dat: soft-shadow-light16 with the 16k torus (32,768 triangles), %d threads: "
                             + "1 camera ray and 16 shadow rays per pixel on both sides, beside POV-Ray's 4x4 area_light", BenchCommand.THREADS),
-                    (b, out) -> b.peerScene(out, BenchMeshes.size("16k"), "soft-shadow-16k", PeerBench.Targets.issue20())),
+                    (b, out) -> b.peerScene(out, BenchMeshes.size("16k"), "soft-shadow-16k", PeerBench.Targets.softShadows())),
             new Row("csg-subdiv", "CSG",
                     "scenes/bench/csg-subdiv.dat: difference of two level-4 subdivision surfaces, 1280x720, 1 spp, 2 threads; "
                             + "beside csg-subdiv-plain.dat, the same two surfaces without CSG (target: at least half its speed)",
@@ -149,8 +150,8 @@ final class BenchCommand {
 
     private static Row torusRow(String size) {
         BenchMeshes.Size s = BenchMeshes.size(size);
-        // The 1m torus is the size issue 18 sets targets for beside the peers.
-        PeerBench.Targets targets = size.equals("1m") ? PeerBench.Targets.issue18(1.0) : null;
+        // The 1m torus is the size with targets beside the peers.
+        PeerBench.Targets targets = size.equals("1m") ? PeerBench.Targets.meshTracing(1.0) : null;
         return new Row("torus-" + size, "Peer scene",
                 String.format(Locale.ROOT, "scenes/bench/torus-%s.dat: torus of %,d triangles on a ground quad, 1280x720, 1 spp, %d threads; in-process and cold process%s",
                         size, s.triangles(), THREADS, targets != null ? "; beside the peers" : ""),
@@ -173,57 +174,68 @@ final class BenchCommand {
     /** Seconds an adaptive-row cell (a child JVM) may take before it is stopped. */
     private int cellTimeout = 600;
     private final Path benchDir = Path.of("scenes", "bench");
+    /** The main class of the command line, which the cold-process rows and the adaptive cells start in new JVMs. */
+    private final String commandLine;
 
-    BenchCommand(String[] args) throws UsageException {
+    /**
+     * The bench as {@code args} ask.
+     *
+     * @param args the options after {@code render bench}
+     * @param commandLine the main class of {@code render}, started in new JVMs to time whole processes
+     * @throws BenchUsageException when an option is unknown or its value is bad
+     */
+    public BenchCommand(String[] args, Class<?> commandLine) throws BenchUsageException {
+        this.commandLine = commandLine.getName();
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--only" -> {
-                    if (++i >= args.length) throw new UsageException("option --only needs a value");
+                    if (++i >= args.length) throw new BenchUsageException("option --only needs a value");
                     only = List.of(args[i].split(",", -1));
                     for (String o : only) {
                         if (ROWS.stream().noneMatch(r -> r.name().equals(o) || o.equals(r.group()))) {
-                            throw new UsageException("unknown bench row '" + o + "' (rows: " + String.join(", ", ROWS.stream().map(Row::name).toList())
+                            throw new BenchUsageException("unknown bench row '" + o + "' (rows: " + String.join(", ", ROWS.stream().map(Row::name).toList())
                                     + "; groups: " + ADAPTIVE + ", " + VIEWER + ")");
                         }
                     }
                 }
                 case "--runs" -> {
-                    if (++i >= args.length) throw new UsageException("option --runs needs a value");
+                    if (++i >= args.length) throw new BenchUsageException("option --runs needs a value");
                     try {
                         runs = Integer.parseInt(args[i]);
                     } catch (NumberFormatException e) {
-                        throw new UsageException("--runs expects a whole number, found '" + args[i] + "'");
+                        throw new BenchUsageException("--runs expects a whole number, found '" + args[i] + "'");
                     }
-                    if (runs < 1 || runs > 100) throw new UsageException("--runs must be between 1 and 100, found " + runs);
+                    if (runs < 1 || runs > 100) throw new BenchUsageException("--runs must be between 1 and 100, found " + runs);
                 }
                 case "--accel" -> {
-                    if (++i >= args.length) throw new UsageException("option --accel needs a value");
+                    if (++i >= args.length) throw new BenchUsageException("option --accel needs a value");
                     try {
                         accel = AcceleratorKind.fromKeyword(args[i]);
                     } catch (IllegalArgumentException e) {
-                        throw new UsageException(e.getMessage());
+                        throw new BenchUsageException(e.getMessage());
                     }
                 }
                 case "--cell-timeout" -> {
-                    if (++i >= args.length) throw new UsageException("option --cell-timeout needs a value");
+                    if (++i >= args.length) throw new BenchUsageException("option --cell-timeout needs a value");
                     try {
                         cellTimeout = Integer.parseInt(args[i]);
                     } catch (NumberFormatException e) {
-                        throw new UsageException("--cell-timeout expects a whole number of seconds, found '" + args[i] + "'");
+                        throw new BenchUsageException("--cell-timeout expects a whole number of seconds, found '" + args[i] + "'");
                     }
-                    if (cellTimeout < 1 || cellTimeout > 86400) throw new UsageException("--cell-timeout must be between 1 and 86400 seconds, found " + cellTimeout);
+                    if (cellTimeout < 1 || cellTimeout > 86400) throw new BenchUsageException("--cell-timeout must be between 1 and 86400 seconds, found " + cellTimeout);
                 }
                 case "--peers" -> {
-                    if (++i >= args.length) throw new UsageException("option --peers needs a value");
+                    if (++i >= args.length) throw new BenchUsageException("option --peers needs a value");
                     peers = PeerBench.Peer.parse(args[i]);
                 }
                 case "--list" -> list = true;
-                default -> throw new UsageException("unknown bench option '" + args[i] + "' (see render bench --help)");
+                default -> throw new BenchUsageException("unknown bench option '" + args[i] + "' (see render bench --help)");
             }
         }
     }
 
-    int run(PrintStream out) throws IOException {
+    /** Runs the rows asked for (or lists them), printing to {@code out}; returns the exit status. */
+    public int run(PrintStream out) throws IOException {
         if (list) {
             for (Row r : ROWS) out.printf("%-22s %s%s%n", r.name(), r.group() != null ? "[" + r.group() + "] " : "", r.description());
             return 0;
@@ -233,7 +245,7 @@ final class BenchCommand {
         }
         Runtime rt = Runtime.getRuntime();
         out.printf(Locale.ROOT, "Spindulys %s benchmark: Java %s, %d cores, max heap %.1f GiB, %d timed runs per row (median)%n",
-                Main.version(), System.getProperty("java.version"), rt.availableProcessors(), rt.maxMemory() / (double) (1L << 30), runs);
+                Version.text(), System.getProperty("java.version"), rt.availableProcessors(), rt.maxMemory() / (double) (1L << 30), runs);
         out.printf(Locale.ROOT, "Structure of the peer-scene rows: %s%n", (accel != null ? accel : AcceleratorKind.DEFAULT).description());
         String section = null;
         for (Row r : ROWS) {
@@ -265,7 +277,7 @@ final class BenchCommand {
 
     /** The adaptive rows, in a scratch folder that is removed afterwards. */
     private void adaptive(PrintStream out, AdaptiveAction action) throws IOException {
-        AdaptiveBench a = new AdaptiveBench(runs, cellTimeout, out);
+        AdaptiveBench a = new AdaptiveBench(runs, cellTimeout, out, commandLine);
         try {
             action.run(a);
         } finally {
@@ -346,7 +358,7 @@ final class BenchCommand {
 
     /**
      * The CSG scene and its plain twin, timed alternately (so drift on a shared machine hits both
-     * alike), with the throughput ratio the issue sets a floor for.
+     * alike), with the throughput ratio (target: at least half the plain scene's).
      */
     private void csgScene(PrintStream out) throws IOException {
         Path csg = benchDir.resolve("csg-subdiv.dat"), plain = benchDir.resolve("csg-subdiv-plain.dat");
@@ -452,7 +464,7 @@ final class BenchCommand {
     /** {@link #renderOnce(Path, AcceleratorKind)} with the scene's settings changed by {@code settings}. */
     static Measured renderOnce(Path file, AcceleratorKind accel, java.util.function.UnaryOperator<RenderSettings> settings) throws IOException {
         System.gc();
-        RenderCommand.resetPeakHeap();
+        HeapPeak.reset();
         long t0 = System.nanoTime();
         SceneBuilder builder = SceneParser.parse(file);
         if (accel != null) builder.settings(builder.settings().toBuilder().accelerator(accel).build());
@@ -469,7 +481,7 @@ final class BenchCommand {
             throw new IOException("interrupted", e);
         }
         long cpu1 = processCpuNanos();
-        long peak = RenderCommand.peakHeapBytes();
+        long peak = HeapPeak.bytes();
         long triangles = 0, bytes = 0;
         for (GObject o : scene.objects()) {
             if (o instanceof TriangleMesh m && !m.isInstance()) { // an instance shares its original's arrays
@@ -485,7 +497,7 @@ final class BenchCommand {
      * Median wall time of {@code runs} whole new processes rendering {@code scene} with this
      * program's own classes, after one untimed run; NaN if a run fails.
      */
-    private static double coldSeconds(Path scene, int runs, AcceleratorKind accel) throws IOException {
+    private double coldSeconds(Path scene, int runs, AcceleratorKind accel) throws IOException {
         double[] t = new double[runs];
         for (int i = -1; i < runs; i++) {
             double s = coldOnce(scene, accel);
@@ -496,7 +508,7 @@ final class BenchCommand {
     }
 
     /** Wall time of one whole new process rendering {@code scene} with this program's own classes; NaN if it fails. */
-    static double coldOnce(Path scene, AcceleratorKind accel) throws IOException {
+    private double coldOnce(Path scene, AcceleratorKind accel) throws IOException {
         String javaExe = Path.of(System.getProperty("java.home"), "bin", "java").toString();
         String cp;
         try {
@@ -510,7 +522,7 @@ final class BenchCommand {
             // The new process gets this one's JVM options (those ./render passes: the vector
             // module, the collector), so it measures what a render from the launcher does.
             cmd.addAll(java.lang.management.ManagementFactory.getRuntimeMXBean().getInputArguments());
-            cmd.addAll(List.of("-cp", cp, Main.class.getName(), scene.toString(), "-o", image.toString(),
+            cmd.addAll(List.of("-cp", cp, commandLine, scene.toString(), "-o", image.toString(),
                     "--quiet", "--threads", Integer.toString(THREADS)));
             if (accel != null) cmd.addAll(List.of("--accel", accel.keyword()));
             long t0 = System.nanoTime();

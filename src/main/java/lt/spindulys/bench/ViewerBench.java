@@ -1,7 +1,7 @@
-package lt.spindulys.cli;
+package lt.spindulys.bench;
 
-import static lt.spindulys.cli.BenchTable.fmt;
-import static lt.spindulys.cli.BenchTable.median;
+import static lt.spindulys.bench.BenchTable.fmt;
+import static lt.spindulys.bench.BenchTable.median;
 
 import java.io.PrintStream;
 import java.util.Arrays;
@@ -86,7 +86,7 @@ final class ViewerBench {
             }
         }
         t.print(out);
-        out.println("  target (issue 17): at least 30 frames/s for a 100,000-quad surface at 1280x720 on 2 cores");
+        out.println("  target: at least 30 frames/s for a 100,000-quad surface at 1280x720 on 2 cores");
         levelChange(out, cage, runs);
     }
 

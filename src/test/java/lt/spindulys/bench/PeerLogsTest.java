@@ -1,4 +1,4 @@
-package lt.spindulys.cli;
+package lt.spindulys.bench;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;

@@ -1,4 +1,4 @@
-package lt.spindulys.cli;
+package lt.spindulys.bench;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;

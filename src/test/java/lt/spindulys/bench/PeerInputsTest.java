@@ -1,4 +1,4 @@
-package lt.spindulys.cli;
+package lt.spindulys.bench;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -180,10 +180,10 @@ class PeerInputsTest {
     }
 
     @Test
-    void peersOption() throws UsageException {
+    void peersOption() throws BenchUsageException {
         assertEquals(EnumSet.of(PeerBench.Peer.EMBREE, PeerBench.Peer.CYCLES), PeerBench.Peer.parse("embree,cycles"));
         assertEquals(EnumSet.noneOf(PeerBench.Peer.class), PeerBench.Peer.parse("none"));
-        UsageException e = assertThrows(UsageException.class, () -> PeerBench.Peer.parse("embree,sunflow"));
+        BenchUsageException e = assertThrows(BenchUsageException.class, () -> PeerBench.Peer.parse("embree,sunflow"));
         assertEquals("unknown peer 'sunflow' in --peers (expected embree, povray, cycles or none)", e.getMessage());
     }
 

@@ -1,4 +1,4 @@
-package lt.spindulys.cli;
+package lt.spindulys.bench;
 
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;

@@ -1,7 +1,7 @@
-package lt.spindulys.cli;
+package lt.spindulys.bench;
 
-import static lt.spindulys.cli.BenchTable.fmt;
-import static lt.spindulys.cli.BenchTable.median;
+import static lt.spindulys.bench.BenchTable.fmt;
+import static lt.spindulys.bench.BenchTable.median;
 
 import java.io.BufferedWriter;
 import java.io.IOException;
@@ -27,12 +27,12 @@ import lt.spindulys.scene.SceneBuilder;
 import lt.spindulys.subdiv.PatchRefiner;
 
 /**
- * The adaptive-subdivision rows of {@code render bench} (issue 16): the thesis's Table 1 (the
+ * The adaptive-subdivision rows of {@code render bench}: the thesis's Table 1 (the
  * projected, lazy and combined methods side by side at four image sizes on two scenes), the lazy
  * method against the eager one at the same tessellation, and the lazy cache's policy and size.
  *
  * <p>Every cell is a whole new JVM with a 2 GiB heap running the ordinary command line
- * ({@code Main SCENE --stats}), so its peak heap is its own and not what an earlier cell left
+ * ({@code render SCENE --stats}), so its peak heap is its own and not what an earlier cell left
  * behind, and "does not fit" is what a user with that heap would see. Two heap figures are read:
  * the heap pools' peak (what {@code --stats} prints: everything the collector let accumulate,
  * garbage included) and the largest heap left live after a collection (from the child's GC log:
@@ -42,7 +42,7 @@ import lt.spindulys.subdiv.PatchRefiner;
 final class AdaptiveBench {
     /** The thesis's image sizes (Table 1) and full HD. */
     static final int[][] TABLE_SIZES = {{150, 100}, {300, 200}, {450, 300}, {1920, 1080}};
-    /** Heap of the child JVMs: the issue's "does not fit in a 2 GB heap". */
+    /** Heap of the child JVMs: 2 GiB, in which the huge scene's eager tessellation does not fit. */
     static final int CHILD_HEAP_MIB = 2048;
     /**
      * Heap of the close scene's Table 1 cells: its eager tessellation at 1920x1080 (levels 7 and 8,
@@ -87,8 +87,11 @@ final class AdaptiveBench {
     private final int runs;
     private final int timeoutSeconds;
     private final PrintStream out;
+    /** The main class of the command line each cell runs. */
+    private final String commandLine;
 
-    AdaptiveBench(int runs, int timeoutSeconds, PrintStream out) throws IOException {
+    AdaptiveBench(int runs, int timeoutSeconds, PrintStream out, String commandLine) throws IOException {
+        this.commandLine = commandLine;
         this.runs = runs;
         this.timeoutSeconds = timeoutSeconds;
         this.out = out;
@@ -190,7 +193,7 @@ final class AdaptiveBench {
         for (String a : java.lang.management.ManagementFactory.getRuntimeMXBean().getInputArguments()) {
             if (!a.startsWith("-Xmx") && !a.startsWith("-Xms") && !a.startsWith("-Xlog") && !a.startsWith("-XX:MaxRAM")) cmd.add(a);
         }
-        cmd.addAll(List.of("-Xmx" + s.heapMiB() + "m", "-Xlog:gc:file=" + gc, "-cp", classPath(), Main.class.getName(),
+        cmd.addAll(List.of("-Xmx" + s.heapMiB() + "m", "-Xlog:gc:file=" + gc, "-cp", classPath(), commandLine,
                 scene.toString(), "-o", image.toString(), "--width", Integer.toString(s.width()), "--height", Integer.toString(s.height()),
                 "--threads", Integer.toString(BenchCommand.THREADS), "--stats", "--quiet"));
         if (s.cacheMiB() > 0) cmd.addAll(List.of("--subdiv-cache", Integer.toString(s.cacheMiB())));

@@ -1,12 +1,14 @@
-package lt.spindulys.render;
+package lt.spindulys.cli;
 
 import java.io.PrintStream;
+
+import lt.spindulys.render.ProgressListener;
 
 /**
  * A one-line progress bar (percent, elapsed, remaining) redrawn in place on a terminal, at most
  * ten times a second, and cleared when the render ends.
  */
-public final class TerminalProgress implements ProgressListener {
+final class TerminalProgress implements ProgressListener {
     private static final int BAR = 30;
     private final PrintStream out;
     private final long start = System.nanoTime();

@@ -1,4 +1,4 @@
-package lt.spindulys.cli;
+package lt.spindulys.render;
 
 import java.util.ArrayDeque;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -9,8 +9,6 @@ import lt.spindulys.accel.WideBvh;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
-import lt.spindulys.render.ProgressListener;
-import lt.spindulys.render.Renderer;
 import lt.spindulys.scene.Bool;
 import lt.spindulys.scene.GObject;
 import lt.spindulys.material.Material;
@@ -24,9 +22,11 @@ import lt.spindulys.scene.TriangleMesh;
 
 /**
  * Renders a small built-in scene (a torus of 1,024 quads on a ground quad, one point light, hard
- * shadows) again and again on a background thread while the command's thread parses the scene
- * file; before the real scene is built the command waits for it to finish or stops it
- * ({@link #finishFor}).
+ * shadows) again and again on a background thread while the caller's thread parses the scene
+ * file; before the real scene is built the caller waits for it to finish or stops it
+ * ({@link #finishFor}). For a program that starts a JVM to render one scene, as the command line
+ * does: {@code try (JitWarmup warm = JitWarmup.start()) { ...parse...; warm.finishFor(builder,
+ * accelerator); ...build and render... }}.
  *
  * <p>Why: a new JVM runs the first part of a render in interpreted and provisionally compiled
  * code. The warm-up was added while the parse left a core idle; a large OBJ is now parsed on
@@ -39,7 +39,7 @@ import lt.spindulys.scene.TriangleMesh;
  * traversal, the triangle test, shading and shadow rays first.
  * The warm-up shares nothing with the real scene; the image is the same with or without it.
  */
-final class JitWarmup implements AutoCloseable {
+public final class JitWarmup implements AutoCloseable {
     /**
      * Enough renders to compile the hot paths, few enough to end within a large scene's parse
      * (fewer left the render slower, many more slowed the parse; see docs/performance.md).
@@ -66,8 +66,12 @@ final class JitWarmup implements AutoCloseable {
         thread.setPriority(Thread.MIN_PRIORITY);
     }
 
-    /** Starts warming up on a new background thread. */
-    static JitWarmup start() {
+    /**
+     * Starts warming up on a new background thread.
+     *
+     * @return the warm-up, to be finished ({@link #finishFor}) or closed before the real scene is built
+     */
+    public static JitWarmup start() {
         return start(new SceneRenders());
     }
 
@@ -120,8 +124,12 @@ final class JitWarmup implements AutoCloseable {
      * as long as after a finished warm-up, more than the wait; a scene of spheres, or one whose
      * structure is another ({@code accel}, the scene's or the command line's), would wait for
      * nothing (figures in docs/performance.md, the wide vector BVH).
+     *
+     * @param scene the scene as read, before it is built
+     * @param accel the structure it will be built with
+     * @throws InterruptedException when interrupted while waiting ({@link #close} then stops the warm-up)
      */
-    void finishFor(SceneBuilder scene, AcceleratorKind accel) throws InterruptedException {
+    public void finishFor(SceneBuilder scene, AcceleratorKind accel) throws InterruptedException {
         if (waitsFor(scene, accel)) thread.join();
         close();
     }

@@ -1,4 +1,4 @@
-package lt.spindulys.cli;
+package lt.spindulys.bench;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -109,7 +109,7 @@ final class PeerInputs {
      */
     static String povScene(PeerView v, List<String> includes) {
         StringBuilder s = new StringBuilder();
-        s.append("// written by `render bench` (cli/PeerInputs)\n#version 3.7;\n");
+        s.append("// written by `render bench` (bench/PeerInputs)\n#version 3.7;\n");
         s.append("global_settings { assumed_gamma 1.0 max_trace_level 1 }\n");
         s.append("camera { perspective\n  location ").append(vector(v.eye()))
                 .append("\n  right -x*").append(v.width()).append('/').append(v.height())

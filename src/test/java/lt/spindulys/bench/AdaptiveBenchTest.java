@@ -1,4 +1,4 @@
-package lt.spindulys.cli;
+package lt.spindulys.bench;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -39,7 +39,7 @@ class AdaptiveBenchTest {
     /** The scenes are what the rows claim: level 6 or more at full HD close up, and an eager tessellation beyond 2 GiB. */
     @Test
     void scenesNeedWhatTheTableClaims() throws IOException {
-        AdaptiveBench a = new AdaptiveBench(1, 1, new PrintStream(PrintStream.nullOutputStream()));
+        AdaptiveBench a = new AdaptiveBench(1, 1, new PrintStream(PrintStream.nullOutputStream()), "lt.spindulys.cli.Main");
         try {
             AdaptiveBench.Need close = a.need("close", AdaptiveBench.CLOSE_FRONT, 1920, 1080);
             int deepest = 0;

@@ -1,7 +1,7 @@
-package lt.spindulys.cli;
+package lt.spindulys.bench;
 
-import static lt.spindulys.cli.BenchTable.fmt;
-import static lt.spindulys.cli.BenchTable.median;
+import static lt.spindulys.bench.BenchTable.fmt;
+import static lt.spindulys.bench.BenchTable.median;
 
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -26,7 +26,7 @@ import lt.spindulys.files.FileNames;
 import lt.spindulys.io.ObjReader;
 
 /**
- * The peer renderers run from the bench on a bench row's own view (issue 18): Embree's
+ * The peer renderers run from the bench on a bench row's own view: Embree's
  * {@code pathtracer} tutorial, POV-Ray and Blender's Cycles, each when its program is on PATH.
  * For every peer, alternated pairs: our render in this (warm) JVM beside the peer's own
  * render-only figure, then our whole cold process beside the peer's whole process, so drift on
@@ -52,12 +52,12 @@ final class PeerBench {
         }
 
         /** The peers named in a comma-separated list of keywords, or none for "none". */
-        static Set<Peer> parse(String list) throws UsageException {
+        static Set<Peer> parse(String list) throws BenchUsageException {
             Set<Peer> s = EnumSet.noneOf(Peer.class);
             if (list.equals("none")) return s;
             for (String k : list.split(",", -1)) {
                 Peer p = Arrays.stream(values()).filter(x -> x.keyword.equals(k)).findFirst().orElse(null);
-                if (p == null) throw new UsageException("unknown peer '" + k + "' in --peers (expected embree, povray, cycles or none)");
+                if (p == null) throw new BenchUsageException("unknown peer '" + k + "' in --peers (expected embree, povray, cycles or none)");
                 s.add(p);
             }
             return s;
@@ -69,14 +69,17 @@ final class PeerBench {
      * second) and the most wall-time ratio (our whole process over the peer's), where one is set.
      */
     record Targets(Map<Peer, Double> minSpeed, Map<Peer, Double> maxWall) {
-        /** Issue 18's: at least {@code embreeSpeed} x Embree's speed, 3x Cycles', 4x POV-Ray's; at most 1.3x Embree's wall and below the others'. */
-        static Targets issue18(double embreeSpeed) {
+        /**
+         * Tracing a dense mesh under point lights (hard shadows): at least {@code embreeSpeed} x Embree's speed, 3x Cycles',
+         * 4x POV-Ray's; a whole cold process at most 1.3x Embree's wall and below the others'.
+         */
+        static Targets meshTracing(double embreeSpeed) {
             return new Targets(Map.of(Peer.EMBREE, embreeSpeed, Peer.CYCLES, 3.0, Peer.POVRAY, 4.0),
                     Map.of(Peer.EMBREE, 1.3, Peer.CYCLES, 1.0, Peer.POVRAY, 1.0));
         }
 
-        /** Issue 20's soft-shadow row: at least 2x POV-Ray's speed (render time), no wall-time target. */
-        static Targets issue20() {
+        /** Soft shadows from an area light: at least 2x the speed (render time) of POV-Ray's area_light, no wall-time target. */
+        static Targets softShadows() {
             return new Targets(Map.of(Peer.POVRAY, 2.0), Map.of());
         }
     }
