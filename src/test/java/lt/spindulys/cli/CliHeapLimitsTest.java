@@ -158,6 +158,52 @@ class CliHeapLimitsTest {
         }
     }
 
+    @Test
+    void theThreadsSampleBuffersAreRefusedAtTheSamplesInASmallHeap() throws Exception {
+        // Within every documented range, 256 MiB of light strata a thread: two threads' do not fit
+        // in 512 MiB. Checked one thread at a time, both could pass and then run out of memory,
+        // and the run that lost a thread ended as a success. A real small heap, in a child JVM.
+        Path scene = dir.resolve("scene.dat");
+        Files.writeString(scene, CAM + "settings { width 64  height 32  samples 65536 }\n"
+                + "environment { file \"sky.hdr\"  light true  samples 1024 }\nsphere { }\n");
+        Files.copy(Path.of("textures/sky.hdr"), dir.resolve("sky.hdr"));
+        Path out = dir.resolve("a.pfm");
+        Child r = child("-Xmx512m", scene.toString(), "-o", out.toString(), "--threads", "2", "--quiet");
+        assertEquals(2, r.status(), r.err());
+        assertTrue(r.err().startsWith(scene + ":2:33: the sample buffers of 2 render threads (samples 65536 of the settings x samples 1024 of the environment)"
+                + " needs 518 MiB of heap, but only "), r.err());
+        assertEquals(1, r.err().lines().count(), "one line, no stack trace: " + r.err());
+        assertFalse(Files.exists(out), "no image written");
+    }
+
+    /** What a run of the command line in a child JVM printed on stderr, and its exit status. */
+    record Child(int status, String err) {}
+
+    /** Runs the command line in a child JVM with {@code heap} (-Xmx...), as ./render runs it; at most 60 s. */
+    static Child child(String heap, String... args) throws IOException, InterruptedException {
+        java.util.List<String> cmd = new java.util.ArrayList<>(java.util.List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), heap));
+        if (ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent()) cmd.addAll(java.util.List.of("--add-modules", "jdk.incubator.vector"));
+        cmd.addAll(java.util.List.of("-cp", System.getProperty("java.class.path"), Main.class.getName()));
+        cmd.addAll(java.util.List.of(args));
+        Path log = Files.createTempFile("spindulys-child", ".err");
+        try {
+            Process p = new ProcessBuilder(cmd).redirectOutput(ProcessBuilder.Redirect.DISCARD).redirectError(log.toFile()).start();
+            if (!p.waitFor(60, java.util.concurrent.TimeUnit.SECONDS)) {
+                p.destroyForcibly();
+                fail("the child JVM did not finish in 60 s: " + Files.readString(log));
+            }
+            return new Child(p.exitValue(), withoutNotice(Files.readString(log)));
+        } finally {
+            Files.deleteIfExists(log);
+        }
+    }
+
+    /** Stderr without the JVM's own notice of the incubating vector module, which is not the command's output. */
+    private static String withoutNotice(String err) {
+        return err.lines().filter(l -> !l.equals("WARNING: Using incubator modules: jdk.incubator.vector"))
+                .collect(java.util.stream.Collectors.joining("\n"));
+    }
+
     /** A TGA header (true colour, 24 bits, top-left origin) of the given type, without pixels. */
     static byte[] tgaHeader(int w, int h, int type) {
         byte[] b = new byte[18];
