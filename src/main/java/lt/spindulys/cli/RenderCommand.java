@@ -68,8 +68,9 @@ final class RenderCommand {
               --timesteps N      1: one pass, every sample at its own time (default); N > 1: the thesis's
                                  method, N whole-frame passes at fixed times averaged (spp must be a multiple of N)
               --subdiv-target PX target edge length in pixels of every adaptive subdiv (overrides the scene's)
-              --subdiv-memory MIB  heap for adaptive subdivision, eager and cached together (0: automatic)
-              --subdiv-cache MIB the lazy patches' cache, part of the subdivision memory (default 64)
+              --subdiv-memory MIB  heap for adaptive subdivision, eager and cached together (0: automatic;
+                                 more than the heap can give is capped by it)
+              --subdiv-cache MIB the lazy patches' cache, part of the subdivision memory (default 64; shrunk to it)
             """ + FrameOptions.USAGE + """
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
             """ + FarmOptions.USAGE + """

@@ -176,6 +176,60 @@ class CliHeapLimitsTest {
         assertFalse(Files.exists(out), "no image written");
     }
 
+    /** A lazy surface: its patches go to the cache, whose size the budget sets. */
+    private static final String LAZY = CAM + "subdiv { file \"cube.dat\"  method lazy }\n";
+
+    @Test
+    void subdivisionBudgetsAboveTheHeapAreCappedByIt() throws IOException {
+        // The README's example budgets, by the options and by the settings' keys, in a heap of 64 MiB:
+        // capped to what the heap can give, said by --stats, and rendered.
+        Files.copy(Path.of("scenes/models/cube.dat"), dir.resolve("cube.dat"));
+        Path options = dir.resolve("options.dat"), keys = dir.resolve("keys.dat");
+        Files.writeString(options, LAZY);
+        Files.writeString(keys, "settings { subdivmemory 16777216  subdivcache 16777216 }\n" + LAZY);
+        for (String[] run : new String[][] {{options.toString(), "--subdiv-memory", "3072", "--subdiv-cache", "1024"}, {keys.toString()}}) {
+            Path out = dir.resolve("out.png");
+            Files.deleteIfExists(out);
+            java.util.List<String> args = new java.util.ArrayList<>(java.util.List.of(run));
+            args.addAll(java.util.List.of("-o", out.toString(), "--quiet", "--stats", "--width", "32"));
+            CliTest.Run r;
+            try (HeapBudget.Scope s = HeapBudget.cap(CAP)) {
+                r = CliTest.run(args.toArray(String[]::new));
+            }
+            assertEquals(0, r.status(), r.err());
+            String asked = run.length > 1 ? "3072" : "16777216", cache = run.length > 1 ? "1024" : "16777216";
+            assertTrue(r.out().contains("subdivision memory " + asked + " MiB asked, capped to 32.0 MiB by the heap"), r.out());
+            assertTrue(r.out().contains("subdivision cache " + cache + " MiB asked, shrunk to 32.0 MiB, the whole subdivision memory the heap allows"), r.out());
+            assertTrue(Files.exists(out));
+        }
+    }
+
+    @Test
+    void subdivisionBudgetsAboveASmallHeapRenderInAChildJvm() throws Exception {
+        Files.copy(Path.of("scenes/models/cube.dat"), dir.resolve("cube.dat"));
+        Path scene = dir.resolve("scene.dat"), out = dir.resolve("out.png");
+        Files.writeString(scene, LAZY);
+        Child r = child("-Xmx96m", scene.toString(), "-o", out.toString(), "--quiet", "--width", "32", "--subdiv-memory", "3072", "--subdiv-cache", "1024");
+        assertEquals(0, r.status(), r.err());
+        assertEquals("", r.err());
+        assertTrue(Files.exists(out));
+    }
+
+    @Test
+    void aCacheLargerThanTheMemoryIsShrunkToIt() throws IOException {
+        Files.copy(Path.of("scenes/models/cube.dat"), dir.resolve("cube.dat"));
+        Path keys = dir.resolve("keys.dat"), options = dir.resolve("options.dat"), out = dir.resolve("out.png");
+        Files.writeString(keys, "settings { subdivmemory 16  subdivcache 64 }\n" + LAZY);
+        Files.writeString(options, LAZY);
+        for (String[] run : new String[][] {{keys.toString()}, {options.toString(), "--subdiv-cache", "64", "--subdiv-memory", "16"}}) {
+            CliTest.Run r = CliTest.run(java.util.stream.Stream.concat(java.util.Arrays.stream(run),
+                    java.util.stream.Stream.of("-o", out.toString(), "--quiet", "--stats", "--width", "32")).toArray(String[]::new));
+            assertEquals(0, r.status(), r.err());
+            assertTrue(r.out().contains("subdivision cache 64 MiB asked, shrunk to 16 MiB, the whole subdivision memory\n"), r.out());
+            assertFalse(r.out().contains("capped"), r.out());
+        }
+    }
+
     /** What a run of the command line in a child JVM printed on stderr, and its exit status. */
     record Child(int status, String err) {}
 
