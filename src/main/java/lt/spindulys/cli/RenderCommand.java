@@ -65,8 +65,9 @@ final class RenderCommand {
               --timesteps N      1: one pass, every sample at its own time (default); N > 1: the thesis's
                                  method, N whole-frame passes at fixed times averaged (spp must be a multiple of N)
               --subdiv-target PX target edge length in pixels of every adaptive subdiv (overrides the scene's)
-              --subdiv-memory MIB  heap for adaptive subdivision, eager and cached together (0: automatic)
-              --subdiv-cache MIB the lazy patches' cache, part of the subdivision memory (default 64)
+              --subdiv-memory MIB  heap for adaptive subdivision, eager and cached together (0: automatic;
+                                 more than the heap can give is capped by it)
+              --subdiv-cache MIB the lazy patches' cache, part of the subdivision memory (default 64; shrunk to it)
             """ + FrameOptions.USAGE + """
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
             """ + FarmOptions.USAGE + """
@@ -274,6 +275,8 @@ final class RenderCommand {
             if (job.stage() == RenderJob.Stage.CHECK || job.stage() == RenderJob.Stage.SETTINGS) throw new UsageException(e.getMessage());
             throw e;
         } catch (InsufficientMemoryException e) {
+            // The threads' sample buffers, sized by the samples: reported where those were given.
+            if (job.stage() == RenderJob.Stage.RENDER && "samples".equals(e.key())) throw samplesTooMany(loaded[0], e);
             // The frame, or (while rendering) the scene's meshes and textures took what the frame would have needed.
             if (job.stage() == RenderJob.Stage.SETTINGS || job.stage() == RenderJob.Stage.RENDER) throw frameTooLarge(loaded[0], e);
             throw e;
@@ -399,6 +402,16 @@ final class RenderCommand {
             throw new UsageException(options.substring(1) + ": " + e.getMessage());
         }
         String at = builder.frameSource();
+        return at == null ? e : new IllegalArgumentException(at + ": " + e.getMessage(), e);
+    }
+
+    /**
+     * Sample buffers the heap cannot hold, reported where the samples were given: {@code --spp}
+     * when it set them, else the scene's key ({@link SceneBuilder#samplesSource()}).
+     */
+    private RuntimeException samplesTooMany(SceneBuilder builder, InsufficientMemoryException e) throws UsageException {
+        if (spp != null) throw new UsageException("--spp " + spp + ": " + e.getMessage());
+        String at = builder == null ? null : builder.samplesSource();
         return at == null ? e : new IllegalArgumentException(at + ": " + e.getMessage(), e);
     }
 

@@ -99,7 +99,6 @@ final class SceneObjectFactory {
     RenderSettings settings(Props p, RenderSettings s) {
         RenderSettings.Builder sb = s.toBuilder();
         AdaptiveSettings adaptive = s.adaptive();
-        checkCacheWithinMemory(p);
         for (Prop pr : p.all) {
             Object v = pr.value();
             try {
@@ -138,26 +137,6 @@ final class SceneObjectFactory {
         }
         return s;
     }
-
-    /**
-     * Refuses a subdivcache larger than a subdivmemory given beside it, in either order (the
-     * settings themselves would shrink the cache to a budget given after it, silently), at the
-     * later of the two keys.
-     */
-    private void checkCacheWithinMemory(Props p) {
-        Prop memory = p.prop("subdivmemory"), cache = p.prop("subdivcache");
-        if (memory == null || cache == null) return;
-        double m = (Double) memory.value(), c = (Double) cache.value();
-        if (m > 0 && c > m) {
-            Prop later = memory.at().line() > cache.at().line()
-                    || (memory.at().line() == cache.at().line() && memory.at().column() > cache.at().column()) ? memory : cache;
-            throw err.error(later.at(), "subdivcache (" + mib(c) + " MiB) must not exceed subdivmemory ("
-                    + mib(m) + " MiB): the cache is part of the subdivision memory");
-        }
-    }
-
-    /** A size in MiB as written: "64", "0.5". */
-    private static String mib(double v) { return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : Double.toString(v); }
 
     private static Set<Aov> aovs(List<?> keywords) {
         Set<Aov> out = EnumSet.noneOf(Aov.class);

@@ -51,6 +51,9 @@ public final class SceneParser {
     private Token settingsAt, cameraAt, environmentAt, animationAt;
     /** The settings' 'shutter' key, which an animation's shutter angle replaces; null if not given. */
     private Prop shutterAt;
+    /** The settings' samples key, and the samples key of the light with the most samples (lightSamplesMax): where sample buffers are reported. */
+    private Prop settingsSamplesAt, lightSamplesAt;
+    private int lightSamplesMax;
     private Animation animation;
     /** Where each named material was defined, for "already defined at" and suggestions. */
     private final Map<String, Token> materialsAt = new LinkedHashMap<>();
@@ -177,6 +180,8 @@ public final class SceneParser {
             if (k.equals("width") || k.equals("height") || k.equals("aov")) sizeAt = pr;
         }
         if (sizeAt != null) builder.frameSource(SceneException.location(file, sizeAt.at().line(), sizeAt.at().column()));
+        settingsSamplesAt = p.prop("samples");
+        noteSamples();
         shutterAt = p.prop("shutter");
         if (shutterAt != null && animationAt != null) throw shutterConflict();
         builder.settings(s);
@@ -217,6 +222,7 @@ public final class SceneParser {
     private void areaLight(Block b, Token kw) {
         Props p = in.block(b, kw, null);
         AreaLight light = objects.areaLight(p);
+        lightSamples(p.prop("samples"), light.samples());
         try {
             builder.areaLight(light); // refuses a total intensity over the limit, summed over the lights so far
         } catch (IllegalArgumentException e) {
@@ -228,7 +234,24 @@ public final class SceneParser {
     private void environment(Token kw) {
         if (environmentAt != null) throw error(kw, "environment is already defined at " + environmentAt.position());
         environmentAt = kw;
-        builder.environment(objects.environment(in.block(SceneGrammar.ENVIRONMENT, kw, null)));
+        Props p = in.block(SceneGrammar.ENVIRONMENT, kw, null);
+        lt.spindulys.scene.Environment e = objects.environment(p);
+        if (e.isLight()) lightSamples(p.prop("samples"), e.samples());
+        builder.environment(e);
+    }
+
+    /** A light's samples key: the place to report the render threads' sample buffers at, when no settings' samples key is given, is the largest light's. */
+    private void lightSamples(Prop at, int samples) {
+        if (at == null || samples <= lightSamplesMax) return;
+        lightSamplesMax = samples;
+        lightSamplesAt = at;
+        noteSamples();
+    }
+
+    /** Tells the builder where the samples that size the threads' buffers were given: the settings' key first, else the largest light's. */
+    private void noteSamples() {
+        Prop at = settingsSamplesAt != null ? settingsSamplesAt : lightSamplesAt;
+        if (at != null) builder.samplesSource(SceneException.location(file, at.at().line(), at.at().column()));
     }
 
     private void namedMaterial(Token kw) {

@@ -1,6 +1,7 @@
 package lt.spindulys.limits;
 
 import java.util.Locale;
+import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * The heap as a budget: every allocation whose size comes from input (counts in file headers,
@@ -13,6 +14,12 @@ import java.util.Locale;
  * again; a check that passes costs nothing. A headroom is kept back for everything the caller did
  * not count (structures built later, the other threads' scratch), so an estimate that is a little
  * low does not end in OutOfMemoryError.
+ *
+ * <p>A check and the allocation after it are two steps: threads that check at once would all see
+ * the same free heap and then all allocate. Where several threads allocate what input sizes, the
+ * allocation is {@link #reserve reserved} instead: the check and the reservation are one atomic
+ * step, and reserved bytes count as used for every check, on every thread, until the allocation
+ * is made and the reservation released.
  */
 public final class HeapBudget {
     private HeapBudget() {}
@@ -47,16 +54,87 @@ public final class HeapBudget {
         throw new InsufficientMemoryException(what, bytes, Math.max(0, free()));
     }
 
+    /**
+     * {@link #require} and keep: checks that {@code bytes} more can be allocated and, in the same
+     * atomic step, reserves them, so that every check on any thread sees them as used until the
+     * returned reservation is released. Allocate under it, then release it (close it, or
+     * {@link Reservation#release(long) release} each part once that part is allocated).
+     *
+     * @param what as for {@link #require}
+     * @return the reservation of {@code bytes}
+     * @throws InsufficientMemoryException as {@link #require} does
+     */
+    public static Reservation reserve(long bytes, String what) {
+        if (bytes < 0) throw new IllegalArgumentException("negative size " + bytes);
+        synchronized (RESERVED) {
+            if (fits(bytes)) return new Reservation(bytes);
+        }
+        System.gc(); // outside the lock: a collection takes a while, and other threads' checks need not wait for it
+        synchronized (RESERVED) {
+            if (fits(bytes)) return new Reservation(bytes);
+            throw new InsufficientMemoryException(what, bytes, Math.max(0, free()));
+        }
+    }
+
+    /** Bytes reserved by {@link #reserve} and not yet released: what every check counts as used. */
+    public static long reserved() { return RESERVED.get(); }
+
+    /** The sum of the reservations held; changed under its own lock when a reservation is made. */
+    private static final AtomicLong RESERVED = new AtomicLong();
+
+    /**
+     * Heap held back by {@link #reserve} for an allocation not made yet. Releasing more than is
+     * left releases what is left; releasing twice releases nothing more.
+     */
+    public static final class Reservation implements AutoCloseable {
+        private final AtomicLong left;
+
+        private Reservation(long bytes) {
+            left = new AtomicLong(bytes);
+            RESERVED.addAndGet(bytes);
+        }
+
+        /** Releases {@code bytes} of the reservation (an allocated part of it), or what is left if less. */
+        public void release(long bytes) {
+            if (bytes < 0) throw new IllegalArgumentException("negative size " + bytes);
+            long before, after;
+            do {
+                before = left.get();
+                after = Math.max(0, before - bytes);
+            } while (!left.compareAndSet(before, after));
+            RESERVED.addAndGet(after - before);
+        }
+
+        /** Bytes still reserved. */
+        public long left() { return left.get(); }
+
+        /** Releases the rest of the reservation. */
+        @Override
+        public void close() { release(Long.MAX_VALUE); }
+    }
+
     /** True if {@code bytes} more fit now, with the headroom kept back; never collects. */
     public static boolean fits(long bytes) {
         return bytes >= 0 && bytes <= free();
     }
 
-    /** What a check may hand out: the available heap less the headroom, within this thread's cap. */
+    /**
+     * What a check may hand out: the available heap less the headroom, within this thread's cap,
+     * less what is reserved (reserved bytes come out of a capped heap too).
+     */
     private static long free() {
         long f = available() - headroom();
         Long cap = CAP.get();
-        return cap == null ? f : Math.min(f, cap);
+        return (cap == null ? f : Math.min(f, cap)) - RESERVED.get();
+    }
+
+    /**
+     * What a check on this thread may hand out now, never negative: the available heap less the
+     * headroom and the reservations, within this thread's cap. For budgets that are fractions of
+     * the heap (adaptive subdivision); never collects.
+     */
+    public static long spare() {
+        return Math.max(0, free());
     }
 
     /** This thread's cap on {@link #free()}, set by {@link #cap}; null when none. */

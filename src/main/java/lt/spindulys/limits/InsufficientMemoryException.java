@@ -8,13 +8,35 @@ package lt.spindulys.limits;
  */
 public final class InsufficientMemoryException extends IllegalArgumentException {
     private final long needed, free;
+    private final String key;
 
     InsufficientMemoryException(String what, long needed, long free) {
-        super(what + " needs " + HeapBudget.format(needed) + " of heap, but only " + HeapBudget.format(free)
-                + " is free (raise the JVM's limit with -Xmx, for example SPINDULYS_JAVA_OPTS=-Xmx8g ./render ...)");
+        this(what + " needs " + HeapBudget.format(needed) + " of heap, but only " + HeapBudget.format(free)
+                + " is free (raise the JVM's limit with -Xmx, for example SPINDULYS_JAVA_OPTS=-Xmx8g ./render ...)", needed, free, null);
+    }
+
+    private InsufficientMemoryException(String message, long needed, long free, String key) {
+        super(message);
         this.needed = needed;
         this.free = free;
+        this.key = key;
     }
+
+    /**
+     * The same refusal, saying which input key sized what was refused, so that a caller who knows
+     * where that key was given can report it there.
+     *
+     * @param key the key, such as "samples"
+     * @return a new exception with this one's message, sizes and stack
+     */
+    public InsufficientMemoryException sizedBy(String key) {
+        InsufficientMemoryException e = new InsufficientMemoryException(getMessage(), needed, free, key);
+        e.setStackTrace(getStackTrace());
+        return e;
+    }
+
+    /** The input key that sized what was refused (see {@link #sizedBy}), or null when the caller did not say. */
+    public String key() { return key; }
 
     /** Bytes the refused allocation needed. */
     public long needed() { return needed; }

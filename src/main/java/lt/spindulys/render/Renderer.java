@@ -5,11 +5,14 @@ import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BooleanSupplier;
 
 import lt.spindulys.camera.Camera;
 import lt.spindulys.image.AovFrame;
 import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.image.PixelRegion;
+import lt.spindulys.limits.HeapBudget;
+import lt.spindulys.limits.InsufficientMemoryException;
 import lt.spindulys.math.Ray;
 import lt.spindulys.sampling.PixelSampler;
 import lt.spindulys.scene.RenderSettings;
@@ -84,7 +87,7 @@ public final class Renderer {
      * @param scene the frozen scene, with its settings and camera
      * @return the finished frame, its passes and statistics
      * @throws lt.spindulys.limits.InsufficientMemoryException (an IllegalArgumentException) if
-     *         the heap cannot hold the frame and its passes
+     *         the heap cannot hold the frame and its passes, or the render threads' sample buffers
      * @throws InterruptedException if the calling thread is interrupted (the workers are stopped)
      */
     public static RenderResult render(Scene scene) throws InterruptedException {
@@ -101,7 +104,9 @@ public final class Renderer {
      * @param progress told of the pixels done as tiles finish, from render threads; null: nobody
      * @return the finished frame, its passes and statistics
      * @throws lt.spindulys.limits.InsufficientMemoryException (an IllegalArgumentException) if
-     *         the heap cannot hold the frame and its passes ({@link FrameBuffer#checkHeap})
+     *         the heap cannot hold the frame and its passes ({@link FrameBuffer#checkHeap}), or the
+     *         render threads' sample buffers, which grow with the settings' and the lights' samples
+     *         (then its {@link lt.spindulys.limits.InsufficientMemoryException#key() key} is "samples")
      * @throws InterruptedException if the calling thread is interrupted (the workers are stopped)
      */
     public static RenderResult render(Scene scene, int threads, ProgressListener progress) throws InterruptedException {
@@ -110,7 +115,7 @@ public final class Renderer {
 
     /**
      * {@link #render(Scene, int, ProgressListener)}, stopping early with a
-     * {@link CancellationException} once {@code cancelled} is set (checked between tiles; null:
+     * {@link CancellationException} once {@code cancelled} is set (checked between tiles and within them; null:
      * never).
      */
     static RenderResult render(Scene scene, int threads, ProgressListener listener, AtomicBoolean cancelled) throws InterruptedException {
@@ -198,48 +203,65 @@ public final class Renderer {
         long[][] counters = new long[threads][];
 
         Thread[] workers = new Thread[Math.min(threads, tiles)];
-        for (int k = 0; k < workers.length; k++) {
-            int index = k;
-            workers[k] = new Thread(null, () -> {
-                TracerScratch scratch;
-                try {
-                    scratch = integrator.newScratch(); // its heap check may refuse
-                } catch (RuntimeException e) {
-                    failure.compareAndSet(null, e);
-                    counters[index] = new long[4];
-                    return;
-                }
-                // Time samples only where something moves (an object or the camera) and each sample has its own time.
-                PixelSampler sampler = new PixelSampler(pass.samples, scene.camera().usesLens() ? scene.camera().lensPattern() : null,
-                        (scene.hasMovingObjects() || scene.camera().moves()) && Double.isNaN(pass.time));
-                Ray ray = new Ray();
-                double[] colour = new double[4];
-                try {
-                    for (int next; (next = nextTile.getAndIncrement()) < tiles && failure.get() == null; ) {
-                        if (Thread.currentThread().isInterrupted() || cancelled != null && cancelled.get()) return;
-                        int t = tileAt(next, tiles, stride);
-                        // In the frame buffer's coordinates (the region's), then traced at the frame's.
-                        int x0 = (t % tilesX) * TILE, y0 = (t / tilesX) * TILE;
-                        int x1 = Math.min(x0 + TILE, region.width()), y1 = Math.min(y0 + TILE, region.height());
-                        renderTile(scene.camera(), integrator, st, pass, sampler, scratch, ray, colour, fb, aovs, region.x0(), region.y0(),
-                                x0, y0, x1, y1);
-                        if (tileListener != null) tileListener.tileDone(fb, x0, y0, x1, y1);
-                        progress.progress(donePixels.addAndGet((long) (x1 - x0) * (y1 - y0)), pixels);
-                    }
-                } catch (Throwable e) {
-                    failure.compareAndSet(null, e);
-                } finally {
-                    scratch.flushStatistics();
-                    counters[index] = new long[] {scratch.cameraRays, scratch.shadowRays, scratch.reflectionRays, scratch.refractionRays};
-                }
-            }, "spindulys-render-" + k, WORKER_STACK_BYTES);
-            workers[k].start();
-        }
+        // Every thread's scratch is sized by the samples (its light strata, its sampler): checked
+        // and reserved for all of them at once, on this thread, before any starts. Checked one
+        // by one as each thread started, they would all see the same free heap and all allocate.
+        long scratch = integrator.scratchBytes(st.samplesPerPixel()), sampler = PixelSampler.bytes(pass.samples);
+        HeapBudget.Reservation reservation;
         try {
+            reservation = HeapBudget.reserve(HeapBudget.product(workers.length, HeapBudget.sum(scratch, sampler)),
+                    "the sample buffers of " + workers.length + " render thread" + (workers.length == 1 ? "" : "s")
+                            + " (" + integrator.scratchSizedBy(st.samplesPerPixel()) + ")");
+        } catch (InsufficientMemoryException e) {
+            throw e.sizedBy("samples");
+        }
+        // Whatever stops the render: a failure on any thread, a cancel, an interrupt. Checked
+        // between tiles and within them, so a tile of billions of rays does not go on after it.
+        BooleanSupplier stop = () -> failure.get() != null || cancelled != null && cancelled.get() || Thread.currentThread().isInterrupted();
+        try {
+            for (int k = 0; k < workers.length; k++) {
+                int index = k;
+                workers[k] = new Thread(null, () -> {
+                    TracerScratch own = null;
+                    // Everything a worker does is caught, OutOfMemoryError included: a thread that died
+                    // unseen would leave its tiles black and the run reported as a success.
+                    try {
+                        own = integrator.newScratch(reservation);
+                        // Time samples only where something moves (an object or the camera) and each sample has its own time.
+                        PixelSampler ps = new PixelSampler(pass.samples, scene.camera().usesLens() ? scene.camera().lensPattern() : null,
+                                (scene.hasMovingObjects() || scene.camera().moves()) && Double.isNaN(pass.time));
+                        reservation.release(sampler);
+                        Ray ray = new Ray();
+                        double[] colour = new double[4];
+                        for (int next; !stop.getAsBoolean() && (next = nextTile.getAndIncrement()) < tiles; ) {
+                            int t = tileAt(next, tiles, stride);
+                            // In the frame buffer's coordinates (the region's), then traced at the frame's.
+                            int x0 = (t % tilesX) * TILE, y0 = (t / tilesX) * TILE;
+                            int x1 = Math.min(x0 + TILE, region.width()), y1 = Math.min(y0 + TILE, region.height());
+                            if (!renderTile(scene.camera(), integrator, st, pass, ps, own, ray, colour, fb, aovs, region.x0(), region.y0(),
+                                    x0, y0, x1, y1, stop)) return;
+                            if (tileListener != null) tileListener.tileDone(fb, x0, y0, x1, y1);
+                            progress.progress(donePixels.addAndGet((long) (x1 - x0) * (y1 - y0)), pixels);
+                        }
+                    } catch (Throwable e) {
+                        failure.compareAndSet(null, e);
+                    } finally {
+                        if (own == null) {
+                            counters[index] = new long[4];
+                        } else {
+                            own.flushStatistics();
+                            counters[index] = new long[] {own.cameraRays, own.shadowRays, own.reflectionRays, own.refractionRays};
+                        }
+                    }
+                }, "spindulys-render-" + k, WORKER_STACK_BYTES);
+                workers[k].start();
+            }
             for (Thread worker : workers) worker.join();
         } catch (InterruptedException e) {
-            for (Thread worker : workers) worker.interrupt();
+            for (Thread worker : workers) if (worker != null) worker.interrupt();
             throw e;
+        } finally {
+            reservation.close(); // what threads that failed before making their scratch did not take
         }
         if (cancelled != null && cancelled.get()) throw new CancellationException("the render was cancelled");
         Throwable f = failure.get();
@@ -251,9 +273,14 @@ public final class Renderer {
         return sum;
     }
 
-    private static void renderTile(Camera camera, WhittedIntegrator integrator, RenderSettings st, Pass pass, PixelSampler sampler,
-                                   TracerScratch scratch, Ray ray, double[] colour, FrameBuffer fb, AovFrame aovs, int ox, int oy,
-                                   int fx0, int fy0, int fx1, int fy1) {
+    /**
+     * Renders one tile; returns false, leaving it unfinished, once {@code stop} says so (checked
+     * before each pixel and every {@value #STOP_CHECK} samples, so a pixel of millions of shadow
+     * rays is not finished for a run that has already failed).
+     */
+    private static boolean renderTile(Camera camera, WhittedIntegrator integrator, RenderSettings st, Pass pass, PixelSampler sampler,
+                                      TracerScratch scratch, Ray ray, double[] colour, FrameBuffer fb, AovFrame aovs, int ox, int oy,
+                                      int fx0, int fy0, int fx1, int fy1, BooleanSupplier stop) {
         int w = st.width(), h = st.height(), n = sampler.samplesPerPixel(), fw = fb.width();
         double aspect = st.aspect();
         boolean ownTimes = Double.isNaN(pass.time);
@@ -266,6 +293,7 @@ public final class Renderer {
                 sampler.startPixel(pass.seed, x, y);
                 double r = 0, g = 0, b = 0;
                 for (int i = 0; i < n; i++) {
+                    if ((i & (STOP_CHECK - 1)) == 0 && stop.getAsBoolean()) return false;
                     double time = ownTimes ? st.shutterTime(sampler.time(i)) : pass.time;
                     camera.generateRay(sampler.filmX(i) / w, sampler.filmY(i) / h, aspect,
                             sampler.lensU(i), sampler.lensV(i), time, ray);
@@ -290,5 +318,9 @@ public final class Renderer {
                 }
             }
         }
+        return true;
     }
+
+    /** Samples of a pixel between two looks at whether the render must stop: a power of two. */
+    static final int STOP_CHECK = 64;
 }

@@ -59,6 +59,17 @@ public final class PixelSampler {
 
     public int samplesPerPixel() { return n; }
 
+    /**
+     * Heap a sampler of {@code samplesPerPixel} samples holds: five doubles and an int a sample
+     * (film, lens and time samples, the shuffle), and the object itself.
+     *
+     * @param samplesPerPixel the pixel samples, from the input
+     * @return bytes
+     */
+    public static long bytes(int samplesPerPixel) {
+        return 256 + 44L * Math.max(0, samplesPerPixel);
+    }
+
     /** The lens pattern, or null when the lens samples are all the centre. */
     public LensPattern lensPattern() { return lens; }
 

@@ -11,7 +11,8 @@ import lt.spindulys.limits.HeapBudget;
  *
  * @param memoryBytes    heap all adaptive tessellations of a scene may hold, eager and cached
  *                       together; 0 for automatic, a quarter of the JVM's maximum heap
- * @param cacheBytes     the lazy patches' cache, a part of {@code memoryBytes}
+ * @param cacheBytes     the lazy patches' cache, a part of {@code memoryBytes}: a cache larger than
+ *                       the memory is shrunk to it when the scene is built (and --stats says so)
  * @param lastTwoPatches the thesis's policy (each render thread keeps the last two patches it
  *                       used, nothing shared) instead of the shared least-recently-used cache
  * @param targetPixels   target edge length in pixels for every adaptive surface, overriding
@@ -43,10 +44,6 @@ public record AdaptiveSettings(long memoryBytes, long cacheBytes, boolean lastTw
         if (cacheBytes < 1 || cacheBytes > MAX_BYTES) {
             throw new IllegalArgumentException("subdivision cache must be between 1 byte and " + HeapBudget.format(MAX_BYTES) + ", found " + cacheBytes);
         }
-        if (memoryBytes > 0 && cacheBytes > memoryBytes) {
-            throw new IllegalArgumentException("subdivision cache (" + HeapBudget.format(cacheBytes) + ") must not exceed the subdivision memory ("
-                    + HeapBudget.format(memoryBytes) + ")");
-        }
         if (!Double.isNaN(targetPixels)) checkTarget(targetPixels);
     }
 
@@ -65,13 +62,14 @@ public record AdaptiveSettings(long memoryBytes, long cacheBytes, boolean lastTw
     }
 
     /**
-     * The heap budget in bytes: {@link #memoryBytes()}, or a quarter of the JVM's maximum heap when automatic.
+     * The heap budget asked for in bytes: {@link #memoryBytes()}, or a quarter of the JVM's
+     * maximum heap when automatic. When the scene is built it is capped by what the heap can
+     * give, and the cache is shrunk to fit in it.
      *
-     * @return the budget for all adaptive tessellations of a scene, at least the cache's
+     * @return the budget asked for all adaptive tessellations of a scene
      */
     public long effectiveMemoryBytes() {
-        long m = memoryBytes > 0 ? memoryBytes : Runtime.getRuntime().maxMemory() / 4;
-        return Math.max(m, cacheBytes);
+        return memoryBytes > 0 ? memoryBytes : Runtime.getRuntime().maxMemory() / 4;
     }
 
     /**
@@ -80,7 +78,7 @@ public record AdaptiveSettings(long memoryBytes, long cacheBytes, boolean lastTw
      * @param bytes the new budget, 0 for automatic
      * @return new settings
      */
-    public AdaptiveSettings withMemory(long bytes) { return new AdaptiveSettings(bytes, Math.min(cacheBytes, bytes > 0 ? bytes : cacheBytes), lastTwoPatches, targetPixels); }
+    public AdaptiveSettings withMemory(long bytes) { return new AdaptiveSettings(bytes, cacheBytes, lastTwoPatches, targetPixels); }
 
     /**
      * These settings with another cache size.

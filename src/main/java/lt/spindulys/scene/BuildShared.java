@@ -10,6 +10,7 @@ import lt.spindulys.adaptive.CachePolicy;
 import lt.spindulys.adaptive.PatchCache;
 import lt.spindulys.adaptive.ViewFootprint;
 import lt.spindulys.camera.Camera;
+import lt.spindulys.limits.HeapBudget;
 
 /**
  * What all objects of one scene build share (one per {@link Scene} built, reached through every
@@ -26,8 +27,12 @@ final class BuildShared {
     private final Map<Object, AdaptiveTessellation> tessellations = new LinkedHashMap<>();
     private ViewFootprint view;
     private PatchCache cache;
-    /** Heap left for eager tessellation: the budget less the cache's share, less what earlier surfaces took. */
-    private long eagerLeft;
+    /** Heap left for eager tessellation: the budget less the cache's share, less what earlier surfaces took; -1 until the budget is set. */
+    private long eagerLeft = -1;
+    /** The cache's size within the budget, set with it. */
+    private long cacheBytes;
+    /** What --stats says of budgets changed to fit (capped by the heap, the cache shrunk to the memory). */
+    private final List<String> budgetNotes = new ArrayList<>();
     private boolean finished;
 
     BuildShared(AdaptiveSettings settings, Camera camera, int width, int height) {
@@ -35,8 +40,45 @@ final class BuildShared {
         this.camera = camera;
         this.width = width;
         this.height = height;
-        eagerLeft = settings.effectiveMemoryBytes() - settings.cacheBytes();
     }
+
+    /** Heap the frame will take per pixel, allocated after the build (FrameBuffer.bytesToRender without passes). */
+    static final long FRAME_BYTES_PER_PIXEL = 36;
+
+    /** The least the subdivision memory is cut to by the heap: a cache this small still renders, if slowly. */
+    static final long MIN_BYTES = 1L << 20;
+
+    /**
+     * Sets the budget the first time an adaptive surface needs it (scenes without one never do):
+     * the subdivision memory asked for, but at most half of what the heap can still give, less
+     * the frame to come; the other half is left for the render threads' buffers, the structures
+     * over the patches and what nothing counts. The cache gets its size from it, at most all of it.
+     */
+    private void budget() {
+        if (eagerLeft >= 0) return;
+        long asked = settings.effectiveMemoryBytes();
+        long heap = Math.max(0, HeapBudget.spare() - HeapBudget.product(width, height, FRAME_BYTES_PER_PIXEL)) / 2;
+        long memory = Math.min(asked, Math.max(heap, MIN_BYTES));
+        if (memory < asked) {
+            budgetNotes.add("subdivision memory " + mib(asked) + " asked" + (settings.memoryBytes() == 0 ? " (a quarter of the heap)" : "")
+                    + ", capped to " + mib(memory) + " by the heap (half of what it could still give when the scene was built)");
+        }
+        cacheBytes = Math.min(settings.cacheBytes(), memory);
+        if (cacheBytes < settings.cacheBytes()) {
+            budgetNotes.add("subdivision cache " + mib(settings.cacheBytes()) + " asked, shrunk to " + mib(cacheBytes) + ", the whole subdivision memory"
+                    + (memory < asked ? " the heap allows" : ""));
+        }
+        eagerLeft = memory - cacheBytes;
+    }
+
+    /** "3072 MiB", "0.5 MiB": a budget as the options and keys give it. */
+    private static String mib(long bytes) {
+        double m = bytes / (double) (1 << 20);
+        return (m == Math.rint(m) ? Long.toString((long) m) : String.format(java.util.Locale.ROOT, "%.1f", m)) + " MiB";
+    }
+
+    /** What the budget became where it differs from what was asked, one line each for --stats; empty when it is as asked. */
+    synchronized List<String> budgetNotes() { return List.copyOf(budgetNotes); }
 
     AdaptiveSettings settings() { return settings; }
 
@@ -54,19 +96,24 @@ final class BuildShared {
 
     /** The scene's cache of lazily refined patches, made on first use. */
     synchronized PatchCache cache() {
-        if (cache == null) cache = new PatchCache(settings.cacheBytes(), settings.lastTwoPatches() ? CachePolicy.LAST_TWO : CachePolicy.LRU);
+        budget();
+        if (cache == null) cache = new PatchCache(cacheBytes, settings.lastTwoPatches() ? CachePolicy.LAST_TWO : CachePolicy.LRU);
         return cache;
     }
 
     /** Takes {@code bytes} of the eager budget if that much is left; false (nothing taken) otherwise. */
     synchronized boolean takeEager(long bytes) {
+        budget();
         if (bytes > eagerLeft) return false;
         eagerLeft -= bytes;
         return true;
     }
 
     /** Heap left for eager tessellation. */
-    synchronized long eagerLeft() { return eagerLeft; }
+    synchronized long eagerLeft() {
+        budget();
+        return eagerLeft;
+    }
 
     /** Finishes every registered tessellation, in registration order (so budgets are spent deterministically). */
     void finish(BuildContext root) {

@@ -75,6 +75,7 @@ public final class Scene {
         // Shared adaptive tessellations choose their levels now that every placement is known.
         world.shared().finish(world);
         adaptive = world.shared().tessellations();
+        adaptiveBudget = world.shared().budgetNotes();
         this.objects = List.of(frozen);
         objectIds = ids;
         boolean[] anyTransparent = {false};
@@ -106,6 +107,8 @@ public final class Scene {
 
     /** The adaptive subdivision surfaces' tessellations, for their statistics. */
     private final List<AdaptiveTessellation> adaptive;
+    /** What the adaptive surfaces' budget became where it differs from what was asked (capped by the heap, the cache shrunk). */
+    private final List<String> adaptiveBudget;
 
     /**
      * One line per adaptive subdivision tessellation of this scene (instances of one surface share
@@ -115,7 +118,7 @@ public final class Scene {
      * @return the lines, empty when the scene has no adaptive surface
      */
     public List<String> adaptiveStatistics() {
-        List<String> lines = new ArrayList<>();
+        List<String> lines = new ArrayList<>(adaptiveBudget);
         for (AdaptiveTessellation t : adaptive) lines.add(t.statistics());
         return lines;
     }

@@ -44,7 +44,7 @@ public final class SceneBuilder {
     private final List<AreaLight> areaLights = new ArrayList<>();
     private final List<GObject> objects = new ArrayList<>();
     private final Map<String, Material> materials = new LinkedHashMap<>();
-    private String frameSource;
+    private String frameSource, samplesSource;
     private Environment environment;
     private Animation animation;
 
@@ -65,6 +65,7 @@ public final class SceneBuilder {
         c.objects.addAll(objects);
         c.materials.putAll(materials);
         c.frameSource = frameSource;
+        c.samplesSource = samplesSource;
         c.environment = environment;
         c.animation = animation;
         return c;
@@ -248,6 +249,24 @@ public final class SceneBuilder {
      * @return the place recorded, or null
      */
     public String frameSource() { return frameSource; }
+
+    /**
+     * Records where the samples that size the render threads' buffers were given, such as
+     * "scene.dat:2:40" for the settings' {@code samples} key (or, without one, the {@code samples}
+     * of the light that has the most), so that buffers the heap cannot hold are reported there.
+     * Used for messages only; null: none.
+     *
+     * @param where the place, or null for none
+     * @return this builder, for chaining
+     */
+    public SceneBuilder samplesSource(String where) { samplesSource = where; return this; }
+
+    /**
+     * Where the samples were given (see {@link #samplesSource(String)}), or null.
+     *
+     * @return the place recorded, or null
+     */
+    public String samplesSource() { return samplesSource; }
 
     /**
      * Sets what rays that hit nothing see: a lat-long image instead of the settings' background

@@ -115,27 +115,96 @@ public final class WhittedIntegrator {
     /** Smallest incidence cosine used to widen a texture footprint on surfaces seen at a grazing angle. */
     private static final double MIN_FOOTPRINT_COSINE = 1 / lt.spindulys.texture.Mapping.MAX_ANISOTROPY;
 
-    /** A scratch sized for this scene's recursion depth, for one thread. */
+    /**
+     * A scratch sized for this scene's recursion depth and lights, for one thread: its heap
+     * ({@link #scratchBytes}) is checked and reserved first, so threads that make theirs at once
+     * cannot all pass the check and then all allocate.
+     *
+     * @throws lt.spindulys.limits.InsufficientMemoryException if the heap cannot hold it
+     */
     public TracerScratch newScratch() {
+        String what = environmentLight == null ? "the area lights' sample strata of one render thread"
+                : "the area and environment lights' sample strata of one render thread";
+        try (HeapBudget.Reservation r = HeapBudget.reserve(scratchBytes(settings.samplesPerPixel()), what)) {
+            return newScratch(r);
+        }
+    }
+
+    /**
+     * A scratch made under a reservation the caller holds, which must cover
+     * {@link #scratchBytes scratchBytes(samplesPerPixel)} (the renderer reserves every thread's at
+     * once, before it starts them); that much of it is released once the scratch is made.
+     *
+     * @param reservation heap reserved for this scratch among others
+     * @return the scratch
+     */
+    public TracerScratch newScratch(HeapBudget.Reservation reservation) {
         TracerScratch s = new TracerScratch(settings.maxDepth());
         s.lightStrata = new int[sampledLights][];
         s.lightStrataGeneration = new int[sampledLights];
         s.lightStrataCols = new int[sampledLights];
-        if (sampledLights > 0) {
-            // Each light's strata (pixel samples times its samples, both from the input) are kept
-            // per thread: checked against the heap, then made here, so the next thread's check sees them.
-            int spp = settings.samplesPerPixel();
-            long bytes = 0;
-            for (int i = 0; i < sampledLights; i++) bytes = HeapBudget.sum(bytes, HeapBudget.product(4, spp, samples(i)));
-            HeapBudget.require(bytes, environmentLight == null ? "the area lights' sample strata of one render thread"
-                    : "the area and environment lights' sample strata of one render thread");
-            for (int i = 0; i < sampledLights; i++) {
-                int n = spp * samples(i);
-                s.lightStrata[i] = new int[n];
-                s.lightStrataCols[i] = strataCols(n);
-            }
+        // Each light's strata (pixel samples times its samples, both from the input) are kept per thread.
+        int spp = settings.samplesPerPixel();
+        for (int i = 0; i < sampledLights; i++) {
+            int n = spp * samples(i);
+            s.lightStrata[i] = new int[n];
+            s.lightStrataCols[i] = strataCols(n);
         }
+        reservation.release(scratchBytes(spp));
         return s;
+    }
+
+    /**
+     * Heap one thread's scratch holds at {@code samplesPerPixel} pixel samples: 4 bytes per pixel
+     * sample and light sample of every sampled light (its strata, the one part sized by input),
+     * and the fixed rest (path vertices per recursion depth, the occluder cache, traversal stacks).
+     *
+     * @param samplesPerPixel the pixel samples of a pass
+     * @return bytes, saturating
+     */
+    public long scratchBytes(int samplesPerPixel) {
+        long bytes = HeapBudget.sum(FIXED_SCRATCH_BYTES, HeapBudget.product(settings.maxDepth() + 2, VERTEX_BYTES));
+        for (int i = 0; i < sampledLights; i++) bytes = HeapBudget.sum(bytes, 16, HeapBudget.product(4, samplesPerPixel, samples(i)));
+        return bytes;
+    }
+
+    /** Heap of a scratch that does not grow with the input: the trace context, its occluder cache and stacks, with a margin. */
+    static final long FIXED_SCRATCH_BYTES = 32L << 10;
+
+    /** Heap of one recursion depth's path vertex (ray, hit, shading record, colours), with a margin. */
+    static final long VERTEX_BYTES = 1L << 10;
+
+    /**
+     * What makes the scratch large, for a message: "samples 65536 of the settings x samples 1024
+     * of the environment", naming each sampled light's {@code samples} (a sum when there are several).
+     *
+     * @param samplesPerPixel the pixel samples of a pass
+     * @return the phrase, or the pixel samples alone when no light is sampled
+     */
+    public String scratchSizedBy(int samplesPerPixel) {
+        String pixel = "samples " + samplesPerPixel + " of the settings";
+        if (sampledLights == 0) return pixel;
+        if (sampledLights > 4) {
+            long sum = 0;
+            for (int i = 0; i < sampledLights; i++) sum += samples(i);
+            return pixel + " x samples " + sum + " of " + sampledLights + " lights together";
+        }
+        StringBuilder counts = new StringBuilder(), names = new StringBuilder();
+        for (int i = 0; i < sampledLights; i++) {
+            counts.append(i == 0 ? "" : " + ").append(samples(i));
+            names.append(i == 0 ? "" : ", ").append(lightName(i));
+        }
+        return pixel + " x samples " + counts + " of the " + names;
+    }
+
+    /** The statement of sampled light i: rectlight, disclight, spherelight or environment. */
+    private String lightName(int i) {
+        if (i >= areaLights.length) return "environment";
+        return switch (areaLights[i].shape()) {
+            case RECTANGLE -> "rectlight";
+            case DISC -> "disclight";
+            case SPHERE -> "spherelight";
+        };
     }
 
     /** Shadow rays per pixel sample of sampled light i: an area light, or the environment after them. */

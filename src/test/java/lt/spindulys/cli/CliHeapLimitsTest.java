@@ -158,6 +158,106 @@ class CliHeapLimitsTest {
         }
     }
 
+    @Test
+    void theThreadsSampleBuffersAreRefusedAtTheSamplesInASmallHeap() throws Exception {
+        // Within every documented range, 256 MiB of light strata a thread: two threads' do not fit
+        // in 512 MiB. Checked one thread at a time, both could pass and then run out of memory,
+        // and the run that lost a thread ended as a success. A real small heap, in a child JVM.
+        Path scene = dir.resolve("scene.dat");
+        Files.writeString(scene, CAM + "settings { width 64  height 32  samples 65536 }\n"
+                + "environment { file \"sky.hdr\"  light true  samples 1024 }\nsphere { }\n");
+        Files.copy(Path.of("textures/sky.hdr"), dir.resolve("sky.hdr"));
+        Path out = dir.resolve("a.pfm");
+        Child r = child("-Xmx512m", scene.toString(), "-o", out.toString(), "--threads", "2", "--quiet");
+        assertEquals(2, r.status(), r.err());
+        assertTrue(r.err().startsWith(scene + ":2:33: the sample buffers of 2 render threads (samples 65536 of the settings x samples 1024 of the environment)"
+                + " needs 518 MiB of heap, but only "), r.err());
+        assertEquals(1, r.err().lines().count(), "one line, no stack trace: " + r.err());
+        assertFalse(Files.exists(out), "no image written");
+    }
+
+    /** A lazy surface: its patches go to the cache, whose size the budget sets. */
+    private static final String LAZY = CAM + "subdiv { file \"cube.dat\"  method lazy }\n";
+
+    @Test
+    void subdivisionBudgetsAboveTheHeapAreCappedByIt() throws IOException {
+        // The README's example budgets, by the options and by the settings' keys, in a heap of 64 MiB:
+        // capped to what the heap can give, said by --stats, and rendered.
+        Files.copy(Path.of("scenes/models/cube.dat"), dir.resolve("cube.dat"));
+        Path options = dir.resolve("options.dat"), keys = dir.resolve("keys.dat");
+        Files.writeString(options, LAZY);
+        Files.writeString(keys, "settings { subdivmemory 16777216  subdivcache 16777216 }\n" + LAZY);
+        for (String[] run : new String[][] {{options.toString(), "--subdiv-memory", "3072", "--subdiv-cache", "1024"}, {keys.toString()}}) {
+            Path out = dir.resolve("out.png");
+            Files.deleteIfExists(out);
+            java.util.List<String> args = new java.util.ArrayList<>(java.util.List.of(run));
+            args.addAll(java.util.List.of("-o", out.toString(), "--quiet", "--stats", "--width", "32"));
+            CliTest.Run r;
+            try (HeapBudget.Scope s = HeapBudget.cap(CAP)) {
+                r = CliTest.run(args.toArray(String[]::new));
+            }
+            assertEquals(0, r.status(), r.err());
+            String asked = run.length > 1 ? "3072" : "16777216", cache = run.length > 1 ? "1024" : "16777216";
+            assertTrue(r.out().contains("subdivision memory " + asked + " MiB asked, capped to 32.0 MiB by the heap"), r.out());
+            assertTrue(r.out().contains("subdivision cache " + cache + " MiB asked, shrunk to 32.0 MiB, the whole subdivision memory the heap allows"), r.out());
+            assertTrue(Files.exists(out));
+        }
+    }
+
+    @Test
+    void subdivisionBudgetsAboveASmallHeapRenderInAChildJvm() throws Exception {
+        Files.copy(Path.of("scenes/models/cube.dat"), dir.resolve("cube.dat"));
+        Path scene = dir.resolve("scene.dat"), out = dir.resolve("out.png");
+        Files.writeString(scene, LAZY);
+        Child r = child("-Xmx96m", scene.toString(), "-o", out.toString(), "--quiet", "--width", "32", "--subdiv-memory", "3072", "--subdiv-cache", "1024");
+        assertEquals(0, r.status(), r.err());
+        assertEquals("", r.err());
+        assertTrue(Files.exists(out));
+    }
+
+    @Test
+    void aCacheLargerThanTheMemoryIsShrunkToIt() throws IOException {
+        Files.copy(Path.of("scenes/models/cube.dat"), dir.resolve("cube.dat"));
+        Path keys = dir.resolve("keys.dat"), options = dir.resolve("options.dat"), out = dir.resolve("out.png");
+        Files.writeString(keys, "settings { subdivmemory 16  subdivcache 64 }\n" + LAZY);
+        Files.writeString(options, LAZY);
+        for (String[] run : new String[][] {{keys.toString()}, {options.toString(), "--subdiv-cache", "64", "--subdiv-memory", "16"}}) {
+            CliTest.Run r = CliTest.run(java.util.stream.Stream.concat(java.util.Arrays.stream(run),
+                    java.util.stream.Stream.of("-o", out.toString(), "--quiet", "--stats", "--width", "32")).toArray(String[]::new));
+            assertEquals(0, r.status(), r.err());
+            assertTrue(r.out().contains("subdivision cache 64 MiB asked, shrunk to 16 MiB, the whole subdivision memory\n"), r.out());
+            assertFalse(r.out().contains("capped"), r.out());
+        }
+    }
+
+    /** What a run of the command line in a child JVM printed on stderr, and its exit status. */
+    record Child(int status, String err) {}
+
+    /** Runs the command line in a child JVM with {@code heap} (-Xmx...), as ./render runs it; at most 60 s. */
+    static Child child(String heap, String... args) throws IOException, InterruptedException {
+        java.util.List<String> cmd = new java.util.ArrayList<>(java.util.List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), heap));
+        if (ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent()) cmd.addAll(java.util.List.of("--add-modules", "jdk.incubator.vector"));
+        cmd.addAll(java.util.List.of("-cp", System.getProperty("java.class.path"), Main.class.getName()));
+        cmd.addAll(java.util.List.of(args));
+        Path log = Files.createTempFile("spindulys-child", ".err");
+        try {
+            Process p = new ProcessBuilder(cmd).redirectOutput(ProcessBuilder.Redirect.DISCARD).redirectError(log.toFile()).start();
+            if (!p.waitFor(60, java.util.concurrent.TimeUnit.SECONDS)) {
+                p.destroyForcibly();
+                fail("the child JVM did not finish in 60 s: " + Files.readString(log));
+            }
+            return new Child(p.exitValue(), withoutNotice(Files.readString(log)));
+        } finally {
+            Files.deleteIfExists(log);
+        }
+    }
+
+    /** Stderr without the JVM's own notice of the incubating vector module, which is not the command's output. */
+    private static String withoutNotice(String err) {
+        return err.lines().filter(l -> !l.equals("WARNING: Using incubator modules: jdk.incubator.vector"))
+                .collect(java.util.stream.Collectors.joining("\n"));
+    }
+
     /** A TGA header (true colour, 24 bits, top-left origin) of the given type, without pixels. */
     static byte[] tgaHeader(int w, int h, int type) {
         byte[] b = new byte[18];
