@@ -115,11 +115,15 @@ final class AssembleCommand {
             throw new IllegalArgumentException(files.get(0) + ": a tile of frame " + first.frame() + ", but --frame " + frame + " was given");
         }
         int w = first.frameWidth(), h = first.frameHeight();
-        checkCover(files, placements, w, h);
-
-        // The frame's pixels, then the buffer, 8-bit copy and encoder image the writer makes.
-        HeapBudget.require(HeapBudget.sum(HeapBudget.product(w, h, 4), FrameBuffer.bytesToRender(w, h, java.util.Set.of())),
-                "the assembled " + w + "x" + h + " frame");
+        // Refusals that name no one file as their place are the run's: they start "render:" as usage errors do.
+        try {
+            checkCover(files, placements, w, h);
+            // The frame's pixels, then the buffer, 8-bit copy and encoder image the writer makes.
+            HeapBudget.require(HeapBudget.sum(HeapBudget.product(w, h, 4), FrameBuffer.bytesToRender(w, h, java.util.Set.of())),
+                    "the assembled " + w + "x" + h + " frame");
+        } catch (TilesRefused | lt.spindulys.limits.InsufficientMemoryException e) {
+            throw new UsageException(e.getMessage());
+        }
         int[] frame = new int[w * h];
         for (int k = 0; k < files.size(); k++) {
             PixelRegion r = placements.get(k).region();
@@ -177,6 +181,11 @@ final class AssembleCommand {
         return out;
     }
 
+    /** The tiles together are refused (they overlap, or leave pixels out): no one tile is the place. */
+    static final class TilesRefused extends IllegalArgumentException {
+        TilesRefused(String message) { super(message); }
+    }
+
     /**
      * Refuses tiles of different frames, tiles that overlap, and tiles that leave pixels out:
      * inside one frame, tiles that do not overlap cover it exactly when their areas add up to it.
@@ -198,7 +207,7 @@ final class AssembleCommand {
         checkOverlaps(files, placements);
         long all = (long) w * h;
         if (area != all) {
-            throw new IllegalArgumentException("the tiles cover " + area + " of the " + all + " pixels of the " + w + "x" + h + " frame"
+            throw new TilesRefused("the tiles cover " + area + " of the " + all + " pixels of the " + w + "x" + h + " frame"
                     + missing(placements, w, h) + ": a tile is missing");
         }
     }
@@ -232,7 +241,7 @@ final class AssembleCommand {
                     : right != null && right.getKey() < r.x1() ? right.getValue() : null;
             if (other != null) {
                 PixelRegion o = placements.get(other).region();
-                throw new IllegalArgumentException(files.get(other) + " and " + files.get(k) + " overlap (regions " + o + " and " + r
+                throw new TilesRefused(files.get(other) + " and " + files.get(k) + " overlap (regions " + o + " and " + r
                         + "): each pixel must come from one tile");
             }
             active.put(r.x0(), k);

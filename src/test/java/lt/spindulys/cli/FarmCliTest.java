@@ -193,8 +193,8 @@ class FarmCliTest {
         assertEquals(0, run(scene.toString(), "--region", "5,9,7,9", "-o", overlapping, "--quiet").status());
         Path notTile = whole(scene);
 
-        assertRefused("the tiles cover 555 of the 851 pixels of the 37x23 frame, e.g. rows 7 to 14 (no tile has them): a tile is missing", t[0], t[2]);
-        assertRefused(t[1] + " and " + t[1] + " overlap (regions 0,37,7,15 and 0,37,7,15)", t[0], t[1], t[1], t[2]);
+        assertRefused("render: the tiles cover 555 of the 851 pixels of the 37x23 frame, e.g. rows 7 to 14 (no tile has them): a tile is missing", t[0], t[2]);
+        assertRefused("render: " + t[1] + " and " + t[1] + " overlap (regions 0,37,7,15 and 0,37,7,15)", t[0], t[1], t[1], t[2]);
         assertRefused(" overlap (regions ", t[0], t[1], t[2], overlapping);
         assertRefused(other + ": a tile of a 36x22 frame, but " + t[0] + " is of a 37x23 frame", t[0], other, t[2]);
         assertRefused(notTile + ": not a tile (no spindulys-region text chunk", t[0], notTile.toString());
