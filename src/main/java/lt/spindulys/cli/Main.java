@@ -4,6 +4,7 @@ import java.io.PrintStream;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Map;
 
 import lt.spindulys.image.NonFinitePixelException;
 import lt.spindulys.io.SceneException;
@@ -29,6 +30,11 @@ public final class Main {
 
     /** Runs the command line with the given streams; returns the process exit status. */
     public static int run(String[] args, PrintStream out, PrintStream err) {
+        return run(args, out, err, System.getenv());
+    }
+
+    /** {@link #run(String[], PrintStream, PrintStream)} with the environment variables given (SPINDULYS_ASSETS_ROOT). */
+    static int run(String[] args, PrintStream out, PrintStream err, Map<String, String> env) {
         List<String> rest = new ArrayList<>(Arrays.asList(args));
         boolean debug = rest.remove("--debug");
         try {
@@ -38,7 +44,7 @@ public final class Main {
                     out.println(SubdivideCommand.USAGE);
                     return 0;
                 }
-                return new SubdivideCommand(rest.toArray(new String[0])).run(out, err);
+                return new SubdivideCommand(rest.toArray(new String[0]), env).run(out, err);
             }
             if (!rest.isEmpty() && rest.get(0).equals("view")) {
                 rest.remove(0);
@@ -72,7 +78,7 @@ public final class Main {
                 out.println("spindulys " + version());
                 return 0;
             }
-            return new RenderCommand(rest.toArray(new String[0])).run(out, err);
+            return new RenderCommand(rest.toArray(new String[0]), env).run(out, err);
         } catch (UsageException e) {
             line(err, "render: " + e.getMessage());
             return 2;
