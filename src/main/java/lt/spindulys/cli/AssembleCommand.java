@@ -18,6 +18,7 @@ import lt.spindulys.image.PixelRegion;
 import lt.spindulys.image.TileFile;
 import lt.spindulys.limits.HeapBudget;
 import lt.spindulys.limits.MessageText;
+import lt.spindulys.scene.InputFile;
 
 /**
  * {@code render assemble TILE.png... -o OUT}: puts the tiles of one frame, rendered apart with
@@ -39,8 +40,8 @@ final class AssembleCommand {
                                  --frame 7 'tiles/shot_####.tile_*_of_4.png' -o 'shot_####.png'
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
               --quiet            no closing 'assembled N tiles into OUT (WxH)' line
-            The tiles must be of one frame size and cover it exactly once. Exit status: 0 success,
-            2 bad usage or bad tiles (nothing is written), 1 failure while writing.""";
+            The tiles must be of one frame size and cover it exactly once, and OUT may not be one of them.
+            Exit status: 0 success, 2 bad usage or bad tiles (nothing is written), 1 failure while writing.""";
 
     /** The most tiles one frame is assembled from: far more than any farm splits a frame into. */
     static final int MAX_TILES = 1 << 20;
@@ -108,6 +109,13 @@ final class AssembleCommand {
             throw new UsageException(e.getMessage());
         }
         List<Path> files = expand(tiles);
+        List<InputFile> inputs = new ArrayList<>(files.size());
+        for (Path f : files) inputs.add(new InputFile(f, "tile", null));
+        try {
+            InputFile.checkOutput(output, inputs);
+        } catch (InputFile.OutputIsInputException e) {
+            throw new UsageException(e.getMessage());
+        }
         List<TileFile.Placement> placements = new ArrayList<>(files.size());
         for (Path f : files) placements.add(TileFile.readPlacement(f));
         TileFile.Placement first = placements.get(0);

@@ -102,6 +102,11 @@ final class FrameOptions {
         void render(Path output, int frame, int index, int count) throws IOException, InterruptedException, UsageException;
     }
 
+    /** Checks one frame's output before any frame is rendered. */
+    interface OutputCheck {
+        void check(Path output) throws UsageException;
+    }
+
     /**
      * Renders the frames in order; with --skip-existing a frame whose image and passes all exist
      * is left as it is (writes are atomic, so an existing file is a finished one), and the others
@@ -110,9 +115,10 @@ final class FrameOptions {
      *
      * @param passes the render passes written beside each image
      * @param log where "skipped" lines go, or null
+     * @param check called with the output of every frame to be rendered, before the first is
      * @return how many frames were rendered (0 when --skip-existing found them all)
      */
-    int render(FrameRange frames, OutputPattern pattern, Set<Aov> passes, PrintStream log, FrameRenderer renderer)
+    int render(FrameRange frames, OutputPattern pattern, Set<Aov> passes, PrintStream log, OutputCheck check, FrameRenderer renderer)
             throws IOException, InterruptedException, UsageException {
         if (skipExisting) removeStaleTemporaries(frames, pattern, log);
         List<Integer> todo = new ArrayList<>();
@@ -125,6 +131,7 @@ final class FrameOptions {
                 todo.add(n);
             }
         }
+        for (int n : todo) check.check(pattern.forFrame(n));
         for (int i = 0; i < todo.size(); i++) renderer.render(pattern.forFrame(todo.get(i)), todo.get(i), i, todo.size());
         return todo.size();
     }

@@ -4,6 +4,7 @@ import java.io.PrintStream;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Map;
 
 import lt.spindulys.bench.BenchCommand;
 import lt.spindulys.bench.BenchUsageException;
@@ -33,6 +34,11 @@ public final class Main {
 
     /** Runs the command line with the given streams; returns the process exit status. */
     public static int run(String[] args, PrintStream out, PrintStream err) {
+        return run(args, out, err, System.getenv());
+    }
+
+    /** {@link #run(String[], PrintStream, PrintStream)} with the environment variables given (SPINDULYS_ASSETS_ROOT). */
+    static int run(String[] args, PrintStream out, PrintStream err, Map<String, String> env) {
         List<String> rest = new ArrayList<>(Arrays.asList(args));
         boolean debug = rest.remove("--debug");
         // A farm's manager told to read OpenJD lines reads openjd_fail: for an error in the
@@ -45,7 +51,7 @@ public final class Main {
                     out.println(SubdivideCommand.USAGE);
                     return 0;
                 }
-                return new SubdivideCommand(rest.toArray(new String[0])).run(out, err);
+                return new SubdivideCommand(rest.toArray(new String[0]), env).run(out, err);
             }
             if (!rest.isEmpty() && rest.get(0).equals("view")) {
                 rest.remove(0);
@@ -81,7 +87,7 @@ public final class Main {
             }
             String[] renderArgs = rest.toArray(new String[0]);
             if (FarmOptions.asksForOpenjd(renderArgs)) openjd = out;
-            RenderCommand command = new RenderCommand(renderArgs);
+            RenderCommand command = new RenderCommand(renderArgs, env);
             openjd = null; // from here on the command reports its own failures to the manager
             return command.run(out, err);
         } catch (UsageException | BenchUsageException e) {

@@ -4,10 +4,14 @@ import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Set;
 
 import lt.spindulys.scene.AcceleratorKind;
+import lt.spindulys.scene.InputFile;
 import lt.spindulys.scene.AdaptiveSettings;
 import lt.spindulys.camera.AnimatedCamera;
 import lt.spindulys.camera.Camera;
@@ -17,6 +21,7 @@ import lt.spindulys.image.Aov;
 import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.image.ImageOptions;
 import lt.spindulys.image.ImageWriter;
+import lt.spindulys.io.AssetRoots;
 import lt.spindulys.io.SceneException;
 import lt.spindulys.io.SceneParser;
 import lt.spindulys.limits.InputFiles;
@@ -36,13 +41,20 @@ import lt.spindulys.scene.SceneBuilder;
 
 /** {@code render SCENE.dat [options]}: parse, override settings, render, write the image atomically. */
 final class RenderCommand {
+    /** The --assets-root lines of the usage, shared with render subdivide. */
+    static final String ASSETS_USAGE = """
+              --assets-root DIR  read only inside DIR (repeatable; SPINDULYS_ASSETS_ROOT, folders separated by
+                                 the path separator, applies too): the scene file and every file it names,
+                                 links resolved; a file outside is refused before it is opened
+            """;
+
     static final String USAGE = """
             usage: render SCENE.dat [-o OUT] [--width W] [--height H] [--spp N] [--aperture R] [--focus D]
                                     [--threads N] [--seed S] [--accel A] [--aov LIST] [--shutter OPEN,CLOSE] [--timesteps N]
                                     [--subdiv-target PX] [--subdiv-memory MIB] [--subdiv-cache MIB]
                                     [--frame N | --frames A-B[:STEP]] [--skip-existing]
                                     [--quality Q] [--region X0,X1,Y0,Y1 | --tile I/N] [--progress openjd|plain]
-                                    [--stats] [--quiet] [--debug]
+                                    [--assets-root DIR]... [--stats] [--quiet] [--debug]
                    render assemble TILE.png... -o OUT [--frame N]                (see render assemble --help)
                    render subdivide MESH.obj|MESH.dat --level N|--scene SCENE.dat -o OUT.obj [...]   (see render subdivide --help)
                    render bench [--only NAME] [--runs N] [--accel A] [--list]      (see render bench --help)
@@ -70,7 +82,7 @@ final class RenderCommand {
               --subdiv-cache MIB the lazy patches' cache, part of the subdivision memory (default 64; shrunk to it)
             """ + FrameOptions.USAGE + """
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
-            """ + FarmOptions.USAGE + """
+            """ + FarmOptions.USAGE + ASSETS_USAGE + """
               --stats            print load, build and render times, rays by kind, Mrays/s, peak heap,
                                  per mesh its triangles and its tree's SAH cost, and per adaptive
                                  subdiv its levels, patches, cache hits and misses
@@ -79,6 +91,10 @@ final class RenderCommand {
             Exit status: 0 success, 2 bad usage or bad input, 1 failure while rendering or writing.""";
 
     private Path scene, output;
+    /** The folders of --assets-root, in order. */
+    private final List<Path> assetFolders = new ArrayList<>();
+    /** What the scene may read: --assets-root and SPINDULYS_ASSETS_ROOT together. */
+    private AssetRoots assetRoots = AssetRoots.ANY;
     private Integer width, height, spp, threads;
     private Long seed;
     private Double aperture, focus;
@@ -98,8 +114,13 @@ final class RenderCommand {
     /** The scene file's reading time, shown by the first frame's statistics, which render from the scene as read. */
     private double readSeconds;
 
-    /** Parses arguments (after --debug was taken out). */
+    /** Parses arguments (after --debug was taken out), with the process's environment. */
     RenderCommand(String[] args) throws UsageException {
+        this(args, System.getenv());
+    }
+
+    /** Parses arguments (after --debug was taken out); {@code env} gives SPINDULYS_ASSETS_ROOT. */
+    RenderCommand(String[] args, Map<String, String> env) throws UsageException {
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             switch (a) {
@@ -136,6 +157,7 @@ final class RenderCommand {
                     if (!(subdivCache * (1 << 20) >= 1)) throw new UsageException(a + " must be more than 0 (mebibytes of the lazy patches' cache), found " + args[i]);
                 }
                 case "--frame", "--frames", "--skip-existing" -> i = frames.option(args, i);
+                case "--assets-root" -> assetFolders.add(pathValue(args, ++i, a));
                 case "--stats" -> stats = true;
                 case "--quiet", "-q" -> quiet = true;
                 default -> {
@@ -163,6 +185,35 @@ final class RenderCommand {
             throw new UsageException(e.getMessage());
         }
         farm.checkOutput(output);
+        assetRoots = assetRoots(assetFolders, env);
+    }
+
+    /** A path option's value; a name the platform cannot take is bad usage. */
+    static Path pathValue(String[] args, int i, String option) throws UsageException {
+        String v = value(args, i, option);
+        try {
+            return Path.of(v);
+        } catch (java.nio.file.InvalidPathException e) {
+            throw new UsageException(option + ": '" + MessageText.cut(v, 200) + "' is not a valid path: " + e.getReason());
+        }
+    }
+
+    /**
+     * What a scene may read: inside the --assets-root folders given, and inside the folders of
+     * SPINDULYS_ASSETS_ROOT when it is set (a farm's, which an option cannot widen).
+     */
+    static AssetRoots assetRoots(List<Path> folders, Map<String, String> env) throws UsageException {
+        AssetRoots roots;
+        try {
+            roots = AssetRoots.of(folders);
+        } catch (IllegalArgumentException e) {
+            throw new UsageException("--assets-root: " + e.getMessage());
+        }
+        try {
+            return AssetRoots.parse(env.get(AssetRoots.ENVIRONMENT_VARIABLE)).and(roots);
+        } catch (IllegalArgumentException e) {
+            throw new UsageException(AssetRoots.ENVIRONMENT_VARIABLE + ": " + e.getMessage());
+        }
     }
 
     /**
@@ -196,7 +247,16 @@ final class RenderCommand {
             FrameRange list = frames.frames(a.builder.animation(), scene);
             readSeconds = a.loadSeconds;
             OutputPattern pattern = frames.pattern(output, outputDefaulted, list);
-            int rendered = frames.render(list, pattern, aovs != null ? aovs : a.builder.settings().aovs(), quiet ? null : err,
+            Set<Aov> passes = aovs != null ? aovs : a.builder.settings().aovs();
+            int rendered = frames.render(list, pattern, passes, quiet ? null : err,
+                    path -> {
+                        // Every frame's files, before the first frame is rendered.
+                        try {
+                            RenderJob.checkNotInput(path, passes, a.builder.inputFiles());
+                        } catch (InputFile.OutputIsInputException e) {
+                            throw new UsageException(e.getMessage());
+                        }
+                    },
                     (path, n, index, count) -> {
                         if (farmProgress != null) farmProgress.item(path.toString(), index, count);
                         render(out, err, path, n, a.builder);
@@ -238,8 +298,8 @@ final class RenderCommand {
         int n = threads != null ? threads : Runtime.getRuntime().availableProcessors();
         SceneBuilder[] loaded = new SceneBuilder[1];
         double[] warmup = new double[1];
-        RenderJob job = (builder != null ? RenderJob.of(builder).frame(frame) : RenderJob.of(scene)).output(output).jpegQuality(quality).threads(n)
-                .settings(this::override);
+        RenderJob job = (builder != null ? RenderJob.of(builder).frame(frame) : RenderJob.of(scene).assetRoots(assetRoots)).output(output)
+                .jpegQuality(quality).threads(n).settings(this::override);
         farm.apply(job);
         // A farm's manager reads lines; the bar redraws one line in place, for a person at a terminal.
         TerminalProgress bar = farmProgress == null && !quiet && System.console() != null ? new TerminalProgress(err) : null;
@@ -268,6 +328,9 @@ final class RenderCommand {
             result = job.run();
         } catch (UncheckedUsage e) {
             throw e.usage;
+        } catch (InputFile.OutputIsInputException e) {
+            // The output (or a pass beside it) would replace a file the scene was read from.
+            throw new UsageException(e.getMessage());
         } catch (java.util.concurrent.CancellationException e) {
             throw new InterruptedException("interrupted");
         } catch (IOException e) {

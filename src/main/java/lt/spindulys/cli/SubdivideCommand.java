@@ -6,9 +6,11 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 
 import lt.spindulys.files.AtomicFile;
 import lt.spindulys.files.FileNames;
+import lt.spindulys.io.AssetRoots;
 import lt.spindulys.io.ObjReader;
 import lt.spindulys.io.ObjWriter;
 import lt.spindulys.limits.MessageText;
@@ -19,7 +21,9 @@ import lt.spindulys.mesh.MeshData;
 import lt.spindulys.scene.AdaptiveSubdivisionSurface;
 import lt.spindulys.scene.Bool;
 import lt.spindulys.scene.GObject;
+import lt.spindulys.scene.InputFile;
 import lt.spindulys.scene.Scene;
+import lt.spindulys.scene.SceneBuilder;
 import lt.spindulys.scene.SubdivisionSurface;
 import lt.spindulys.subdiv.Subdivision;
 import lt.spindulys.subdiv.ControlMesh;
@@ -37,7 +41,7 @@ import lt.spindulys.subdiv.SubdivOptions;
 final class SubdivideCommand {
     static final String USAGE = """
             usage: render subdivide MESH.obj|MESH.dat --level N -o OUT.obj [--scheme catmark|loop|bilinear] [--limit] [--uv UNWRAP.tex] [--debug]
-                   render subdivide MESH.obj|MESH.dat --scene SCENE.dat -o OUT.obj [--debug]
+                   render subdivide MESH.obj|MESH.dat --scene SCENE.dat -o OUT.obj [--assets-root DIR]... [--debug]
                    render subdivide --help
 
             Refines a control mesh by Catmull-Clark, Loop or bilinear subdivision (OpenSubdiv's rules;
@@ -59,7 +63,10 @@ final class SubdivideCommand {
               --limit            write limit-surface positions, and vn limit normals (with --level)
               --uv UNWRAP.tex    face-varying UVs from a Workframe unwrap (points and faces, or one u v per
                                  face corner; with --level)
+              --assets-root DIR  with --scene: the scene reads only inside DIR, as render's option (repeatable;
+                                 SPINDULYS_ASSETS_ROOT applies too)
               --debug            stack traces on errors
+            The output may not be one of the files read (the mesh, the unwrap, the scene and what it names).
             Exit status: 0 success, 2 bad usage or bad input, 1 failure while writing.""";
 
     /**
@@ -74,13 +81,22 @@ final class SubdivideCommand {
     static final long LIMIT_BYTES_PER_FACE = 64;
 
     private Path input, output, uv, scene;
+    /** The --assets-root folders, in order. */
+    private final List<Path> assetFolders = new ArrayList<>();
+    /** What the --scene may read: --assets-root and SPINDULYS_ASSETS_ROOT together. */
+    private final AssetRoots assetRoots;
     private Integer level;
     private boolean limit;
     /** The --scheme given, or null for the file's own. */
     private SubdivOptions.Scheme scheme;
 
-    /** Parses the arguments after "subdivide" (and without --debug). */
+    /** Parses the arguments after "subdivide" (and without --debug), with the process's environment. */
     SubdivideCommand(String[] args) throws UsageException {
+        this(args, System.getenv());
+    }
+
+    /** Parses the arguments after "subdivide" (and without --debug); {@code env} gives SPINDULYS_ASSETS_ROOT. */
+    SubdivideCommand(String[] args, Map<String, String> env) throws UsageException {
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             switch (a) {
@@ -90,6 +106,7 @@ final class SubdivideCommand {
                 case "--limit" -> limit = true;
                 case "--scene" -> scene = Path.of(value(args, ++i, a));
                 case "--scheme" -> scheme = schemeValue(value(args, ++i, a));
+                case "--assets-root" -> assetFolders.add(RenderCommand.pathValue(args, ++i, a));
                 default -> {
                     if (a.startsWith("-") && a.length() > 1) throw new UsageException("unknown option '" + a + "' for subdivide (see render subdivide --help)");
                     if (input != null) throw new UsageException("more than one mesh given: '" + input + "' and '" + a + "'");
@@ -109,9 +126,32 @@ final class SubdivideCommand {
             if (scheme != null) throw new UsageException("--scheme goes with --level, not --scene (the scene's subdiv statement chooses the scheme)");
         } else if (level == null) {
             throw new UsageException("subdivide needs --level N or --scene SCENE.dat (see render subdivide --help)");
+        } else if (!assetFolders.isEmpty()) {
+            throw new UsageException("--assets-root goes with --scene: it confines what a scene reads");
         }
         if (output == null) throw new UsageException("subdivide needs an output file: -o OUT.obj (see render subdivide --help)");
+        if (FileNames.isOnlyExtension(output)) throw new UsageException(FileNames.onlyExtensionMessage(output));
         if (!FileNames.extension(output).equals("obj")) throw new UsageException("the output of subdivide must be an .obj file, found '" + output + "'");
+        assetRoots = RenderCommand.assetRoots(assetFolders, env);
+        checkNotInput(givenInputs());
+    }
+
+    /** The files named on the command line that the run reads: the mesh, the unwrap, the scene. */
+    private List<InputFile> givenInputs() {
+        List<InputFile> in = new ArrayList<>();
+        in.add(new InputFile(input, "mesh", null));
+        if (uv != null) in.add(new InputFile(uv, "unwrap", null));
+        if (scene != null) in.add(new InputFile(scene, "scene file", null));
+        return in;
+    }
+
+    /** Refuses an output that is one of {@code inputs}: writing it would replace what was read. */
+    private void checkNotInput(List<InputFile> inputs) throws UsageException {
+        try {
+            InputFile.checkOutput(output, inputs);
+        } catch (InputFile.OutputIsInputException e) {
+            throw new UsageException(e.getMessage());
+        }
     }
 
     /** Runs the command; returns the exit status. Bad input surfaces as exceptions handled by {@link Main}. */
@@ -155,7 +195,9 @@ final class SubdivideCommand {
         if (problem != null) throw new RenderCommand.NoSuchFileException(scene, problem);
         problem = InputFiles.problem(input);
         if (problem != null) throw new UsageException("mesh " + input + " " + problem);
-        Scene built = SceneParser.parse(scene).build();
+        SceneBuilder parsed = SceneParser.parse(scene, assetRoots);
+        checkNotInput(parsed.inputFiles()); // before the build, which may take long
+        Scene built = parsed.build();
         List<AdaptiveSubdivisionSurface> adaptive = new ArrayList<>();
         List<SubdivisionSurface> uniform = new ArrayList<>();
         List<String> others = new ArrayList<>();

@@ -21,9 +21,44 @@ import java.util.concurrent.ThreadLocalRandom;
  * Atomic file writes, for every file the renderer writes (images, meshes): readers of the target
  * see either the old file or the complete new one, never a partial file, and a failed write
  * leaves the old file in place.
+ *
+ * <p>Temporary files are named {@code .spindulys-RANDOM.tmp} ({@link #TEMPORARY_PREFIX}, 16
+ * lower-case hexadecimal digits, {@link #TEMPORARY_SUFFIX}) in the target's folder, whatever the
+ * target is called: short, so that a target name of the longest length a file system allows
+ * (255 bytes on most) still has a temporary beside it, and recognisable, so that a clean-up (after a
+ * killed run, or of a folder a retried task writes into) can tell ours by {@link #isTemporaryName}
+ * and leave everything else. The copies of old files kept while a group is renamed into place
+ * ({@link #writeAll}) are {@code .spindulys-RANDOM.bak}.
  */
 public final class AtomicFile {
     private AtomicFile() {}
+
+    /** How the name of every temporary file this class makes starts: {@value}. */
+    public static final String TEMPORARY_PREFIX = ".spindulys-";
+
+    /** How the name of every temporary file this class makes ends: {@value}. */
+    public static final String TEMPORARY_SUFFIX = ".tmp";
+
+    /**
+     * Tells whether a file name is one of this class's temporary files:
+     * {@code .spindulys-} followed by 16 hexadecimal digits and {@code .tmp}, nothing else.
+     *
+     * @param name a file name (not a path)
+     * @return true for a temporary file of an atomic write or of a writability probe
+     */
+    public static boolean isTemporaryName(String name) {
+        return hasRandomName(name, TEMPORARY_SUFFIX);
+    }
+
+    private static boolean hasRandomName(String name, String suffix) {
+        int p = TEMPORARY_PREFIX.length();
+        if (name == null || name.length() != p + 16 + suffix.length() || !name.startsWith(TEMPORARY_PREFIX) || !name.endsWith(suffix)) return false;
+        for (int i = p; i < p + 16; i++) {
+            char c = name.charAt(i);
+            if (!(c >= '0' && c <= '9' || c >= 'a' && c <= 'f')) return false;
+        }
+        return true;
+    }
 
     /** What writes the file's content; may throw {@link IOException}. */
     @FunctionalInterface
@@ -33,7 +68,7 @@ public final class AtomicFile {
 
     /**
      * Writes a file atomically: {@code body} writes into a new temporary file
-     * {@code .NAME.RANDOM.tmp} in the target's directory, which is flushed to disk, closed and
+     * {@code .spindulys-RANDOM.tmp} in the target's directory, which is flushed to disk, closed and
      * then renamed over {@code out} (an atomic move where the file system supports it, else a
      * plain replacing move). If anything fails, including {@code body} throwing, the temporary
      * file is deleted and an existing {@code out} is left untouched.
@@ -87,11 +122,10 @@ public final class AtomicFile {
 
     /** Writes {@code body} into a new temporary file beside {@code target}, on disk and closed; deletes it on failure. */
     private static Path writeTemporary(Path out, Path dir, Path target, Body body) throws IOException {
-        String name = target.getFileName().toString();
         Path tmp = null;
         FileChannel channel = null;
         for (int attempt = 0; channel == null; attempt++) {
-            Path candidate = hiddenSibling(dir, name, ".tmp");
+            Path candidate = hiddenSibling(dir, TEMPORARY_SUFFIX);
             try {
                 // CREATE_NEW gives the usual default permissions (unlike createTempFile's 0600).
                 channel = FileChannel.open(candidate, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
@@ -160,9 +194,8 @@ public final class AtomicFile {
     }
 
     private static Path backup(Path target) throws IOException {
-        String name = target.getFileName().toString();
         for (int attempt = 0; ; attempt++) {
-            Path b = hiddenSibling(target.getParent(), name, ".bak");
+            Path b = hiddenSibling(target.getParent(), ".bak");
             try {
                 try {
                     return Files.createLink(b, target);
@@ -184,22 +217,9 @@ public final class AtomicFile {
         }
     }
 
-    /**
-     * True if {@code name} is the name of a temporary file {@link #write} makes:
-     * {@code .NAME.RANDOM.tmp}, RANDOM 1 to 16 hexadecimal digits. Other programs' temporary
-     * files, and ours' {@code .bak} copies, are not.
-     *
-     * @param name a file name, without its folder
-     * @return whether it has the form of one of our temporary files
-     */
-    public static boolean isTemporaryName(String name) {
-        return TEMPORARY_NAME.matcher(name).matches();
-    }
-
-    private static final java.util.regex.Pattern TEMPORARY_NAME = java.util.regex.Pattern.compile("\\..+\\.[0-9a-f]{1,16}\\.tmp", java.util.regex.Pattern.DOTALL);
-
-    private static Path hiddenSibling(Path dir, String name, String ext) {
-        return dir.resolve("." + name + "." + Long.toHexString(ThreadLocalRandom.current().nextLong()) + ext);
+    /** A new name in {@code dir}: {@link #TEMPORARY_PREFIX}, 16 random hexadecimal digits, {@code ext}; short whatever the target's name. */
+    private static Path hiddenSibling(Path dir, String ext) {
+        return dir.resolve(TEMPORARY_PREFIX + String.format("%016x", ThreadLocalRandom.current().nextLong()) + ext);
     }
 
     private static void deleteQuietly(Path p, Throwable into) {
@@ -234,7 +254,23 @@ public final class AtomicFile {
         if (Files.isDirectory(target)) {
             throw new IOException("cannot write '" + out + "': it is a directory");
         }
+        checkNameLength(out, target);
         return dir;
+    }
+
+    /**
+     * Refuses a name the file system will not take (longer than its limit, 255 bytes on most),
+     * asking the system itself with a look-up of the name, which creates nothing: the temporary
+     * file's name is short, so otherwise only the final rename would find out, after the work.
+     */
+    private static void checkNameLength(Path out, Path target) throws IOException {
+        try {
+            Files.readAttributes(target, java.nio.file.attribute.BasicFileAttributes.class, java.nio.file.LinkOption.NOFOLLOW_LINKS);
+        } catch (java.nio.file.NoSuchFileException e) {
+            // The usual case: a new file, and a name the system could look up.
+        } catch (FileSystemException e) {
+            throw new IOException("cannot write '" + out + "': " + reason(e), e);
+        }
     }
 
     /**
@@ -248,9 +284,9 @@ public final class AtomicFile {
     public static void checkWritable(Path out) throws IOException {
         Path dir = checkTarget(out);
         Path shown = out.getParent() != null ? out.getParent() : dir;
-        String name = out.toAbsolutePath().getFileName().toString();
         for (int attempt = 0; ; attempt++) {
-            Path probe = hiddenSibling(dir, name, ".tmp");
+            // A short name, as the atomic write's temporary has: the probe tries the folder, not the name.
+            Path probe = hiddenSibling(dir, TEMPORARY_SUFFIX);
             try {
                 FileChannel.open(probe, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE).close();
                 TemporaryFiles.register(probe);

@@ -1,5 +1,7 @@
 package lt.spindulys.files;
 
+import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 
@@ -22,6 +24,74 @@ public final class FileNames {
         String s = name == null ? "" : name.toString();
         int dot = s.lastIndexOf('.');
         return dot < 0 ? "" : s.substring(dot + 1).toLowerCase(Locale.ROOT);
+    }
+
+    /**
+     * Tells whether a file's name is an extension alone, such as {@code .png}: as an output it
+     * would be a hidden file with no name, which is never what was meant.
+     *
+     * @param file the file
+     * @return true for {@code out/.png}, false for {@code out.png} or {@code .out.png}
+     */
+    public static boolean isOnlyExtension(Path file) {
+        Path name = file.getFileName();
+        String s = name == null ? "" : name.toString();
+        return s.length() > 1 && s.lastIndexOf('.') == 0;
+    }
+
+    /**
+     * The refusal of an output whose name is {@link #isOnlyExtension only an extension}.
+     *
+     * @param file the output
+     * @return "output '.png' is only an extension; give the file a name, such as out.png"
+     */
+    public static String onlyExtensionMessage(Path file) {
+        return "output '" + file + "' is only an extension; give the file a name, such as out" + file.getFileName();
+    }
+
+    /**
+     * Tells whether writing {@code output} would replace the file {@code input}: when the output
+     * exists, whether the two are one file ({@link Files#isSameFile}: through symbolic and hard
+     * links alike); when it does not, whether the real path of its folder with its name is the
+     * input's real path (a link to nothing named as output would create the file it points to).
+     *
+     * @param output a file to be written
+     * @param input  a file read
+     * @return true if they are one file
+     */
+    public static boolean isSameFile(Path output, Path input) {
+        try {
+            if (Files.exists(output) && Files.exists(input)) return Files.isSameFile(output, input);
+        } catch (IOException | SecurityException e) {
+            // Not comparable as files: compared by their paths below.
+        }
+        return realPath(output).equals(realPath(input));
+    }
+
+    /**
+     * The path with every symbolic link in it resolved, as far as it exists: the real path of its
+     * nearest existing folder with the remaining names after it, normalised. A file that does not
+     * exist yet gets the path it would be created at.
+     *
+     * @param file the file
+     * @return an absolute, normalised path
+     */
+    public static Path realPath(Path file) {
+        Path abs = file.toAbsolutePath().normalize();
+        Path existing = abs;
+        java.util.ArrayDeque<Path> rest = new java.util.ArrayDeque<>();
+        while (existing != null) {
+            try {
+                Path real = existing.toRealPath();
+                for (Path name : rest) real = real.resolve(name);
+                return real.normalize();
+            } catch (IOException | SecurityException e) {
+                if (existing.getFileName() == null) break;
+                rest.addFirst(existing.getFileName());
+                existing = existing.getParent();
+            }
+        }
+        return abs;
     }
 
     /**

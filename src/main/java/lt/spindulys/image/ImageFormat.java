@@ -26,6 +26,9 @@ public enum ImageFormat {
         Path name = path.getFileName();
         String file = name == null ? "" : name.toString();
         int dot = file.lastIndexOf('.');
+        if (role.equals("output") && lt.spindulys.files.FileNames.isOnlyExtension(path)) {
+            throw new IllegalArgumentException(lt.spindulys.files.FileNames.onlyExtensionMessage(path));
+        }
         if (dot < 0) {
             throw new IllegalArgumentException("unsupported " + role + " format: '" + file
                     + "' has no extension " + EXPECTED);

@@ -233,7 +233,7 @@ public final class ImageWriter {
 
     /**
      * Writes a file atomically through {@link AtomicFile#write}: {@code body} writes into a new
-     * temporary file {@code .NAME.RANDOM.tmp} in the target's directory, which is flushed to
+     * temporary file {@code .spindulys-RANDOM.tmp} in the target's directory, which is flushed to
      * disk, closed and then renamed over {@code out}. If anything fails, including {@code body}
      * throwing, the temporary file is deleted and an existing {@code out} is left untouched.
      *

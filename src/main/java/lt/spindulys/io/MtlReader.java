@@ -71,6 +71,11 @@ public final class MtlReader {
      * @throws SceneException naming file:line:column for malformed input, a missing file or texture
      */
     public static Map<String, Material> read(Path file, TextureCache textures) {
+        return read(file, textures, new AssetGate(AssetRoots.ANY));
+    }
+
+    /** {@link #read(Path, TextureCache)}, its texture maps passing {@code gate} before they are opened. */
+    static Map<String, Material> read(Path file, TextureCache textures, AssetGate gate) {
         String name = file.toString();
         String problem = InputFiles.problem(file);
         if (problem != null) throw new SceneException(name, 0, 0, "material library " + problem + " (looked in " + file.toAbsolutePath().normalize() + ")");
@@ -85,7 +90,7 @@ public final class MtlReader {
             throw new SceneException(name, 0, 0, "cannot read material library: " + e.getMessage(), e);
         }
         Path folder = file.toAbsolutePath().getParent();
-        return parse(new String(bytes, StandardCharsets.UTF_8), name, folder, textures);
+        return new Parser(new String(bytes, StandardCharsets.UTF_8), name, folder, textures, gate).run();
     }
 
     /**
@@ -99,7 +104,7 @@ public final class MtlReader {
      * @throws SceneException naming file:line:column for malformed input or a missing texture
      */
     public static Map<String, Material> parse(String text, String fileName, Path folder, TextureCache textures) {
-        return new Parser(text, fileName, folder, textures).run();
+        return new Parser(text, fileName, folder, textures, new AssetGate(AssetRoots.ANY)).run();
     }
 
     /** The statements read, as the format spells them, in documentation order. */
@@ -150,15 +155,17 @@ public final class MtlReader {
         private final String text, file;
         private final Path folder;
         private final TextureCache textures;
+        private final AssetGate gate;
         private final Library out = new Library();
         private int line;
         private String current;
 
-        Parser(String text, String file, Path folder, TextureCache textures) {
+        Parser(String text, String file, Path folder, TextureCache textures, AssetGate gate) {
             this.text = text;
             this.file = file;
             this.folder = folder;
             this.textures = textures;
+            this.gate = gate;
         }
 
         /** The materials made so far, by name, with the line each was defined on. */
@@ -389,6 +396,9 @@ public final class MtlReader {
             } catch (InvalidPathException e) {
                 throw error(nameTok.column(), "texture file name " + MessageText.quote(name) + " is not a valid path: " + e.getReason());
             }
+            String refusal = gate.refusal(path);
+            if (refusal != null) throw error(nameTok.column(), "texture image " + MessageText.quote(name) + " " + refusal);
+            gate.record(path, "texture image", SceneException.location(file, line, nameTok.column()));
             String problem = InputFiles.problem(path);
             if (problem != null) {
                 throw error(nameTok.column(), "texture image " + MessageText.quote(name) + " " + problem + " (looked in " + MessageText.cut(path.toString(), 200) + ")");

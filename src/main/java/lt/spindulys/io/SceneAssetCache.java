@@ -37,6 +37,10 @@ import lt.spindulys.texture.TextureImage;
 final class SceneAssetCache {
     private final SceneErrors err;
     private final Path baseDir;
+    /** Where every file named passes before it is opened: refused outside the asset folders, recorded as read. */
+    private final AssetGate gate;
+    /** The scene file as messages name it, for the places recorded. */
+    private final String file;
     /** Every image of this parse, loaded once however many textures name it. */
     private final TextureCache textureCache = new TextureCache();
     /** The first mesh read from each file; later statements naming the file get instances of it. */
@@ -57,10 +61,26 @@ final class SceneAssetCache {
     /** Every material library of this parse, read once however many OBJ files name it. */
     private final Map<Path, Map<String, Material>> libraries = new HashMap<>();
 
-    /** @param baseDir the absolute folder against which relative file names are resolved */
-    SceneAssetCache(SceneErrors err, Path baseDir) {
+    /**
+     * @param baseDir the absolute folder against which relative file names are resolved
+     * @param gate    what the parse may read, and the record of what it read
+     * @param file    the scene file as messages name it
+     */
+    SceneAssetCache(SceneErrors err, Path baseDir, AssetGate gate, String file) {
         this.err = err;
         this.baseDir = baseDir;
+        this.gate = gate;
+        this.file = file;
+    }
+
+    /**
+     * Refuses a file outside the asset folders, before anything opens it, at the key's value; else
+     * records it as read, with that place.
+     */
+    private void admit(Prop f, String what, String rel, Path path) {
+        String refusal = gate.refusal(path);
+        if (refusal != null) throw err.error(f.valueAt(), what + " " + MessageText.quote(rel) + " " + refusal);
+        gate.record(path, what, SceneException.location(file, f.valueAt().line(), f.valueAt().column()));
     }
 
     /**
@@ -96,6 +116,7 @@ final class SceneAssetCache {
         } catch (InvalidPathException e) {
             throw err.error(f.valueAt(), "mesh file name " + MessageText.quote(rel) + " is not a valid path: " + e.getReason());
         }
+        admit(f, "mesh file", rel, path);
         // Checked here rather than left to the reader so the message points into the scene file.
         String problem = InputFiles.problem(path);
         if (problem != null) throw err.error(f.valueAt(), "mesh file " + MessageText.quote(rel) + " " + problem + " (looked in " + MessageText.cut(path.toString(), 200) + ")");
@@ -204,6 +225,10 @@ final class SceneAssetCache {
             } catch (InvalidPathException e) {
                 throw new SceneException(obj.toString(), lib.line(), lib.column(), "material library name " + MessageText.quote(lib.name()) + " is not a valid path: " + e.getReason());
             }
+            String refusal = gate.refusal(path);
+            if (refusal != null) {
+                throw new SceneException(obj.toString(), lib.line(), lib.column(), "material library " + MessageText.quote(lib.name()) + " " + refusal);
+            }
             String problem = InputFiles.problem(path);
             if (problem != null) {
                 throw new SceneException(obj.toString(), lib.line(), lib.column(), "material library " + MessageText.quote(lib.name()) + " " + problem
@@ -211,7 +236,8 @@ final class SceneAssetCache {
             }
             Map<String, Material> one = libraries.get(path);
             if (one == null) {
-                one = MtlReader.read(path, textureCache);
+                gate.record(path, "material library", SceneException.location(obj.toString(), lib.line(), lib.column()));
+                one = MtlReader.read(path, textureCache, gate);
                 libraries.put(path, one);
             }
             for (Map.Entry<String, Material> e : one.entrySet()) {
@@ -436,6 +462,7 @@ final class SceneAssetCache {
         } catch (InvalidPathException e) {
             throw err.error(f.valueAt(), what + " name " + MessageText.quote(rel) + " is not a valid path: " + e.getReason());
         }
+        admit(f, what, rel, path);
         String problem = InputFiles.problem(path);
         if (problem != null) throw err.error(f.valueAt(), what + " " + MessageText.quote(rel) + " " + problem + " (looked in " + MessageText.cut(path.toString(), 200) + ")");
         return path;

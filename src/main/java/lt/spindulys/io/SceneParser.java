@@ -48,6 +48,8 @@ public final class SceneParser {
     private final SceneBlockReader in;
     private final SceneObjectFactory objects;
     private final SceneBuilder builder = new SceneBuilder();
+    /** What the scene may read, and what it has read. */
+    private final AssetGate gate;
     private Token settingsAt, cameraAt, environmentAt, animationAt;
     /** The settings' 'shutter' key, which an animation's shutter angle replaces; null if not given. */
     private Prop shutterAt;
@@ -61,12 +63,13 @@ public final class SceneParser {
     private final Map<String, Texture> textures = new HashMap<>();
     private final Map<String, Token> texturesAt = new LinkedHashMap<>();
 
-    private SceneParser(String text, String file, Path baseDir) {
+    private SceneParser(String text, String file, Path baseDir, AssetGate gate) {
         this.lex = new SceneLexer(text, file);
         this.file = file;
         this.err = new SceneErrors(file);
+        this.gate = gate;
         this.in = new SceneBlockReader(lex, err, new Values());
-        this.objects = new SceneObjectFactory(err, new SceneAssetCache(err, baseDir), SceneException.location(file, 0, 0));
+        this.objects = new SceneObjectFactory(err, new SceneAssetCache(err, baseDir, gate, file), SceneException.location(file, 0, 0));
     }
 
     /**
@@ -79,7 +82,26 @@ public final class SceneParser {
      * @throws SceneException if its content is not a valid scene
      */
     public static SceneBuilder parse(Path file) throws IOException {
+        return parse(file, AssetRoots.ANY);
+    }
+
+    /**
+     * Parses a scene file as {@link #parse(Path)} does, reading only inside {@code roots}: the
+     * scene file itself and every file it names (meshes, subdivision meshes, unwraps, material
+     * libraries and their texture maps, images) must be inside one of the folders once links are
+     * resolved, or the parse stops with an error at the key that named it, before that file is
+     * opened. Every file read is recorded on the builder ({@link SceneBuilder#inputFiles()}).
+     *
+     * @param file  the scene file
+     * @param roots the folders the scene may read from; {@link AssetRoots#ANY} for anywhere
+     * @return a builder holding the scene, not yet built
+     * @throws IOException    if the file cannot be read
+     * @throws SceneException if its content is not a valid scene, or it reads outside {@code roots}
+     */
+    public static SceneBuilder parse(Path file, AssetRoots roots) throws IOException {
         String name = file.toString();
+        String refusal = roots.refusal(file);
+        if (refusal != null) throw new SceneException(name, 0, 0, "scene file " + refusal);
         // A pipe would block and a device never end: refused before anything is opened.
         String problem = InputFiles.problem(file);
         if (problem != null) throw new SceneException(name, 0, 0, "scene file " + problem);
@@ -91,7 +113,9 @@ public final class SceneParser {
             throw new SceneException(name, 0, 0, e.getMessage(), e);
         }
         String text = decodeUtf8(bytes, name);
-        return parse(text, name, file.toAbsolutePath().getParent());
+        AssetGate gate = new AssetGate(roots);
+        gate.record(file, "scene file", null);
+        return parse(text, name, file.toAbsolutePath().getParent(), gate);
     }
 
     /**
@@ -104,10 +128,29 @@ public final class SceneParser {
      * @throws SceneException if the text is not a valid scene
      */
     public static SceneBuilder parse(String text, String fileName, Path baseDir) {
+        return parse(text, fileName, baseDir, AssetRoots.ANY);
+    }
+
+    /**
+     * Parses scene text, reading only inside {@code roots} (see {@link #parse(Path, AssetRoots)}).
+     *
+     * @param text     the scene
+     * @param fileName name used in error messages (null: "&lt;input&gt;")
+     * @param baseDir  folder against which relative mesh paths are resolved (null: the working directory)
+     * @param roots    the folders the scene may read from; {@link AssetRoots#ANY} for anywhere
+     * @return a builder holding the scene, not yet built, with the files it read recorded
+     * @throws SceneException if the text is not a valid scene, or it reads outside {@code roots}
+     */
+    public static SceneBuilder parse(String text, String fileName, Path baseDir, AssetRoots roots) {
+        return parse(text, fileName, baseDir, new AssetGate(Objects.requireNonNull(roots, "roots")));
+    }
+
+    private static SceneBuilder parse(String text, String fileName, Path baseDir, AssetGate gate) {
         Path dir = (baseDir != null ? baseDir : Path.of("")).toAbsolutePath();
-        SceneParser p = new SceneParser(Objects.requireNonNull(text, "text"), fileName, dir);
+        SceneParser p = new SceneParser(Objects.requireNonNull(text, "text"), fileName, dir, gate);
         p.statements();
         p.checkMotions();
+        for (lt.spindulys.scene.InputFile f : gate.read()) p.builder.inputFile(f);
         return p.builder;
     }
 

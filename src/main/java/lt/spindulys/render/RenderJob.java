@@ -15,7 +15,10 @@ import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.image.ImageOptions;
 import lt.spindulys.image.ImageWriter;
 import lt.spindulys.image.PixelRegion;
+import lt.spindulys.image.Aov;
+import lt.spindulys.io.AssetRoots;
 import lt.spindulys.io.SceneParser;
+import lt.spindulys.scene.InputFile;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.SceneBuilder;
@@ -68,6 +71,7 @@ public final class RenderJob {
     private UnaryOperator<Camera> cameraOverride;
     private Consumer<SceneBuilder> onLoaded;
     private Path output;
+    private AssetRoots assetRoots = AssetRoots.ANY;
     private Integer frame;
     private double jpegQuality = ImageOptions.DEFAULT.jpegQuality();
     private int threads = Runtime.getRuntime().availableProcessors();
@@ -179,6 +183,25 @@ public final class RenderJob {
         configurable(false);
         ImageWriter.checkFormat(Objects.requireNonNull(out, "out"));
         output = out;
+        return this;
+    }
+
+    /**
+     * Confines what the scene file may read to {@code roots} ({@link SceneParser#parse(Path, AssetRoots)}):
+     * the scene file and every file it names must be inside one of the folders, links resolved,
+     * or the run fails at the key that named the file, before it is opened. For a farm that
+     * renders scenes it did not write.
+     *
+     * @param roots the folders; {@link AssetRoots#ANY} (the default) for anywhere
+     * @return this job
+     * @throws IllegalStateException if the job has started, or was not given a scene file
+     */
+    public RenderJob assetRoots(AssetRoots roots) {
+        configurable(false);
+        if (sceneFile == null && Objects.requireNonNull(roots, "roots").confines()) {
+            throw new IllegalStateException("asset folders confine what a scene file reads: parse the builder with SceneParser.parse(file, roots) instead");
+        }
+        assetRoots = Objects.requireNonNull(roots, "roots");
         return this;
     }
 
@@ -327,6 +350,9 @@ public final class RenderJob {
         if (output != null) {
             enter(Stage.CHECK);
             if (regionOf != null) RenderResult.checkTileOutput(output);
+            // The scene file is known before it is read; what it names, once it is.
+            if (sceneFile != null) InputFile.checkOutput(output, java.util.List.of(new InputFile(sceneFile, "scene file", null)));
+            if (builder != null) InputFile.checkOutput(output, builder.inputFiles());
             ImageWriter.checkOutput(output);
         }
         long t0 = System.nanoTime();
@@ -335,7 +361,7 @@ public final class RenderJob {
         double load = 0, build = 0;
         if (built == null) {
             enter(Stage.LOAD);
-            SceneBuilder b = builder != null ? builder : SceneParser.parse(sceneFile);
+            SceneBuilder b = builder != null ? builder : SceneParser.parse(sceneFile, assetRoots);
             if (onLoaded != null) onLoaded.accept(b);
             long t1 = System.nanoTime();
             load = (t1 - t0) / 1e9;
@@ -350,7 +376,10 @@ public final class RenderJob {
             // The frame is asked for by input: checked before anything is built for it.
             if (region == null) FrameBuffer.checkHeap(s.width(), s.height(), s.aovs());
             else FrameBuffer.checkHeap(region.width(), region.height(), s.aovs());
-            if (output != null) ImageWriter.checkPassOutputs(output, s.aovs()); // the image itself was checked first
+            if (output != null) {
+                ImageWriter.checkPassOutputs(output, s.aovs()); // the image itself was checked first
+                checkNotInput(output, s.aovs(), b.inputFiles());
+            }
             Camera c = cameraOverride == null ? b.camera()
                     : cameraOverride.apply(b.camera() != null ? b.camera() : SceneBuilder.DEFAULT_CAMERA);
             enter(Stage.BUILD);
@@ -370,6 +399,20 @@ public final class RenderJob {
         }
         stage = Stage.DONE;
         return result;
+    }
+
+    /**
+     * Refuses an image, or a render pass beside it, that is one of the files the scene was read
+     * from: the output would replace its own input.
+     *
+     * @param output the image to be written
+     * @param passes the passes to be written beside it ({@link Aov#fileBeside})
+     * @param inputs the files read ({@link SceneBuilder#inputFiles()})
+     * @throws InputFile.OutputIsInputException naming the file and the input
+     */
+    public static void checkNotInput(Path output, java.util.Set<Aov> passes, java.util.List<InputFile> inputs) {
+        InputFile.checkOutput(output, inputs);
+        for (Aov a : passes) InputFile.checkOutput(a.fileBeside(output), inputs);
     }
 
     /** The region for a frame of these settings: checked against its size, and refused with passes. Null: the whole frame. */

@@ -45,6 +45,7 @@ public final class SceneBuilder {
     private final List<GObject> objects = new ArrayList<>();
     private final Map<String, Material> materials = new LinkedHashMap<>();
     private String frameSource, samplesSource;
+    private final List<InputFile> inputFiles = new ArrayList<>();
     private Environment environment;
     private Animation animation;
 
@@ -66,6 +67,7 @@ public final class SceneBuilder {
         c.materials.putAll(materials);
         c.frameSource = frameSource;
         c.samplesSource = samplesSource;
+        c.inputFiles.addAll(inputFiles);
         c.environment = environment;
         c.animation = animation;
         return c;
@@ -267,6 +269,27 @@ public final class SceneBuilder {
      * @return the place recorded, or null
      */
     public String samplesSource() { return samplesSource; }
+
+    /**
+     * Records a file this description was read from (the scene file, a mesh, a material library,
+     * an image, an unwrap), so that a run can refuse to write its output over one of them
+     * ({@link InputFile#checkOutput}). {@link lt.spindulys.io.SceneParser} records every file it
+     * reads; a scene made in code may record the files it read its parts from.
+     *
+     * @param file the file read
+     * @return this builder, for chaining
+     */
+    public SceneBuilder inputFile(InputFile file) {
+        inputFiles.add(Objects.requireNonNull(file, "file"));
+        return this;
+    }
+
+    /**
+     * The files this description was read from, in the order they were recorded ({@link #inputFile}).
+     *
+     * @return an unmodifiable view, empty for a scene made in code
+     */
+    public List<InputFile> inputFiles() { return Collections.unmodifiableList(inputFiles); }
 
     /**
      * Sets what rays that hit nothing see: a lat-long image instead of the settings' background

@@ -84,11 +84,11 @@ class FarmTerminationTest {
         String frames = out.resolve("f_####.png").toString();
         assertEquals(0, CliTest.run(scene.toString(), "--frame", "1", "-o", frames, "--quiet").status());
         FileTime old = FileTime.from(Instant.now().minus(FrameOptions.STALE_AFTER).minus(Duration.ofMinutes(1)));
-        Path stale = Files.writeString(out.resolve(".f_0001.png.3fa9c02b1d7e4a65.tmp"), "half a png");
-        Path staleOther = Files.writeString(out.resolve(".f_0002.png.a1.tmp"), "half a png");
-        Path fresh = Files.writeString(out.resolve(".f_0002.png.5e0c7d1b2a3f4e69.tmp"), "being written");
-        Path notOurs = Files.writeString(out.resolve(".f_0002.png.notes.tmp"), "someone else's");
-        Path elsewhere = Files.writeString(dir.resolve(".f_0001.png.3fa9c02b1d7e4a65.tmp"), "not beside the outputs");
+        Path stale = Files.writeString(out.resolve(".spindulys-3fa9c02b1d7e4a65.tmp"), "half a png");
+        Path staleOther = Files.writeString(out.resolve(".spindulys-00000000000000a1.tmp"), "half a png");
+        Path fresh = Files.writeString(out.resolve(".spindulys-5e0c7d1b2a3f4e69.tmp"), "being written");
+        Path notOurs = Files.writeString(out.resolve(".spindulys-notes.tmp"), "someone else's");
+        Path elsewhere = Files.writeString(dir.resolve(".spindulys-3fa9c02b1d7e4a65.tmp"), "not beside the outputs");
         for (Path p : List.of(stale, staleOther, notOurs, elsewhere)) Files.setLastModifiedTime(p, old);
 
         CliTest.Run r = CliTest.run(scene.toString(), "--frames", "1-2", "-o", frames, "--skip-existing");

@@ -36,18 +36,4 @@ class TemporaryFilesTest {
             assertEquals(List.of("a.txt"), s.map(p -> p.getFileName().toString()).toList());
         }
     }
-
-    @Test
-    void temporaryNames() {
-        assertTrue(AtomicFile.isTemporaryName(".out.png.3fa9c02b1d7e4a65.tmp"));
-        assertTrue(AtomicFile.isTemporaryName(".out_0001.png.a.tmp"));
-        assertTrue(AtomicFile.isTemporaryName(".a b\nc.png.0.tmp"));
-        assertFalse(AtomicFile.isTemporaryName("out.png.3fa9c02b1d7e4a65.tmp"), "not hidden");
-        assertFalse(AtomicFile.isTemporaryName(".out.png.3fa9c02b1d7e4a65.bak"), "a backup");
-        assertFalse(AtomicFile.isTemporaryName(".out.png.notes.tmp"), "not hexadecimal");
-        assertFalse(AtomicFile.isTemporaryName(".out.png.3fa9c02b1d7e4a6512.tmp"), "more than 16 digits");
-        assertFalse(AtomicFile.isTemporaryName(".tmp"));
-        assertFalse(AtomicFile.isTemporaryName(".x.tmp"));
-        assertFalse(AtomicFile.isTemporaryName("out.png"));
-    }
 }

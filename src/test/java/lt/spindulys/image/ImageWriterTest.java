@@ -29,6 +29,8 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
+import lt.spindulys.files.AtomicFile;
+
 class ImageWriterTest {
     @TempDir Path dir;
 
@@ -264,7 +266,7 @@ class ImageWriterTest {
             List<String> during = listing();
             assertEquals(2, during.size(), during.toString());
             String tmp = during.get(0);
-            assertTrue(tmp.startsWith(".scene.obj.") && tmp.endsWith(".tmp"), tmp);
+            assertTrue(AtomicFile.isTemporaryName(tmp) && tmp.startsWith(".spindulys-") && tmp.endsWith(".tmp"), tmp);
             assertEquals("old", Files.readString(out), "target untouched until the rename");
             os.close();   // closing the handed stream must not break the commit
         });
