@@ -1,5 +1,6 @@
 package lt.spindulys.shading;
 
+import lt.spindulys.light.LightSample;
 import lt.spindulys.math.Ray;
 import lt.spindulys.trace.TracedObject;
 import lt.spindulys.trace.Hit;
@@ -37,23 +38,20 @@ public final class TracerScratch {
     TracedObject[] solids = new TracedObject[8];
     int mediaCount;
 
-    // The pixel sample being traced, for area-light samples: global seed, pixel, sample index and
+    // The pixel sample being traced, for light samples: global seed, pixel, sample index and
     // count. Set by setSample; a caller that never sets it traces as sample 0 of 1 of pixel (0, 0).
     long seed;
     int pixelX, pixelY, sample, samplesPerPixel = 1;
     /** Bumped whenever the pixel or sample count changes, so per-pixel light strata are redrawn. */
     int pixelGeneration = 1;
-    /** Per sampled light (the area lights, then the environment if it is a light): its strata in the order the pixel's samples take them, and the generation they were drawn for. */
+    /** Per light that takes strata (the area lights, then the environment if it is a light): its strata in the order the pixel's samples take them, and the generation they were drawn for. */
     int[][] lightStrata = new int[0][];
     int[] lightStrataGeneration = new int[0];
     /** Per sampled light, as lightStrata: the columns of its strata's grid (rows = strata / cols). */
     int[] lightStrataCols = new int[0];
     final lt.spindulys.sampling.Rng lightRng = new lt.spindulys.sampling.Rng();
-    /**
-     * A light sample: an area light's point, the weight of its radiance and its distance from the
-     * shaded point (5 values), or an environment light's direction, solid angle and radiance (7).
-     */
-    final double[] lightSample = new double[7];
+    /** The light sample being shaded (Light#sampleLi writes it). */
+    final LightSample lightSample = new LightSample();
 
     /**
      * Says which pixel sample the next camera ray is, so that area-light samples are stratified

@@ -1,17 +1,18 @@
 package lt.spindulys.shading;
 
 import lt.spindulys.math.Color;
-import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.trace.TracedObject;
 import lt.spindulys.trace.Hit;
+import lt.spindulys.light.Light;
+import lt.spindulys.light.LightSample;
+import lt.spindulys.light.Lights;
 import lt.spindulys.limits.HeapBudget;
 import lt.spindulys.material.Material;
 import lt.spindulys.sampling.Rng;
 import lt.spindulys.scene.AreaLight;
 import lt.spindulys.scene.Environment;
 import lt.spindulys.scene.EnvironmentLight;
-import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.trace.ShadingData;
@@ -30,16 +31,15 @@ import lt.spindulys.texture.Channel;
  * another material) leaves the medium it entered, whose material gives the inside's index of
  * refraction and attenuation; the exit surface's material still gives that surface's kt and filter.
  *
- * <p>Area lights ({@link AreaLight}): each shaded point sends {@link AreaLight#samples()} shadow
- * rays per pixel sample to points on the light, drawn from strata of the light shared by the
- * pixel's samples (seeded from the pass seed, pixel, sample and light, as set by
- * {@link TracerScratch#setSample}), through the same transmission walk as point lights' shadow
- * rays; rays that reach a light before any surface see its radiance.
- *
- * <p>An environment that is a light ({@link EnvironmentLight}) is sampled the same way, as one
- * more sampled light after the area lights (its own strata and seeds): {@link Environment#samples()}
- * directions per pixel sample drawn in proportion to the map's brightness, each a shadow ray to
- * infinity that brings the radiance seen along it, weighted by the solid angle it stands for.
+ * <p>Lights ({@link Lights}: the point lights, the {@link AreaLight area lights}, and the
+ * environment if it is an {@link EnvironmentLight}) are shaded in one loop, each light drawing
+ * its own samples ({@link Light#sampleLi}) into the scratch's {@link LightSample}. A point light
+ * takes one; every other light takes {@link Light#samples()} per pixel sample at points of the
+ * unit square drawn from strata of the light shared by the pixel's samples (seeded from the pass
+ * seed, pixel, sample and light, as set by {@link TracerScratch#setSample}). Each sample's shadow
+ * ray goes through the same transmission walk, to the sampled point or, for the environment, to
+ * infinity, and brings the sample's weighted radiance. Rays that reach an area light before any
+ * surface see its radiance.
  *
  * <p>Textures ({@link TextureShading}): a material's bound channels are evaluated at each shaded
  * hit before lighting (colour, ks, kr, kt, emission, bumped shading normal), with a footprint from
@@ -54,43 +54,26 @@ public final class WhittedIntegrator {
 
     private final Scene scene;
     private final RenderSettings settings;
-    private final PointLight[] lights;
-    private final AreaLight[] areaLights;
+    /** The scene's lights: the point lights, the area lights, the environment if it is a light. */
+    private final Lights lights;
+    private final Light[] lightArray;
+    /** The lights that take strata (all but the point lights), counted. */
+    private final int stratifiedLights;
     /** What rays that hit nothing see, or null for the background colour. */
     private final Environment environment;
-    /** The environment as a light, or null; sampled as light index areaLights.length. */
-    private final EnvironmentLight environmentLight;
-    /** Area lights plus the environment light if any: the lights that take strata. */
-    private final int sampledLights;
-    /** The area lights' samples per pixel sample together (the occluder cache's slots after theirs are the environment's). */
-    private final int areaSamples;
     private final boolean transparentShadows;
     /** Angle between the primary rays of neighbouring pixels at the image centre, radians (texture footprints). */
     private final double pixelAngle;
-    /**
-     * Smallest squared distance an inverse-square light's falloff divides by: the one at which
-     * all of them together could deliver {@link Ranges#MAX_IRRADIANCE}. A point (nearly) on a
-     * light would otherwise receive an unbounded amount; for lights of everyday intensities this
-     * distance is below 1e-12 and changes nothing.
-     */
-    private final double minDistance2;
 
     public WhittedIntegrator(Scene scene) {
         this.scene = scene;
         this.settings = scene.settings();
-        this.lights = scene.lightArray();
-        this.areaLights = scene.areaLightArray();
+        this.lights = Lights.of(scene);
+        this.lightArray = lights.all();
+        this.stratifiedLights = lights.stratified();
         this.environment = scene.environment();
-        this.environmentLight = scene.environmentLight();
-        this.sampledLights = areaLights.length + (environmentLight != null ? 1 : 0);
-        int samples = 0;
-        for (AreaLight l : areaLights) samples += l.samples(); // each at most AreaLight.MAX_SAMPLES
-        this.areaSamples = samples;
         this.transparentShadows = scene.hasTransparentObjects();
         this.pixelAngle = pixelAngle(scene);
-        double power = 0;
-        for (PointLight l : lights) if (l.falloff() == PointLight.Falloff.INVERSE_SQUARE) power += l.power();
-        this.minDistance2 = power / Ranges.MAX_IRRADIANCE;
     }
 
     /**
@@ -123,7 +106,7 @@ public final class WhittedIntegrator {
      * @throws lt.spindulys.limits.InsufficientMemoryException if the heap cannot hold it
      */
     public TracerScratch newScratch() {
-        String what = environmentLight == null ? "the area lights' sample strata of one render thread"
+        String what = scene.environmentLight() == null ? "the area lights' sample strata of one render thread"
                 : "the area and environment lights' sample strata of one render thread";
         try (HeapBudget.Reservation r = HeapBudget.reserve(scratchBytes(settings.samplesPerPixel()), what)) {
             return newScratch(r);
@@ -140,15 +123,17 @@ public final class WhittedIntegrator {
      */
     public TracerScratch newScratch(HeapBudget.Reservation reservation) {
         TracerScratch s = new TracerScratch(settings.maxDepth());
-        s.lightStrata = new int[sampledLights][];
-        s.lightStrataGeneration = new int[sampledLights];
-        s.lightStrataCols = new int[sampledLights];
+        s.lightStrata = new int[stratifiedLights][];
+        s.lightStrataGeneration = new int[stratifiedLights];
+        s.lightStrataCols = new int[stratifiedLights];
         // Each light's strata (pixel samples times its samples, both from the input) are kept per thread.
         int spp = settings.samplesPerPixel();
-        for (int i = 0; i < sampledLights; i++) {
-            int n = spp * samples(i);
+        int i = 0;
+        for (Light l : lightArray) {
+            if (l.isDelta()) continue;
+            int n = spp * l.samples();
             s.lightStrata[i] = new int[n];
-            s.lightStrataCols[i] = strataCols(n);
+            s.lightStrataCols[i++] = strataCols(n);
         }
         reservation.release(scratchBytes(spp));
         return s;
@@ -164,7 +149,7 @@ public final class WhittedIntegrator {
      */
     public long scratchBytes(int samplesPerPixel) {
         long bytes = HeapBudget.sum(FIXED_SCRATCH_BYTES, HeapBudget.product(settings.maxDepth() + 2, VERTEX_BYTES));
-        for (int i = 0; i < sampledLights; i++) bytes = HeapBudget.sum(bytes, 16, HeapBudget.product(4, samplesPerPixel, samples(i)));
+        for (Light l : lightArray) if (!l.isDelta()) bytes = HeapBudget.sum(bytes, 16, HeapBudget.product(4, samplesPerPixel, l.samples()));
         return bytes;
     }
 
@@ -183,33 +168,17 @@ public final class WhittedIntegrator {
      */
     public String scratchSizedBy(int samplesPerPixel) {
         String pixel = "samples " + samplesPerPixel + " of the settings";
-        if (sampledLights == 0) return pixel;
-        if (sampledLights > 4) {
-            long sum = 0;
-            for (int i = 0; i < sampledLights; i++) sum += samples(i);
-            return pixel + " x samples " + sum + " of " + sampledLights + " lights together";
-        }
+        if (stratifiedLights == 0) return pixel;
+        long sum = 0;
         StringBuilder counts = new StringBuilder(), names = new StringBuilder();
-        for (int i = 0; i < sampledLights; i++) {
-            counts.append(i == 0 ? "" : " + ").append(samples(i));
-            names.append(i == 0 ? "" : ", ").append(lightName(i));
+        for (Light l : lightArray) {
+            if (l.isDelta()) continue;
+            sum += l.samples();
+            counts.append(counts.length() == 0 ? "" : " + ").append(l.samples());
+            names.append(names.length() == 0 ? "" : ", ").append(l.statement());
         }
+        if (stratifiedLights > 4) return pixel + " x samples " + sum + " of " + stratifiedLights + " lights together";
         return pixel + " x samples " + counts + " of the " + names;
-    }
-
-    /** The statement of sampled light i: rectlight, disclight, spherelight or environment. */
-    private String lightName(int i) {
-        if (i >= areaLights.length) return "environment";
-        return switch (areaLights[i].shape()) {
-            case RECTANGLE -> "rectlight";
-            case DISC -> "disclight";
-            case SPHERE -> "spherelight";
-        };
-    }
-
-    /** Shadow rays per pixel sample of sampled light i: an area light, or the environment after them. */
-    private int samples(int i) {
-        return i < areaLights.length ? areaLights[i].samples() : environmentLight.environment().samples();
     }
 
     /** Colour seen along a camera ray, written to out[0..2]. */
@@ -266,8 +235,8 @@ public final class WhittedIntegrator {
         Material medium = s.innermost();
         double dlen = Math.sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
         boolean found = scene.intersect(ray, hit, s.ctx);
-        if (areaLights.length > 0) {
-            double tLight = seesAreaLight(ray, found ? hit.t : Double.POSITIVE_INFINITY, out);
+        if (lights.hasSurfaces()) {
+            double tLight = lights.nearestSurface(ray, found ? hit.t : Double.POSITIVE_INFINITY, out);
             if (tLight == tLight) { // not NaN: a light is nearer than any surface
                 if (medium != null) attenuate(medium, tLight * dlen, out);
                 return;
@@ -323,128 +292,69 @@ public final class WhittedIntegrator {
         if (!(m.kd() > 0 || v.ks > 0)) return;
         // A flat receiver cannot shadow itself: its shadow rays skip it (opaque shadows only).
         s.ctx.shadowReceiver = v.hit.object.flat() ? v.hit.object : null;
-        pointIllumination(m, v, s, out);
-        if (areaLights.length > 0) areaIllumination(m, v, s, out);
-        if (environmentLight != null) environmentIllumination(m, v, s, out);
+        directIllumination(m, v, s, out);
         s.ctx.shadowReceiver = null;
-    }
-
-    /** Adds to out[0..2] the diffuse and Blinn-Phong specular light from every point light at vertex v (material m). */
-    private void pointIllumination(Material m, TracerScratch.PathVertex v, TracerScratch s, double[] out) {
-        double kd = m.kd(), ks = v.ks, shininess = m.shininess();
-        double px = v.px, py = v.py, pz = v.pz;
-        double nfx = v.nfx, nfy = v.nfy, nfz = v.nfz, snx = v.snx, sny = v.sny, snz = v.snz;
-        double ox = px + nfx * v.eps, oy = py + nfy * v.eps, oz = pz + nfz * v.eps;
-        for (int li = 0; li < lights.length; li++) {
-            PointLight light = lights[li];
-            // Shading uses the true point; only the shadow ray starts off the surface.
-            double lx = light.position().x() - px, ly = light.position().y() - py, lz = light.position().z() - pz;
-            double dist2 = lx * lx + ly * ly + lz * lz, dist = Math.sqrt(dist2);
-            if (!(dist > 0)) continue;
-            double ux = lx / dist, uy = ly / dist, uz = lz / dist;
-            if (ux * nfx + uy * nfy + uz * nfz <= 0) continue; // light behind the surface
-            double ndotl = ux * snx + uy * sny + uz * snz;
-            if (ndotl <= 0) continue;
-            Ray shadow = s.shadowRay.set(ox, oy, oz, light.position().x() - ox, light.position().y() - oy, light.position().z() - oz, 0, 1);
-            shadow.time = v.time; // a moving object casts its shadow where it is at the shaded ray's time
-            s.ctx.occluderSlot = li & OCCLUDER_MASK;
-            if (!shadowTransmission(shadow, dist, s)) continue;
-            double[] t = s.transmission;
-            double scale = light.intensity();
-            if (light.falloff() == PointLight.Falloff.INVERSE_SQUARE) scale /= Math.max(dist2, minDistance2);
-            Color lc = light.color();
-            addLight(v, kd, ks, shininess, ux, uy, uz, ndotl, lc.r() * scale * t[0], lc.g() * scale * t[1], lc.b() * scale * t[2], out);
-        }
     }
 
     /** Slots of the thread's occluder cache (TraceContext#occluders), less one: a mask. */
     private static final int OCCLUDER_MASK = lt.spindulys.trace.TraceContext.OCCLUDER_SLOTS - 1;
 
-    /** Distinguishes the area-light strata's shuffle from the per-sample jitter and the pixel sampler's streams. */
+    /** Distinguishes the light strata's shuffle from the per-sample jitter and the pixel sampler's streams. */
     private static final long STRATA_STREAM = 0x61726561L, JITTER_STREAM = 0x6a697474L;
 
     /**
-     * Adds to out[0..2] the diffuse and Blinn-Phong specular light from every area light at
-     * vertex v (material m): each of a light's samples takes the stratum of the pixel's shuffled
-     * strata that its pixel sample and index within the light select, jittered within it.
+     * Adds to out[0..2] the diffuse and Blinn-Phong specular light from every light at vertex v
+     * (material m). A point light takes one sample. Every other light takes its samples per pixel
+     * sample, each in the stratum of the pixel's shuffled strata that its pixel sample and index
+     * within the light select, jittered within it (the lights that take strata are numbered in
+     * order for their seeds). Each sample's shadow ray uses its own slot of the occluder cache:
+     * the point lights' one each, then each light's strata.
      */
-    private void areaIllumination(Material m, TracerScratch.PathVertex v, TracerScratch s, double[] out) {
+    private void directIllumination(Material m, TracerScratch.PathVertex v, TracerScratch s, double[] out) {
         double kd = m.kd(), ks = v.ks, shininess = m.shininess();
         double px = v.px, py = v.py, pz = v.pz;
         double nfx = v.nfx, nfy = v.nfy, nfz = v.nfz, snx = v.snx, sny = v.sny, snz = v.snz;
+        // Shading uses the true point; only the shadow rays start off the surface.
         double ox = px + nfx * v.eps, oy = py + nfy * v.eps, oz = pz + nfz * v.eps;
-        double[] ls = s.lightSample;
-        int slots = lights.length; // the occluder cache's slots: the point lights', then each light's strata
-        for (int li = 0; li < areaLights.length; li++) {
-            AreaLight light = areaLights[li];
-            int k = light.samples(), n = s.samplesPerPixel * k;
-            int[] strata = strata(li, n, s);
-            int cols = s.lightStrataCols[li], rows = n / cols;
-            int firstSlot = slots;
+        LightSample ls = s.lightSample;
+        int slots = 0, stratified = 0;
+        for (Light light : lightArray) {
+            int k = light.samples(), n = 1, cols = 1, rows = 1, firstSlot = slots;
+            int[] strata = null;
+            Rng rng = null;
+            if (!light.isDelta()) {
+                int li = stratified++;
+                n = s.samplesPerPixel * k;
+                strata = strata(li, n, s);
+                cols = s.lightStrataCols[li];
+                rows = n / cols;
+                rng = s.lightRng.seed(s.seed ^ JITTER_STREAM * (li + 1), s.pixelX, s.pixelY, s.sample);
+            }
             slots += n;
-            Rng rng = s.lightRng.seed(s.seed ^ JITTER_STREAM * (li + 1), s.pixelX, s.pixelY, s.sample);
-            Color lc = light.color();
-            double scale = light.intensity() / k;
-            double lr = lc.r() * scale, lg = lc.g() * scale, lb = lc.b() * scale;
             for (int j = 0; j < k; j++) {
-                int at = s.sample * k + j; // below n for a sample index below the pixel's count
-                int st = strata[at < n ? at : at % n], row = st / cols;
-                double su = (st - row * cols + rng.nextDouble()) / cols, sv = (row + rng.nextDouble()) / rows;
-                if (!sampleLight(light, su, sv, px, py, pz, ls)) continue;
-                double lx = ls[0] - px, ly = ls[1] - py, lz = ls[2] - pz;
-                double dist = ls[4];
-                if (!(dist > 0)) continue;
-                double ux = lx / dist, uy = ly / dist, uz = lz / dist;
+                double su = 0.5, sv = 0.5;
+                int st = 0;
+                if (rng != null) {
+                    int at = s.sample * k + j; // below n for a sample index below the pixel's count
+                    st = strata[at < n ? at : at % n];
+                    int row = st / cols;
+                    su = (st - row * cols + rng.nextDouble()) / cols;
+                    sv = (row + rng.nextDouble()) / rows;
+                }
+                if (!light.sampleLi(px, py, pz, su, sv, ls)) continue;
+                double ux = ls.wx, uy = ls.wy, uz = ls.wz;
                 if (ux * nfx + uy * nfy + uz * nfz <= 0) continue; // light behind the surface
                 double ndotl = ux * snx + uy * sny + uz * snz;
                 if (ndotl <= 0) continue;
-                // The shadow ray stops just short of the light's surface, so that geometry the light
-                // lies on (a disc on a ceiling) does not block it.
-                Ray shadow = s.shadowRay.set(ox, oy, oz, ls[0] - ox, ls[1] - oy, ls[2] - oz, 0, 1 - 1e-7);
-                shadow.time = v.time;
+                boolean infinite = ls.distance == Double.POSITIVE_INFINITY;
+                Ray shadow = infinite ? s.shadowRay.set(ox, oy, oz, ux, uy, uz, 0, Double.POSITIVE_INFINITY)
+                        : s.shadowRay.set(ox, oy, oz, ls.x - ox, ls.y - oy, ls.z - oz, 0, ls.shadowTMax);
+                shadow.time = v.time; // a moving object casts its shadow where it is at the shaded ray's time
                 s.ctx.occluderSlot = (firstSlot + st) & OCCLUDER_MASK;
-                double weight = ls[3];
-                if (!shadowTransmission(shadow, dist, s)) continue;
+                if (!shadowTransmission(shadow, infinite ? 1 : ls.distance, s)) continue;
                 double[] t = s.transmission;
-                addLight(v, kd, ks, shininess, ux, uy, uz, ndotl, lr * weight * t[0], lg * weight * t[1], lb * weight * t[2], out);
+                addLight(v, kd, ks, shininess, ux, uy, uz, ndotl, ls.weightedR * t[0], ls.weightedG * t[1], ls.weightedB * t[2], out);
             }
-        }
-    }
-
-    /**
-     * Adds to out[0..2] the diffuse and Blinn-Phong specular light from the environment at vertex
-     * v (material m), as {@link #areaIllumination} does for an area light: its strata and seeds
-     * are light index areaLights.length's, each stratum's jittered point becomes a direction
-     * drawn by brightness, and a shadow ray to infinity along it brings the radiance seen there
-     * times the solid angle the sample stands for, over the light's sample count.
-     */
-    private void environmentIllumination(Material m, TracerScratch.PathVertex v, TracerScratch s, double[] out) {
-        double kd = m.kd(), ks = v.ks, shininess = m.shininess();
-        double nfx = v.nfx, nfy = v.nfy, nfz = v.nfz, snx = v.snx, sny = v.sny, snz = v.snz;
-        double ox = v.px + nfx * v.eps, oy = v.py + nfy * v.eps, oz = v.pz + nfz * v.eps;
-        double[] ls = s.lightSample;
-        int li = areaLights.length;
-        int k = environmentLight.environment().samples(), n = s.samplesPerPixel * k;
-        int[] strata = strata(li, n, s);
-        int cols = s.lightStrataCols[li], rows = n / cols;
-        int firstSlot = lights.length + s.samplesPerPixel * areaSamples; // after the point and area lights' slots
-        Rng rng = s.lightRng.seed(s.seed ^ JITTER_STREAM * (li + 1), s.pixelX, s.pixelY, s.sample);
-        for (int j = 0; j < k; j++) {
-            int at = s.sample * k + j; // below n for a sample index below the pixel's count
-            int st = strata[at < n ? at : at % n], row = st / cols;
-            double su = (st - row * cols + rng.nextDouble()) / cols, sv = (row + rng.nextDouble()) / rows;
-            environmentLight.sample(sv, su, ls);
-            double ux = ls[0], uy = ls[1], uz = ls[2];
-            if (ux * nfx + uy * nfy + uz * nfz <= 0) continue; // below the surface
-            double ndotl = ux * snx + uy * sny + uz * snz;
-            if (ndotl <= 0) continue;
-            Ray shadow = s.shadowRay.set(ox, oy, oz, ux, uy, uz, 0, Double.POSITIVE_INFINITY);
-            shadow.time = v.time;
-            double weight = ls[3] / k, lr = ls[4] * weight, lg = ls[5] * weight, lb = ls[6] * weight;
-            s.ctx.occluderSlot = (firstSlot + st) & OCCLUDER_MASK;
-            if (!shadowTransmission(shadow, 1, s)) continue;
-            double[] t = s.transmission;
-            addLight(v, kd, ks, shininess, ux, uy, uz, ndotl, lr * t[0], lg * t[1], lb * t[2], out);
         }
     }
 
@@ -469,14 +379,14 @@ public final class WhittedIntegrator {
     }
 
     /**
-     * The order in which the pixel's samples take area light li's n strata: a shuffle seeded from
-     * the pass seed, pixel and light, drawn once per pixel and thread.
+     * The order in which the pixel's samples take stratified light li's n strata: a shuffle seeded
+     * from the pass seed, pixel and light, drawn once per pixel and thread.
      */
     private int[] strata(int li, int n, TracerScratch s) {
-        if (s.lightStrata.length < sampledLights) { // a scratch not made by newScratch
-            s.lightStrata = new int[sampledLights][];
-            s.lightStrataGeneration = new int[sampledLights];
-            s.lightStrataCols = new int[sampledLights];
+        if (s.lightStrata.length < stratifiedLights) { // a scratch not made by newScratch
+            s.lightStrata = new int[stratifiedLights][];
+            s.lightStrataGeneration = new int[stratifiedLights];
+            s.lightStrataCols = new int[stratifiedLights];
         }
         int[] p = s.lightStrata[li];
         if (p != null && p.length == n && s.lightStrataGeneration[li] == s.pixelGeneration) return p;
@@ -499,112 +409,6 @@ public final class WhittedIntegrator {
         int rows = (int) Math.floor(Math.sqrt(n));
         while (n % rows != 0) rows--;
         return n / rows;
-    }
-
-    /**
-     * A point on {@code light} for the unit-square sample (su, sv), seen from (px, py, pz): writes
-     * it to out[0..2], its distance from (px, py, pz) to out[4] and to out[3] the weight that turns radiance into this sample's irradiance
-     * share before the receiver's cosine (the solid angle per sample: cos at the light * area / d^2
-     * for a rectangle or disc sampled by area, the cone's solid angle for a sphere sampled within
-     * the cone it fills).
-     *
-     * @return false if the sample gives nothing (the light's back, or the point inside a sphere)
-     */
-    static boolean sampleLight(AreaLight light, double su, double sv, double px, double py, double pz, double[] out) {
-        lt.spindulys.math.Vec3 c = light.center(), u = light.halfU(), w = light.halfV();
-        if (light.shape() == AreaLight.Shape.SPHERE) {
-            double wx = c.x() - px, wy = c.y() - py, wz = c.z() - pz;
-            double d2 = wx * wx + wy * wy + wz * wz, r = light.radius();
-            if (!(d2 > r * r)) return false;
-            double d = Math.sqrt(d2);
-            wx /= d; wy /= d; wz /= d;
-            double x = r * r / d2;
-            double oneMinusCosMax = x / (1 + Math.sqrt(1 - x)); // 1 - sqrt(1 - x) without cancellation
-            double cos = 1 - su * oneMinusCosMax, sin = Math.sqrt(Math.max(0, 1 - cos * cos));
-            double phi = 2 * Math.PI * sv;
-            // A frame about the direction to the centre.
-            double ax = Math.abs(wx) < 0.9 ? 1 : 0, ay = ax == 1 ? 0 : 1;
-            double tx = ay * wz, ty = -ax * wz, tz = ax * wy - ay * wx; // (a x w)
-            double tl = Math.sqrt(tx * tx + ty * ty + tz * tz);
-            tx /= tl; ty /= tl; tz /= tl;
-            double bx = wy * tz - wz * ty, by = wz * tx - wx * tz, bz = wx * ty - wy * tx;
-            double cp = Math.cos(phi) * sin, sp = Math.sin(phi) * sin;
-            double dx = wx * cos + tx * cp + bx * sp, dy = wy * cos + ty * cp + by * sp, dz = wz * cos + tz * cp + bz * sp;
-            // The nearer crossing of the sphere along that direction.
-            double t = d * cos - Math.sqrt(Math.max(0, r * r - d2 * sin * sin));
-            out[0] = px + t * dx; out[1] = py + t * dy; out[2] = pz + t * dz;
-            out[3] = 2 * Math.PI * oneMinusCosMax;
-            double lx = out[0] - px, ly = out[1] - py, lz = out[2] - pz;
-            out[4] = Math.sqrt(lx * lx + ly * ly + lz * lz);
-            return true;
-        }
-        double a = 2 * su - 1, b = 2 * sv - 1;
-        if (light.shape() == AreaLight.Shape.DISC) {
-            // Shirley and Chiu's concentric map, as for lens samples: strata stay equal in area.
-            double rr, phi;
-            if (a == 0 && b == 0) { rr = 0; phi = 0; }
-            else if (Math.abs(a) > Math.abs(b)) { rr = a; phi = Math.PI / 4 * (b / a); }
-            else { rr = b; phi = Math.PI / 2 - Math.PI / 4 * (a / b); }
-            a = rr * Math.cos(phi);
-            b = rr * Math.sin(phi);
-        }
-        double x = c.x() + a * u.x() + b * w.x(), y = c.y() + a * u.y() + b * w.y(), z = c.z() + a * u.z() + b * w.z();
-        double lx = px - x, ly = py - y, lz = pz - z;
-        double d2 = lx * lx + ly * ly + lz * lz;
-        if (!(d2 > 0)) return false;
-        lt.spindulys.math.Vec3 n = light.normal();
-        double d = Math.sqrt(d2);
-        double cos = (lx * n.x() + ly * n.y() + lz * n.z()) / d;
-        if (light.oneSided() ? cos <= 0 : cos == 0) return false;
-        out[0] = x; out[1] = y; out[2] = z;
-        out[3] = Math.abs(cos) * light.area() / d2;
-        out[4] = d; // the same as from the point to the sample: (px - x)^2 = (x - px)^2 exactly
-        return true;
-    }
-
-    /**
-     * If {@code ray} reaches an area light before {@code tBound}, writes the radiance it sees there
-     * to out[0..2] (black from a one-sided light's back) and returns the ray parameter of the
-     * crossing; else returns NaN and leaves out alone.
-     */
-    private double seesAreaLight(Ray ray, double tBound, double[] out) {
-        double best = Math.min(tBound, ray.tMax);
-        AreaLight seen = null;
-        boolean front = false;
-        double ox = ray.ox, oy = ray.oy, oz = ray.oz, dx = ray.dx, dy = ray.dy, dz = ray.dz;
-        for (AreaLight light : areaLights) {
-            lt.spindulys.math.Vec3 c = light.center();
-            double cx = c.x() - ox, cy = c.y() - oy, cz = c.z() - oz;
-            if (light.shape() == AreaLight.Shape.SPHERE) {
-                double r = light.radius();
-                double a = dx * dx + dy * dy + dz * dz, hb = dx * cx + dy * cy + dz * cz;
-                double disc = hb * hb - a * (cx * cx + cy * cy + cz * cz - r * r);
-                if (disc < 0) continue;
-                double sq = Math.sqrt(disc);
-                double t = (hb - sq) / a;
-                if (!(t > ray.tMin)) t = (hb + sq) / a;
-                if (t > ray.tMin && t < best) { best = t; seen = light; front = true; }
-                continue;
-            }
-            lt.spindulys.math.Vec3 n = light.normal(), u = light.halfU(), w = light.halfV();
-            double denom = n.x() * dx + n.y() * dy + n.z() * dz;
-            if (denom == 0) continue;
-            double t = (n.x() * cx + n.y() * cy + n.z() * cz) / denom;
-            if (!(t > ray.tMin && t < best)) continue;
-            double qx = ox + t * dx - c.x(), qy = oy + t * dy - c.y(), qz = oz + t * dz - c.z();
-            double a = (qx * u.x() + qy * u.y() + qz * u.z()) / (u.x() * u.x() + u.y() * u.y() + u.z() * u.z());
-            double b = (qx * w.x() + qy * w.y() + qz * w.z()) / (w.x() * w.x() + w.y() * w.y() + w.z() * w.z());
-            boolean inside = light.shape() == AreaLight.Shape.DISC ? a * a + b * b <= 1 : Math.abs(a) <= 1 && Math.abs(b) <= 1;
-            if (!inside) continue;
-            best = t;
-            seen = light;
-            front = denom < 0 || !light.oneSided();
-        }
-        if (seen == null) return Double.NaN;
-        Color lc = seen.color();
-        double i = front ? seen.intensity() : 0;
-        out[0] = lc.r() * i; out[1] = lc.g() * i; out[2] = lc.b() * i;
-        return best;
     }
 
     /**

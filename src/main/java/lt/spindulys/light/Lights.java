@@ -1,0 +1,105 @@
+package lt.spindulys.light;
+
+import lt.spindulys.math.Ranges;
+import lt.spindulys.math.Ray;
+import lt.spindulys.scene.AreaLight;
+import lt.spindulys.scene.PointLight;
+import lt.spindulys.scene.Scene;
+
+/**
+ * A frozen scene's lights as the integrator samples them, in the order they are shaded: the point
+ * lights, then the area lights, then the environment if it is a light (and not black). Immutable
+ * and shared by the render threads.
+ */
+public final class Lights {
+    private final Light[] all;
+    private final AreaSource[] surfaces;
+    private final int stratified;
+
+    private Lights(Light[] all, AreaSource[] surfaces) {
+        this.all = all;
+        this.surfaces = surfaces;
+        int n = 0;
+        for (Light l : all) if (!l.isDelta()) n++;
+        stratified = n;
+    }
+
+    /**
+     * The lights of {@code scene}. A point light's inverse-square falloff never divides by less
+     * than the squared distance at which all of them together could deliver
+     * {@link Ranges#MAX_IRRADIANCE}: a point (nearly) on a light would otherwise receive an
+     * unbounded amount; for lights of everyday intensities this distance is below 1e-12 and
+     * changes nothing.
+     *
+     * @param scene the scene
+     * @return its lights
+     */
+    public static Lights of(Scene scene) {
+        PointLight[] points = scene.lightArray();
+        AreaLight[] areas = scene.areaLightArray();
+        double power = 0;
+        for (PointLight l : points) if (l.falloff() == PointLight.Falloff.INVERSE_SQUARE) power += l.power();
+        double minDistance2 = power / Ranges.MAX_IRRADIANCE;
+        boolean environment = scene.environmentLight() != null;
+        Light[] all = new Light[points.length + areas.length + (environment ? 1 : 0)];
+        AreaSource[] surfaces = new AreaSource[areas.length];
+        int i = 0;
+        for (PointLight l : points) all[i++] = new PointSource(l, minDistance2);
+        for (int a = 0; a < areas.length; a++) {
+            surfaces[a] = switch (areas[a].shape()) {
+                case RECTANGLE -> new RectangleSource(areas[a]);
+                case DISC -> new DiscSource(areas[a]);
+                case SPHERE -> new SphereSource(areas[a]);
+            };
+            all[i++] = surfaces[a];
+        }
+        if (environment) all[i] = new EnvironmentSource(scene.environmentLight());
+        return new Lights(all, surfaces);
+    }
+
+    /**
+     * Every light, in shading order; do not modify.
+     *
+     * @return the lights
+     */
+    public Light[] all() { return all; }
+
+    /**
+     * How many of the lights are not deltas (they take strata of the unit square).
+     *
+     * @return the count
+     */
+    public int stratified() { return stratified; }
+
+    /**
+     * Whether some light has a surface that rays can reach.
+     *
+     * @return true if there are area lights
+     */
+    public boolean hasSurfaces() { return surfaces.length > 0; }
+
+    /**
+     * If {@code ray} reaches an area light before {@code tBound} (and within its own range), writes
+     * the radiance it sees there to out[0..2] (black from a one-sided light's back) and returns
+     * the ray parameter of the crossing; else returns NaN and leaves out alone.
+     *
+     * @param ray    the ray
+     * @param tBound where the nearest surface is along it, or +Infinity
+     * @param out    receives r, g, b
+     * @return the crossing's t, or NaN
+     */
+    public double nearestSurface(Ray ray, double tBound, double[] out) {
+        double best = Math.min(tBound, ray.tMax);
+        AreaSource seen = null;
+        for (AreaSource light : surfaces) {
+            double t = light.intersect(ray, best);
+            if (t == t) {
+                best = t;
+                seen = light;
+            }
+        }
+        if (seen == null) return Double.NaN;
+        seen.radiance(ray.dx, ray.dy, ray.dz, out);
+        return best;
+    }
+}
