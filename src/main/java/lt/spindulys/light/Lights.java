@@ -35,8 +35,9 @@ public final class Lights {
      * @return its lights
      */
     public static Lights of(Scene scene) {
-        PointLight[] points = scene.lightArray();
-        AreaLight[] areas = scene.areaLightArray();
+        // Copies of the scene's unmodifiable lists: the shading loop reads arrays of its own.
+        PointLight[] points = scene.lights().toArray(new PointLight[0]);
+        AreaLight[] areas = scene.areaLights().toArray(new AreaLight[0]);
         double power = 0;
         for (PointLight l : points) if (l.falloff() == PointLight.Falloff.INVERSE_SQUARE) power += l.power();
         double minDistance2 = power / Ranges.MAX_IRRADIANCE;

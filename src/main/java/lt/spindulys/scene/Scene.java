@@ -26,9 +26,7 @@ public final class Scene {
     private final RenderSettings settings;
     private final Camera camera;
     private final List<PointLight> lights;
-    private final PointLight[] lightArray;
     private final List<AreaLight> areaLights;
-    private final AreaLight[] areaLightArray;
     private final List<GObject> objects;
     private final GObject[] bounded;
     private final GObject[] unbounded;
@@ -53,9 +51,7 @@ public final class Scene {
         this.environmentLight = el == null || el.isBlack() ? null : el;
         this.camera = camera;
         this.lights = List.copyOf(lights);
-        this.lightArray = lights.toArray(new PointLight[0]);
         this.areaLights = List.copyOf(areaLights);
-        this.areaLightArray = areaLights.toArray(new AreaLight[0]);
         long count = 0;
         for (GObject o : given) count = HeapBudget.sum(count, o.objectCount());
         HeapBudget.require(HeapBudget.product(count, BYTES_PER_COPY), "the scene's " + count + " objects");
@@ -190,23 +186,11 @@ public final class Scene {
      */
     public List<PointLight> lights() { return lights; }
     /**
-     * The lights as an array for the shading loop; do not modify.
-     *
-     * @return the lights, in the same order as {@link #lights()}
-     */
-    public PointLight[] lightArray() { return lightArray; }
-    /**
      * The area lights, in the order they were added (read-only).
      *
      * @return an unmodifiable list of the area lights
      */
     public List<AreaLight> areaLights() { return areaLights; }
-    /**
-     * The area lights as an array for the shading loop; do not modify.
-     *
-     * @return the area lights, in the same order as {@link #areaLights()}
-     */
-    public AreaLight[] areaLightArray() { return areaLightArray; }
     /**
      * The top-level objects, in the order they were added (read-only): the scene's own frozen
      * copies of the objects given to the builder, with ids, world bounds and resolved materials.
