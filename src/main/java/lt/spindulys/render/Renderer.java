@@ -210,7 +210,7 @@ public final class Renderer {
         HeapBudget.Reservation reservation;
         try {
             reservation = HeapBudget.reserve(HeapBudget.product(workers.length, HeapBudget.sum(scratch, sampler)),
-                    "the sample buffers of " + workers.length + " render thread" + (workers.length == 1 ? "" : "s")
+                    "buffering the samples of " + workers.length + " render thread" + (workers.length == 1 ? "" : "s")
                             + " (" + integrator.scratchSizedBy(st.samplesPerPixel()) + ")");
         } catch (InsufficientMemoryException e) {
             throw e.sizedBy("samples");

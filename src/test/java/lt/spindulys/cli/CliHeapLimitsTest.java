@@ -170,7 +170,7 @@ class CliHeapLimitsTest {
         Path out = dir.resolve("a.pfm");
         Child r = child("-Xmx512m", scene.toString(), "-o", out.toString(), "--threads", "2", "--quiet");
         assertEquals(2, r.status(), r.err());
-        assertTrue(r.err().startsWith(scene + ":2:33: the sample buffers of 2 render threads (samples 65536 of the settings x samples 1024 of the environment)"
+        assertTrue(r.err().startsWith(scene + ":2:33: buffering the samples of 2 render threads (samples 65536 of the settings x samples 1024 of the environment)"
                 + " needs 518 MiB of heap, but only "), r.err());
         assertEquals(1, r.err().lines().count(), "one line, no stack trace: " + r.err());
         assertFalse(Files.exists(out), "no image written");

@@ -45,7 +45,7 @@ class RendererMemoryTest {
         try (HeapBudget.Scope cap = HeapBudget.cap(24 * MIB)) {
             InsufficientMemoryException e = assertThrows(InsufficientMemoryException.class, () -> Renderer.render(s, 2, ProgressListener.NONE));
             assertEquals("samples", e.key());
-            assertTrue(e.getMessage().startsWith("the sample buffers of 2 render threads (samples 16384 of the settings x samples 256 of the disclight)"
+            assertTrue(e.getMessage().startsWith("buffering the samples of 2 render threads (samples 16384 of the settings x samples 256 of the disclight)"
                     + " needs 33 MiB of heap, but only 24 MiB is free"), e.getMessage());
             assertEquals(0, HeapBudget.reserved(), "nothing stays reserved");
             RenderResult one = Renderer.render(s, 1, ProgressListener.NONE);
