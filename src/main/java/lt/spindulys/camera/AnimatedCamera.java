@@ -43,6 +43,10 @@ public final class AnimatedCamera implements Camera {
      */
     public AnimatedCamera withBase(Camera other) { return new AnimatedCamera(other, keys); }
 
+    /** {@inheritDoc} The keys carry the camera with the new lens. */
+    @Override
+    public AnimatedCamera withLens(Double aperture, Double focus) { return withBase(base.withLens(aperture, focus)); }
+
     @Override
     public void generateRay(double fx, double fy, double aspect, double lensU, double lensV, double time, Ray out) {
         base.generateRay(fx, fy, aspect, lensU, lensV, time, out);

@@ -41,4 +41,19 @@ public interface Camera {
      * @return whether the camera moves while the shutter is open
      */
     default boolean moves() { return false; }
+
+    /**
+     * This camera with another lens (for a lens given on the command line): a pinhole becomes a
+     * thin lens focused on its look-at point unless a focus is given, a thin lens keeps what is
+     * not given, and a camera carried by keys changes the lens of the camera it carries.
+     *
+     * @param aperture the lens radius in scene units, at least 0 (0: a pinhole); null keeps the camera's
+     * @param focus    the distance to the focal plane along the view, positive; null keeps the camera's
+     * @return the camera with that lens
+     * @throws IllegalArgumentException if a value is out of its range
+     * @throws UnsupportedOperationException if this kind of camera has no lens to change
+     */
+    default Camera withLens(Double aperture, Double focus) {
+        throw new UnsupportedOperationException(getClass().getName() + " has no lens to change");
+    }
 }

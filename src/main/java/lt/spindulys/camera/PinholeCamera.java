@@ -52,6 +52,12 @@ public final class PinholeCamera implements Camera {
     /** {@return the vertical field of view, degrees} */
     public double fovDegrees() { return fovDegrees; }
 
+    /** {@inheritDoc} The pinhole becomes a thin lens, focused on its look-at point unless {@code focus} says otherwise. */
+    @Override
+    public ThinLensCamera withLens(Double aperture, Double focus) {
+        return new ThinLensCamera(this, 0).withLens(aperture, focus);
+    }
+
     @Override
     public void generateRay(double filmX, double filmY, double aspect, double lensU, double lensV, double time, Ray out) {
         double sx = (2 * filmX - 1) * tanHalf * aspect;

@@ -106,6 +106,14 @@ public final class ThinLensCamera implements Camera {
     public ThinLensCamera withFocusDistance(double f) { return new ThinLensCamera(view, aperture, f, lens); }
 
     @Override
+    public ThinLensCamera withLens(Double aperture, Double focus) {
+        ThinLensCamera lens = this;
+        if (aperture != null) lens = lens.withAperture(aperture);
+        if (focus != null) lens = lens.withFocusDistance(focus);
+        return lens;
+    }
+
+    @Override
     public void generateRay(double filmX, double filmY, double aspect, double lensU, double lensV, double time, Ray out) {
         view.generateRay(filmX, filmY, aspect, lensU, lensV, time, out);
         if (aperture == 0 || (lensU == 0 && lensV == 0)) return; // the pinhole ray, bit for bit

@@ -23,9 +23,10 @@ import lt.spindulys.scene.Animation;
 
 /**
  * The frame half of the farm contract on the command line: {@code --frame N},
- * {@code --frames A-B[:STEP]} and {@code --skip-existing}, and the loop that renders the frames
- * one after another into {@link OutputPattern their own files} (each written atomically, as
- * every output is). A scene with an animation and neither option renders its whole range.
+ * {@code --frames A-B[:STEP]} and {@code --skip-existing}: which frames a run renders, each into
+ * {@link OutputPattern its own file} (written atomically, as every output is), and which of
+ * them (or of a still) are finished already. A scene with an animation and neither option
+ * renders its whole range.
  */
 final class FrameOptions {
     static final String USAGE = """
@@ -34,7 +35,7 @@ final class FrameOptions {
                                  animated scene renders all its frames. Several frames need a run of '#'
                                  in the output name, replaced by the zero-padded frame number
                                  (-o out_####.png: out_0007.png; default SCENE_####.png)
-              --skip-existing    leave frames whose image (and passes) exist already, for a retried task;
+              --skip-existing    leave frames (or a still) whose image (and passes) exist already, for a retried task;
                                  remove temporary files a killed run left beside them (untouched 15 min)
             """;
 
@@ -97,43 +98,46 @@ final class FrameOptions {
                 + OutputPattern.defaultForFrames(output).getFileName() + ", or one frame (--frame N)");
     }
 
-    /** Renders one frame to its output: item {@code index} of the {@code count} this run renders. */
-    interface FrameRenderer {
-        void render(Path output, int frame, int index, int count) throws IOException, InterruptedException, UsageException;
-    }
+    /** {@return true if --skip-existing was given} */
+    boolean skipExisting() { return skipExisting; }
 
-    /** Checks one frame's output before any frame is rendered. */
-    interface OutputCheck {
-        void check(Path output) throws UsageException;
+    /**
+     * One render of a run: its output and its frame (null: a still).
+     *
+     * @param output the image written
+     * @param frame the frame number, or null for a scene rendered as a still
+     */
+    record Item(Path output, Integer frame) {
+        /** The frames of {@code range}, each to its output of {@code pattern}. */
+        static List<Item> frames(FrameRange range, OutputPattern pattern) {
+            List<Item> items = new ArrayList<>();
+            for (int i = 0; i < range.count(); i++) items.add(new Item(pattern.forFrame(range.frame(i)), range.frame(i)));
+            return items;
+        }
     }
 
     /**
-     * Renders the frames in order; with --skip-existing a frame whose image and passes all exist
-     * is left as it is (writes are atomic, so an existing file is a finished one), and the others
-     * are the run's items. Stops at the first failure, which propagates; the frames written before
-     * it stay.
+     * The items a run renders, in order: all of them, or with --skip-existing those whose image
+     * or a pass beside it is missing (writes are atomic, so an existing file is a finished one;
+     * each item left says so on {@code log}), once the temporary files killed runs left in the
+     * items' folders are removed.
      *
      * @param passes the render passes written beside each image
-     * @param log where "skipped" lines go, or null
-     * @param check called with the output of every frame to be rendered, before the first is
-     * @return how many frames were rendered (0 when --skip-existing found them all)
+     * @param log where "skipped" and "removed" lines go, or null
      */
-    int render(FrameRange frames, OutputPattern pattern, Set<Aov> passes, PrintStream log, OutputCheck check, FrameRenderer renderer)
-            throws IOException, InterruptedException, UsageException {
-        if (skipExisting) removeStaleTemporaries(frames, pattern, log);
-        List<Integer> todo = new ArrayList<>();
-        for (int i = 0; i < frames.count(); i++) {
-            int n = frames.frame(i);
-            Path out = pattern.forFrame(n);
-            if (skipExisting && finished(out, passes)) {
-                if (log != null) log.println(MessageText.escape("skipped " + out + " (frame " + n + "): it exists (--skip-existing)"));
-            } else {
-                todo.add(n);
+    List<Item> unfinished(List<Item> items, Set<Aov> passes, PrintStream log) {
+        if (!skipExisting) return items;
+        removeStaleTemporaries(items, log);
+        List<Item> todo = new ArrayList<>();
+        for (Item item : items) {
+            if (!finished(item.output(), passes)) {
+                todo.add(item);
+            } else if (log != null) {
+                String which = item.frame() == null ? "" : " (frame " + item.frame() + ")";
+                log.println(MessageText.escape("skipped " + item.output() + which + ": it exists (--skip-existing)"));
             }
         }
-        for (int n : todo) check.check(pattern.forFrame(n));
-        for (int i = 0; i < todo.size(); i++) renderer.render(pattern.forFrame(todo.get(i)), todo.get(i), i, todo.size());
-        return todo.size();
+        return todo;
     }
 
     /**
@@ -147,17 +151,17 @@ final class FrameOptions {
     static final Duration STALE_AFTER = Duration.ofMinutes(15);
 
     /**
-     * Deletes, in the folders the outputs of these frames go to (and only there), the temporary
+     * Deletes, in the folders the outputs of these items go to (and only there), the temporary
      * files of our atomic writes ({@link AtomicFile#isTemporaryName}) untouched for
      * {@link #STALE_AFTER}: what a run killed without a chance to clean up (SIGKILL, a crash, a
      * lost node) left. A temporary file being written now, by another task of the same farm in
      * that folder, is fresh and stays. Each removal is one line on {@code log}; a file that cannot
      * be removed is left as it is.
      */
-    static void removeStaleTemporaries(FrameRange frames, OutputPattern pattern, PrintStream log) {
+    static void removeStaleTemporaries(List<Item> items, PrintStream log) {
         Set<Path> folders = new LinkedHashSet<>();
-        for (int i = 0; i < frames.count(); i++) {
-            Path parent = pattern.forFrame(frames.frame(i)).toAbsolutePath().getParent();
+        for (Item item : items) {
+            Path parent = item.output().toAbsolutePath().getParent();
             if (parent != null) folders.add(parent);
         }
         FileTime before = FileTime.from(Instant.now().minus(STALE_AFTER));

@@ -2,7 +2,6 @@ package lt.spindulys.cli;
 
 import java.io.IOException;
 import java.io.PrintStream;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -13,12 +12,7 @@ import java.util.Set;
 import lt.spindulys.scene.AcceleratorKind;
 import lt.spindulys.scene.InputFile;
 import lt.spindulys.scene.AdaptiveSettings;
-import lt.spindulys.camera.AnimatedCamera;
-import lt.spindulys.camera.Camera;
-import lt.spindulys.camera.PinholeCamera;
-import lt.spindulys.camera.ThinLensCamera;
 import lt.spindulys.image.Aov;
-import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.image.ImageOptions;
 import lt.spindulys.image.ImageWriter;
 import lt.spindulys.io.AssetRoots;
@@ -34,8 +28,8 @@ import lt.spindulys.render.JitWarmup;
 import lt.spindulys.render.RenderStats;
 import lt.spindulys.render.RenderJob;
 import lt.spindulys.render.RenderResult;
+import lt.spindulys.render.Renderer;
 import lt.spindulys.scene.RenderSettings;
-import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.SceneBuildException;
 import lt.spindulys.scene.SceneBuilder;
 
@@ -110,9 +104,13 @@ final class RenderCommand {
     /** The job now running, whose step the farm progress reports (several frames: one job each). */
     private volatile RenderJob current;
     private final FrameOptions frames = new FrameOptions();
-    private boolean outputDefaulted, warmedUp;
-    /** The scene file's reading time, shown by the first frame's statistics, which render from the scene as read. */
-    private double readSeconds;
+    private boolean outputDefaulted;
+    /** What the command does before its first job: checking, then reading the scene (for the farm's progress). */
+    private volatile RenderJob.Stage step = RenderJob.Stage.READY;
+    /** When the read began: a still's time counts from it. */
+    private long readStart;
+    /** The scene file's reading time and the wait for the JIT warm-up, shown by the first render's statistics. */
+    private double readSeconds, warmupSeconds;
 
     /** Parses arguments (after --debug was taken out), with the process's environment. */
     RenderCommand(String[] args) throws UsageException {
@@ -218,11 +216,13 @@ final class RenderCommand {
 
     /**
      * Runs the command; returns the exit status. Bad input surfaces as exceptions handled by {@link Main}.
-     * The scene is read by the first render; an animated one (or frames asked for) then goes on
-     * frame by frame from the scene as read.
+     * The scene is read once; a still is then one render, an animated one (or frames asked for)
+     * one render a frame, each built from the scene as read.
      */
     int run(PrintStream out, PrintStream err) throws IOException, InterruptedException, UsageException {
         try {
+            farmProgress = farm.progress(() -> current != null ? current.stage() : step, out, err, output.toString(), System.nanoTime());
+            if (farmProgress != null) farmProgress.start();
             return renderAll(out, err);
         } catch (UsageException e) {
             if (farmProgress != null) farmProgress.failed("render: " + e.getMessage());
@@ -236,55 +236,49 @@ final class RenderCommand {
         }
     }
 
-    /** The still, or the frames, with a farm's progress (one report for all the frames) when asked for. */
+    /** Reads the scene, then renders the still or the frames: one loop over (output, frame or null). */
     private int renderAll(PrintStream out, PrintStream err) throws IOException, InterruptedException, UsageException {
-        farmProgress = farm.progress(() -> current == null ? RenderJob.Stage.READY : current.stage(), out, err, output.toString(), System.nanoTime());
-        if (farmProgress != null) farmProgress.start();
-        try {
-            return render(out, err, output, null, null);
-        } catch (Animated a) {
+        SceneBuilder read = read();
+        List<FrameOptions.Item> items;
+        String allExist;
+        if (read.animation() == null && !frames.given()) {
+            items = List.of(new FrameOptions.Item(output, null));
+            allExist = output + " exists (--skip-existing)";
+        } else {
             if (shutter != null) throw new UsageException("--shutter does not combine with an animation's frames: each frame's shutter is set by its shutter angle");
-            FrameRange list = frames.frames(a.builder.animation(), scene);
-            readSeconds = a.loadSeconds;
-            OutputPattern pattern = frames.pattern(output, outputDefaulted, list);
-            Set<Aov> passes = aovs != null ? aovs : a.builder.settings().aovs();
-            int rendered = frames.render(list, pattern, passes, quiet ? null : err,
-                    path -> {
-                        // Every frame's files, before the first frame is rendered.
-                        try {
-                            RenderJob.checkNotInput(path, passes, a.builder.inputFiles());
-                        } catch (InputFile.OutputIsInputException e) {
-                            throw new UsageException(e.getMessage());
-                        }
-                    },
-                    (path, n, index, count) -> {
-                        if (farmProgress != null) farmProgress.item(path.toString(), index, count);
-                        render(out, err, path, n, a.builder);
-                    });
-            // A retried task whose frames all exist is done too: the manager is told so.
-            if (rendered == 0 && farmProgress != null) farmProgress.wrote("every frame of " + list + " exists (--skip-existing)");
-            return 0;
+            FrameRange range = frames.frames(read.animation(), scene);
+            items = FrameOptions.Item.frames(range, frames.pattern(output, outputDefaulted, range));
+            allExist = "every frame of " + range + " exists (--skip-existing)";
         }
-    }
-
-    /** Thrown when the scene read is animated, or frames were asked for: the frames are rendered from {@link #builder}. */
-    private static final class Animated extends RuntimeException {
-        final SceneBuilder builder;
-        final double loadSeconds;
-
-        Animated(SceneBuilder builder, double loadSeconds) {
-            super("animated", null, false, false);
-            this.builder = builder;
-            this.loadSeconds = loadSeconds;
+        Set<Aov> passes = aovs != null ? aovs : read.settings().aovs();
+        List<FrameOptions.Item> todo = frames.unfinished(items, passes, quiet ? null : err);
+        // A retried task whose outputs all exist is done too: the manager is told so.
+        if (todo.isEmpty() && farmProgress != null) farmProgress.wrote(allExist);
+        if (todo.isEmpty()) return 0;
+        // Every output, before the first is rendered.
+        for (FrameOptions.Item item : todo) {
+            try {
+                RenderJob.checkNotInput(item.output(), passes, read.inputFiles());
+            } catch (InputFile.OutputIsInputException e) {
+                throw new UsageException(e.getMessage());
+            }
         }
+        SceneBuilder scene = withOverrides(read);
+        for (int i = 0; i < todo.size(); i++) {
+            FrameOptions.Item item = todo.get(i);
+            if (farmProgress != null && item.frame() != null) farmProgress.item(item.output().toString(), i, todo.size());
+            render(out, err, scene, item);
+        }
+        return 0;
     }
 
     /**
-     * Renders once to {@code output}: the scene file as a still (frame null, builder null), or
-     * one frame from the scene as read.
+     * Reads the scene file, after the checks that need only its name and the output's, while the
+     * JIT warms up (once per process: the renders after the first find the code compiled).
      */
-    private int render(PrintStream out, PrintStream err, Path output, Integer frame, SceneBuilder builder)
-            throws IOException, InterruptedException, UsageException {
+    private SceneBuilder read() throws IOException, InterruptedException, UsageException {
+        readStart = System.nanoTime();
+        step = RenderJob.Stage.CHECK;
         // Refused before anything is opened: a pipe would block, a device never end.
         String problem = InputFiles.problem(scene);
         if (problem != null) throw new NoSuchFileException(scene, problem);
@@ -293,84 +287,92 @@ final class RenderCommand {
             throw new SceneException(scene.toString(), 0, 0, "this is an OBJ mesh, not a scene: to render it, name it in a scene's mesh { file "
                     + name + " } or subdiv { file " + name + " } block, or refine it with render subdivide");
         }
-        if (aovs != null) checkAovOutputs(aovs);
-        long t0 = System.nanoTime();
+        try {
+            if (aovs != null) ImageWriter.checkOutputs(output, aovs);
+            RenderJob.checkOutput(output, scene);
+            ImageWriter.checkOutput(output);
+        } catch (IOException | InputFile.OutputIsInputException e) {
+            // A missing directory, a directory, no permission, or the scene file itself.
+            throw new UsageException(e.getMessage());
+        }
+        try (JitWarmup warm = JitWarmup.start()) {
+            step = RenderJob.Stage.LOAD;
+            SceneBuilder b = SceneParser.parse(scene, assetRoots);
+            long w0 = System.nanoTime();
+            readSeconds = (w0 - readStart) / 1e9;
+            warm.finishFor(b, accel != null ? accel : b.settings().accelerator());
+            warmupSeconds = (System.nanoTime() - w0) / 1e9;
+            step = RenderJob.Stage.SETTINGS;
+            return b;
+        }
+    }
+
+    /**
+     * Renders one item to its output: a job of the scene (with the command line's settings and
+     * lens), checked first, so that an output or a frame refused before any work is bad usage.
+     */
+    private void render(PrintStream out, PrintStream err, SceneBuilder scene, FrameOptions.Item item)
+            throws IOException, InterruptedException, UsageException {
+        // A still's time counts from the start of the read, a frame's from its own start.
+        long t0 = item.frame() == null ? readStart : System.nanoTime();
         int n = threads != null ? threads : Runtime.getRuntime().availableProcessors();
-        SceneBuilder[] loaded = new SceneBuilder[1];
-        double[] warmup = new double[1];
-        RenderJob job = (builder != null ? RenderJob.of(builder).frame(frame) : RenderJob.of(scene).assetRoots(assetRoots)).output(output)
-                .jpegQuality(quality).threads(n).settings(this::override);
+        RenderJob job = RenderJob.of(scene).output(item.output()).jpegQuality(quality).threads(n);
+        if (item.frame() != null) job.frame(item.frame());
         farm.apply(job);
         // A farm's manager reads lines; the bar redraws one line in place, for a person at a terminal.
         TerminalProgress bar = farmProgress == null && !quiet && System.console() != null ? new TerminalProgress(err) : null;
         job.progress(farmProgress != null ? farmProgress : bar);
         current = job;
-        // An animated camera's lens rides along with it.
-        if (aperture != null || focus != null) {
-            job.camera(c -> c instanceof AnimatedCamera a ? a.withBase(withLens(a.base(), aperture, focus)) : withLens(c, aperture, focus));
-        }
         RenderResult result;
-        // One warm-up per process: the frames after the first find the code compiled.
-        try (JitWarmup warm = warmedUp ? null : JitWarmup.start()) {
-            job.onLoaded(b -> {
-                if (frame == null && (b.animation() != null || frames.given())) throw new Animated(b, (System.nanoTime() - t0) / 1e9);
-                loaded[0] = b;
-                long w0 = System.nanoTime();
-                try {
-                    if (warm != null) warm.finishFor(b, accel != null ? accel : b.settings().accelerator());
-                    warmedUp = true;
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                    job.cancel();
-                }
-                warmup[0] = (System.nanoTime() - w0) / 1e9;
-            });
+        try {
+            try {
+                job.check();
+            } catch (IOException | InputFile.OutputIsInputException e) {
+                // The output refused before any work: a missing directory, a directory, no permission, an input.
+                throw new UsageException(e.getMessage());
+            }
             result = job.run();
-        } catch (UncheckedUsage e) {
-            throw e.usage;
-        } catch (InputFile.OutputIsInputException e) {
-            // The output (or a pass beside it) would replace a file the scene was read from.
-            throw new UsageException(e.getMessage());
         } catch (java.util.concurrent.CancellationException e) {
             throw new InterruptedException("interrupted");
-        } catch (IOException e) {
-            // The output was refused before any work (a missing directory, a directory, no permission).
-            if (job.stage() == RenderJob.Stage.CHECK || job.stage() == RenderJob.Stage.SETTINGS) throw new UsageException(e.getMessage());
-            throw e;
         } catch (InsufficientMemoryException e) {
-            // The threads' sample buffers, sized by the samples: reported where those were given.
-            if (job.stage() == RenderJob.Stage.RENDER && "samples".equals(e.key())) throw samplesTooMany(loaded[0], e);
-            // The frame, or (while rendering) the scene's meshes and textures took what the frame would have needed.
-            if (job.stage() == RenderJob.Stage.SETTINGS || job.stage() == RenderJob.Stage.RENDER) throw frameTooLarge(loaded[0], e);
-            throw e;
-        } catch (IllegalArgumentException e) {
+            throw atTheSource(scene, e);
+        } catch (SceneBuildException e) {
             // A motion's own times may not fit a shutter given here (an open start or finish is the shutter's).
-            if (job.stage() != RenderJob.Stage.BUILD || shutter == null) throw e;
+            if (shutter == null) throw e;
             String given = "--shutter " + shutter[0] + "," + shutter[1];
             // The object's statement comes first when there is one, as in every other input error.
-            if (e instanceof SceneBuildException b && b.source() != null) throw new IllegalArgumentException(e.getMessage() + " (with " + given + ")", e);
+            if (e.source() != null) throw new IllegalArgumentException(e.getMessage() + " (with " + given + ")", e);
             throw new UsageException(given + ": " + e.getMessage());
         } finally {
             if (bar != null) bar.finish();
         }
-        String done = MessageText.escape(doneLine(output, result, (System.nanoTime() - t0) / 1e9));
+        String done = MessageText.escape(doneLine(item.output(), result, (System.nanoTime() - t0) / 1e9));
         if (farmProgress != null) farmProgress.wrote(done);
         // On stderr with the progress bar it replaces: stdout carries only what was asked for (--stats).
         if (!quiet) err.println(done);
         if (stats) {
-            printStats(out, result.loadSeconds() + readSeconds - warmup[0], warmup[0], result.buildSeconds(), result.settings().accelerator(), result.stats(), n);
+            printStats(out, readSeconds + result.loadSeconds(), warmupSeconds, result.buildSeconds(), result.settings().accelerator(), result.stats(), n);
             for (String line : result.structureStatistics()) out.println(MessageText.escape(line));
             for (String line : result.subdivisionStatistics()) out.println(MessageText.escape(line));
         }
-        readSeconds = 0; // read once, shown once
-        return 0;
+        readSeconds = warmupSeconds = 0; // read once, shown once
     }
 
     /**
-     * The scene's settings with the command line's overrides. Refusals name the options, so they
-     * travel out of the job as {@link UncheckedUsage}.
+     * The scene as read with the command line's settings and lens. The settings are checked
+     * here, once, before any render, and refused naming the options that made them.
      */
-    private RenderSettings override(RenderSettings s) {
+    private SceneBuilder withOverrides(SceneBuilder read) throws UsageException {
+        SceneBuilder b = read.copy().settings(settings(read.settings()));
+        if (aperture != null || focus != null) {
+            // A pinhole becomes a thin lens focused on its look-at point unless --focus says otherwise.
+            b.camera((read.camera() != null ? read.camera() : SceneBuilder.DEFAULT_CAMERA).withLens(aperture, focus));
+        }
+        return b;
+    }
+
+    /** The scene's settings with the command line's overrides, checked; refusals name the options. */
+    private RenderSettings settings(RenderSettings s) throws UsageException {
         RenderSettings.Builder o = s.toBuilder();
         if (width != null || height != null) {
             // One side alone keeps the scene's aspect ratio: 800x450 with --width 400 becomes 400x225.
@@ -390,36 +392,22 @@ final class RenderCommand {
                 if (subdivMemory != null) a = a.withMemory((long) (subdivMemory * (1 << 20)));
                 if (subdivCache != null) a = a.withCache((long) (subdivCache * (1 << 20)));
             } catch (IllegalArgumentException e) {
-                throw new UncheckedUsage(new UsageException("--subdiv-memory/--subdiv-cache: " + e.getMessage()));
+                throw new UsageException("--subdiv-memory/--subdiv-cache: " + e.getMessage());
             }
             if (subdivTarget != null) a = a.withTarget(subdivTarget);
             o.adaptive(a);
         }
         s = o.build();
-        try {
-            farm.checkFrame(s);
-        } catch (UsageException e) {
-            throw new UncheckedUsage(e);
-        }
+        farm.checkFrame(s);
         if (spp != null || timeSteps != null) {
             try {
                 s.checkTimeSteps();
             } catch (IllegalArgumentException e) {
-                throw new UncheckedUsage(new UsageException((spp != null ? "--spp " + spp : "samples " + s.samplesPerPixel()) + " is not a multiple of "
-                        + (timeSteps != null ? "--timesteps " : "the scene's timesteps ") + s.timeSteps() + " (each time step renders spp / timesteps per pixel)"));
+                throw new UsageException((spp != null ? "--spp " + spp : "samples " + s.samplesPerPixel()) + " is not a multiple of "
+                        + (timeSteps != null ? "--timesteps " : "the scene's timesteps ") + s.timeSteps() + " (each time step renders spp / timesteps per pixel)");
             }
         }
         return s;
-    }
-
-    /** A {@link UsageException} carried out of a settings override, which may not throw checked exceptions. */
-    private static final class UncheckedUsage extends RuntimeException {
-        final UsageException usage;
-
-        UncheckedUsage(UsageException usage) {
-            super(usage.getMessage(), null, false, false);
-            this.usage = usage;
-        }
     }
 
     /**
@@ -454,51 +442,26 @@ final class RenderCommand {
     }
 
     /**
-     * A frame the heap cannot hold, reported where its size was given: the options that resized
-     * it, else the scene's settings key.
+     * A refusal of the heap reported where what it sized was given: the frame at the options that
+     * resized it, else at the scene's settings key; the render threads' sample buffers at
+     * {@code --spp} when it set the samples, else at the scene's key. Anything else as it is.
      */
-    private RuntimeException frameTooLarge(SceneBuilder builder, InsufficientMemoryException e) throws UsageException {
-        if (builder == null) return e;
-        if (width != null || height != null || aovs != null) {
-            String options = (width != null ? " --width " + width : "") + (height != null ? " --height " + height : "")
-                    + (aovs != null ? " --aov " + aovs.stream().map(Aov::keyword).collect(java.util.stream.Collectors.joining(",")) : "");
-            throw new UsageException(options.substring(1) + ": " + e.getMessage());
+    private RuntimeException atTheSource(SceneBuilder scene, InsufficientMemoryException e) throws UsageException {
+        String at;
+        if (Renderer.FRAME_KEY.equals(e.key())) {
+            if (width != null || height != null || aovs != null) {
+                String options = (width != null ? " --width " + width : "") + (height != null ? " --height " + height : "")
+                        + (aovs != null ? " --aov " + aovs.stream().map(Aov::keyword).collect(java.util.stream.Collectors.joining(",")) : "");
+                throw new UsageException(options.substring(1) + ": " + e.getMessage());
+            }
+            at = scene.frameSource();
+        } else if (Renderer.SAMPLES_KEY.equals(e.key())) {
+            if (spp != null) throw new UsageException("--spp " + spp + ": " + e.getMessage());
+            at = scene.samplesSource();
+        } else {
+            return e;
         }
-        String at = builder.frameSource();
         return at == null ? e : new IllegalArgumentException(at + ": " + e.getMessage(), e);
-    }
-
-    /**
-     * Sample buffers the heap cannot hold, reported where the samples were given: {@code --spp}
-     * when it set them, else the scene's key ({@link SceneBuilder#samplesSource()}).
-     */
-    private RuntimeException samplesTooMany(SceneBuilder builder, InsufficientMemoryException e) throws UsageException {
-        if (spp != null) throw new UsageException("--spp " + spp + ": " + e.getMessage());
-        String at = builder == null ? null : builder.samplesSource();
-        return at == null ? e : new IllegalArgumentException(at + ": " + e.getMessage(), e);
-    }
-
-    /**
-     * The scene's camera (or the default one) with the lens given on the command line: a pinhole
-     * becomes a thin lens focused on its look-at point unless --focus says otherwise.
-     */
-    static ThinLensCamera withLens(Camera camera, Double aperture, Double focus) {
-        Camera c = camera != null ? camera : SceneBuilder.DEFAULT_CAMERA;
-        ThinLensCamera lens;
-        if (c instanceof ThinLensCamera t) lens = t;
-        else if (c instanceof PinholeCamera p) lens = new ThinLensCamera(p, 0);
-        else throw new IllegalStateException("a scene file makes no camera of " + c.getClass());
-        if (aperture != null) lens = lens.withAperture(aperture);
-        if (focus != null) lens = lens.withFocusDistance(focus);
-        return lens;
-    }
-
-    private void checkAovOutputs(Set<Aov> passes) throws UsageException {
-        try {
-            ImageWriter.checkOutputs(output, passes);
-        } catch (IOException e) {
-            throw new UsageException(e.getMessage());
-        }
     }
 
     private static void printStats(PrintStream out, double load, double warmup, double build, AcceleratorKind accel, RenderStats r, int threads) {

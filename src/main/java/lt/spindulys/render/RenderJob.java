@@ -11,7 +11,6 @@ import java.util.function.Consumer;
 import java.util.function.UnaryOperator;
 
 import lt.spindulys.camera.Camera;
-import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.image.ImageOptions;
 import lt.spindulys.image.ImageWriter;
 import lt.spindulys.image.PixelRegion;
@@ -81,7 +80,11 @@ public final class RenderJob {
     private RegionOf regionOf;
     private final AtomicBoolean cancelled = new AtomicBoolean();
     private final AtomicBoolean started = new AtomicBoolean();
+    /** Set by {@link #check}: the one run that may follow it. */
+    private final AtomicBoolean runAfterCheck = new AtomicBoolean();
     private volatile Stage stage = Stage.READY;
+    /** The checks made by {@link #check}, for the run to go on from; null before, and once built. */
+    private Checked checked;
 
     private RenderJob(Path sceneFile, SceneBuilder builder, Scene scene) {
         this.sceneFile = sceneFile;
@@ -312,7 +315,7 @@ public final class RenderJob {
      * @throws IllegalStateException if the job was already run or started
      */
     public Future<RenderResult> start() {
-        begin();
+        if (!runAfterCheck.getAndSet(false)) begin();
         FutureTask<RenderResult> task = new FutureTask<>(this::runStarted) {
             @Override
             public boolean cancel(boolean mayInterruptIfRunning) {
@@ -338,7 +341,7 @@ public final class RenderJob {
      * @throws IllegalStateException       if the job was already run or started
      */
     public RenderResult run() throws IOException, InterruptedException {
-        begin();
+        if (!runAfterCheck.getAndSet(false)) begin();
         return runStarted();
     }
 
@@ -346,59 +349,105 @@ public final class RenderJob {
         if (!started.compareAndSet(false, true)) throw new IllegalStateException("a render job runs once");
     }
 
-    private RenderResult runStarted() throws IOException, InterruptedException {
+    /**
+     * Makes every check a run begins with, without building or rendering: the output can be
+     * written and is none of the scene's files, the scene file reads, the settings (after the
+     * overrides, and the frame's) describe a frame the region fits and the heap can hold. The run
+     * that follows ({@link #run}, {@link #start}) does not make them again. For a caller that
+     * reports bad input apart from failures while rendering, as the command line does.
+     *
+     * @return the settings the job will render with
+     * @throws IOException              if the output cannot be written, or the scene file cannot be read
+     * @throws IllegalArgumentException for bad input, as {@link #run} says; a frame the heap cannot
+     *                                  hold is an {@link lt.spindulys.limits.InsufficientMemoryException}
+     *                                  sized by {@value Renderer#FRAME_KEY}
+     * @throws CancellationException    if the job was cancelled
+     * @throws IllegalStateException    if the job was checked, run or started already
+     */
+    public RenderSettings check() throws IOException {
+        begin();
+        checked = prepare();
+        runAfterCheck.set(true);
+        return checked.settings();
+    }
+
+    /** What the checks found: the scene (or its description), the settings, the region (null: the whole frame), the load time. */
+    private record Checked(Scene built, SceneBuilder description, RenderSettings settings, Camera camera, PixelRegion region, double load) {}
+
+    /** The checks of a run, up to the build ({@link #check}). */
+    private Checked prepare() throws IOException {
         if (output != null) {
             enter(Stage.CHECK);
             if (regionOf != null) RenderResult.checkTileOutput(output);
             // The scene file is known before it is read; what it names, once it is.
-            if (sceneFile != null) InputFile.checkOutput(output, java.util.List.of(new InputFile(sceneFile, "scene file", null)));
+            if (sceneFile != null) checkOutput(output, sceneFile);
             if (builder != null) InputFile.checkOutput(output, builder.inputFiles());
             ImageWriter.checkOutput(output);
         }
-        long t0 = System.nanoTime();
-        Scene built = scene;
-        PixelRegion region;
-        double load = 0, build = 0;
-        if (built == null) {
-            enter(Stage.LOAD);
-            SceneBuilder b = builder != null ? builder : SceneParser.parse(sceneFile, assetRoots);
-            if (onLoaded != null) onLoaded.accept(b);
-            long t1 = System.nanoTime();
-            load = (t1 - t0) / 1e9;
+        if (scene != null) {
             enter(Stage.SETTINGS);
-            RenderSettings s = Objects.requireNonNull(settingsOverride.apply(b.settings()), "the settings override returned null");
-            if (frame != null) {
-                if (b.animation() == null) throw new IllegalArgumentException("frame " + frame + " asked of a scene without an animation");
-                s = b.animation().settingsFor(s, frame);
-            }
-            s.checkTimeSteps();
-            region = region(s);
-            // The frame is asked for by input: checked before anything is built for it.
-            if (region == null) FrameBuffer.checkHeap(s.width(), s.height(), s.aovs());
-            else FrameBuffer.checkHeap(region.width(), region.height(), s.aovs());
-            if (output != null) {
-                ImageWriter.checkPassOutputs(output, s.aovs()); // the image itself was checked first
-                checkNotInput(output, s.aovs(), b.inputFiles());
-            }
-            Camera c = cameraOverride == null ? b.camera()
-                    : cameraOverride.apply(b.camera() != null ? b.camera() : SceneBuilder.DEFAULT_CAMERA);
-            enter(Stage.BUILD);
-            built = buildWith(b, s, c);
-            build = (System.nanoTime() - t1) / 1e9;
-        } else {
-            enter(Stage.SETTINGS);
-            RenderSettings s = built.settings();
-            region = region(s);
+            RenderSettings s = scene.settings();
+            PixelRegion region = regionOf == null ? null : regionOf.of(s.width(), s.height());
+            Renderer.checkFrame(s, region);
             if (output != null) ImageWriter.checkPassOutputs(output, s.aovs()); // the image itself was checked first
+            return new Checked(scene, null, s, null, region, 0);
+        }
+        long t0 = System.nanoTime();
+        enter(Stage.LOAD);
+        SceneBuilder b = builder != null ? builder : SceneParser.parse(sceneFile, assetRoots);
+        if (onLoaded != null) onLoaded.accept(b);
+        double load = (System.nanoTime() - t0) / 1e9;
+        enter(Stage.SETTINGS);
+        RenderSettings s = Objects.requireNonNull(settingsOverride.apply(b.settings()), "the settings override returned null");
+        if (frame != null) {
+            if (b.animation() == null) throw new IllegalArgumentException("frame " + frame + " asked of a scene without an animation");
+            s = b.animation().settingsFor(s, frame);
+        }
+        PixelRegion region = regionOf == null ? null : regionOf.of(s.width(), s.height());
+        // The frame is asked for by input: checked before anything is built for it.
+        Renderer.checkFrame(s, region);
+        if (output != null) {
+            ImageWriter.checkPassOutputs(output, s.aovs()); // the image itself was checked first
+            checkNotInput(output, s.aovs(), b.inputFiles());
+        }
+        Camera c = cameraOverride == null ? b.camera()
+                : cameraOverride.apply(b.camera() != null ? b.camera() : SceneBuilder.DEFAULT_CAMERA);
+        return new Checked(null, b, s, c, region, load);
+    }
+
+    private RenderResult runStarted() throws IOException, InterruptedException {
+        Checked c = checked != null ? checked : prepare();
+        checked = null; // the description is not kept once built
+        Scene built = c.built();
+        double build = 0;
+        if (built == null) {
+            long t1 = System.nanoTime();
+            enter(Stage.BUILD);
+            // The time steps are the scene's to refuse (Scene checks them as every scene is built).
+            built = buildWith(c.description(), c.settings(), c.camera());
+            build = (System.nanoTime() - t1) / 1e9;
         }
         enter(Stage.RENDER);
-        RenderResult result = Renderer.render(built, threads, progress, cancelled, tiles, region).withTimes(load, build).ofFrame(frame);
+        RenderResult result = Renderer.render(built, threads, progress, cancelled, tiles, c.region()).withTimes(c.load(), build).ofFrame(frame);
         if (output != null) {
             enter(Stage.WRITE);
             result.write(output, jpegQuality);
         }
         stage = Stage.DONE;
         return result;
+    }
+
+    /**
+     * Refuses, before a scene file is read, an output that is that file (by name or through a
+     * link): the output would replace its own input. What the file names is checked once it is
+     * read ({@link #checkNotInput}).
+     *
+     * @param output    the image to be written
+     * @param sceneFile the scene file to be read
+     * @throws InputFile.OutputIsInputException naming the file
+     */
+    public static void checkOutput(Path output, Path sceneFile) {
+        InputFile.checkOutput(output, java.util.List.of(new InputFile(sceneFile, "scene file", null)));
     }
 
     /**
@@ -413,15 +462,6 @@ public final class RenderJob {
     public static void checkNotInput(Path output, java.util.Set<Aov> passes, java.util.List<InputFile> inputs) {
         InputFile.checkOutput(output, inputs);
         for (Aov a : passes) InputFile.checkOutput(a.fileBeside(output), inputs);
-    }
-
-    /** The region for a frame of these settings: checked against its size, and refused with passes. Null: the whole frame. */
-    private PixelRegion region(RenderSettings s) {
-        if (regionOf == null) return null;
-        PixelRegion r = regionOf.of(s.width(), s.height());
-        r.checkInside(s.width(), s.height());
-        if (!s.aovs().isEmpty()) throw new IllegalArgumentException(Renderer.PASSES_OF_REGION);
-        return r;
     }
 
     /** A region chosen by the frame's size. */

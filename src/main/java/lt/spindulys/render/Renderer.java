@@ -104,9 +104,10 @@ public final class Renderer {
      * @param progress told of the pixels done as tiles finish, from render threads; null: nobody
      * @return the finished frame, its passes and statistics
      * @throws lt.spindulys.limits.InsufficientMemoryException (an IllegalArgumentException) if
-     *         the heap cannot hold the frame and its passes ({@link FrameBuffer#checkHeap}), or the
+     *         the heap cannot hold the frame and its passes ({@link FrameBuffer#checkHeap}; then its
+     *         {@link lt.spindulys.limits.InsufficientMemoryException#key() key} is {@value #FRAME_KEY}), or the
      *         render threads' sample buffers, which grow with the settings' and the lights' samples
-     *         (then its {@link lt.spindulys.limits.InsufficientMemoryException#key() key} is "samples")
+     *         (then its key is {@value #SAMPLES_KEY})
      * @throws InterruptedException if the calling thread is interrupted (the workers are stopped)
      */
     public static RenderResult render(Scene scene, int threads, ProgressListener progress) throws InterruptedException {
@@ -140,11 +141,8 @@ public final class Renderer {
         if (threads < 1) throw new IllegalArgumentException("threads must be at least 1, found " + threads);
         RenderSettings st = scene.settings();
         int w = st.width(), h = st.height();
-        PixelRegion r = region != null ? region : PixelRegion.whole(w, h);
-        r.checkInside(w, h);
-        if (region != null && !st.aovs().isEmpty()) throw new IllegalArgumentException(PASSES_OF_REGION);
+        PixelRegion r = checkFrame(st, region); // the frame is asked for by input: checked before it is allocated
         int rw = r.width(), rh = r.height();
-        FrameBuffer.checkHeap(rw, rh, st.aovs()); // the frame is asked for by input: checked before it is allocated
         FrameBuffer fb = new FrameBuffer(rw, rh);
         AovFrame aovs = st.aovs().isEmpty() ? null : new AovFrame(w, h, st.aovs());
         int tilesX = (rw + TILE - 1) / TILE, tilesY = (rh + TILE - 1) / TILE, tiles = tilesX * tilesY;
@@ -166,6 +164,37 @@ public final class Renderer {
         return new RenderResult(st, fb, aovs, new RenderStats(sum[0], sum[1], sum[2], sum[3], seconds), scene.adaptiveStatistics(), scene.structureStatistics())
                 .inRegion(region);
     }
+
+    /**
+     * The one check of the frame a render makes: the region (null: the whole frame) lies inside
+     * the frame of these settings and asks for no render passes, and the heap can hold the
+     * frame's buffers now. A {@link RenderJob} makes it before it builds the scene, so that a
+     * frame that cannot be rendered costs no build; the renderer makes it again before it
+     * allocates, since a scene built meanwhile (or by a caller of {@link #render(Scene)}) may
+     * have taken the heap the frame needs.
+     *
+     * @return the pixels to render: the region, or the whole frame
+     * @throws IllegalArgumentException if the region is outside the frame or comes with passes
+     * @throws InsufficientMemoryException sized by "frame" ({@link InsufficientMemoryException#key()})
+     *         if the heap cannot hold the frame and its passes
+     */
+    static PixelRegion checkFrame(RenderSettings st, PixelRegion region) {
+        PixelRegion r = region != null ? region : PixelRegion.whole(st.width(), st.height());
+        r.checkInside(st.width(), st.height());
+        if (region != null && !st.aovs().isEmpty()) throw new IllegalArgumentException(PASSES_OF_REGION);
+        try {
+            FrameBuffer.checkHeap(r.width(), r.height(), st.aovs());
+        } catch (InsufficientMemoryException e) {
+            throw e.sizedBy(FRAME_KEY);
+        }
+        return r;
+    }
+
+    /** The {@link InsufficientMemoryException#key() key} of a frame the heap cannot hold. */
+    public static final String FRAME_KEY = "frame";
+
+    /** The key of the render threads' sample buffers the heap cannot hold. */
+    public static final String SAMPLES_KEY = "samples";
 
     /** Why a region of a frame with render passes is refused: the passes' files have no placement to assemble them by. */
     static final String PASSES_OF_REGION = "render passes (aov) are made for whole frames only: render a region without them, or the whole frame with them";
@@ -213,7 +242,7 @@ public final class Renderer {
                     "buffering the samples of " + workers.length + " render thread" + (workers.length == 1 ? "" : "s")
                             + " (" + integrator.scratchSizedBy(st.samplesPerPixel()) + ")");
         } catch (InsufficientMemoryException e) {
-            throw e.sizedBy("samples");
+            throw e.sizedBy(SAMPLES_KEY);
         }
         // Whatever stops the render: a failure on any thread, a cancel, an interrupt. Checked
         // between tiles and within them, so a tile of billions of rays does not go on after it.

@@ -198,6 +198,28 @@ class CliFramesTest {
     }
 
     @Test
+    void skipExistingLeavesAnExistingStillToo() throws IOException {
+        Path still = dir.resolve("still.dat");
+        Files.writeString(still, "settings { width 8 height 6 }\nsphere { }\n");
+        byte[] marker = "finished by an earlier task".getBytes(StandardCharsets.UTF_8);
+        Files.write(dir.resolve("still.png"), marker);
+        CliTest.Run r = run(still.toString(), "-o", out("still.png"), "--skip-existing");
+        assertEquals(0, r.status(), r.err());
+        assertArrayEquals(marker, bytes("still.png"), "an existing still is not rendered again");
+        assertEquals("skipped " + out("still.png") + ": it exists (--skip-existing)" + System.lineSeparator(), r.err());
+        r = run(still.toString(), "-o", out("still.png"), "--skip-existing", "--progress", "openjd", "--quiet");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().contains("openjd_status: " + out("still.png") + " exists (--skip-existing)"), r.out());
+        // Without the option, or with the image missing, the still is rendered.
+        assertEquals(0, run(still.toString(), "-o", out("still.png"), "--quiet").status());
+        assertFalse(Arrays.equals(marker, bytes("still.png")));
+        Files.delete(dir.resolve("still.png"));
+        r = run(still.toString(), "-o", out("still.png"), "--skip-existing");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.err().contains("wrote " + out("still.png")), r.err());
+    }
+
+    @Test
     void badFrameRequestsAreOneLineUsageErrors() throws IOException {
         Path s = scene(ANIMATED);
         Path still = dir.resolve("still.dat");

@@ -52,7 +52,7 @@ class CliLensTest {
 
     @Test
     void aSceneWithoutCameraGetsTheDefaultOneWithTheLens() {
-        ThinLensCamera c = RenderCommand.withLens(null, 0.1, null);
+        ThinLensCamera c = SceneBuilder.DEFAULT_CAMERA.withLens(0.1, null);
         assertEquals(SceneBuilder.DEFAULT_CAMERA, c.view());
         assertEquals(5, c.focusDistance(), 1e-12);
         assertEquals(0.1, c.aperture());

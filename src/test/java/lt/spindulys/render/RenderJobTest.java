@@ -140,4 +140,23 @@ class RenderJobTest {
         assertThrows(IllegalStateException.class, () -> built.settings(s -> s));
         assertEquals(40, built.progress(null).run().width());
     }
+
+    @Test
+    void checkRefusesBeforeTheBuildAndTheRunGoesOnFromIt() throws Exception {
+        Path out = dir.resolve("checked.png");
+        RenderJob job = RenderJob.of(builder(true)).settings(s -> s.toBuilder().size(20, 12).build()).output(out).threads(1);
+        assertEquals(20, job.check().width());
+        assertEquals(RenderJob.Stage.SETTINGS, job.stage());
+        assertFalse(Files.exists(out), "nothing built, rendered or written");
+        assertEquals(12, job.run().height());
+        assertTrue(Files.exists(out));
+        assertThrows(IllegalStateException.class, job::run);
+        RenderJob twice = RenderJob.of(builder(true));
+        twice.check();
+        assertThrows(IllegalStateException.class, twice::check);
+        // A region the frame has no room for is refused by the check, before anything is built.
+        RenderJob outside = RenderJob.of(builder(true)).region(new lt.spindulys.image.PixelRegion(0, 400, 0, 1));
+        assertThrows(IllegalArgumentException.class, outside::check);
+        assertEquals(RenderJob.Stage.SETTINGS, outside.stage());
+    }
 }
