@@ -42,7 +42,7 @@ final class FarmOptions {
         String a = args[i];
         switch (a) {
             case "--region" -> {
-                String v = value(args, i + 1, a);
+                String v = OptionValues.value(args, i + 1, a);
                 noSecondRegion(a + " " + v);
                 try {
                     region = PixelRegion.parse(v);
@@ -52,7 +52,7 @@ final class FarmOptions {
                 return i + 1;
             }
             case "--tile" -> {
-                String v = value(args, i + 1, a);
+                String v = OptionValues.value(args, i + 1, a);
                 noSecondRegion(a + " " + v);
                 int slash = v.indexOf('/');
                 try {
@@ -68,7 +68,7 @@ final class FarmOptions {
                 return i + 1;
             }
             case "--progress" -> {
-                String v = value(args, i + 1, a);
+                String v = OptionValues.value(args, i + 1, a);
                 try {
                     progress = FarmProgress.Mode.of(v);
                 } catch (IllegalArgumentException e) {
@@ -145,10 +145,5 @@ final class FarmOptions {
     FarmProgress progress(java.util.function.Supplier<RenderJob.Stage> stage, PrintStream out, PrintStream err, String what, long startNanos) {
         if (progress == null) return null;
         return new FarmProgress(progress, progress == FarmProgress.Mode.OPENJD ? out : err, stage, what, startNanos);
-    }
-
-    private static String value(String[] args, int i, String option) throws UsageException {
-        if (i >= args.length) throw new UsageException("option " + option + " needs a value");
-        return args[i];
     }
 }

@@ -122,36 +122,36 @@ final class RenderCommand {
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             switch (a) {
-                case "-o", "--output" -> output = Path.of(value(args, ++i, a));
-                case "--width" -> width = intValue(args, ++i, a, 1, RenderSettings.MAX_SIDE);
-                case "--height" -> height = intValue(args, ++i, a, 1, RenderSettings.MAX_SIDE);
-                case "--spp" -> spp = intValue(args, ++i, a, 1, 65536);
-                case "--aperture" -> aperture = lensValue(args, ++i, a, false);
-                case "--focus" -> focus = lensValue(args, ++i, a, true);
-                case "--threads" -> threads = intValue(args, ++i, a, 1, 1024);
-                case "--seed" -> seed = longValue(args, ++i, a);
+                case "-o", "--output" -> output = Path.of(OptionValues.value(args, ++i, a));
+                case "--width" -> width = OptionValues.intValue(args, ++i, a, 1, RenderSettings.MAX_SIDE);
+                case "--height" -> height = OptionValues.intValue(args, ++i, a, 1, RenderSettings.MAX_SIDE);
+                case "--spp" -> spp = OptionValues.intValue(args, ++i, a, 1, 65536);
+                case "--aperture" -> aperture = OptionValues.lensValue(args, ++i, a, false);
+                case "--focus" -> focus = OptionValues.lensValue(args, ++i, a, true);
+                case "--threads" -> threads = OptionValues.intValue(args, ++i, a, 1, 1024);
+                case "--seed" -> seed = OptionValues.longValue(args, ++i, a);
                 case "--accel" -> {
-                    String v = value(args, ++i, a);
+                    String v = OptionValues.value(args, ++i, a);
                     if (!AcceleratorKind.keywords().contains(v)) {
                         throw new UsageException(a + " expects one of " + String.join(", ", AcceleratorKind.keywords()) + ", found '" + v + "'");
                     }
                     accel = AcceleratorKind.fromKeyword(v);
                 }
                 case "--aov" -> {
-                    String v = value(args, ++i, a);
+                    String v = OptionValues.value(args, ++i, a);
                     try {
                         aovs = Aov.parseList(v);
                     } catch (IllegalArgumentException e) {
                         throw new UsageException(a + ": " + e.getMessage());
                     }
                 }
-                case "--shutter" -> shutter = shutterValue(args, ++i, a);
-                case "--timesteps" -> timeSteps = intValue(args, ++i, a, 1, 65536);
-                case "--quality" -> quality = doubleValue(args, ++i, a, 0, 1);
-                case "--subdiv-target" -> subdivTarget = doubleValue(args, ++i, a, AdaptiveSettings.MIN_TARGET, AdaptiveSettings.MAX_TARGET);
-                case "--subdiv-memory" -> subdivMemory = doubleValue(args, ++i, a, 0, AdaptiveSettings.MAX_BYTES >> 20);
+                case "--shutter" -> shutter = OptionValues.shutterValue(args, ++i, a);
+                case "--timesteps" -> timeSteps = OptionValues.intValue(args, ++i, a, 1, 65536);
+                case "--quality" -> quality = OptionValues.doubleValue(args, ++i, a, 0, 1);
+                case "--subdiv-target" -> subdivTarget = OptionValues.doubleValue(args, ++i, a, AdaptiveSettings.MIN_TARGET, AdaptiveSettings.MAX_TARGET);
+                case "--subdiv-memory" -> subdivMemory = OptionValues.doubleValue(args, ++i, a, 0, AdaptiveSettings.MAX_BYTES >> 20);
                 case "--subdiv-cache" -> {
-                    subdivCache = doubleValue(args, ++i, a, 0, AdaptiveSettings.MAX_BYTES >> 20);
+                    subdivCache = OptionValues.doubleValue(args, ++i, a, 0, AdaptiveSettings.MAX_BYTES >> 20);
                     if (!(subdivCache * (1 << 20) >= 1)) throw new UsageException(a + " must be more than 0 (mebibytes of the lazy patches' cache), found " + args[i]);
                 }
                 case "--frame", "--frames", "--skip-existing" -> i = frames.option(args, i);
@@ -188,7 +188,7 @@ final class RenderCommand {
 
     /** A path option's value; a name the platform cannot take is bad usage. */
     static Path pathValue(String[] args, int i, String option) throws UsageException {
-        String v = value(args, i, option);
+        String v = OptionValues.value(args, i, option);
         try {
             return Path.of(v);
         } catch (java.nio.file.InvalidPathException e) {
@@ -483,83 +483,6 @@ final class RenderCommand {
         if (!(v > 0) || v >= 10) return String.format(Locale.ROOT, "%.1f", v);
         int decimals = Math.min(12, 2 - (int) Math.floor(Math.log10(v)));
         return String.format(Locale.ROOT, "%." + decimals + "f", v);
-    }
-
-    private static String value(String[] args, int i, String option) throws UsageException {
-        if (i >= args.length) throw new UsageException("option " + option + " needs a value");
-        return args[i];
-    }
-
-    private static int intValue(String[] args, int i, String option, int min, int max) throws UsageException {
-        String v = value(args, i, option);
-        try {
-            int n = Integer.parseInt(v);
-            if (n < min || n > max) throw new UsageException(option + " must be between " + min + " and " + max + ", found " + v);
-            return n;
-        } catch (NumberFormatException e) {
-            throw new UsageException(option + " expects a whole number, found '" + v + "'");
-        }
-    }
-
-    /** OPEN,CLOSE: two finite numbers, close not before open. */
-    private static double[] shutterValue(String[] args, int i, String option) throws UsageException {
-        String v = value(args, i, option);
-        String[] parts = v.split(",", -1);
-        if (parts.length != 2) throw new UsageException(option + " expects OPEN,CLOSE (two numbers separated by a comma), found '" + v + "'");
-        double[] out = new double[2];
-        for (int k = 0; k < 2; k++) {
-            try {
-                out[k] = Double.parseDouble(parts[k].trim());
-            } catch (NumberFormatException e) {
-                throw new UsageException(option + " expects OPEN,CLOSE (two numbers separated by a comma), found '" + v + "'");
-            }
-            if (!Double.isFinite(out[k])) throw new UsageException(option + " times must be finite, found '" + v + "'");
-        }
-        if (out[1] < out[0]) throw new UsageException(option + " must close after it opens, found '" + v + "'");
-        return out;
-    }
-
-    private static long longValue(String[] args, int i, String option) throws UsageException {
-        String v = value(args, i, option);
-        try {
-            return Long.parseLong(v);
-        } catch (NumberFormatException e) {
-            throw new UsageException(option + " expects a whole number, found '" + v + "'");
-        }
-    }
-
-    private static double doubleValue(String[] args, int i, String option, double min, double max) throws UsageException {
-        String v = value(args, i, option);
-        try {
-            double d = Double.parseDouble(v);
-            if (!(d >= min && d <= max)) throw new UsageException(option + " must be between " + bound(min) + " and " + bound(max) + ", found " + v);
-            return d;
-        } catch (NumberFormatException e) {
-            throw new UsageException(option + " expects a number, found '" + v + "'");
-        }
-    }
-
-    /** A range's end as a person writes it: 0, 1, 16777216, 0.01 (not 0.0 or 1.6777216E7). */
-    private static String bound(double b) {
-        if (b == Math.rint(b) && Math.abs(b) < 1e15) return Long.toString((long) b);
-        return java.math.BigDecimal.valueOf(b).stripTrailingZeros().toPlainString();
-    }
-
-    /** A finite lens dimension: at least 0, or with {@code positive} greater than 0. */
-    private static double lensValue(String[] args, int i, String option, boolean positive) throws UsageException {
-        String v = value(args, i, option);
-        double d;
-        try {
-            d = Double.parseDouble(v);
-        } catch (NumberFormatException e) {
-            throw new UsageException(option + " expects a number, found '" + v + "'");
-        }
-        if (!Double.isFinite(d) || (positive ? !(d > 0) : !(d >= 0))) {
-            throw new UsageException(option + " must be a finite number " + (positive ? "greater than 0" : "at least 0") + ", found " + v);
-        }
-        // As any scene number (Ranges): larger ones could overflow the camera's ray arithmetic.
-        if (!Ranges.isModest(d)) throw new UsageException(option + " must be at most " + Ranges.show(Ranges.MAX_NUMBER) + ", found " + v);
-        return d;
     }
 
     /** The scene file is missing: bad input, reported like the parser's errors. */

@@ -100,12 +100,12 @@ final class SubdivideCommand {
         for (int i = 0; i < args.length; i++) {
             String a = args[i];
             switch (a) {
-                case "-o", "--output" -> output = Path.of(value(args, ++i, a));
-                case "--uv" -> uv = Path.of(value(args, ++i, a));
-                case "--level" -> level = levelValue(value(args, ++i, a));
+                case "-o", "--output" -> output = Path.of(OptionValues.value(args, ++i, a));
+                case "--uv" -> uv = Path.of(OptionValues.value(args, ++i, a));
+                case "--level" -> level = levelValue(OptionValues.value(args, ++i, a));
                 case "--limit" -> limit = true;
-                case "--scene" -> scene = Path.of(value(args, ++i, a));
-                case "--scheme" -> scheme = schemeValue(value(args, ++i, a));
+                case "--scene" -> scene = Path.of(OptionValues.value(args, ++i, a));
+                case "--scheme" -> scheme = schemeValue(OptionValues.value(args, ++i, a));
                 case "--assets-root" -> assetFolders.add(RenderCommand.pathValue(args, ++i, a));
                 default -> {
                     if (a.startsWith("-") && a.length() > 1) throw new UsageException("unknown option '" + a + "' for subdivide (see render subdivide --help)");
@@ -309,10 +309,5 @@ final class SubdivideCommand {
         } catch (IllegalArgumentException e) {
             throw new UsageException("--level must be between 0 and " + SubdivisionSurface.MAX_LEVEL + ", found " + v);
         }
-    }
-
-    private static String value(String[] args, int i, String option) throws UsageException {
-        if (i >= args.length) throw new UsageException("option " + option + " needs a value");
-        return args[i];
     }
 }
