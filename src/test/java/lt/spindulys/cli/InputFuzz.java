@@ -28,13 +28,20 @@ import java.util.stream.Stream;
  *     lt.spindulys.cli.InputFuzz SEED COUNT REPO_ROOT WORK_DIR</pre>
  *
  * <p>It prints one {@code FAIL} line per broken promise (with the case number and the mutations,
- * enough to reproduce it with the same seed) and a {@code SUMMARY} line last.
+ * enough to reproduce it with the same seed) and a {@code SUMMARY} line last. With
+ * {@code -Dfuzz.verbose=true} it also prints a {@code CASE} line for every case: its scene, its
+ * mutations, the outcome and the time it took (to see what a seed covers). With
+ * {@code -Dfuzz.keep=DIR} the files of each failing case are kept in DIR/caseN, to reproduce it with
+ * {@code render DIR/caseN/scenes/SCENE -o out.pfm}.
  */
 public final class InputFuzz {
     private InputFuzz() {}
 
     /** A render that takes longer than this is interrupted: a slow valid scene is not a failure, a hang shows as one. */
     static final long TIMEOUT_MS = 8000;
+
+    private static final boolean VERBOSE = Boolean.getBoolean("fuzz.verbose");
+    private static final String KEEP = System.getProperty("fuzz.keep");
 
     /** file:line:column: message, all on one line. */
     private static final Pattern LOCATED = Pattern.compile("^\\S[^\\n]*?:\\d+:\\d+: \\S[^\\n]*$");
@@ -73,10 +80,22 @@ public final class InputFuzz {
             String what = "case " + i + " (" + scene + ": " + String.join("; ", done) + ")";
             Path out = dir.resolve("out.pfm");
             counts.cases++;
+            int rendered = counts.rendered, interrupted = counts.interrupted;
+            long t0 = System.nanoTime();
             String failure = check(scenePath, out, counts);
+            long ms = (System.nanoTime() - t0) / 1_000_000;
             if (failure != null) {
                 counts.failures++;
                 report.println("FAIL " + what + ": " + failure);
+                if (KEEP != null) {
+                    Files.deleteIfExists(out);
+                    copyTree(dir, Path.of(KEEP).resolve("case" + i));
+                }
+            }
+            if (VERBOSE) {
+                report.println("CASE " + what + " -> " + (failure != null ? "FAIL"
+                        : counts.rendered > rendered ? "rendered" : counts.interrupted > interrupted ? "interrupted" : "refused")
+                        + " " + ms + " ms");
             }
             deleteTree(dir);
         }
