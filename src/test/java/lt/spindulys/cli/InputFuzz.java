@@ -173,8 +173,9 @@ public final class InputFuzz {
     private static String[] arguments(Path scene, Path out) throws IOException {
         List<String> args = new ArrayList<>(List.of(scene.toString(), "-o", out.toString(), "--quiet", "--threads", "2"));
         String text = Files.readString(scene, StandardCharsets.ISO_8859_1);
-        Matcher first = Pattern.compile("\\banimation\\s*\\{[^}]*?\\bframes\\s+(\\d{1,7})(?![\\w.])").matcher(text);
-        if (first.find()) args.addAll(List.of("--frame", first.group(1)));
+        // -0 is frame 0; a negative first frame is refused where it is written, whatever --frame says.
+        Matcher first = Pattern.compile("\\banimation\\s*\\{[^}]*?\\bframes\\s+(-?\\d{1,7})(?![\\w.])").matcher(text);
+        if (first.find() && Integer.parseInt(first.group(1)) >= 0) args.addAll(List.of("--frame", Integer.toString(Integer.parseInt(first.group(1)))));
         return args.toArray(new String[0]);
     }
 
