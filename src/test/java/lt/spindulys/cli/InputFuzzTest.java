@@ -15,10 +15,15 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Seeded hostile input against the promise "bad input gives exit 2 and one located line, nothing
- * written": {@link InputFuzz} mutates every scene of scenes/ and its meshes and textures (token
- * deletion, duplication and swap; numbers replaced by NaN, infinities, huge and negative values;
- * truncation; binary noise; control characters; huge words, counts and sizes; deep CSG nesting)
- * and renders each case. It runs in a child JVM with a small heap, so that the memory checks are
+ * written": {@link InputFuzz} mutates every scene of scenes/, three scenes of its own dense in the
+ * newer syntaxes (animation, keys, turntables, area lights, environments, adaptive subdivision,
+ * OBJ materials, motion), and the files they name: meshes, unwraps, .mtl libraries (through
+ * mtllib) and their maps, PNG, TGA, Radiance .hdr and .pfm images (token deletion, duplication and
+ * swap; keywords swapped for their siblings; numbers, and the values of the newer keys, replaced by
+ * NaN, infinities, denormals, huge and negative values and values at the limits; lines repeated up
+ * to 1000 times; truncation; binary noise; control characters; huge words, counts and sizes; deep
+ * CSG nesting; statements of the newer syntaxes added; image headers, sizes, run-length rows and
+ * float values) and renders each case. It runs in a child JVM with a small heap, so that the memory checks are
  * what stops a case that asks for too much, not the test JVM's generous heap.
  */
 class InputFuzzTest {
