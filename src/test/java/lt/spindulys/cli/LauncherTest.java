@@ -30,14 +30,10 @@ class LauncherTest {
 
     @Test
     void findsItsJarThroughAChainOfSymbolicLinks() throws Exception {
-        Path bash = Stream.of("/bin/bash", "/usr/bin/bash", "/usr/local/bin/bash").map(Path::of).filter(Files::isExecutable).findFirst().orElse(null);
-        assumeTrue(bash != null, "no bash on this system: the launcher is a bash script");
-        Path repo = Files.createDirectories(dir.resolve("repo"));
-        Path script = repo.resolve("render");
-        Files.copy(Path.of("render"), script);
+        Path bash = bash();
+        Path script = repoWithLauncher();
+        Path repo = script.getParent();
         assumeTrue(script.toFile().setExecutable(true), "cannot mark the copied launcher executable");
-        Files.createDirectories(repo.resolve("src/main"));
-        Files.writeString(repo.resolve("pom.xml"), "<project/>\n");
         FileTime past = FileTime.fromMillis(System.currentTimeMillis() - 3_600_000);
         Files.setLastModifiedTime(repo.resolve("src/main"), past);
         Files.setLastModifiedTime(repo.resolve("pom.xml"), past);
@@ -74,13 +70,9 @@ class LauncherTest {
      */
     @Test
     void buildsTheJarWithoutColourCodesAndReportsAFailedBuild() throws Exception {
-        Path bash = Stream.of("/bin/bash", "/usr/bin/bash", "/usr/local/bin/bash").map(Path::of).filter(Files::isExecutable).findFirst().orElse(null);
-        assumeTrue(bash != null, "no bash on this system: the launcher is a bash script");
-        Path repo = Files.createDirectories(dir.resolve("repo"));
-        Path script = repo.resolve("render");
-        Files.copy(Path.of("render"), script);
-        Files.createDirectories(repo.resolve("src/main"));
-        Files.writeString(repo.resolve("pom.xml"), "<project/>\n");
+        Path bash = bash();
+        Path script = repoWithLauncher();
+        Path repo = script.getParent();
         Path built = dir.resolve("built.jar");
         writeJar(built);
         // A stand-in for Maven: prints what Maven 3.8 prints, then "builds" the jar by copying one,
@@ -112,6 +104,23 @@ class LauncherTest {
         assertEquals(0, status, out[0]);
         assertFalse(out[0].contains("\u001b"), "colour codes reached the output: " + out[0]);
         assertEquals("render: building target/render.jar with Maven...\nspindulys ", out[0].substring(0, Math.min(out[0].length(), 59)));
+    }
+
+    /** The bash that runs the launcher; the test is skipped without one. */
+    private static Path bash() {
+        Path bash = Stream.of("/bin/bash", "/usr/bin/bash", "/usr/local/bin/bash").map(Path::of).filter(Files::isExecutable).findFirst().orElse(null);
+        assumeTrue(bash != null, "no bash on this system: the launcher is a bash script");
+        return bash;
+    }
+
+    /** A copy of the repository's layout around the launcher (the script, src/main, pom.xml); returns the script. */
+    private Path repoWithLauncher() throws IOException {
+        Path repo = Files.createDirectories(dir.resolve("repo"));
+        Path script = repo.resolve("render");
+        Files.copy(Path.of("render"), script);
+        Files.createDirectories(repo.resolve("src/main"));
+        Files.writeString(repo.resolve("pom.xml"), "<project/>\n");
+        return script;
     }
 
     private static int run(ProcessBuilder pb, String[] output) throws Exception {
