@@ -23,7 +23,7 @@ import lt.spindulys.subdiv.SubdivTags;
 /**
  * The statements of an OBJ file, or of a part of one that starts a line, parsed from its bytes in
  * place: numbers by hand, with no allocation per token (see {@link ObjReader}). A whole file is
- * checked as it is read; a chunk of a large one ({@link ObjReader.ChunkedParse}) is parsed {@link #deferred}
+ * checked as it is read; a chunk of a large one ({@link ObjChunks}) is parsed {@link #deferred}
  * and checked when the chunks are merged. Errors are {@link SceneException}s naming the file, line
  * and column of the offending token.
  */
