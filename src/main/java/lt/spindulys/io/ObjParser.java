@@ -5,10 +5,7 @@ import static lt.spindulys.io.ObjReader.MAX_NAME;
 
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
-import java.util.Arrays;
-import java.util.HashSet;
 import java.util.List;
-import java.util.Set;
 
 import lt.spindulys.io.BlockList.Doubles;
 import lt.spindulys.io.BlockList.Ints;
@@ -17,8 +14,6 @@ import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.mesh.MeshData;
 import lt.spindulys.subdiv.SubdivInput;
-import lt.spindulys.subdiv.SubdivOptions;
-import lt.spindulys.subdiv.SubdivTags;
 
 /**
  * The statements of an OBJ file, or of a part of one that starts a line, parsed from its bytes in
@@ -38,10 +33,12 @@ final class ObjParser {
     /** Index kinds, for {@link #base} and the deferred checks. */
     static final int VERTEX = 0, UV = 1, NORMAL = 2;
 
-    private final byte[] b;
-    private final int end;
+    // The bytes, the end of the part parsed and the position reached; ObjTags reads a tag's
+    // arguments through them and the token methods below (skipBlanks, number, error, ...).
+    final byte[] b;
+    final int end;
     private final String file;
-    private int pos;
+    int pos;
     /** 1-based line number of {@link #pos} and where that line starts, for messages. */
     int line = 1, lineStart;
 
@@ -67,7 +64,8 @@ final class ObjParser {
     /** Line of the first face, and whether it has texture coordinates (subdiv mode). */
     private int firstFaceLine;
     private boolean firstFaceUv;
-    private final TagCollector tags = new TagCollector();
+    /** The {@code t} tags read (subdivision mode only). */
+    private final ObjTags tags;
 
     /** The usemtl names in order of first use (a face group each), and each one's index. */
     final List<String> groupNames = new ArrayList<>();
@@ -91,6 +89,7 @@ final class ObjParser {
         this.end = to;
         this.file = file;
         this.subdiv = subdiv;
+        this.tags = subdiv ? new ObjTags(file) : null;
         this.deferred = deferred;
         this.relative = deferred ? new Ints[] {new Ints(), new Ints(), new Ints()} : null;
         this.currentGroup = deferred ? INHERIT : -1;
@@ -144,7 +143,7 @@ final class ObjParser {
             } else if (len == 2 && c0 == 'v' && b[start + 1] == 't') {
                 texture();
             } else if (subdiv && len == 1 && c0 == 't') {
-                tag();
+                tags.read(this);
             } else if (matches(start, len, "usemtl")) {
                 usemtl();
             } else if (matches(start, len, "mtllib")) {
@@ -330,275 +329,10 @@ final class ObjParser {
         if (n == 0) throw error(pos, "expected a material library file name after 'mtllib', found " + describe(pos));
     }
 
-    // ---- OpenSubdiv tags (subdivision mode) ----
-
-    /**
-     * {@code t name nints/nfloats/nstrings ints... floats... strings...}. The counts are
-     * checked against what each tag needs and against the arguments on the line; indices are
-     * checked against the mesh once the whole file is read.
-     */
-    private void tag() {
-        skipBlanks();
-        int nameAt = pos;
-        if (atLineEnd()) throw error(nameAt, "expected a tag name after 't', found " + describe(nameAt));
-        skipToken();
-        // A name far longer than any tag's is not decoded whole (it may be most of the file).
-        String name = pos - nameAt <= 64 ? text(nameAt, pos) : null;
-        if (name == null || !TAGS.contains(name)) {
-            throw error(nameAt, "unknown tag " + quote(nameAt, pos, "'") + (name == null ? "" : SceneGrammar.didYouMean(name, TAGS))
-                    + " (known: " + String.join(", ", TAGS) + ")");
-        }
-        skipBlanks();
-        int countsAt = pos;
-        int[] counts = tagCounts(name);
-        int ni = counts[0], nf = counts[1], ns = counts[2];
-        String countsText = ni + "/" + nf + "/" + ns;
-        String shape = switch (name) {
-            case "crease" -> ni >= 2 && ni % 2 == 0 && (nf == 1 || nf == ni / 2) && ns == 0 ? null
-                    : "vertex pairs and one sharpness for all pairs or one per pair (such as 2/1/0 or 4/2/0)";
-            case "corner" -> ni >= 1 && (nf == 1 || nf == ni) && ns == 0 ? null
-                    : "vertices and one sharpness for all or one per vertex (such as 1/1/0 or 3/3/0)";
-            case "hole" -> ni >= 1 && nf == 0 && ns == 0 ? null : "face indices only (such as 1/0/0 or 3/0/0)";
-            case "interpolateboundary", "facevaryinginterpolateboundary", "facevaryingpropagatecorners" ->
-                    ni == 1 && nf == 0 && ns == 0 ? null : "one integer (1/0/0)";
-            case "creasemethod", "smoothtriangles", "scheme" -> ni == 0 && nf == 0 && ns == 1 ? null : "one string (0/0/1)";
-            default -> null; // hierarchical edits: read and ignored, as OpenSubdiv's Far does
-        };
-        if (shape != null) throw error(countsAt, "tag '" + name + "' takes " + shape + ", found " + countsText);
-
-        String argsSay = " (its counts " + countsText + " say " + plural(ni, "integer") + ", " + plural(nf, "float")
-                + " and " + plural(ns, "string") + ")";
-        // The counts are the file's word: the arrays grow as the arguments arrive (to exactly the
-        // counts once all are read), so a tag that announces 10^9 of them costs nothing.
-        long[] ints = new long[Math.min(ni, FIRST_ARGS)];
-        int[] intLine = new int[ints.length], intColumn = new int[ints.length];
-        for (int i = 0; i < ni; i++) {
-            if (i == ints.length) {
-                int n = grown(i, ni);
-                ints = Arrays.copyOf(ints, n);
-                intLine = Arrays.copyOf(intLine, n);
-                intColumn = Arrays.copyOf(intColumn, n);
-            }
-            skipBlanks();
-            intLine[i] = line;
-            intColumn[i] = column(pos);
-            ints[i] = tagInteger(name, "integer " + (i + 1) + " of " + ni + argsSay);
-        }
-        float[] floats = new float[Math.min(nf, FIRST_ARGS)];
-        for (int i = 0; i < nf; i++) {
-            if (i == floats.length) floats = Arrays.copyOf(floats, grown(i, nf));
-            skipBlanks();
-            int at = pos;
-            boolean sharpness = name.equals("crease") || name.equals("corner");
-            double v = number((sharpness ? "sharpness " : "float ") + (i + 1) + " of " + nf + " of tag '" + name + "'" + argsSay);
-            if (sharpness && v < 0) throw error(at, name + " sharpness must not be negative, found " + quote(at, pos, ""));
-            floats[i] = (float) v; // OpenSubdiv keeps sharpness as float
-        }
-        String[] strings = new String[Math.min(ns, FIRST_ARGS)];
-        int[] stringAt = new int[strings.length];
-        for (int i = 0; i < ns; i++) {
-            if (i == strings.length) {
-                strings = Arrays.copyOf(strings, grown(i, ns));
-                stringAt = Arrays.copyOf(stringAt, strings.length);
-            }
-            skipBlanks();
-            stringAt[i] = pos;
-            if (atLineEnd()) {
-                throw error(pos, "expected string " + (i + 1) + " of " + ns + " of tag '" + name + "'" + argsSay + ", found " + describe(pos));
-            }
-            strings[i] = token();
-        }
-        skipBlanks();
-        if (!atLineEnd()) {
-            throw error(pos, "unexpected " + describe(pos) + " after the arguments of tag '" + name + "'" + argsSay);
-        }
-
-        switch (name) {
-            case "crease" -> {
-                for (int i = 0; i < ni; i += 2) {
-                    float s = floats[nf == 1 ? 0 : i / 2];
-                    tags.creases.add(new TagIndex(ints[i], intLine[i], intColumn[i]));
-                    tags.creases.add(new TagIndex(ints[i + 1], intLine[i + 1], intColumn[i + 1]));
-                    tags.creaseSharpness.add(s);
-                }
-            }
-            case "corner" -> {
-                for (int i = 0; i < ni; i++) {
-                    tags.corners.add(new TagIndex(ints[i], intLine[i], intColumn[i]));
-                    tags.cornerSharpness.add(floats[nf == 1 ? 0 : i]);
-                }
-            }
-            case "hole" -> {
-                for (int i = 0; i < ni; i++) tags.holes.add(new TagIndex(ints[i], intLine[i], intColumn[i]));
-            }
-            case "interpolateboundary" -> {
-                SubdivOptions.Boundary[] modes = {SubdivOptions.Boundary.NONE, SubdivOptions.Boundary.EDGE_AND_CORNER, SubdivOptions.Boundary.EDGE_ONLY};
-                long v = ints[0];
-                if (v < 0 || v > 2) {
-                    throw new SceneException(file, intLine[0], intColumn[0],
-                            "expected 0 (none), 1 (edge and corner) or 2 (edge only) for tag 'interpolateboundary', found " + v);
-                }
-                tags.options = tags.options.withBoundary(modes[(int) v]);
-            }
-            case "facevaryinginterpolateboundary" -> {
-                SubdivOptions.FaceVarying[] modes = SubdivOptions.FaceVarying.values();
-                long v = ints[0];
-                if (v < 0 || v >= modes.length) {
-                    throw new SceneException(file, intLine[0], intColumn[0],
-                            "expected 0 (none), 1 (corners only), 2 (corners plus1), 3 (corners plus2), 4 (boundaries) or 5 (all)"
-                                    + " for tag 'facevaryinginterpolateboundary', found " + v);
-                }
-                tags.options = tags.options.withFaceVarying(modes[(int) v]);
-            }
-            case "creasemethod" -> {
-                tags.options = tags.options.withCreasing(switch (strings[0]) {
-                    case "normal" -> SubdivOptions.Creasing.UNIFORM;
-                    case "chaikin" -> SubdivOptions.Creasing.CHAIKIN;
-                    default -> throw error(stringAt[0], "expected normal or chaikin for tag 'creasemethod', found " + MessageText.quote(strings[0])
-                            + SceneGrammar.didYouMean(strings[0], List.of("normal", "chaikin")));
-                });
-            }
-            case "smoothtriangles" -> {
-                tags.options = tags.options.withTriangles(switch (strings[0]) {
-                    case "catmark" -> SubdivOptions.Triangles.CATMARK;
-                    case "smooth" -> SubdivOptions.Triangles.SMOOTH;
-                    default -> throw error(stringAt[0], "expected catmark or smooth for tag 'smoothtriangles', found " + MessageText.quote(strings[0])
-                            + SceneGrammar.didYouMean(strings[0], List.of("catmark", "smooth")));
-                });
-            }
-            case "scheme" -> {
-                SubdivOptions.Scheme s = SubdivOptions.Scheme.ofKeyword(strings[0]);
-                if (s == null) {
-                    throw error(stringAt[0], "expected catmark, loop or bilinear for tag 'scheme', found " + MessageText.quote(strings[0])
-                            + SceneGrammar.didYouMean(strings[0], List.of("catmark", "loop", "bilinear")));
-                }
-                tags.options = tags.options.withScheme(s);
-            }
-            default -> {
-                if (!tags.ignored.contains(name)) tags.ignored.add(name);
-            }
-        }
-    }
-
-    /** "nints/nfloats/nstrings": three counts from 0, separated by slashes. */
-    /** Tag arguments allocated before any is read; the arrays double from there. */
-    private static final int FIRST_ARGS = 16;
-
-    /** The next length of an argument array that is full at {@code length} of {@code count}. */
-    private static int grown(int length, int count) {
-        return (int) Math.min(count, 2L * length);
-    }
-
-    private int[] tagCounts(String name) {
-        int start = pos;
-        int[] counts = new int[3];
-        for (int k = 0; k < 3; k++) {
-            if (k > 0) {
-                if (pos >= end || b[pos] != '/') { pos = start; counts = null; break; }
-                pos++;
-            }
-            int digits = 0;
-            long v = 0;
-            while (pos < end && b[pos] >= '0' && b[pos] <= '9') {
-                if (v < 1L << 40) v = v * 10 + (b[pos] - '0');
-                digits++;
-                pos++;
-            }
-            if (digits == 0 || v > 1_000_000_000) { pos = start; counts = null; break; }
-            counts[k] = (int) v;
-        }
-        if (counts == null || !atTokenEnd()) {
-            pos = start;
-            throw error(start, "expected the argument counts nints/nfloats/nstrings (such as 2/1/0) after 't " + name + "', found " + describe(start));
-        }
-        return counts;
-    }
-
-    /** A decimal integer argument of a tag. */
-    private long tagInteger(String name, String what) {
-        int start = pos;
-        if (atLineEnd()) throw error(start, "expected " + what + " of tag '" + name + "', found " + describe(start));
-        boolean neg = false;
-        if (b[pos] == '-' || b[pos] == '+') neg = b[pos++] == '-';
-        long v = 0;
-        int digits = 0;
-        while (pos < end && b[pos] >= '0' && b[pos] <= '9') {
-            if (v < 1L << 40) v = v * 10 + (b[pos] - '0');
-            digits++;
-            pos++;
-        }
-        if (digits == 0 || !atTokenEnd()) {
-            pos = start;
-            throw error(start, "expected " + what + " of tag '" + name + "', found " + describe(start));
-        }
-        return neg ? -v : v;
-    }
-
-    /** The token at pos (up to a blank, a comment or the line's end), consumed. */
-    private String token() {
-        int start = pos;
-        skipToken();
-        return text(start, pos);
-    }
-
-    private void skipToken() {
-        while (pos < end && !isBlank(b[pos]) && !isLineEnd(b[pos]) && b[pos] != '#') pos++;
-    }
-
-    private static String plural(int n, String word) {
-        return n + " " + word + (n == 1 ? "" : "s");
-    }
-
     /** The mesh and its tags, the tags' indices checked against the whole file's vertices, faces and edges. */
     SubdivInput parseSubdiv() {
         MeshData mesh = parse();
-        int nv = mesh.vertexCount(), nf = mesh.faceCount();
-        int[] creases = new int[tags.creases.size()];
-        Set<Long> edges = null;
-        for (int i = 0; i < creases.length; i += 2) {
-            TagIndex a = tags.creases.get(i), c = tags.creases.get(i + 1);
-            creases[i] = checkIndex(a, nv, "crease vertex", "vertices");
-            creases[i + 1] = checkIndex(c, nv, "crease vertex", "vertices");
-            if (creases[i] == creases[i + 1]) {
-                throw new SceneException(file, c.line, c.column, "crease from vertex " + a.value + " to itself (a crease is an edge: two different vertices)");
-            }
-            if (edges == null) edges = edges(mesh);
-            if (!edges.contains(edgeKey(creases[i], creases[i + 1]))) {
-                throw new SceneException(file, a.line, a.column, "crease " + a.value + " " + c.value + " is not an edge of the mesh (no face has vertices "
-                        + a.value + " and " + c.value + " next to each other; tag indices count from 0)");
-            }
-        }
-        int[] corners = new int[tags.corners.size()];
-        for (int i = 0; i < corners.length; i++) corners[i] = checkIndex(tags.corners.get(i), nv, "corner vertex", "vertices");
-        int[] holes = new int[tags.holes.size()];
-        for (int i = 0; i < holes.length; i++) holes[i] = checkIndex(tags.holes.get(i), nf, "hole face", "faces");
-        float[] cs = new float[tags.creaseSharpness.size()], ks = new float[tags.cornerSharpness.size()];
-        for (int i = 0; i < cs.length; i++) cs[i] = tags.creaseSharpness.get(i);
-        for (int i = 0; i < ks.length; i++) ks[i] = tags.cornerSharpness.get(i);
-        return new SubdivInput(mesh, new SubdivTags(creases, cs, corners, ks, holes, tags.options, tags.ignored));
-    }
-
-    private int checkIndex(TagIndex t, int count, String what, String plural) {
-        if (t.value < 0 || t.value >= count) {
-            throw new SceneException(file, t.line, t.column, what + " " + t.value + " out of range (the file has " + count + " " + plural
-                    + "; tag indices count from 0)");
-        }
-        return (int) t.value;
-    }
-
-    private static long edgeKey(int a, int c) {
-        return ((long) Math.min(a, c) << 32) | Math.max(a, c);
-    }
-
-    private static Set<Long> edges(MeshData m) {
-        Set<Long> set = new HashSet<>();
-        int[] sizes = m.faceSizes(), vi = m.vertexIndex();
-        int corner = 0;
-        for (int size : sizes) {
-            for (int j = 0; j < size; j++) set.add(edgeKey(vi[corner + j], vi[corner + (j + 1) % size]));
-            corner += size;
-        }
-        return set;
+        return new SubdivInput(mesh, tags.resolve(mesh));
     }
 
     /**
@@ -638,7 +372,7 @@ final class ObjParser {
     }
 
     /** A decimal number ([+-] digits [. digits] [e [+-] digits]) ending at a blank, a comment or the line's end. */
-    private double number(String what) {
+    double number(String what) {
         skipBlanks();
         int start = pos;
         if (atLineEnd()) throw error(start, "expected a number for " + what + ", found " + describe(start));
@@ -719,7 +453,7 @@ final class ObjParser {
     private static boolean isLineEnd(byte c) { return c == '\n' || c == '\r'; }
 
     /** Skips spaces and tabs, and a backslash-newline (a continued line). */
-    private void skipBlanks() {
+    void skipBlanks() {
         while (pos < end) {
             byte c = b[pos];
             if (isBlank(c)) {
@@ -734,13 +468,24 @@ final class ObjParser {
     }
 
     /** At the end of the statement: end of file, end of line, or a comment. */
-    private boolean atLineEnd() {
+    boolean atLineEnd() {
         return pos >= end || isLineEnd(b[pos]) || b[pos] == '#';
     }
 
-    private boolean atTokenEnd() {
+    boolean atTokenEnd() {
         return pos >= end || isBlank(b[pos]) || isLineEnd(b[pos]) || b[pos] == '#'
                 || b[pos] == '\\' && pos + 1 < end && isLineEnd(b[pos + 1]);
+    }
+
+    /** The token at pos (up to a blank, a comment or the line's end), consumed. */
+    String token() {
+        int start = pos;
+        skipToken();
+        return text(start, pos);
+    }
+
+    void skipToken() {
+        while (pos < end && !isBlank(b[pos]) && !isLineEnd(b[pos]) && b[pos] != '#') pos++;
     }
 
     /** Skips the rest of the statement, continuation lines included, up to its line end. */
@@ -772,18 +517,18 @@ final class ObjParser {
 
     // ---- messages ----
 
-    private SceneException error(int at, String message) {
+    SceneException error(int at, String message) {
         return new SceneException(file, line, column(at), message);
     }
 
     /** Column of {@code at} on the current line; columns count characters, not bytes (UTF-8 continuation bytes are skipped). */
-    private int column(int at) {
+    int column(int at) {
         int column = 1;
         for (int i = lineStart; i < at && i < end; i++) if ((b[i] & 0xC0) != 0x80) column++;
         return column;
     }
 
-    private String text(int from, int to) {
+    String text(int from, int to) {
         return new String(b, from, to - from, StandardCharsets.UTF_8);
     }
 
@@ -791,7 +536,7 @@ final class ObjParser {
      * Bytes {@code from..to} as a message quotes them ({@link MessageText#quote(String, long, String)}):
      * only the start of a long token is decoded, since a token may be most of the file.
      */
-    private String quote(int from, int to, String mark) {
+    String quote(int from, int to, String mark) {
         long characters = 0;
         int headEnd = to;
         for (int i = from; i < to; i++) {
@@ -803,7 +548,7 @@ final class ObjParser {
     }
 
     /** What is at {@code at}, for "found ..." in messages: a quoted token or a description. */
-    private String describe(int at) {
+    String describe(int at) {
         if (at >= end) return "end of file";
         byte c = b[at];
         if (isLineEnd(c)) return "end of line";
@@ -812,21 +557,5 @@ final class ObjParser {
         int e = at;
         while (e < end && !isBlank(b[e]) && !isLineEnd(b[e])) e++;
         return quote(at, e, "'");
-    }
-
-    /** The tag names OpenSubdiv's shape files use; any other name is an error. */
-    private static final List<String> TAGS = List.of("crease", "corner", "hole", "interpolateboundary",
-            "facevaryinginterpolateboundary", "facevaryingpropagatecorners", "creasemethod", "smoothtriangles",
-            "scheme", "vertexedit", "edgeedit", "faceedit");
-
-    /** An index given in a tag, with where it was written, checked once the mesh is complete. */
-    private record TagIndex(long value, int line, int column) {}
-
-    /** Tags as they are read; tags are few, so plain lists do. */
-    private static final class TagCollector {
-        final List<TagIndex> creases = new ArrayList<>(), corners = new ArrayList<>(), holes = new ArrayList<>();
-        final List<Float> creaseSharpness = new ArrayList<>(), cornerSharpness = new ArrayList<>();
-        final List<String> ignored = new ArrayList<>();
-        SubdivOptions options = SubdivOptions.DEFAULT;
     }
 }

@@ -37,6 +37,9 @@ import lt.spindulys.subdiv.SubdivTags;
  * column of the offending token.
  */
 public final class ObjReader {
+    // The front: reading the file and choosing the parse. The statements are parsed by ObjParser,
+    // the t tags of a control mesh by ObjTags, and a large file's chunks by ObjChunks.
+
     private ObjReader() {}
 
     /**
