@@ -328,10 +328,10 @@ public final class SubdivisionSurface extends GObject {
     public RefinedMesh refined() { return refined; }
     /**
      * The triangles rendered ({@link TriangleMesh#data()}): corners at the refined or the limit
-     * positions ({@link #positions()}), normals and UVs, sharing the mesh's arrays. Once the scene
-     * is built, the vertices are in the order of the acceleration structure.
+     * positions ({@link #positions()}), normals and UVs, copied from the mesh's arrays. Once the
+     * scene is built, the vertices are in the order of the acceleration structure.
      *
-     * @return the triangles, sharing this surface's arrays (do not modify them)
+     * @return a copy of the triangles
      */
     public MeshData triangleData() { return mesh.data(); }
     /**

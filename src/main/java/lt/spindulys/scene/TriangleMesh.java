@@ -293,10 +293,12 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
     /** The structure rays are traced through, once frozen (shared with instances); null before. */
     Accelerator accelerator() { return accel; }
     /**
-     * The mesh as triangles (degenerate ones dropped), sharing this mesh's arrays: positions,
-     * normals and texture coordinates as given, one face of three corners per triangle.
+     * The mesh as triangles (degenerate ones dropped): positions, normals and texture coordinates
+     * as given, one face of three corners per triangle. The arrays are copies, as large as the
+     * mesh's own (nothing in the renderer calls this; it is for callers that read the mesh back):
+     * changing them changes nothing in the mesh.
      *
-     * @return a triangles-only view of the mesh, sharing its arrays (do not modify them)
+     * @return a triangles-only copy of the mesh
      */
     public MeshData data() {
         int[] sizes = new int[triangleCount];
@@ -307,8 +309,12 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
             groups = new int[triangleCount];
             for (int t = 0; t < triangleCount; t++) groups[t] = triGroup[t];
         }
-        return new MeshData(root().pos, normals, uvs, sizes, tri, triNormal, triUv, source, groups, groupNames == null ? null : groupNames.clone());
+        return new MeshData(root().pos.clone(), copyOf(normals), copyOf(uvs), sizes, tri.clone(), copyOf(triNormal), copyOf(triUv), source, groups,
+                groupNames == null ? null : groupNames.clone());
     }
+
+    private static double[] copyOf(double[] a) { return a == null ? null : a.clone(); }
+    private static int[] copyOf(int[] a) { return a == null ? null : a.clone(); }
 
     /**
      * The names of the face groups (the OBJ file's usemtl names), by group index, or null when

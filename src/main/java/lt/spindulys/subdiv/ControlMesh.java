@@ -17,6 +17,10 @@ import java.util.Objects;
  * refused (with an {@link IllegalArgumentException} naming the face, vertex or tag) is input
  * that does not describe a mesh: indices out of range, faces with fewer than 3 corners,
  * non-finite coordinates, tags naming missing vertices, edges or faces.
+ *
+ * <p>The arrays it returns are its own, not copies: a control mesh may hold millions of faces,
+ * the level 0 of its refinement shares them ({@link RefinedMesh}), and the scene reads its
+ * positions and face groups on every adaptive tessellation. Do not modify them.
  */
 public final class ControlMesh {
     /** Sharpness at or above which an edge or vertex is infinitely sharp. */
@@ -118,7 +122,7 @@ public final class ControlMesh {
     public int[] faceSizes() { return faceSizes; }
 
     /**
-     * Vertex index of every face corner, face after face (the mesh's own array).
+     * Vertex index of every face corner, face after face (the mesh's own array: do not modify).
      *
      * @return the corner vertices
      */

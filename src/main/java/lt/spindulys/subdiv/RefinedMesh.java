@@ -5,7 +5,10 @@ import java.util.Arrays;
 /**
  * One level of a subdivided mesh: positions, faces (after the first level quads, or triangles
  * with the Loop scheme), which faces are holes, face-varying UVs, and, on request, limit
- * positions and normals of its vertices. Arrays returned are the mesh's own; do not modify them.
+ * positions and normals of its vertices. Arrays returned are the mesh's own, not copies (except
+ * {@link #edgeVertices()} and {@link #sharpEdges()}, made on each call): a deep level's arrays are
+ * the largest the renderer holds, read once by whatever builds from them (the scene's triangles,
+ * the OBJ writer, the viewer), and a copy would double the memory they take. Do not modify them.
  *
  * <p><b>Numbering</b> (OpenSubdiv Far's, with {@code orderVerticesFromFacesFirst=false}): the
  * vertices of level L are, in order, the children of the vertices of level L-1 (same indices),

@@ -126,9 +126,9 @@ class ObjReaderChunksTest {
 
     @Test
     void chunksAreTakenSpreadOverTheFileEachOnce() {
-        assertArrayEquals(new int[] {0, 4, 2, 6, 1, 3, 5}, ObjReader.ChunkedParse.spread(7));
+        assertArrayEquals(new int[] {0, 4, 2, 6, 1, 3, 5}, ObjChunks.spread(7));
         for (int n = 1; n <= 100; n++) {
-            int[] order = ObjReader.ChunkedParse.spread(n);
+            int[] order = ObjChunks.spread(n);
             int[] sorted = order.clone();
             java.util.Arrays.sort(sorted);
             for (int k = 0; k < n; k++) assertEquals(k, sorted[k], "each of " + n + " chunks once");
@@ -142,7 +142,7 @@ class ObjReaderChunksTest {
         for (int i = 0; i < 2000; i++) s.append("f 1 \\\n 2 \\\r\n 3").append(i % 2 == 0 ? "\n" : "\r\n");
         byte[] bytes = s.toString().getBytes(StandardCharsets.UTF_8);
         for (int chunks : new int[] {2, 7, 300}) {
-            int[] starts = ObjReader.ChunkedParse.split(bytes, chunks);
+            int[] starts = ObjChunks.split(bytes, chunks);
             assertEquals(bytes.length, starts[starts.length - 1]);
             for (int k = 1; k < starts.length - 1; k++) {
                 String before = new String(bytes, starts[k] - 2, 2, StandardCharsets.ISO_8859_1);
