@@ -42,10 +42,17 @@ public final class PatchRefiner {
     private final int[] cornerStart;
     /** Vertex to faces: the faces at vertex v, ascending and each once, are vfFace[vfStart[v] .. vfStart[v+1]-1]. */
     private final int[] vfStart, vfFace;
+    /**
+     * Per vertex, the box (minX, minY, minZ, maxX, maxY, maxZ) of the corners of every face at it:
+     * a face's one-ring box is the union of its corners' boxes, so each face costs its own size
+     * rather than the size of its one-ring (which around a vertex shared by many faces would make
+     * the boxes of all faces cost the square of that number).
+     */
+    private final double[] vertexRingBox;
 
     /**
      * Builds the vertex-to-face incidence of {@code control} (two int arrays as long as its
-     * vertices and its corners).
+     * vertices and its corners) and the box of the faces at each vertex (six doubles a vertex).
      *
      * @param control the control mesh
      */
@@ -83,7 +90,34 @@ public final class PatchRefiner {
         }
         vfStart = start;
         vfFace = faces;
+        vertexRingBox = vertexRingBoxes(control, cornerStart, fv);
         base.edgeCodes();
+    }
+
+    /** {@link #vertexRingBox}: each face's box once, merged into the boxes of its corners. */
+    private static double[] vertexRingBoxes(ControlMesh control, int[] cornerStart, int[] fv) {
+        double[] p = control.positions();
+        int nV = control.vertexCount();
+        double[] out = new double[6 * nV];
+        for (int v = 0; v < nV; v++) {
+            Arrays.fill(out, 6 * v, 6 * v + 3, Double.POSITIVE_INFINITY);
+            Arrays.fill(out, 6 * v + 3, 6 * v + 6, Double.NEGATIVE_INFINITY);
+        }
+        for (int g = 0; g + 1 < cornerStart.length; g++) {
+            double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+            for (int d = cornerStart[g]; d < cornerStart[g + 1]; d++) {
+                int w = 3 * fv[d];
+                x0 = Math.min(x0, p[w]); x1 = Math.max(x1, p[w]);
+                y0 = Math.min(y0, p[w + 1]); y1 = Math.max(y1, p[w + 1]);
+                z0 = Math.min(z0, p[w + 2]); z1 = Math.max(z1, p[w + 2]);
+            }
+            for (int d = cornerStart[g]; d < cornerStart[g + 1]; d++) {
+                int b = 6 * fv[d];
+                out[b] = Math.min(out[b], x0); out[b + 1] = Math.min(out[b + 1], y0); out[b + 2] = Math.min(out[b + 2], z0);
+                out[b + 3] = Math.max(out[b + 3], x1); out[b + 4] = Math.max(out[b + 4], y1); out[b + 5] = Math.max(out[b + 5], z1);
+            }
+        }
+        return out;
     }
 
     /** {@return the control mesh} */
@@ -153,20 +187,13 @@ public final class PatchRefiner {
      * @param out receives the six numbers
      */
     public void oneRingBounds(int face, double[] out) {
-        double[] p = control.positions();
         int[] fv = control.faceVertices();
         double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+        double[] b = vertexRingBox;
         for (int c = cornerStart[face]; c < cornerStart[face + 1]; c++) {
-            int v = fv[c];
-            for (int i = vfStart[v]; i < vfStart[v + 1]; i++) {
-                int g = vfFace[i];
-                for (int d = cornerStart[g]; d < cornerStart[g + 1]; d++) {
-                    int w = 3 * fv[d];
-                    x0 = Math.min(x0, p[w]); x1 = Math.max(x1, p[w]);
-                    y0 = Math.min(y0, p[w + 1]); y1 = Math.max(y1, p[w + 1]);
-                    z0 = Math.min(z0, p[w + 2]); z1 = Math.max(z1, p[w + 2]);
-                }
-            }
+            int w = 6 * fv[c];
+            x0 = Math.min(x0, b[w]); y0 = Math.min(y0, b[w + 1]); z0 = Math.min(z0, b[w + 2]);
+            x1 = Math.max(x1, b[w + 3]); y1 = Math.max(y1, b[w + 4]); z1 = Math.max(z1, b[w + 5]);
         }
         out[0] = x0; out[1] = y0; out[2] = z0; out[3] = x1; out[4] = y1; out[5] = z1;
     }

@@ -347,4 +347,34 @@ class PatchRefinerTest {
         }
         return ControlMesh.builder(p, sizes, fv).build();
     }
+
+    @Test
+    void oneRingBoundsAreTheBoxOfEveryFaceAtTheFacesCorners() {
+        for (String shape : Corpus.shapes().keySet()) {
+            ControlMesh m = Corpus.load(shape);
+            PatchRefiner pr = new PatchRefiner(m);
+            int[] sizes = m.faceSizes(), fv = m.faceVertices(), start = new int[sizes.length + 1];
+            for (int f = 0; f < sizes.length; f++) start[f + 1] = start[f] + sizes[f];
+            double[] p = m.positions(), got = new double[6];
+            for (int f = 0; f < sizes.length; f++) {
+                double[] want = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+                        Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+                for (int c = start[f]; c < start[f + 1]; c++) {
+                    for (int g = 0; g < sizes.length; g++) {
+                        boolean touches = false;
+                        for (int d = start[g]; d < start[g + 1]; d++) touches |= fv[d] == fv[c];
+                        if (!touches) continue;
+                        for (int d = start[g]; d < start[g + 1]; d++) {
+                            for (int k = 0; k < 3; k++) {
+                                want[k] = Math.min(want[k], p[3 * fv[d] + k]);
+                                want[k + 3] = Math.max(want[k + 3], p[3 * fv[d] + k]);
+                            }
+                        }
+                    }
+                }
+                pr.oneRingBounds(f, got);
+                assertTrue(java.util.Arrays.equals(want, got), shape + " face " + f);
+            }
+        }
+    }
 }
