@@ -30,7 +30,8 @@ import lt.spindulys.mesh.MeshData;
  * side tables (and level 0, which may hold other polygons) are refined whole.
  *
  * <p><b>Cost.</b> Per patch, arrays proportional to the pruned levels plus one int per control
- * face of the one-ring; no hash maps, nothing shared and mutable.
+ * face of the one-ring; no hash maps, nothing shared and mutable. A one-ring holds every face at
+ * the face's corners, so a vertex may be shared by at most {@link #MAX_VERTEX_FACES} faces.
  */
 public final class PatchRefiner {
     /** The deepest level a patch may be refined to (as the uniform surface's). */
@@ -49,6 +50,14 @@ public final class PatchRefiner {
      * the boxes of all faces cost the square of that number).
      */
     private final double[] vertexRingBox;
+
+    /**
+     * The most faces that may share one vertex. A patch is refined from every face at its corners,
+     * so the work of the patches around a vertex grows with the square of its faces; OpenSubdiv's
+     * reference shapes go up to 360 (a pole), and a limit well above that keeps any cage's
+     * refinement within a constant factor of its size.
+     */
+    public static final int MAX_VERTEX_FACES = 1024;
 
     /**
      * Builds the vertex-to-face incidence of {@code control} (two int arrays as long as its
@@ -86,6 +95,14 @@ public final class PatchRefiner {
                     lastFace[v] = f;
                     faces[fill[v]++] = f;
                 }
+            }
+        }
+        for (int v = 0; v < nV; v++) {
+            int count = start[v + 1] - start[v];
+            if (count > MAX_VERTEX_FACES) {
+                String at = control.source() == null ? "" : control.source() + ": ";
+                throw new IllegalArgumentException(at + "vertex " + v + " is shared by " + count + " faces (face " + faces[start[v]] + " is the first); adaptive "
+                        + "subdivision supports at most " + MAX_VERTEX_FACES + " at a vertex (repeated faces? refine uniformly with method uniform)");
             }
         }
         vfStart = start;
