@@ -48,7 +48,7 @@ public final class ViewFootprint {
      * @param width image width in pixels, at least 1
      * @param height image height in pixels, at least 1
      * @return the footprint
-     * @throws IllegalArgumentException if a size is not positive or the camera's rays are degenerate
+     * @throws IllegalArgumentException if a size is not positive or the corner rays are not in front of the camera
      */
     public static ViewFootprint of(Camera camera, int width, int height) {
         Objects.requireNonNull(camera, "camera");
@@ -61,7 +61,10 @@ public final class ViewFootprint {
         double hx = 0.5 / width, hy = 0.5 / height;
         double k0 = 1 / smallestStretch(camera, aspect, 0.5 - hx, 0.5 + hx, 0.5 - hy, 0.5 + hy, r);
         if (!(k0 > 0 && k0 < Double.POSITIVE_INFINITY)) {
-            throw new IllegalArgumentException("the camera's rays one pixel apart at the image centre are parallel or not finite");
+            // Rays one pixel apart that doubles cannot tell apart (a field of view of 1e-300
+            // degrees, say): the pixel is narrower than anything measurable, so every edge counts
+            // as many pixels long, and gets the finest level allowed (finer is only slower).
+            k0 = Double.MAX_VALUE;
         }
         // Corners, edge midpoints and points halfway out: the model 1 / cos² against the
         // measured stretch of a one-pixel step there (towards the centre, so inside the image).
@@ -114,6 +117,20 @@ public final class ViewFootprint {
         // Chords, not arcs: a chord is never longer than its angle, so the pixel is never overestimated in size.
         double jx0 = b[0] - a[0], jx1 = b[1] - a[1], jx2 = b[2] - a[2];
         double jy0 = d[0] - c[0], jy1 = d[1] - c[1], jy2 = d[2] - c[2];
+        // Steps too small to square (a tiny field of view) are scaled up by a power of two first,
+        // which changes no bit of the result; steps of ordinary size are left as they are.
+        double largest = Math.max(Math.max(Math.max(Math.abs(jx0), Math.abs(jx1)), Math.abs(jx2)),
+                Math.max(Math.max(Math.abs(jy0), Math.abs(jy1)), Math.abs(jy2)));
+        if (largest > 0 && largest < 0x1p-200) {
+            int shift = -Math.getExponent(largest);
+            return Math.scalb(chordStretch(Math.scalb(jx0, shift), Math.scalb(jx1, shift), Math.scalb(jx2, shift),
+                    Math.scalb(jy0, shift), Math.scalb(jy1, shift), Math.scalb(jy2, shift)), -shift);
+        }
+        return chordStretch(jx0, jx1, jx2, jy0, jy1, jy2);
+    }
+
+    /** The shortest image of a unit film step under the chords jx, jy. */
+    private static double chordStretch(double jx0, double jx1, double jx2, double jy0, double jy1, double jy2) {
         // Smallest singular value of the 3x2 matrix [jx jy]: the shortest image of a unit step.
         double p = jx0 * jx0 + jx1 * jx1 + jx2 * jx2, q = jx0 * jy0 + jx1 * jy1 + jx2 * jy2, s = jy0 * jy0 + jy1 * jy1 + jy2 * jy2;
         double half = (p + s) / 2, dev = Math.hypot((p - s) / 2, q);
@@ -122,7 +139,21 @@ public final class ViewFootprint {
         return Math.sqrt(Math.max(0, small));
     }
 
+    /**
+     * (x, y, z) scaled to length 1; a vector too short to square (the cross product of two corner
+     * rays of a tiny field of view) is scaled up by a power of two first, and the zero vector
+     * stays zero (a frustum side through corner rays that doubles cannot tell apart then clips
+     * nothing, which only counts more of the scene as visible).
+     */
     private static double[] unit(double x, double y, double z) {
+        double m = Math.max(Math.max(Math.abs(x), Math.abs(y)), Math.abs(z));
+        if (m == 0) return new double[3];
+        if (m < 0x1p-200) {
+            int shift = -Math.getExponent(m);
+            x = Math.scalb(x, shift);
+            y = Math.scalb(y, shift);
+            z = Math.scalb(z, shift);
+        }
         double l = Math.sqrt(x * x + y * y + z * z);
         return new double[] {x / l, y / l, z / l};
     }

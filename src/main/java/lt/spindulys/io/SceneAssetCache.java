@@ -313,7 +313,13 @@ final class SceneAssetCache {
                 // The combined method has no limit positions: the level is refused rather than rendered otherwise.
                 if (limit) throw err.error(levelAt, e.getMessage() + "; positions limit needs uniform refinement (the adaptive methods, which render such levels otherwise, have no limit positions)");
                 // Too large to refine whole: the combined method gives the same triangles within the budget.
-                return adaptive(p, f, key, input, AdaptiveSubdivisionSurface.Method.COMBINED, level, null, null, null, smooth);
+                try {
+                    return adaptive(p, f, key, input, AdaptiveSubdivisionSurface.Method.COMBINED, level, null, null, null, smooth);
+                } catch (SceneException a) {
+                    // A mesh the adaptive methods refuse: the level is refused for what the user asked.
+                    if (!(a.getCause() instanceof IllegalArgumentException why)) throw a;
+                    throw err.error(levelAt, e.getMessage() + "; nor can the combined method, which renders such levels otherwise: " + why.getMessage());
+                }
             }
             try {
                 SubdivisionSurface made = new SubdivisionSurface(input.toControlMesh(), level, smooth, positions);

@@ -30,7 +30,8 @@ import lt.spindulys.mesh.MeshData;
  * side tables (and level 0, which may hold other polygons) are refined whole.
  *
  * <p><b>Cost.</b> Per patch, arrays proportional to the pruned levels plus one int per control
- * face of the one-ring; no hash maps, nothing shared and mutable.
+ * face of the one-ring; no hash maps, nothing shared and mutable. A one-ring holds every face at
+ * the face's corners, so a vertex may be shared by at most {@link #MAX_VERTEX_FACES} faces.
  */
 public final class PatchRefiner {
     /** The deepest level a patch may be refined to (as the uniform surface's). */
@@ -42,10 +43,25 @@ public final class PatchRefiner {
     private final int[] cornerStart;
     /** Vertex to faces: the faces at vertex v, ascending and each once, are vfFace[vfStart[v] .. vfStart[v+1]-1]. */
     private final int[] vfStart, vfFace;
+    /**
+     * Per vertex, the box (minX, minY, minZ, maxX, maxY, maxZ) of the corners of every face at it:
+     * a face's one-ring box is the union of its corners' boxes, so each face costs its own size
+     * rather than the size of its one-ring (which around a vertex shared by many faces would make
+     * the boxes of all faces cost the square of that number).
+     */
+    private final double[] vertexRingBox;
+
+    /**
+     * The most faces that may share one vertex. A patch is refined from every face at its corners,
+     * so the work of the patches around a vertex grows with the square of its faces; OpenSubdiv's
+     * reference shapes go up to 360 (a pole), and a limit well above that keeps any cage's
+     * refinement within a constant factor of its size.
+     */
+    public static final int MAX_VERTEX_FACES = 1024;
 
     /**
      * Builds the vertex-to-face incidence of {@code control} (two int arrays as long as its
-     * vertices and its corners).
+     * vertices and its corners) and the box of the faces at each vertex (six doubles a vertex).
      *
      * @param control the control mesh
      */
@@ -81,9 +97,44 @@ public final class PatchRefiner {
                 }
             }
         }
+        for (int v = 0; v < nV; v++) {
+            int count = start[v + 1] - start[v];
+            if (count > MAX_VERTEX_FACES) {
+                String at = control.source() == null ? "" : control.source() + ": ";
+                throw new IllegalArgumentException(at + "vertex " + v + " is shared by " + count + " faces (face " + faces[start[v]] + " is the first); adaptive "
+                        + "subdivision supports at most " + MAX_VERTEX_FACES + " at a vertex (repeated faces? refine uniformly with method uniform)");
+            }
+        }
         vfStart = start;
         vfFace = faces;
+        vertexRingBox = vertexRingBoxes(control, cornerStart, fv);
         base.edgeCodes();
+    }
+
+    /** {@link #vertexRingBox}: each face's box once, merged into the boxes of its corners. */
+    private static double[] vertexRingBoxes(ControlMesh control, int[] cornerStart, int[] fv) {
+        double[] p = control.positions();
+        int nV = control.vertexCount();
+        double[] out = new double[6 * nV];
+        for (int v = 0; v < nV; v++) {
+            Arrays.fill(out, 6 * v, 6 * v + 3, Double.POSITIVE_INFINITY);
+            Arrays.fill(out, 6 * v + 3, 6 * v + 6, Double.NEGATIVE_INFINITY);
+        }
+        for (int g = 0; g + 1 < cornerStart.length; g++) {
+            double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+            for (int d = cornerStart[g]; d < cornerStart[g + 1]; d++) {
+                int w = 3 * fv[d];
+                x0 = Math.min(x0, p[w]); x1 = Math.max(x1, p[w]);
+                y0 = Math.min(y0, p[w + 1]); y1 = Math.max(y1, p[w + 1]);
+                z0 = Math.min(z0, p[w + 2]); z1 = Math.max(z1, p[w + 2]);
+            }
+            for (int d = cornerStart[g]; d < cornerStart[g + 1]; d++) {
+                int b = 6 * fv[d];
+                out[b] = Math.min(out[b], x0); out[b + 1] = Math.min(out[b + 1], y0); out[b + 2] = Math.min(out[b + 2], z0);
+                out[b + 3] = Math.max(out[b + 3], x1); out[b + 4] = Math.max(out[b + 4], y1); out[b + 5] = Math.max(out[b + 5], z1);
+            }
+        }
+        return out;
     }
 
     /** {@return the control mesh} */
@@ -153,20 +204,13 @@ public final class PatchRefiner {
      * @param out receives the six numbers
      */
     public void oneRingBounds(int face, double[] out) {
-        double[] p = control.positions();
         int[] fv = control.faceVertices();
         double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+        double[] b = vertexRingBox;
         for (int c = cornerStart[face]; c < cornerStart[face + 1]; c++) {
-            int v = fv[c];
-            for (int i = vfStart[v]; i < vfStart[v + 1]; i++) {
-                int g = vfFace[i];
-                for (int d = cornerStart[g]; d < cornerStart[g + 1]; d++) {
-                    int w = 3 * fv[d];
-                    x0 = Math.min(x0, p[w]); x1 = Math.max(x1, p[w]);
-                    y0 = Math.min(y0, p[w + 1]); y1 = Math.max(y1, p[w + 1]);
-                    z0 = Math.min(z0, p[w + 2]); z1 = Math.max(z1, p[w + 2]);
-                }
-            }
+            int w = 6 * fv[c];
+            x0 = Math.min(x0, b[w]); y0 = Math.min(y0, b[w + 1]); z0 = Math.min(z0, b[w + 2]);
+            x1 = Math.max(x1, b[w + 3]); y1 = Math.max(y1, b[w + 4]); z1 = Math.max(z1, b[w + 5]);
         }
         out[0] = x0; out[1] = y0; out[2] = z0; out[3] = x1; out[4] = y1; out[5] = z1;
     }

@@ -209,4 +209,20 @@ class SceneParserSubdivTest {
         assertEquals(8, b.fixedLevel());
         assertEquals(SubdivOptions.Scheme.BILINEAR, b.control().options().scheme());
     }
+
+    @Test
+    void aFaceRepeatedThousandsOfTimesIsRefusedByTheAdaptiveMethodsAtTheFile() throws IOException {
+        // Vertex 0 (OBJ's 1) is in 3 faces of the tetrahedron and in each of the 2,000 copies.
+        Files.writeString(dir.resolve("dup.obj"), TET + "f 1 4 2\n".repeat(2000));
+        SceneException lazy = assertThrows(SceneException.class, () -> SceneParser.parse("subdiv {\n  file \"dup.obj\"  method lazy  level 1\n}", "s.dat", dir));
+        assertTrue(lazy.getMessage().startsWith("s.dat:2:8: "), lazy.getMessage());
+        assertTrue(lazy.getMessage().contains("dup.obj: vertex 0 is shared by 2003 faces (face 0 is the first); adaptive subdivision supports at most 1024"),
+                lazy.getMessage());
+        // A uniform level too deep to refine whole would become the combined method, which
+        // cannot take the mesh either: refused at the level, saying both.
+        SceneException uniform = assertThrows(SceneException.class, () -> SceneParser.parse("subdiv {\n  file \"dup.obj\"\n  level 8\n}", "s.dat", dir));
+        assertTrue(uniform.getMessage().startsWith("s.dat:3:3: subdivision level 8 would make "), uniform.getMessage());
+        assertTrue(uniform.getMessage().contains("; nor can the combined method, which renders such levels otherwise: "), uniform.getMessage());
+        assertTrue(uniform.getMessage().contains("vertex 0 is shared by 2003 faces"), uniform.getMessage());
+    }
 }

@@ -347,4 +347,60 @@ class PatchRefinerTest {
         }
         return ControlMesh.builder(p, sizes, fv).build();
     }
+
+    @Test
+    void oneRingBoundsAreTheBoxOfEveryFaceAtTheFacesCorners() {
+        for (String shape : Corpus.shapes().keySet()) {
+            ControlMesh m = Corpus.load(shape);
+            PatchRefiner pr = new PatchRefiner(m);
+            int[] sizes = m.faceSizes(), fv = m.faceVertices(), start = new int[sizes.length + 1];
+            for (int f = 0; f < sizes.length; f++) start[f + 1] = start[f] + sizes[f];
+            double[] p = m.positions(), got = new double[6];
+            for (int f = 0; f < sizes.length; f++) {
+                double[] want = {Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+                        Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY};
+                for (int c = start[f]; c < start[f + 1]; c++) {
+                    for (int g = 0; g < sizes.length; g++) {
+                        boolean touches = false;
+                        for (int d = start[g]; d < start[g + 1]; d++) touches |= fv[d] == fv[c];
+                        if (!touches) continue;
+                        for (int d = start[g]; d < start[g + 1]; d++) {
+                            for (int k = 0; k < 3; k++) {
+                                want[k] = Math.min(want[k], p[3 * fv[d] + k]);
+                                want[k + 3] = Math.max(want[k + 3], p[3 * fv[d] + k]);
+                            }
+                        }
+                    }
+                }
+                pr.oneRingBounds(f, got);
+                assertTrue(java.util.Arrays.equals(want, got), shape + " face " + f);
+            }
+        }
+    }
+
+    /** A tetrahedron with {@code extra} more copies of its second face (vertices 0, 3, 1, counted from 0). */
+    private static ControlMesh tetrahedronWithRepeatedFace(int extra) {
+        double[] p = {1, 1, 1, -1, -1, 1, -1, 1, -1, 1, -1, -1};
+        int[] sizes = new int[4 + extra], fv = new int[3 * (4 + extra)];
+        int[] tet = {0, 1, 2, 0, 3, 1, 0, 2, 3, 1, 3, 2};
+        System.arraycopy(tet, 0, fv, 0, 12);
+        for (int i = 0; i < extra; i++) System.arraycopy(tet, 3, fv, 12 + 3 * i, 3);
+        java.util.Arrays.fill(sizes, 3);
+        return ControlMesh.builder(p, sizes, fv).source("t.obj").build();
+    }
+
+    @Test
+    void aVertexSharedByMoreFacesThanTheLimitIsRefusedNamingIt() {
+        // Vertex 0 is in 3 faces of the tetrahedron and in every copy: 1024 faces are accepted,
+        // and the patches of a face there stay exact.
+        PatchRefiner at = new PatchRefiner(tetrahedronWithRepeatedFace(PatchRefiner.MAX_VERTEX_FACES - 3));
+        assertEquals(PatchRefiner.MAX_VERTEX_FACES + 1, at.faceCount());
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> new PatchRefiner(tetrahedronWithRepeatedFace(PatchRefiner.MAX_VERTEX_FACES - 2)));
+        assertEquals("t.obj: vertex 0 is shared by 1025 faces (face 0 is the first); adaptive subdivision supports at most 1024 at a vertex"
+                + " (repeated faces? refine uniformly with method uniform)", e.getMessage());
+        // 20,000 copies (the gathering of every face's one-ring took minutes, then ran out of
+        // memory): refused at once.
+        assertThrows(IllegalArgumentException.class, () -> new PatchRefiner(tetrahedronWithRepeatedFace(20_000)));
+    }
 }
