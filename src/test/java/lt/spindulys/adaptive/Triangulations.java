@@ -60,6 +60,28 @@ final class Triangulations {
         };
     }
 
+    static View of(TrianglePattern p) {
+        return new View() {
+            public int vertexCount() { return p.vertexCount(); }
+            public int triangleCount() { return p.triangleCount(); }
+            public void triangle(int t, int[] out) { p.triangle(t, out); }
+            public long u(int n) { int[] ij = p.ij(n); return p.uLattice(ij[0], ij[1]); }
+            public long v(int n) { int[] ij = p.ij(n); return p.vLattice(ij[0], ij[1]); }
+            public long uScale() { return p.uScale(); }
+            public long vScale() { return p.vScale(); }
+            public double uDouble(int n) { int[] ij = p.ij(n); return p.u(ij[0], ij[1]); }
+            public double vDouble(int n) { int[] ij = p.ij(n); return p.v(ij[0], ij[1]); }
+            public int doubledDomainArea() { return 1; }
+            public int edges() { return 3; }
+            public int gridRate(int e) { return p.rate(); }
+            public int edgeVertex(int e, int k) { return p.edgeVertex(e, k); }
+            public boolean isSnapped(int e) { return p.isSnapped(e); }
+            public int orientation(int t) { return p.orientation(t); }
+            public int zeroAreaTriangles() { return p.zeroAreaTriangles(); }
+            @Override public String toString() { return p.toString(); }
+        };
+    }
+
     private static long key(int a, int b) { return (long) a << 32 | b; }
 
     /**
