@@ -163,5 +163,7 @@ class FacePatternTest {
         assertEquals(7, faceLevel);
         assertEquals(2L * 128 * 128, FacePattern.powerOfTwoTriangles(rates));
         assertTrue(p.triangleCount() * 12 < FacePattern.powerOfTwoTriangles(rates), "more than 12 times fewer");
+        System.out.println("FacePatternTest: a face of about 68 x 19 pixels at target 1: rates " + java.util.Arrays.toString(rates) + ", "
+                + p.triangleCount() + " triangles; levels " + java.util.Arrays.toString(levels) + ", " + FacePattern.powerOfTwoTriangles(rates) + " triangles");
     }
 }
