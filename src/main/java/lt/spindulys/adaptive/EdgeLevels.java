@@ -30,6 +30,8 @@ import lt.spindulys.math.Vec3;
  * an edge moves far compared with its distance from the eye; where it costs a level over both
  * sampled ends, the interval is bounded again in {@link #STEPS} finer steps (each as rigorous), so
  * the extra evaluations go only to the few edges that sweep close past the camera.
+ *
+ * <p>{@link EdgeRates} turns the same projected lengths into integer segment counts.
  */
 public final class EdgeLevels {
     /** Intervals between the placement's samples over the shutter of a moving object: 9 times inside plus the open and close times. */

@@ -80,16 +80,21 @@ class EdgeRatesTest {
     }
 
     @Test
-    void bothOrdersOfAnEdgesEndsGiveTheSameRate() {
+    void oneRatePerControlEdgeWhateverTheOrderOfItsEnds() {
+        // Both faces read the one entry of the control edge; the order of its ends (which the
+        // faces would see differently) moves the footprint by rounding at most.
         ViewFootprint v = ViewFootprint.of(PINHOLE, W, H);
         SplittableRandom rnd = new SplittableRandom(11);
+        int same = 0;
         for (int n = 0; n < 200; n++) {
             double[] pos = new double[6];
             for (int k = 0; k < 6; k++) pos[k] = rnd.nextDouble(-15, 15);
             int[] ab = EdgeRates.perEdge(v, pos, new int[] {0, 1}, Placement.IDENTITY, 0.5, 4096, 4);
             int[] ba = EdgeRates.perEdge(v, pos, new int[] {1, 0}, Placement.IDENTITY, 0.5, 4096, 4);
-            assertTrue(Math.abs(ab[0] - ba[0]) <= 1, "one edge seen from its two faces");
+            assertTrue(Math.abs(ab[0] - ba[0]) <= 1, "one edge, its ends in either order");
+            if (ab[0] == ba[0]) same++;
         }
+        assertTrue(same >= 190, same + " of 200 equal");
     }
 
     @Test

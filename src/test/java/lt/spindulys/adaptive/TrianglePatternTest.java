@@ -51,6 +51,25 @@ class TrianglePatternTest {
         assertThrows(IllegalArgumentException.class, () -> new TrianglePattern(1, 0, 1));
     }
 
+    @Test
+    void rowsAreFoundAtTheirBoundsForLargeRates() {
+        int[] got = new int[6];
+        for (int r : new int[] {1, 2, 3, 97, 4096}) {
+            TrianglePattern p = new TrianglePattern(r, 1, r);
+            for (int j = 0; j < r; j += Math.max(1, r / 50)) {
+                int start = j * (2 * r - j);
+                p.triangleIJ(start, got);
+                assertArrayEquals(new int[] {0, j, 1, j, 0, j + 1}, got, "first of row " + j + " at rate " + r);
+                if (j > 0) {
+                    p.triangleIJ(start - 1, got);
+                    assertArrayEquals(new int[] {r - j, j - 1, r - j + 1, j - 1, r - j, j}, got, "last of row " + (j - 1) + " at rate " + r);
+                }
+            }
+            p.triangleIJ(r * r - 1, got);
+            assertArrayEquals(new int[] {0, r - 1, 1, r - 1, 0, r}, got, "the top at rate " + r);
+        }
+    }
+
     /** (c) for Loop triangles. */
     @Test
     void theTrianglesCoverTheTriangleExactlyOnce() {
