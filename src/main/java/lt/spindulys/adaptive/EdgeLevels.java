@@ -1,6 +1,7 @@
 package lt.spindulys.adaptive;
 
 import java.util.Objects;
+import java.util.function.DoubleToIntFunction;
 
 import lt.spindulys.limits.HeapBudget;
 import lt.spindulys.math.Placement;
@@ -29,6 +30,8 @@ import lt.spindulys.math.Vec3;
  * an edge moves far compared with its distance from the eye; where it costs a level over both
  * sampled ends, the interval is bounded again in {@link #STEPS} finer steps (each as rigorous), so
  * the extra evaluations go only to the few edges that sweep close past the camera.
+ *
+ * <p>{@link EdgeRates} turns the same projected lengths into integer segment counts.
  */
 public final class EdgeLevels {
     /** Intervals between the placement's samples over the shutter of a moving object: 9 times inside plus the open and close times. */
@@ -79,17 +82,28 @@ public final class EdgeLevels {
      */
     public static void perEdgeMax(ViewFootprint view, double[] positions, int[] edgeVertices, Placement placement,
                                   double targetPixels, int maxLevel, double offscreenScale, int[] levelsInOut) {
+        checkTarget(targetPixels, maxLevel);
+        raise(view, positions, edgeVertices, placement, pixels -> levelFor(pixels, targetPixels, maxLevel), maxLevel, offscreenScale, levelsInOut, "levels");
+    }
+
+    /**
+     * The common core of levels and rates ({@link EdgeRates}): per edge, the projected length in
+     * pixels (bounded over the shutter as the class comment says), turned into an integer by
+     * {@code quantize} (non-decreasing in the length), raising {@code valuesInOut} where that is
+     * higher. Edges already at {@code max} or above are skipped; {@code noun} names the array in messages.
+     */
+    static void raise(ViewFootprint view, double[] positions, int[] edgeVertices, Placement placement,
+                      DoubleToIntFunction quantize, int max, double offscreenScale, int[] valuesInOut, String noun) {
         Objects.requireNonNull(view, "view");
         Objects.requireNonNull(positions, "positions");
         Objects.requireNonNull(edgeVertices, "edgeVertices");
         Objects.requireNonNull(placement, "placement");
-        Objects.requireNonNull(levelsInOut, "levelsInOut");
-        checkTarget(targetPixels, maxLevel);
+        Objects.requireNonNull(valuesInOut, "valuesInOut");
         ViewFootprint.checkOffscreenScale(offscreenScale);
         if (positions.length % 3 != 0) throw new IllegalArgumentException("positions hold x, y, z per point, but their count " + positions.length + " is not a multiple of 3");
         if (edgeVertices.length % 2 != 0) throw new IllegalArgumentException("edges hold 2 vertices each, but their count " + edgeVertices.length + " is odd");
         int edges = edgeVertices.length / 2, points = positions.length / 3;
-        if (levelsInOut.length != edges) throw new IllegalArgumentException("levels array has " + levelsInOut.length + " entries for " + edges + " edges");
+        if (valuesInOut.length != edges) throw new IllegalArgumentException(noun + " array has " + valuesInOut.length + " entries for " + edges + " edges");
         for (int e = 0; e < edges; e++) {
             for (int k = 0; k < 2; k++) {
                 int v = edgeVertices[2 * e + k];
@@ -102,7 +116,7 @@ public final class EdgeLevels {
         double[] m = matrices(placement);
         double[] a0 = new double[3], b0 = new double[3], a1 = new double[3], b1 = new double[3];
         for (int e = 0; e < edges; e++) {
-            if (levelsInOut[e] >= maxLevel) continue;
+            if (valuesInOut[e] >= max) continue;
             int va = 3 * edgeVertices[2 * e], vb = 3 * edgeVertices[2 * e + 1];
             double pixels;
             if (m.length == 12) {
@@ -124,7 +138,7 @@ public final class EdgeLevels {
                     double p = between(view, a0, b0, a1, b1, offscreenScale);
                     // Where the padding costs a level over both sampled ends, the finer steps
                     // (each as rigorous) may win it back.
-                    if (levelFor(p, targetPixels, maxLevel) > levelFor(Math.max(atStart, atEnd), targetPixels, maxLevel)) {
+                    if (quantize.applyAsInt(p) > quantize.applyAsInt(Math.max(atStart, atEnd))) {
                         double fine = 0;
                         for (int k = k0; k < k1 && fine < p; k++) {
                             apply(m, k, positions, va, a0);
@@ -140,8 +154,8 @@ public final class EdgeLevels {
                     atStart = atEnd;
                 }
             }
-            int level = levelFor(pixels, targetPixels, maxLevel);
-            if (level > levelsInOut[e]) levelsInOut[e] = level;
+            int value = quantize.applyAsInt(pixels);
+            if (value > valuesInOut[e]) valuesInOut[e] = value;
         }
     }
 
