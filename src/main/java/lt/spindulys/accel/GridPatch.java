@@ -28,9 +28,10 @@ import lt.spindulys.math.Ray;
  * <p><b>Hierarchy.</b> A vertex range larger than a leaf ({@link #leafSize()} vertices per side) is halved along
  * its longer side (in cells), and each half that is still larger than a leaf halved again along its own longer
  * side: up to four children per node, the halves sharing their middle row or column of vertices. One node is one
- * contiguous record of {@value #NODE_INTS} ints: per child its box (min x, y, z, max x, y, z as float bits, from
- * the float vertices, so exact), its vertex ranges (i0 | i1 &lt;&lt; 16, j0 | j1 &lt;&lt; 16, inclusive) and its
- * node index ({@code LEAF} for a leaf, {@code EMPTY} for an unused slot, always after the used ones).
+ * contiguous record of {@value #NODE_INTS} ints: the four children's boxes as float bits, one row of four per
+ * bound (min x, y, z, max x, y, z; from the float vertices, so exact), then per child its vertex ranges
+ * (i0 | i1 &lt;&lt; 16, then j0 | j1 &lt;&lt; 16, inclusive) and its node index ({@code LEAF} for a leaf,
+ * {@code EMPTY} for an unused slot, always after the used ones).
  *
  * <p>Immutable once made: any number of threads may trace one; all per-ray state is in the caller's
  * {@link TraversalScratch}, and a query allocates nothing.
@@ -39,10 +40,13 @@ public final class GridPatch {
     /** The largest number of vertices per side (ranges are packed in 16 bits). */
     public static final int MAX_SIDE = 8193;
     /** Leaf size (vertices per side) used when none is given; chosen by measurement (see the tests' benchmark). */
-    public static final int DEFAULT_LEAF_SIZE = 5;
+    public static final int DEFAULT_LEAF_SIZE = 3;
 
-    static final int NODE_INTS = 36, CHILD_INTS = 9;
+    /** A node record: the children's boxes as six rows of four (min x, y, z, max x, y, z), then four each of i ranges, j ranges and child references. */
+    static final int NODE_INTS = 36, I_RANGES = 24, J_RANGES = 28, REFS = 32;
     static final int LEAF = -1, EMPTY = -2;
+    /** The relative widening of a slab interval (as {@link Bvh}'s). */
+    private static final double PAD = 4 * 3 * 0x1p-53 / (1 - 3 * 0x1p-53);
 
     private final int nu, nv, leafSize;
     private final float[] pos, normals, uv;
@@ -236,36 +240,33 @@ public final class GridPatch {
             int children = split(i0, i1, j0, j1, ranges, 0);
             int[] r = ranges.clone(); // the recursion reuses ranges; building is not per ray
             int base = n * NODE_INTS;
-            for (int c = 0; c < 4; c++) {
-                int co = base + c * CHILD_INTS;
-                if (c >= children) {
-                    nodes[co] = nodes[co + 1] = nodes[co + 2] = Float.floatToRawIntBits(Float.POSITIVE_INFINITY);
-                    nodes[co + 3] = nodes[co + 4] = nodes[co + 5] = Float.floatToRawIntBits(Float.NEGATIVE_INFINITY);
-                    nodes[co + 8] = EMPTY;
-                    continue;
-                }
-                int a0 = r[4 * c], a1 = r[4 * c + 1], b0 = r[4 * c + 2], b1 = r[4 * c + 3];
-                nodes[co + 6] = a0 | a1 << 16;
-                nodes[co + 7] = b0 | b1 << 16;
-                if (fits(a1 - a0, b1 - b0)) {
-                    leafBox(a0, a1, b0, b1, nodes, co);
-                    nodes[co + 8] = LEAF;
-                } else {
-                    int[] childBox = new int[6];
-                    int child = build(a0, a1, b0, b1, childBox, 0, level + 1);
-                    System.arraycopy(childBox, 0, nodes, co, 6);
-                    nodes[co + 8] = child;
-                }
-            }
-            // the node's own box: the union of its children's
+            int[] childBox = new int[6];
             float[] u = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY,
                 Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY};
-            for (int c = 0; c < children; c++) {
-                int co = base + c * CHILD_INTS;
-                for (int k = 0; k < 3; k++) {
-                    u[k] = Math.min(u[k], Float.intBitsToFloat(nodes[co + k]));
-                    u[k + 3] = Math.max(u[k + 3], Float.intBitsToFloat(nodes[co + k + 3]));
+            for (int c = 0; c < 4; c++) {
+                int ref;
+                if (c >= children) {
+                    childBox[0] = childBox[1] = childBox[2] = Float.floatToRawIntBits(Float.POSITIVE_INFINITY);
+                    childBox[3] = childBox[4] = childBox[5] = Float.floatToRawIntBits(Float.NEGATIVE_INFINITY);
+                    ref = EMPTY;
+                } else {
+                    int a0 = r[4 * c], a1 = r[4 * c + 1], b0 = r[4 * c + 2], b1 = r[4 * c + 3];
+                    nodes[base + I_RANGES + c] = a0 | a1 << 16;
+                    nodes[base + J_RANGES + c] = b0 | b1 << 16;
+                    if (fits(a1 - a0, b1 - b0)) {
+                        leafBox(a0, a1, b0, b1, childBox, 0);
+                        ref = LEAF;
+                    } else {
+                        ref = build(a0, a1, b0, b1, childBox, 0, level + 1);
+                    }
+                    // the node's own box: the union of its children's
+                    for (int k = 0; k < 3; k++) {
+                        u[k] = Math.min(u[k], Float.intBitsToFloat(childBox[k]));
+                        u[k + 3] = Math.max(u[k + 3], Float.intBitsToFloat(childBox[k + 3]));
+                    }
                 }
+                for (int k = 0; k < 6; k++) nodes[base + 4 * k + c] = childBox[k];
+                nodes[base + REFS + c] = ref;
             }
             for (int k = 0; k < 6; k++) out[o + k] = Float.floatToRawIntBits(u[k]);
             return n;
@@ -330,8 +331,12 @@ public final class GridPatch {
         ctx.direction(ray);
         final double ox = ray.ox, oy = ray.oy, oz = ray.oz;
         final double ix = ctx.invX, iy = ctx.invY, iz = ctx.invZ;
-        final int xn = ix < 0 ? 3 : 0, yn = iy < 0 ? 3 : 0, zn = iz < 0 ? 3 : 0;
-        if (Double.isNaN(Bvh.slabEntry(box, 0, ox, oy, oz, ix, iy, iz, xn, yn, zn, ray.tMin, ray.tMax))) return false;
+        if (Double.isNaN(Bvh.slabEntry(box, 0, ox, oy, oz, ix, iy, iz, ix < 0 ? 3 : 0, iy < 0 ? 3 : 0, iz < 0 ? 3 : 0,
+                ray.tMin, ray.tMax))) {
+            return false;
+        }
+        // offsets of the near planes in a node record (the far ones are 12 further, or 12 nearer)
+        final int xn = ix < 0 ? 12 : 0, yn = iy < 0 ? 12 : 0, zn = iz < 0 ? 12 : 0;
         final double saved = ray.tMax;
         if (nodeCount == 0) {
             boolean any = leaf(0, nu - 1, 0, nv - 1, ray, hit, ctx);
@@ -357,12 +362,25 @@ public final class GridPatch {
                     final double tMin = ray.tMin, tMax = ray.tMax;
                     final int first = sp;
                     for (int c = 0; c < 4; c++) {
-                        final int co = b + c * CHILD_INTS;
-                        final int ref = nodes[co + 8];
+                        final int ref = nodes[b + REFS + c];
                         if (ref == EMPTY) break;
-                        double t = Bvh.slabEntry(nodes, co, ox, oy, oz, ix, iy, iz, xn, yn, zn, tMin, tMax);
-                        if (Double.isNaN(t)) continue;
-                        int tb = Float.floatToRawIntBits(Bvh.down(t));
+                        // slab test; a NaN (origin on a plane the ray runs in) leaves near or far as they were
+                        double near = tMin, far = tMax, t;
+                        t = (Float.intBitsToFloat(nodes[b + xn + c]) - ox) * ix;
+                        if (t > near) near = t;
+                        t = (Float.intBitsToFloat(nodes[b + 12 - xn + c]) - ox) * ix;
+                        if (t < far) far = t;
+                        t = (Float.intBitsToFloat(nodes[b + 4 + yn + c]) - oy) * iy;
+                        if (t > near) near = t;
+                        t = (Float.intBitsToFloat(nodes[b + 16 - yn + c]) - oy) * iy;
+                        if (t < far) far = t;
+                        t = (Float.intBitsToFloat(nodes[b + 8 + zn + c]) - oz) * iz;
+                        if (t > near) near = t;
+                        t = (Float.intBitsToFloat(nodes[b + 20 - zn + c]) - oz) * iz;
+                        if (t < far) far = t;
+                        // widened as Bvh.slabEntry does, so rounding never drops a box the ray touches
+                        if (near - PAD * Math.abs(near) > far + PAD * Math.abs(far)) continue;
+                        int tb = Float.floatToRawIntBits(Bvh.down(near - PAD * Math.abs(near)));
                         // insertion: entries pushed for this node stay sorted, the nearest on top
                         int at = sp;
                         if (hit != null) {
@@ -372,7 +390,7 @@ public final class GridPatch {
                                 at -= 4;
                             }
                         }
-                        stack[at] = ref; stack[at + 1] = nodes[co + 6]; stack[at + 2] = nodes[co + 7]; stack[at + 3] = tb;
+                        stack[at] = ref; stack[at + 1] = nodes[b + I_RANGES + c]; stack[at + 2] = nodes[b + J_RANGES + c]; stack[at + 3] = tb;
                         sp += 4;
                     }
                 }
