@@ -366,28 +366,25 @@ public final class GridPatch implements CachedPatch {
                 } else {
                     final int b = n * NODE_INTS;
                     final double tMin = ray.tMin, tMax = ray.tMax;
+                    // an unused slot's box is inverted (min +inf, max -inf): no ray enters it
+                    final double d0 = entry(nodes, b, xn, yn, zn, ox, oy, oz, ix, iy, iz, tMin, tMax);
+                    final double d1 = entry(nodes, b + 1, xn, yn, zn, ox, oy, oz, ix, iy, iz, tMin, tMax);
+                    final double d2 = entry(nodes, b + 2, xn, yn, zn, ox, oy, oz, ix, iy, iz, tMin, tMax);
+                    final double d3 = entry(nodes, b + 3, xn, yn, zn, ox, oy, oz, ix, iy, iz, tMin, tMax);
+                    final int mask = (d0 < MISS ? 1 : 0) | (d1 < MISS ? 2 : 0) | (d2 < MISS ? 4 : 0) | (d3 < MISS ? 8 : 0);
+                    if (mask != 0 && (mask & (mask - 1)) == 0) { // one child: entered without the stack
+                        final int c = Integer.numberOfTrailingZeros(mask);
+                        n = nodes[b + REFS + c];
+                        ir = nodes[b + I_RANGES + c];
+                        jr = nodes[b + J_RANGES + c];
+                        continue;
+                    }
+                    // several: pushed with their entry distances rounded down to floats, those of this node kept
+                    // sorted (for a nearest hit) with the nearest on top
                     final int first = sp;
-                    for (int c = 0; c < 4; c++) {
-                        final int ref = nodes[b + REFS + c];
-                        if (ref == EMPTY) break;
-                        // slab test; a NaN (origin on a plane the ray runs in) leaves near or far as they were
-                        double near = tMin, far = tMax, t;
-                        t = (Float.intBitsToFloat(nodes[b + xn + c]) - ox) * ix;
-                        if (t > near) near = t;
-                        t = (Float.intBitsToFloat(nodes[b + 12 - xn + c]) - ox) * ix;
-                        if (t < far) far = t;
-                        t = (Float.intBitsToFloat(nodes[b + 4 + yn + c]) - oy) * iy;
-                        if (t > near) near = t;
-                        t = (Float.intBitsToFloat(nodes[b + 16 - yn + c]) - oy) * iy;
-                        if (t < far) far = t;
-                        t = (Float.intBitsToFloat(nodes[b + 8 + zn + c]) - oz) * iz;
-                        if (t > near) near = t;
-                        t = (Float.intBitsToFloat(nodes[b + 20 - zn + c]) - oz) * iz;
-                        if (t < far) far = t;
-                        // widened as Bvh.slabEntry does, so rounding never drops a box the ray touches
-                        if (near - PAD * Math.abs(near) > far + PAD * Math.abs(far)) continue;
-                        int tb = Float.floatToRawIntBits(Bvh.down(near - PAD * Math.abs(near)));
-                        // insertion: entries pushed for this node stay sorted, the nearest on top
+                    for (int bits = mask; bits != 0; bits &= bits - 1) {
+                        final int c = Integer.numberOfTrailingZeros(bits);
+                        final int tb = Float.floatToRawIntBits(Bvh.down(c == 0 ? d0 : c == 1 ? d1 : c == 2 ? d2 : d3));
                         int at = sp;
                         if (hit != null) {
                             while (at > first && Float.intBitsToFloat(stack[at - 1]) < Float.intBitsToFloat(tb)) {
@@ -396,7 +393,10 @@ public final class GridPatch implements CachedPatch {
                                 at -= 4;
                             }
                         }
-                        stack[at] = ref; stack[at + 1] = nodes[b + I_RANGES + c]; stack[at + 2] = nodes[b + J_RANGES + c]; stack[at + 3] = tb;
+                        stack[at] = nodes[b + REFS + c];
+                        stack[at + 1] = nodes[b + I_RANGES + c];
+                        stack[at + 2] = nodes[b + J_RANGES + c];
+                        stack[at + 3] = tb;
                         sp += 4;
                     }
                 }
@@ -417,6 +417,33 @@ public final class GridPatch implements CachedPatch {
             ctx.stackTop = base;
         }
         return any;
+    }
+
+    private static final double MISS = Double.POSITIVE_INFINITY;
+
+    /**
+     * The entry distance of child {@code o - (node record)} of a node: the slab test against [tMin, tMax], widened
+     * as {@link Bvh#slabEntry} widens it so that rounding never drops a box the ray touches, or {@code MISS}. A NaN
+     * (the origin on a plane the ray runs in) leaves near or far as they were.
+     */
+    private static double entry(int[] nodes, int o, int xn, int yn, int zn, double ox, double oy, double oz,
+                                double ix, double iy, double iz, double tMin, double tMax) {
+        double near = tMin, far = tMax, t;
+        t = (Float.intBitsToFloat(nodes[o + xn]) - ox) * ix;
+        if (t > near) near = t;
+        t = (Float.intBitsToFloat(nodes[o + 12 - xn]) - ox) * ix;
+        if (t < far) far = t;
+        t = (Float.intBitsToFloat(nodes[o + 4 + yn]) - oy) * iy;
+        if (t > near) near = t;
+        t = (Float.intBitsToFloat(nodes[o + 16 - yn]) - oy) * iy;
+        if (t < far) far = t;
+        t = (Float.intBitsToFloat(nodes[o + 8 + zn]) - oz) * iz;
+        if (t > near) near = t;
+        t = (Float.intBitsToFloat(nodes[o + 20 - zn]) - oz) * iz;
+        if (t < far) far = t;
+        near -= PAD * Math.abs(near);
+        far += PAD * Math.abs(far);
+        return near <= far ? near : MISS;
     }
 
     /**

@@ -59,7 +59,10 @@ class GridPatchTest {
         return true;
     }
 
-    /** Random rays at a grid: down onto it from above, across it at grazing angles, and at its vertices. */
+    /**
+     * Random rays at a grid: down onto it from above, across it at grazing angles, at its vertices, and along the
+     * axes.
+     */
     private static void randomRays(GridPatch g, long seed, int count, String what) {
         Reference ref = new Reference(g);
         TraversalScratch ctx = new TraversalScratch();
@@ -79,6 +82,8 @@ class GridPatchTest {
             if (k % 2 == 0) { ox = tx + rnd.nextGaussian() * 0.3; oy = ty + rnd.nextGaussian() * 0.3; oz = 2 + rnd.nextDouble(); }
             else { ox = tx + 3 * rnd.nextGaussian(); oy = ty + 3 * rnd.nextGaussian(); oz = tz + 0.2 * rnd.nextGaussian(); }
             ray.set(ox, oy, oz, tx - ox, ty - oy, tz - oz, 0, k % 5 == 0 ? 0.999 : Double.POSITIVE_INFINITY);
+            if (k % 7 == 6) ray.set(tx, ty, 2, 0, 0, -1, 0, Double.POSITIVE_INFINITY); // along an axis: infinite inverses
+            if (k % 11 == 10) ray.set(-1, ty, tz, 1, 0, 0, 0, Double.POSITIVE_INFINITY);
             if (agree(g, ref, ray, ctx, what + " ray " + k)) hits++;
         }
         assertTrue(hits > count / 4, what + ": " + hits + " of " + count + " rays hit");
