@@ -32,7 +32,9 @@ import lt.spindulys.math.Ray;
  * contiguous record of {@value #NODE_INTS} ints: the four children's boxes as float bits, one row of four per
  * bound (min x, y, z, max x, y, z; from the float vertices, so exact), then per child its vertex ranges
  * (i0 | i1 &lt;&lt; 16, then j0 | j1 &lt;&lt; 16, inclusive) and its node index ({@code LEAF} for a leaf,
- * {@code EMPTY} for an unused slot, always after the used ones).
+ * {@code EMPTY} for an unused slot, always after the used ones, whose box is inverted so that no ray enters it).
+ * A node's four boxes are tested before any child is entered; a single child hit is entered directly, several
+ * are pushed on the caller's {@link TraversalScratch#stack} with their entry distances, nearest on top.
  *
  * <p>Memory ({@link #bytes}): 12 bytes per vertex (about 6 per triangle) and 144 per node; with the default
  * leaves of 3 x 3 vertices about 12 bytes per triangle in all, with leaves of 5 x 5 about 8, plus 6 per triangle
