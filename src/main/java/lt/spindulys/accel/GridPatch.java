@@ -145,16 +145,17 @@ public final class GridPatch implements CachedPatch {
     public boolean hasNormals() { return normals != null; }
 
     /**
-     * The heap this grid retains: a 64-byte object, plus per array (positions, the node records, and normals and
-     * parameters when present) a 16-byte header and its elements rounded up to 8 bytes. For nu x nv vertices and
-     * N nodes that is 64 + 16 + 12 nu nv + 16 + 144 N (+ 16 + 12 nu nv with normals, + 16 + 8 nu nv with
-     * parameters), up to the rounding.
+     * The heap this grid retains: 128 bytes for the object and its six-int box (an 88-byte object with compressed
+     * references, a 40-byte array), plus per array (positions, the node records, and normals and parameters when
+     * present) a 16-byte header and its elements rounded up to 8 bytes. For nu x nv vertices and N nodes that is
+     * 128 + 16 + 12 nu nv + 16 + 144 N (+ 16 + 12 nu nv with normals, + 16 + 8 nu nv with parameters), up to the
+     * rounding.
      *
      * @return bytes, for a cache's budget
      */
     @Override
     public long bytes() {
-        return 64 + array(pos.length) + array(nodes.length) + (normals == null ? 0 : array(normals.length))
+        return 128 + array(pos.length) + array(nodes.length) + (normals == null ? 0 : array(normals.length))
                 + (uv == null ? 0 : array(uv.length));
     }
 

@@ -8,7 +8,7 @@ import lt.spindulys.math.Ray;
 /**
  * A micro benchmark, not a test (run by hand): build time, rays per second and bytes per triangle of a
  * {@link GridPatch} (for several leaf sizes) against today's per-patch route, a binary SAH {@link Bvh} over the same
- * triangles collapsed into a {@link WideBvh}, on bumpy grids of 65 x 65 and 257 x 257 vertices. One thread.
+ * triangles collapsed into a {@link WideBvh}, on bumpy grids of 17 x 17 (one cache piece), 65 x 65 and 257 x 257 vertices. One thread.
  *
  * <pre>
  * mvn -q -o test-compile
@@ -27,7 +27,7 @@ public final class GridPatchBenchmark {
         for (int leaf : LEAVES) for (int i = 0; i < 500; i++) new GridPatch(33, 33, small, null, null, leaf);
         PrimitiveSet smallSet = new Reference(new GridPatch(33, 33, small, null, null, 3)).set();
         for (int i = 0; i < 100; i++) WideBvh.widen(new Bvh(smallSet, Bvh.DEFAULT_LEAF_SIZE, false));
-        for (int n : new int[] {65, 257}) {
+        for (int n : new int[] {17, 65, 257}) {
             bench(n);
         }
     }
@@ -43,7 +43,7 @@ public final class GridPatchBenchmark {
 
         Reference ref = new Reference(new GridPatch(n, n, f, null, null, 0, 0, 1, 1, 5));
         PrimitiveSet set = ref.set();
-        int reps = n > 100 ? 30 : 100;
+        int reps = n > 100 ? 30 : n > 20 ? 100 : 1000;
         Accelerator[] bvh = new Accelerator[1];
         long bvhBuild = best(reps, () -> bvh[0] = WideBvh.widen(new Bvh(set, Bvh.DEFAULT_LEAF_SIZE, false)));
         Accelerator bin = new Bvh(set, Bvh.DEFAULT_LEAF_SIZE, false);
