@@ -1,0 +1,529 @@
+package lt.spindulys.accel;
+
+import java.util.Arrays;
+import lt.spindulys.adaptive.CachedPatch;
+import lt.spindulys.math.Ray;
+
+/**
+ * A regular grid of vertices as a ray tracing primitive, in the spirit of Embree's {@code GridSOA}: nu x nv
+ * float positions with implicit topology and a hierarchy cut from the grid by halving its index ranges, so that
+ * nothing is sorted and no triangle index is stored.
+ *
+ * <p><b>Topology.</b> Vertex (i, j), 0 &lt;= i &lt; nu, 0 &lt;= j &lt; nv, is number {@code j * nu + i}. Cell (i, j)
+ * spans vertices (i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1) and is cut along its (i, j)-(i + 1, j + 1)
+ * diagonal into triangle A = ((i, j), (i + 1, j), (i + 1, j + 1)) and triangle B = ((i, j), (i + 1, j + 1),
+ * (i, j + 1)). Triangle {@code sub = 2 * (j * (nu - 1) + i)} is A of cell (i, j), {@code sub + 1} its B
+ * ({@link #triangleVertex}). Vertices may repeat (a grid snapped to a coarser edge): the triangles they make have
+ * no area and are never hit.
+ *
+ * <p><b>Hits.</b> The triangle test is {@link WatertightTriangles}'s, in double arithmetic on the float vertices,
+ * with each vertex transformed once per cell row and each edge function computed once per cell and negated
+ * (exactly) for the neighbouring triangle. A triangle's edge function is therefore bit for bit the value
+ * {@link WatertightTriangles#test} computes for the same corners, and two grids whose shared boundary vertices are
+ * bit-identical floats are watertight against each other: a ray through a shared edge or vertex hits one side or
+ * both, never neither. A hit fills {@link PrimitiveHit#t}, {@link PrimitiveHit#sub} (the triangle, as above) and
+ * {@link PrimitiveHit#u}, {@link PrimitiveHit#v} (the weights of the triangle's second and third corner, as
+ * {@link WatertightTriangles} does); {@link #parameters} turns them into the patch's (u, v) and {@link #normal}
+ * interpolates the vertex normals. {@link PrimitiveHit#prim} is left to the caller (the face).
+ *
+ * <p><b>Hierarchy.</b> A vertex range larger than a leaf ({@link #leafSize()} vertices per side) is halved along
+ * its longer side (in cells), and each half that is still larger than a leaf halved again along its own longer
+ * side: up to four children per node, the halves sharing their middle row or column of vertices. One node is one
+ * contiguous record of {@value #NODE_INTS} ints: the four children's boxes as float bits, one row of four per
+ * bound (min x, y, z, max x, y, z; from the float vertices, so exact), then per child its vertex ranges
+ * (i0 | i1 &lt;&lt; 16, then j0 | j1 &lt;&lt; 16, inclusive) and its node index ({@code LEAF} for a leaf,
+ * {@code EMPTY} for an unused slot, always after the used ones, whose box is inverted so that no ray enters it).
+ * A node's four boxes are tested before any child is entered; a single child hit is entered directly, several
+ * are pushed on the caller's {@link TraversalScratch#stack} with their entry distances, nearest on top.
+ *
+ * <p>Memory ({@link #bytes}): 12 bytes per vertex (about 6 per triangle) and 144 per node; with the default
+ * leaves of 3 x 3 vertices about 12 bytes per triangle in all, with leaves of 5 x 5 about 8, plus 6 per triangle
+ * for float normals.
+ *
+ * <p>Immutable once made: any number of threads may trace one; all per-ray state is in the caller's
+ * {@link TraversalScratch}, and a query allocates nothing.
+ */
+public final class GridPatch implements CachedPatch {
+    /** The largest number of vertices per side (ranges are packed in 16 bits). */
+    public static final int MAX_SIDE = 8193;
+    /** Leaf size (vertices per side) used when none is given; chosen by measurement (see the tests' benchmark). */
+    public static final int DEFAULT_LEAF_SIZE = 3;
+
+    /** A node record: the children's boxes as six rows of four (min x, y, z, max x, y, z), then four each of i ranges, j ranges and child references. */
+    static final int NODE_INTS = 36, I_RANGES = 24, J_RANGES = 28, REFS = 32;
+    static final int LEAF = -1, EMPTY = -2;
+    /** The relative widening of a slab interval (as {@link Bvh}'s). */
+    private static final double PAD = 4 * 3 * 0x1p-53 / (1 - 3 * 0x1p-53);
+
+    private final int nu, nv, leafSize;
+    private final float[] pos, normals, uv;
+    private final double u0, v0, u1, v1;
+    private final int[] nodes;
+    private final int nodeCount, depth;
+    /** The whole grid's box, as float bits in the node-record order (min x, y, z, max x, y, z). */
+    private final int[] box = new int[6];
+
+    /**
+     * A grid from double positions (as an evaluator computes them), stored as floats rounded to nearest: two grids
+     * made from equal doubles on a shared edge store bit-identical floats there.
+     *
+     * @param nu vertices per row (2..{@value #MAX_SIDE})
+     * @param nv rows (2..{@value #MAX_SIDE})
+     * @param xyz x, y, z per vertex, vertex (i, j) at {@code 3 * (j * nu + i)}
+     * @param normals x, y, z per vertex, or null
+     * @param uv the patch parameters (u, v) per vertex, or null for parameters linear in the indices over
+     *           [0, 1] x [0, 1]
+     * @param leafSize vertices per side of a leaf (2..17)
+     */
+    public GridPatch(int nu, int nv, double[] xyz, float[] normals, float[] uv, int leafSize) {
+        this(nu, nv, toFloat(xyz, nu, nv), normals, uv, 0, 0, 1, 1, leafSize);
+    }
+
+    /**
+     * A grid from float positions, kept as given (not copied: the caller must not change them).
+     *
+     * @param nu vertices per row (2..{@value #MAX_SIDE})
+     * @param nv rows (2..{@value #MAX_SIDE})
+     * @param xyz x, y, z per vertex, vertex (i, j) at {@code 3 * (j * nu + i)}
+     * @param normals x, y, z per vertex, or null
+     * @param uv the patch parameters (u, v) per vertex, or null for parameters linear in the indices
+     * @param u0 the parameter u of column 0 when {@code uv} is null
+     * @param v0 the parameter v of row 0 when {@code uv} is null
+     * @param u1 the parameter u of column nu - 1 when {@code uv} is null
+     * @param v1 the parameter v of row nv - 1 when {@code uv} is null
+     * @param leafSize vertices per side of a leaf (2..17)
+     */
+    public GridPatch(int nu, int nv, float[] xyz, float[] normals, float[] uv,
+                     double u0, double v0, double u1, double v1, int leafSize) {
+        check(nu, nv);
+        if (leafSize < 2 || leafSize > 17) throw new IllegalArgumentException("leaf size " + leafSize + " is not in 2..17");
+        int n = nu * nv;
+        if (xyz.length != 3 * n) throw new IllegalArgumentException(xyz.length + " coordinates for " + n + " vertices");
+        if (normals != null && normals.length != 3 * n) throw new IllegalArgumentException(normals.length + " normal coordinates for " + n + " vertices");
+        if (uv != null && uv.length != 2 * n) throw new IllegalArgumentException(uv.length + " parameters for " + n + " vertices");
+        this.nu = nu;
+        this.nv = nv;
+        this.leafSize = leafSize;
+        this.pos = xyz;
+        this.normals = normals;
+        this.uv = uv;
+        this.u0 = u0; this.v0 = v0; this.u1 = u1; this.v1 = v1;
+        if (fits(nu - 1, nv - 1)) {
+            nodes = new int[0];
+            nodeCount = 0;
+            depth = 0;
+            leafBox(0, nu - 1, 0, nv - 1, box, 0);
+        } else {
+            Builder b = new Builder();
+            b.build(0, nu - 1, 0, nv - 1, box, 0, 1);
+            nodes = Arrays.copyOf(b.nodes, b.count * NODE_INTS);
+            nodeCount = b.count;
+            depth = b.depth;
+        }
+    }
+
+    private static void check(int nu, int nv) {
+        if (nu < 2 || nv < 2 || nu > MAX_SIDE || nv > MAX_SIDE) {
+            throw new IllegalArgumentException("a grid of " + nu + " x " + nv + " vertices (each side 2.." + MAX_SIDE + ")");
+        }
+    }
+
+    private static float[] toFloat(double[] xyz, int nu, int nv) {
+        check(nu, nv);
+        float[] f = new float[xyz.length];
+        for (int k = 0; k < f.length; k++) f[k] = (float) xyz[k];
+        return f;
+    }
+
+    public int nu() { return nu; }
+    public int nv() { return nv; }
+    public int leafSize() { return leafSize; }
+    public int triangleCount() { return 2 * (nu - 1) * (nv - 1); }
+    public int nodeCount() { return nodeCount; }
+    /** Levels of inner nodes on the longest path from the root (0 when the grid is one leaf). */
+    public int depth() { return depth; }
+    public boolean hasNormals() { return normals != null; }
+
+    /**
+     * The heap this grid retains: 128 bytes for the object and its six-int box (an 88-byte object with compressed
+     * references, a 40-byte array), plus per array (positions, the node records, and normals and parameters when
+     * present) a 16-byte header and its elements rounded up to 8 bytes. For nu x nv vertices and N nodes that is
+     * 128 + 16 + 12 nu nv + 16 + 144 N (+ 16 + 12 nu nv with normals, + 16 + 8 nu nv with parameters), up to the
+     * rounding.
+     *
+     * @return bytes, for a cache's budget
+     */
+    @Override
+    public long bytes() {
+        return 128 + array(pos.length) + array(nodes.length) + (normals == null ? 0 : array(normals.length))
+                + (uv == null ? 0 : array(uv.length));
+    }
+
+    private static long array(int fourByteElements) { return 16 + ((4L * fourByteElements + 7) & ~7L); }
+
+    /** The box of every vertex (min x, y, z, max x, y, z) into {@code out[0..5]}. */
+    public void bounds(double[] out) {
+        for (int k = 0; k < 6; k++) out[k] = Float.intBitsToFloat(box[k]);
+    }
+
+    /** Coordinate {@code axis} (0..2) of vertex (i, j). */
+    public float x(int i, int j, int axis) { return pos[3 * (j * nu + i) + axis]; }
+
+    /** The vertex number (j * nu + i) of corner {@code corner} (0..2) of triangle {@code sub}. */
+    public int triangleVertex(int sub, int corner) {
+        int cell = sub >> 1, i = cell % (nu - 1), j = cell / (nu - 1);
+        int a = j * nu + i;
+        if (corner == 0) return a;
+        if ((sub & 1) == 0) return corner == 1 ? a + 1 : a + nu + 1;
+        return corner == 1 ? a + nu + 1 : a + nu;
+    }
+
+    /** The cell column i of triangle {@code sub}. */
+    public int cellI(int sub) { return (sub >> 1) % (nu - 1); }
+
+    /** The cell row j of triangle {@code sub}. */
+    public int cellJ(int sub) { return (sub >> 1) / (nu - 1); }
+
+    /**
+     * The patch parameters of the point of triangle {@code sub} with weights {@code b1}, {@code b2} of its second
+     * and third corner (a hit's {@code u}, {@code v}): interpolated from the vertices' parameters, clamped to the
+     * patch's range, into {@code out[0..1]}.
+     */
+    public void parameters(int sub, double b1, double b2, double[] out) {
+        double b0 = 1 - b1 - b2;
+        if (uv != null) {
+            int a = triangleVertex(sub, 0), b = triangleVertex(sub, 1), c = triangleVertex(sub, 2);
+            out[0] = b0 * uv[2 * a] + b1 * uv[2 * b] + b2 * uv[2 * c];
+            out[1] = b0 * uv[2 * a + 1] + b1 * uv[2 * b + 1] + b2 * uv[2 * c + 1];
+            return;
+        }
+        // local coordinates in the cell: A has corners (0,0), (1,0), (1,1); B has (0,0), (1,1), (0,1)
+        double cu = (sub & 1) == 0 ? b1 + b2 : b1, cv = (sub & 1) == 0 ? b2 : b1 + b2;
+        double fu = (cellI(sub) + clamp01(cu)) / (nu - 1), fv = (cellJ(sub) + clamp01(cv)) / (nv - 1);
+        out[0] = u0 + (u1 - u0) * Math.min(1, fu);
+        out[1] = v0 + (v1 - v0) * Math.min(1, fv);
+    }
+
+    private static double clamp01(double x) { return x < 0 ? 0 : x > 1 ? 1 : x; }
+
+    /** The vertex normals interpolated at the point of triangle {@code sub} with weights b1, b2 (not normalized). */
+    public void normal(int sub, double b1, double b2, double[] out) {
+        if (normals == null) throw new IllegalStateException("this grid has no normals");
+        double b0 = 1 - b1 - b2;
+        int a = 3 * triangleVertex(sub, 0), b = 3 * triangleVertex(sub, 1), c = 3 * triangleVertex(sub, 2);
+        for (int k = 0; k < 3; k++) out[k] = b0 * normals[a + k] + b1 * normals[b + k] + b2 * normals[c + k];
+    }
+
+    // ---- building ----
+
+    private boolean fits(int cellsU, int cellsV) { return cellsU < leafSize && cellsV < leafSize; }
+
+    /** The box of the vertices [i0..i1] x [j0..j1] as float bits into out[o..o+5]. */
+    private void leafBox(int i0, int i1, int j0, int j1, int[] out, int o) {
+        float x0 = Float.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Float.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+        for (int j = j0; j <= j1; j++) {
+            for (int p = 3 * (j * nu + i0), e = 3 * (j * nu + i1); p <= e; p += 3) {
+                float x = pos[p], y = pos[p + 1], z = pos[p + 2];
+                if (x < x0) x0 = x;
+                if (x > x1) x1 = x;
+                if (y < y0) y0 = y;
+                if (y > y1) y1 = y;
+                if (z < z0) z0 = z;
+                if (z > z1) z1 = z;
+            }
+        }
+        out[o] = Float.floatToRawIntBits(x0); out[o + 1] = Float.floatToRawIntBits(y0); out[o + 2] = Float.floatToRawIntBits(z0);
+        out[o + 3] = Float.floatToRawIntBits(x1); out[o + 4] = Float.floatToRawIntBits(y1); out[o + 5] = Float.floatToRawIntBits(z1);
+    }
+
+    private final class Builder {
+        int[] nodes = new int[NODE_INTS * 16];
+        int count, depth;
+        private final int[] ranges = new int[16];
+
+        /** Builds the node of range [i0..i1] x [j0..j1] (larger than a leaf), its box into out[o..o+5]. */
+        int build(int i0, int i1, int j0, int j1, int[] out, int o, int level) {
+            depth = Math.max(depth, level);
+            int n = count++;
+            if (nodes.length < count * NODE_INTS) nodes = Arrays.copyOf(nodes, 2 * count * NODE_INTS);
+            int children = split(i0, i1, j0, j1, ranges, 0);
+            int[] r = ranges.clone(); // the recursion reuses ranges; building is not per ray
+            int base = n * NODE_INTS;
+            int[] childBox = new int[6];
+            float[] u = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY,
+                Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY};
+            for (int c = 0; c < 4; c++) {
+                int ref;
+                if (c >= children) {
+                    childBox[0] = childBox[1] = childBox[2] = Float.floatToRawIntBits(Float.POSITIVE_INFINITY);
+                    childBox[3] = childBox[4] = childBox[5] = Float.floatToRawIntBits(Float.NEGATIVE_INFINITY);
+                    ref = EMPTY;
+                } else {
+                    int a0 = r[4 * c], a1 = r[4 * c + 1], b0 = r[4 * c + 2], b1 = r[4 * c + 3];
+                    nodes[base + I_RANGES + c] = a0 | a1 << 16;
+                    nodes[base + J_RANGES + c] = b0 | b1 << 16;
+                    if (fits(a1 - a0, b1 - b0)) {
+                        leafBox(a0, a1, b0, b1, childBox, 0);
+                        ref = LEAF;
+                    } else {
+                        ref = build(a0, a1, b0, b1, childBox, 0, level + 1);
+                    }
+                    // the node's own box: the union of its children's
+                    for (int k = 0; k < 3; k++) {
+                        u[k] = Math.min(u[k], Float.intBitsToFloat(childBox[k]));
+                        u[k + 3] = Math.max(u[k + 3], Float.intBitsToFloat(childBox[k + 3]));
+                    }
+                }
+                for (int k = 0; k < 6; k++) nodes[base + 4 * k + c] = childBox[k];
+                nodes[base + REFS + c] = ref;
+            }
+            for (int k = 0; k < 6; k++) out[o + k] = Float.floatToRawIntBits(u[k]);
+            return n;
+        }
+
+        /**
+         * Cuts [i0..i1] x [j0..j1] into up to four ranges (i0, i1, j0, j1 each) into r: halves along the longer
+         * side in cells (u on a tie), then each half that is still larger than a leaf along its own longer side.
+         */
+        private int split(int i0, int i1, int j0, int j1, int[] r, int at) {
+            int k = at;
+            int[] halves = new int[8];
+            halve(i0, i1, j0, j1, halves, 0);
+            for (int h = 0; h < 2; h++) {
+                int a0 = halves[4 * h], a1 = halves[4 * h + 1], b0 = halves[4 * h + 2], b1 = halves[4 * h + 3];
+                if (fits(a1 - a0, b1 - b0)) {
+                    r[4 * k] = a0; r[4 * k + 1] = a1; r[4 * k + 2] = b0; r[4 * k + 3] = b1;
+                    k++;
+                } else {
+                    halve(a0, a1, b0, b1, r, 4 * k);
+                    k += 2;
+                }
+            }
+            return k - at;
+        }
+
+        private void halve(int i0, int i1, int j0, int j1, int[] r, int o) {
+            if (i1 - i0 >= j1 - j0) {
+                int m = (i0 + i1) >>> 1;
+                r[o] = i0; r[o + 1] = m; r[o + 2] = j0; r[o + 3] = j1;
+                r[o + 4] = m; r[o + 5] = i1; r[o + 6] = j0; r[o + 7] = j1;
+            } else {
+                int m = (j0 + j1) >>> 1;
+                r[o] = i0; r[o + 1] = i1; r[o + 2] = j0; r[o + 3] = m;
+                r[o + 4] = i0; r[o + 5] = i1; r[o + 6] = m; r[o + 7] = j1;
+            }
+        }
+    }
+
+    // ---- queries ----
+
+    /** Ints of traversal stack a query needs: four per entry, at most three left behind per level. */
+    private int stackNeed() { return 4 * (3 * depth + 4); }
+
+    /**
+     * The nearest hit in (ray.tMin, ray.tMax), recorded in {@code hit} (t, sub, u, v; see the class comment).
+     * Children whose boxes the ray crosses are visited nearest first, and a pending one whose entry lies beyond
+     * the nearest hit found since is skipped. The ray is left as it was.
+     *
+     * @return whether a hit was found
+     */
+    public boolean intersect(Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
+        return walk(ray, hit, ctx);
+    }
+
+    /** Whether anything blocks the ray in (ray.tMin, ray.tMax); stops at the first hit. The ray is left alone. */
+    public boolean occluded(Ray ray, TraversalScratch ctx) {
+        return walk(ray, null, ctx);
+    }
+
+    private boolean walk(Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
+        ctx.direction(ray);
+        final double ox = ray.ox, oy = ray.oy, oz = ray.oz;
+        final double ix = ctx.invX, iy = ctx.invY, iz = ctx.invZ;
+        if (Double.isNaN(Bvh.slabEntry(box, 0, ox, oy, oz, ix, iy, iz, ix < 0 ? 3 : 0, iy < 0 ? 3 : 0, iz < 0 ? 3 : 0,
+                ray.tMin, ray.tMax))) {
+            return false;
+        }
+        // offsets of the near planes in a node record (the far ones are 12 further, or 12 nearer)
+        final int xn = ix < 0 ? 12 : 0, yn = iy < 0 ? 12 : 0, zn = iz < 0 ? 12 : 0;
+        final double saved = ray.tMax;
+        if (nodeCount == 0) {
+            boolean any = leaf(0, nu - 1, 0, nv - 1, ray, hit, ctx);
+            ray.tMax = saved;
+            return any;
+        }
+        final int base = ctx.stackTop, need = stackNeed();
+        final int[] stack = ctx.stack(base + need);
+        final int[] nodes = this.nodes;
+        ctx.stackTop = base + need;
+        boolean any = false;
+        try {
+            int sp = base;
+            int n = 0, ir = 0, jr = 0; // the current entry: a node index, or LEAF with its ranges
+            while (true) {
+                if (n == LEAF) {
+                    if (leaf(ir & 0xffff, ir >>> 16, jr & 0xffff, jr >>> 16, ray, hit, ctx)) {
+                        any = true;
+                        if (hit == null) return true;
+                    }
+                } else {
+                    final int b = n * NODE_INTS;
+                    final double tMin = ray.tMin, tMax = ray.tMax;
+                    // an unused slot's box is inverted (min +inf, max -inf): no ray enters it
+                    final double d0 = entry(nodes, b, xn, yn, zn, ox, oy, oz, ix, iy, iz, tMin, tMax);
+                    final double d1 = entry(nodes, b + 1, xn, yn, zn, ox, oy, oz, ix, iy, iz, tMin, tMax);
+                    final double d2 = entry(nodes, b + 2, xn, yn, zn, ox, oy, oz, ix, iy, iz, tMin, tMax);
+                    final double d3 = entry(nodes, b + 3, xn, yn, zn, ox, oy, oz, ix, iy, iz, tMin, tMax);
+                    final int mask = (d0 < MISS ? 1 : 0) | (d1 < MISS ? 2 : 0) | (d2 < MISS ? 4 : 0) | (d3 < MISS ? 8 : 0);
+                    if (mask != 0 && (mask & (mask - 1)) == 0) { // one child: entered without the stack
+                        final int c = Integer.numberOfTrailingZeros(mask);
+                        n = nodes[b + REFS + c];
+                        ir = nodes[b + I_RANGES + c];
+                        jr = nodes[b + J_RANGES + c];
+                        continue;
+                    }
+                    // several: pushed with their entry distances rounded down to floats, those of this node kept
+                    // sorted (for a nearest hit) with the nearest on top
+                    final int first = sp;
+                    for (int bits = mask; bits != 0; bits &= bits - 1) {
+                        final int c = Integer.numberOfTrailingZeros(bits);
+                        final int tb = Float.floatToRawIntBits(Bvh.down(c == 0 ? d0 : c == 1 ? d1 : c == 2 ? d2 : d3));
+                        int at = sp;
+                        if (hit != null) {
+                            while (at > first && Float.intBitsToFloat(stack[at - 1]) < Float.intBitsToFloat(tb)) {
+                                stack[at] = stack[at - 4]; stack[at + 1] = stack[at - 3];
+                                stack[at + 2] = stack[at - 2]; stack[at + 3] = stack[at - 1];
+                                at -= 4;
+                            }
+                        }
+                        stack[at] = nodes[b + REFS + c];
+                        stack[at + 1] = nodes[b + I_RANGES + c];
+                        stack[at + 2] = nodes[b + J_RANGES + c];
+                        stack[at + 3] = tb;
+                        sp += 4;
+                    }
+                }
+                // pop the next pending entry that may still hold something nearer than the best hit
+                boolean found = false;
+                while (sp > base) {
+                    sp -= 4;
+                    if (Float.intBitsToFloat(stack[sp + 3]) <= ray.tMax) {
+                        n = stack[sp]; ir = stack[sp + 1]; jr = stack[sp + 2];
+                        found = true;
+                        break;
+                    }
+                }
+                if (!found) break;
+            }
+        } finally {
+            ray.tMax = saved;
+            ctx.stackTop = base;
+        }
+        return any;
+    }
+
+    private static final double MISS = Double.POSITIVE_INFINITY;
+
+    /**
+     * The entry distance of child {@code o - (node record)} of a node: the slab test against [tMin, tMax], widened
+     * as {@link Bvh#slabEntry} widens it so that rounding never drops a box the ray touches, or {@code MISS}. A NaN
+     * (the origin on a plane the ray runs in) leaves near or far as they were.
+     */
+    private static double entry(int[] nodes, int o, int xn, int yn, int zn, double ox, double oy, double oz,
+                                double ix, double iy, double iz, double tMin, double tMax) {
+        double near = tMin, far = tMax, t;
+        t = (Float.intBitsToFloat(nodes[o + xn]) - ox) * ix;
+        if (t > near) near = t;
+        t = (Float.intBitsToFloat(nodes[o + 12 - xn]) - ox) * ix;
+        if (t < far) far = t;
+        t = (Float.intBitsToFloat(nodes[o + 4 + yn]) - oy) * iy;
+        if (t > near) near = t;
+        t = (Float.intBitsToFloat(nodes[o + 16 - yn]) - oy) * iy;
+        if (t < far) far = t;
+        t = (Float.intBitsToFloat(nodes[o + 8 + zn]) - oz) * iz;
+        if (t > near) near = t;
+        t = (Float.intBitsToFloat(nodes[o + 20 - zn]) - oz) * iz;
+        if (t < far) far = t;
+        near -= PAD * Math.abs(near);
+        far += PAD * Math.abs(far);
+        return near <= far ? near : MISS;
+    }
+
+    /**
+     * The triangles of the cells of vertex range [i0..i1] x [j0..j1]: with {@code hit} null an any-hit test that
+     * returns at the first hit; otherwise every hit nearer than ray.tMax is recorded and shrinks ray.tMax.
+     * Each cell takes the transformed vertices and the edge function of its left side from its left neighbour.
+     */
+    private boolean leaf(int i0, int i1, int j0, int j1, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
+        final float[] p = pos;
+        final int kx = ctx.shearKx, ky = ctx.shearKy, kz = ctx.shearKz;
+        final double sx = ctx.shearSx, sy = ctx.shearSy, sz = ctx.shearSz;
+        final double okx = kx == 0 ? ray.ox : kx == 1 ? ray.oy : ray.oz;
+        final double oky = ky == 0 ? ray.ox : ky == 1 ? ray.oy : ray.oz;
+        final double okz = kz == 0 ? ray.ox : kz == 1 ? ray.oy : ray.oz;
+        final double tMin = ray.tMin;
+        final int row = 3 * nu;
+        boolean any = false;
+        for (int j = j0; j < j1; j++) {
+            int q = 3 * (j * nu + i0);
+            // p00 = (i, j), p01 = (i, j + 1)
+            double z = p[q + kz] - okz;
+            double x00 = p[q + kx] - okx - sx * z, y00 = p[q + ky] - oky - sy * z, z00 = sz * z;
+            z = p[q + row + kz] - okz;
+            double x01 = p[q + row + kx] - okx - sx * z, y01 = p[q + row + ky] - oky - sy * z, z01 = sz * z;
+            double left = x01 * y00 - y01 * x00; // E(p00, p01)
+            for (int i = i0; i < i1; i++) {
+                q += 3;
+                z = p[q + kz] - okz;
+                final double x10 = p[q + kx] - okx - sx * z, y10 = p[q + ky] - oky - sy * z, z10 = sz * z;
+                z = p[q + row + kz] - okz;
+                final double x11 = p[q + row + kx] - okx - sx * z, y11 = p[q + row + ky] - oky - sy * z, z11 = sz * z;
+                // E(p, q) = qx * py - qy * px; E(q, p) is exactly -E(p, q)
+                final double bottom = x10 * y00 - y10 * x00; // E(p00, p10)
+                final double right = x11 * y10 - y11 * x10;  // E(p10, p11)
+                final double top = x11 * y01 - y11 * x01;    // E(p01, p11)
+                final double diag = x11 * y00 - y11 * x00;   // E(p00, p11)
+                // triangle A = (p00, p10, p11): U = E(p10, p11), V = E(p11, p00), W = E(p00, p10)
+                double u = right, v = -diag, w = bottom;
+                if (!(Math.min(u, Math.min(v, w)) < 0 && Math.max(u, Math.max(v, w)) > 0)) {
+                    final double det = u + v + w;
+                    if (det != 0) {
+                        final double t = (u * z00 + v * z10 + w * z11) / det;
+                        if (t > tMin && t < ray.tMax) {
+                            if (hit == null) return true;
+                            final double inv = 1 / det;
+                            hit.t = t;
+                            hit.sub = 2 * (j * (nu - 1) + i);
+                            hit.u = v * inv;
+                            hit.v = w * inv;
+                            ray.tMax = t;
+                            any = true;
+                        }
+                    }
+                }
+                // triangle B = (p00, p11, p01): U = E(p11, p01), V = E(p01, p00), W = E(p00, p11)
+                u = -top; v = -left; w = diag;
+                if (!(Math.min(u, Math.min(v, w)) < 0 && Math.max(u, Math.max(v, w)) > 0)) {
+                    final double det = u + v + w;
+                    if (det != 0) {
+                        final double t = (u * z00 + v * z11 + w * z01) / det;
+                        if (t > tMin && t < ray.tMax) {
+                            if (hit == null) return true;
+                            final double inv = 1 / det;
+                            hit.t = t;
+                            hit.sub = 2 * (j * (nu - 1) + i) + 1;
+                            hit.u = v * inv;
+                            hit.v = w * inv;
+                            ray.tMax = t;
+                            any = true;
+                        }
+                    }
+                }
+                x00 = x10; y00 = y10; z00 = z10;
+                x01 = x11; y01 = y11; z01 = z11;
+                left = right;
+            }
+        }
+        return any;
+    }
+}

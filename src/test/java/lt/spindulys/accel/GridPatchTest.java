@@ -1,0 +1,323 @@
+package lt.spindulys.accel;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+import lt.spindulys.accel.GridTestSurfaces.Reference;
+import lt.spindulys.math.Ray;
+
+/**
+ * The grid patch against the brute-force watertight test of every triangle: the same nearest t and cell on
+ * bumpy, thin and degenerate grids for every leaf size, watertightness of a closed set of six grids that share
+ * bit-identical edge vertices (rays from inside, many aimed exactly at shared edges and vertices), occlusion
+ * agreeing with intersection, the hit's parameters, the byte count, and no allocation per query.
+ */
+class GridPatchTest {
+
+    private static float[] f(double[] d) {
+        float[] r = new float[d.length];
+        for (int k = 0; k < d.length; k++) r[k] = (float) d[k];
+        return r;
+    }
+
+    private static GridPatch grid(int nu, int nv, float[] xyz, int leaf) {
+        return new GridPatch(nu, nv, xyz, null, null, 0, 0, 1, 1, leaf);
+    }
+
+    /**
+     * Checks one ray: the grid's nearest hit has the reference's t bit for bit, and its triangle is the
+     * reference's or one the reference also hits at that t (a tie on a shared edge); occlusion agrees; the ray
+     * is left alone. Returns whether it hit.
+     */
+    private static boolean agree(GridPatch g, Reference ref, Ray ray, TraversalScratch ctx, String what) {
+        PrimitiveHit a = new PrimitiveHit(), b = new PrimitiveHit();
+        double tMax = ray.tMax;
+        boolean hg = g.intersect(ray, a, ctx);
+        assertEquals(tMax, ray.tMax, "the ray is left alone");
+        boolean hr = ref.intersect(ray, b, ctx);
+        if (hg != hr) fail(what + ": grid " + (hg ? "hit at " + a.t : "missed") + ", reference " + (hr ? "hit at " + b.t : "missed") + " " + ray);
+        assertEquals(hg, g.occluded(ray, ctx), what + ": occlusion agrees with intersection");
+        if (!hg) return false;
+        assertTrue(Double.isFinite(a.t) && Double.isFinite(a.u) && Double.isFinite(a.v), what);
+        assertEquals(b.t, a.t, what + ": nearest t");
+        if (a.sub != b.prim) assertTrue(ref.hitsAt(a.sub, a.t, ray, ctx), what + ": the grid's triangle is hit at t too");
+        if (a.sub == b.prim) {
+            assertEquals(b.u, a.u, 1e-12, what);
+            assertEquals(b.v, a.v, 1e-12, what);
+        }
+        ray.tMax = a.t; // just before the hit nothing blocks, just beyond it something does
+        assertFalse(g.occluded(ray, ctx), what + ": nothing before the nearest hit");
+        ray.tMax = tMax;
+        return true;
+    }
+
+    /**
+     * Random rays at a grid: down onto it from above, across it at grazing angles, at its vertices, and along the
+     * axes.
+     */
+    private static void randomRays(GridPatch g, long seed, int count, String what) {
+        Reference ref = new Reference(g);
+        TraversalScratch ctx = new TraversalScratch();
+        Random rnd = new Random(seed);
+        double[] box = new double[6];
+        g.bounds(box);
+        Ray ray = new Ray();
+        int hits = 0;
+        for (int k = 0; k < count; k++) {
+            double tx = box[0] + rnd.nextDouble() * (box[3] - box[0]), ty = box[1] + rnd.nextDouble() * (box[4] - box[1]);
+            double tz = box[2] + rnd.nextDouble() * (box[5] - box[2]);
+            if (k % 4 == 3) { // exactly at a vertex
+                int i = rnd.nextInt(g.nu()), j = rnd.nextInt(g.nv());
+                tx = g.x(i, j, 0); ty = g.x(i, j, 1); tz = g.x(i, j, 2);
+            }
+            double ox, oy, oz;
+            if (k % 2 == 0) { ox = tx + rnd.nextGaussian() * 0.3; oy = ty + rnd.nextGaussian() * 0.3; oz = 2 + rnd.nextDouble(); }
+            else { ox = tx + 3 * rnd.nextGaussian(); oy = ty + 3 * rnd.nextGaussian(); oz = tz + 0.2 * rnd.nextGaussian(); }
+            ray.set(ox, oy, oz, tx - ox, ty - oy, tz - oz, 0, k % 5 == 0 ? 0.999 : Double.POSITIVE_INFINITY);
+            if (k % 7 == 6) ray.set(tx, ty, 2, 0, 0, -1, 0, Double.POSITIVE_INFINITY); // along an axis: infinite inverses
+            if (k % 11 == 10) ray.set(-1, ty, tz, 1, 0, 0, 0, Double.POSITIVE_INFINITY);
+            if (agree(g, ref, ray, ctx, what + " ray " + k)) hits++;
+        }
+        assertTrue(hits > count / 4, what + ": " + hits + " of " + count + " rays hit");
+    }
+
+    @ParameterizedTest(name = "{0} x {1}, leaves of {2}")
+    @CsvSource({"2, 2, 2", "2, 2, 17", "3, 2, 2", "2, 40, 3", "40, 2, 5", "33, 7, 3", "17, 17, 17", "18, 18, 17",
+        "65, 65, 3", "65, 65, 5", "65, 65, 9", "65, 65, 17", "100, 37, 5", "129, 129, 5"})
+    void bumpyGridsAgreeWithEveryTriangleTested(int nu, int nv, int leaf) {
+        GridPatch g = grid(nu, nv, f(GridTestSurfaces.bumpy(nu, nv)), leaf);
+        assertEquals(2 * (nu - 1) * (nv - 1), g.triangleCount());
+        randomRays(g, 31 * nu + nv + leaf, 1500, nu + "x" + nv + "/" + leaf);
+    }
+
+    @Test
+    void doublePositionsAreRoundedToTheNearestFloat() {
+        double[] p = GridTestSurfaces.bumpy(9, 5);
+        GridPatch g = new GridPatch(9, 5, p, null, null, 3);
+        for (int j = 0; j < 5; j++) for (int i = 0; i < 9; i++) for (int a = 0; a < 3; a++) {
+            assertEquals((float) p[3 * (j * 9 + i) + a], g.x(i, j, a));
+        }
+        randomRays(g, 7, 500, "from doubles");
+    }
+
+    /** A grid snapped to coarser edges: repeated vertices on its borders, a repeated row and a repeated column. */
+    private static float[] degenerate(int n) {
+        double[] p = GridTestSurfaces.bumpy(n, n);
+        for (int i = 1; i < n; i += 2) System.arraycopy(p, 3 * (i - 1), p, 3 * i, 3); // bottom row snapped 2:1
+        for (int j = 1; j < n; j++) { // right column snapped 3:1 toward lower rows
+            int from = (j / 3) * 3;
+            System.arraycopy(p, 3 * (from * n + n - 1), p, 3 * (j * n + n - 1), 3);
+        }
+        System.arraycopy(p, 3 * (4 * n), p, 3 * (5 * n), 3 * n); // row 5 repeats row 4: a zero-area strip
+        for (int j = 0; j < n; j++) System.arraycopy(p, 3 * (j * n + 6), p, 3 * (j * n + 7), 3); // column 7 repeats 6
+        return f(p);
+    }
+
+    @ParameterizedTest(name = "leaves of {0}")
+    @CsvSource({"2", "3", "5", "9", "17"})
+    void snappedGridsWithZeroAreaTrianglesAgreeAndNeverGiveNaN(int leaf) {
+        int n = 25;
+        randomRays(grid(n, n, degenerate(n), leaf), 5 + leaf, 2000, "snapped");
+    }
+
+    @Test
+    void aGridOfOnePointIsNeverHit() {
+        float[] p = new float[3 * 9 * 9];
+        for (int k = 0; k < p.length; k += 3) { p[k] = 0.5f; p[k + 1] = 0.25f; p[k + 2] = 0; }
+        GridPatch g = grid(9, 9, p, 3);
+        TraversalScratch ctx = new TraversalScratch();
+        PrimitiveHit h = new PrimitiveHit();
+        Ray ray = new Ray().set(0.5, 0.25, 1, 0, 0, -1, 0, Double.POSITIVE_INFINITY);
+        assertFalse(g.intersect(ray, h, ctx));
+        assertFalse(g.occluded(ray, ctx));
+        ray.set(-1, 0.25, 0, 1, 0, 0, 0, Double.POSITIVE_INFINITY);
+        assertFalse(g.intersect(ray, h, ctx), "along the plane through the point");
+    }
+
+    // ---- six grids, one closed surface ----
+
+    private static GridPatch[] cubeSphere(int n, int leaf) {
+        GridPatch[] faces = new GridPatch[6];
+        for (int f = 0; f < 6; f++) faces[f] = grid(n, n, GridTestSurfaces.cubeSphereFace(f, n), leaf);
+        return faces;
+    }
+
+    @Test
+    void theCubeSphereFacesShareBitIdenticalEdges() {
+        int n = 9;
+        GridPatch[] faces = cubeSphere(n, 3);
+        java.util.Map<String, Integer> seen = new java.util.HashMap<>();
+        for (GridPatch g : faces) {
+            for (int j = 0; j < n; j++) for (int i = 0; i < n; i++) {
+                if (i > 0 && j > 0 && i < n - 1 && j < n - 1) continue;
+                seen.merge(g.x(i, j, 0) + " " + g.x(i, j, 1) + " " + g.x(i, j, 2), 1, Integer::sum);
+            }
+        }
+        // 12 edges of n - 2 inner points shared by two faces, 8 corners shared by three
+        assertEquals(12 * (n - 2) + 8, seen.size());
+        assertEquals(2 * 12 * (n - 2) + 3 * 8, seen.values().stream().mapToInt(Integer::intValue).sum());
+    }
+
+    @ParameterizedTest(name = "{0} x {0} per face, leaves of {1}")
+    @CsvSource({"9, 3", "17, 5", "33, 9", "65, 17"})
+    void raysFromInsideTheClosedCubeSphereNeverEscape(int n, int leaf) {
+        GridPatch[] faces = cubeSphere(n, leaf);
+        Reference[] refs = new Reference[6];
+        for (int f = 0; f < 6; f++) refs[f] = new Reference(faces[f]);
+        TraversalScratch ctx = new TraversalScratch();
+        Random rnd = new Random(n * 7 + leaf);
+        Ray ray = new Ray();
+        PrimitiveHit h = new PrimitiveHit(), r = new PrimitiveHit();
+        int rays = 6000;
+        for (int k = 0; k < rays; k++) {
+            // from the centre or a point within 0.5 of it (the surface is at least 0.85 away), at random directions,
+            // at shared edge vertices, at shared edge midpoints
+            double ox = 0, oy = 0, oz = 0;
+            if (k % 2 == 1) {
+                do { ox = rnd.nextDouble() - 0.5; oy = rnd.nextDouble() - 0.5; oz = rnd.nextDouble() - 0.5; } while (ox * ox + oy * oy + oz * oz > 0.25);
+            }
+            double dx, dy, dz;
+            int kind = k % 3;
+            if (kind == 0) {
+                dx = rnd.nextGaussian(); dy = rnd.nextGaussian(); dz = rnd.nextGaussian();
+            } else {
+                GridPatch g = faces[rnd.nextInt(6)];
+                int i, j, i2, j2;
+                if (rnd.nextBoolean()) { i = rnd.nextBoolean() ? 0 : n - 1; j = rnd.nextInt(n); } // a boundary column
+                else { j = rnd.nextBoolean() ? 0 : n - 1; i = rnd.nextInt(n); } // a boundary row
+                double tx = g.x(i, j, 0), ty = g.x(i, j, 1), tz = g.x(i, j, 2);
+                if (kind == 2) { // the midpoint of a boundary edge
+                    if (i == 0 || i == n - 1) { i2 = i; j2 = j == n - 1 ? j - 1 : j + 1; } else { j2 = j; i2 = i == n - 1 ? i - 1 : i + 1; }
+                    tx = 0.5 * (tx + g.x(i2, j2, 0)); ty = 0.5 * (ty + g.x(i2, j2, 1)); tz = 0.5 * (tz + g.x(i2, j2, 2));
+                }
+                dx = tx - ox; dy = ty - oy; dz = tz - oz;
+            }
+            ray.set(ox, oy, oz, dx, dy, dz, 0, Double.POSITIVE_INFINITY);
+            double best = Double.POSITIVE_INFINITY, bestRef = Double.POSITIVE_INFINITY;
+            boolean blocked = false;
+            for (int f = 0; f < 6; f++) {
+                if (faces[f].intersect(ray, h, ctx) && h.t < best) best = h.t;
+                if (refs[f].intersect(ray, r, ctx) && r.t < bestRef) bestRef = r.t;
+                blocked |= faces[f].occluded(ray, ctx);
+            }
+            if (best == Double.POSITIVE_INFINITY) fail("ray " + k + " escaped through the closed surface: " + ray);
+            assertTrue(blocked, "ray " + k + " is occluded");
+            assertEquals(bestRef, best, "ray " + k + ": the nearest hit of all six");
+        }
+    }
+
+    // ---- the hit's parameters, normals and the byte count ----
+
+    @Test
+    void parametersAreInterpolatedFromTheCellAndNormalsFromTheVertices() {
+        int nu = 11, nv = 6;
+        double[] p = GridTestSurfaces.bumpy(nu, nv);
+        for (int k = 2; k < p.length; k += 3) p[k] = 0; // flat: (x, y) is the parameter point
+        float[] normals = new float[3 * nu * nv];
+        for (int k = 0; k < normals.length; k += 3) { normals[k] = (float) p[k]; normals[k + 2] = 1; }
+        GridPatch g = new GridPatch(nu, nv, f(p), normals, null, 0.5, 0.25, 1, 0.75, 3);
+        TraversalScratch ctx = new TraversalScratch();
+        PrimitiveHit h = new PrimitiveHit();
+        double[] uv = new double[2], n = new double[3];
+        Random rnd = new Random(3);
+        for (int k = 0; k < 500; k++) {
+            double x = rnd.nextDouble(), y = rnd.nextDouble();
+            Ray ray = new Ray().set(x, y, 1, 0.1 * rnd.nextGaussian(), 0.1 * rnd.nextGaussian(), -1, 0, Double.POSITIVE_INFINITY);
+            if (!g.intersect(ray, h, ctx)) continue;
+            double hx = ray.pointX(h.t), hy = ray.pointY(h.t);
+            assertEquals(g.cellI(h.sub), Math.min(nu - 2, (int) (hx * (nu - 1))), 1, "cell column");
+            g.parameters(h.sub, h.u, h.v, uv);
+            assertEquals(0.5 + 0.5 * hx, uv[0], 1e-6);
+            assertEquals(0.25 + 0.5 * hy, uv[1], 1e-6);
+            g.normal(h.sub, h.u, h.v, n);
+            assertEquals(hx, n[0], 1e-6);
+            assertEquals(1, n[2], 1e-6);
+        }
+        // explicit parameters win over the linear ones
+        float[] given = new float[2 * nu * nv];
+        for (int v = 0; v < nu * nv; v++) { given[2 * v] = (float) (p[3 * v] * p[3 * v]); given[2 * v + 1] = (float) p[3 * v + 1]; }
+        GridPatch e = new GridPatch(nu, nv, f(p), null, given, 0, 0, 1, 1, 3);
+        Ray ray = new Ray().set(0.55, 0.45, 1, 0, 0, -1, 0, Double.POSITIVE_INFINITY);
+        assertTrue(e.intersect(ray, h, ctx));
+        e.parameters(h.sub, h.u, h.v, uv);
+        assertEquals(0.5 * (0.5 * 0.5 + 0.6 * 0.6), uv[0], 1e-6); // linear over the cell between x = 0.5 and 0.6
+        assertEquals(0.45, uv[1], 1e-6);
+        assertThrows(IllegalStateException.class, () -> e.normal(0, 0, 0, new double[3]));
+    }
+
+    @Test
+    void bytesFollowTheDocumentedFormula() {
+        GridPatch one = grid(5, 5, f(GridTestSurfaces.bumpy(5, 5)), 5);
+        assertEquals(0, one.nodeCount());
+        assertEquals(128 + 16 + 304 + 16, one.bytes(), "one leaf: positions (75 floats, 300 bytes rounded to 304) and an empty node array");
+        GridPatch g = grid(65, 65, f(GridTestSurfaces.bumpy(65, 65)), 5);
+        assertTrue(g.nodeCount() > 0);
+        assertEquals(128 + 16 + up8(12L * 65 * 65) + 16 + 144L * g.nodeCount(), g.bytes());
+        float[] n = new float[3 * 65 * 65], uv = new float[2 * 65 * 65];
+        GridPatch full = new GridPatch(65, 65, f(GridTestSurfaces.bumpy(65, 65)), n, uv, 0, 0, 1, 1, 5);
+        assertEquals(g.bytes() + 16 + up8(12L * 65 * 65) + 16 + 8L * 65 * 65, full.bytes());
+    }
+
+    private static long up8(long bytes) { return (bytes + 7) & ~7L; }
+
+    @Test
+    void theHierarchyHalvesDownToLeavesOfTheGivenSize() {
+        // 64 x 64 cells, leaves of 4 x 4 cells: 256 leaves under a four-way tree of 1 + 4 + 16 + 64 nodes
+        GridPatch g = grid(65, 65, f(GridTestSurfaces.bumpy(65, 65)), 5);
+        assertEquals(85, g.nodeCount());
+        assertEquals(4, g.depth());
+        assertEquals(0, grid(17, 17, f(GridTestSurfaces.bumpy(17, 17)), 17).nodeCount());
+        assertEquals(1, grid(18, 18, f(GridTestSurfaces.bumpy(18, 18)), 17).nodeCount());
+    }
+
+    @Test
+    void rejectsBadSizes() {
+        assertThrows(IllegalArgumentException.class, () -> grid(1, 5, new float[15], 3));
+        assertThrows(IllegalArgumentException.class, () -> grid(5, 5, new float[74], 3));
+        assertThrows(IllegalArgumentException.class, () -> grid(5, 5, new float[75], 1));
+        assertThrows(IllegalArgumentException.class, () -> grid(5, 5, new float[75], 18));
+        assertThrows(IllegalArgumentException.class, () -> new GridPatch(GridPatch.MAX_SIDE + 1, 2, new double[0], null, null, 3));
+    }
+
+    @Test
+    void steadyStateQueriesAllocateNothing() {
+        GridPatch g = grid(129, 129, f(GridTestSurfaces.bumpy(129, 129)), GridPatch.DEFAULT_LEAF_SIZE);
+        TraversalScratch ctx = new TraversalScratch();
+        ctx.stackTop = 8; // below a caller's entries, as inside a scene traversal
+        Ray r = new Ray();
+        PrimitiveHit h = new PrimitiveHit();
+        Random rnd = new Random(5);
+        double[] rays = new double[6 * 1024];
+        for (int i = 0; i < rays.length; i += 6) {
+            rays[i] = rnd.nextDouble(); rays[i + 1] = rnd.nextDouble(); rays[i + 2] = 1;
+            rays[i + 3] = 0.3 * rnd.nextGaussian(); rays[i + 4] = 0.3 * rnd.nextGaussian(); rays[i + 5] = -1;
+        }
+        Runnable work = () -> {
+            for (int i = 0; i < 20_000; i++) {
+                int k = 6 * (i & 1023);
+                r.set(rays[k], rays[k + 1], rays[k + 2], rays[k + 3], rays[k + 4], rays[k + 5], 0, Double.POSITIVE_INFINITY);
+                g.intersect(r, h, ctx);
+                g.occluded(r, ctx);
+            }
+        };
+        work.run(); // warm up: the scratch stack grows once, the JIT compiles
+        work.run();
+        var bean = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+        long least = Long.MAX_VALUE;
+        for (int attempt = 0; attempt < 3 && least >= 4096; attempt++) { // the least of three: robust to a late compile
+            long before = bean.getCurrentThreadAllocatedBytes();
+            work.run();
+            least = Math.min(least, bean.getCurrentThreadAllocatedBytes() - before);
+        }
+        assertTrue(least < 4096, "40,000 queries allocated " + least + " bytes");
+        assertEquals(8, ctx.stackTop, "the caller's stack entries are left as they were");
+    }
+}
