@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
             }
             double P[3], Du[3], Dv[3];
             s.Evaluate(uv, patch.data(), 3, P, Du, Dv);
-            snprintf(buf, sizeof buf, "%d %.10g %.10g %.13g %.13g %.13g %.13g %.13g %.13g %.13g %.13g %.13g",
+            snprintf(buf, sizeof buf, "%d %.17g %.17g %.13g %.13g %.13g %.13g %.13g %.13g %.13g %.13g %.13g",
                 f, uv[0], uv[1], P[0], P[1], P[2], Du[0], Du[1], Du[2], Dv[0], Dv[1], Dv[2]);
             pointRows.push_back(buf);
         }
