@@ -27,7 +27,8 @@ package lt.spindulys.subdiv;
  * corner, the two edge midpoints beside it and the face's centroid.</li>
  * </ul>
  * Irregular faces (extraordinary vertices, creases, n-gons of the smooth schemes) need local
- * adaptive refinement and are not handled by this class yet.
+ * adaptive refinement: {@link AdaptiveFaceSurface} descends to this class's regular patches
+ * ({@link #patch}) and, at its deepest level, to Far's Gregory end patches.
  */
 final class FaceSurface {
     private static final int BSPLINE = 0, BOX_SPLINE = 1, BILINEAR = 2, LINEAR_SUBFACES = 3;
@@ -69,10 +70,30 @@ final class FaceSurface {
         if (level.hole != null && level.hole[f]) throw new IllegalArgumentException("face " + f + " is a hole: it has no limit surface");
         if (options.scheme() == SubdivOptions.Scheme.BILINEAR) return linear(level, positions, f);
         if (!isRegular(level, options, f)) throw new UnsupportedOperationException("face " + f + " is irregular");
-        return options.scheme() == SubdivOptions.Scheme.LOOP ? boxSpline(level, positions, f) : bSpline(level, positions, f);
+        return options.scheme() == SubdivOptions.Scheme.LOOP ? boxSpline(level, positions, f, false) : bSpline(level, positions, f, false);
+    }
+
+    /**
+     * The regular patch of face f of a refined level where infinitely sharp edges count as
+     * boundaries (OpenSubdiv's inf-sharp patches: each side of such a crease is the boundary
+     * patch of its side), for the sub-faces of adaptive refinement.
+     *
+     * @throws UnsupportedOperationException unless {@link #isRegular(Level, SubdivOptions, int, boolean) isRegular(level, options, f, true)}
+     */
+    static FaceSurface patch(Level level, SubdivOptions options, double[] positions, int f) {
+        if (options.scheme() == SubdivOptions.Scheme.BILINEAR) throw new UnsupportedOperationException("bilinear faces are linear");
+        if (!isRegular(level, options, f, true)) throw new UnsupportedOperationException("face " + f + " is irregular");
+        return options.scheme() == SubdivOptions.Scheme.LOOP ? boxSpline(level, positions, f, true) : bSpline(level, positions, f, true);
     }
 
     // ------------------------------------------------------------------ regularity
+
+    /** The twin of half-edge h, or -1 on a boundary and, if {@code cut}, across an infinitely sharp edge. */
+    static int across(Level level, int h, boolean cut) {
+        int t = level.hTwin[h];
+        if (t >= 0 && cut && Crease.isInfinite(level.edgeSharpness(h))) return -1;
+        return t;
+    }
 
     /**
      * Whether face f has a single regular patch as its limit surface (Bfr's {@code IsRegular}):
@@ -83,6 +104,15 @@ final class FaceSurface {
      * made sharp by the boundary option) of a single face.
      */
     static boolean isRegular(Level level, SubdivOptions options, int f) {
+        return isRegular(level, options, f, false);
+    }
+
+    /**
+     * As {@link #isRegular(Level, SubdivOptions, int)}, or if {@code cut} with infinitely sharp
+     * edges as boundaries (each corner's fan ends at them; a vertex with three or more of them
+     * is a sharp corner).
+     */
+    static boolean isRegular(Level level, SubdivOptions options, int f, boolean cut) {
         if (options.scheme() == SubdivOptions.Scheme.BILINEAR) return false;
         int reg = options.scheme() == SubdivOptions.Scheme.LOOP ? 3 : 4;
         int interior = reg == 4 ? 4 : 6;
@@ -92,13 +122,15 @@ final class FaceSurface {
             int h = h0 + c, v = level.hOrig[h];
             float vs = level.vertexSharpness(v);
             if (Crease.isSemiSharp(vs)) return false;
-            int ring = corner(level, h, reg);
+            int ring = corner(level, h, reg, cut);
             if (ring < 0) return false;
             int faces = ring >> 1;
             if ((ring & 1) == 0) {
                 if (Crease.isInfinite(vs) || faces != interior) return false;
             } else {
-                boolean sharp = Crease.isInfinite(vs) || (options.boundary() == SubdivOptions.Boundary.EDGE_AND_CORNER && faces == 1);
+                boolean sharp = Crease.isInfinite(vs)
+                        || (options.boundary() == SubdivOptions.Boundary.EDGE_AND_CORNER && faces == 1 && corner(level, h, 0, false) == (1 << 1 | 1))
+                        || (cut && infSharpEdges(level, h) >= 3);
                 if (faces != (sharp ? 1 : interior / 2)) return false;
             }
         }
@@ -113,12 +145,37 @@ final class FaceSurface {
      * fan's ends) is in it.
      */
     static int corner(Level level, int h, int reg) {
+        return corner(level, h, reg, false);
+    }
+
+    /** Infinitely sharp edges (boundaries included) at the origin of h, around its fan. */
+    static int infSharpEdges(Level level, int h) {
+        int count = 0, g = h;
+        while (true) {
+            int gp = level.prev(g), t = level.hTwin[gp];
+            if (Crease.isInfinite(level.edgeSharpness(gp))) count++;
+            if (t < 0) break;
+            if (t == h) return count;
+            g = t;
+        }
+        g = h;
+        while (true) {
+            if (Crease.isInfinite(level.edgeSharpness(g))) count++;
+            int t = level.hTwin[g];
+            if (t < 0) break;
+            g = level.next(t);
+        }
+        return count;
+    }
+
+    /** As {@link #corner(Level, int, int)}, the fan ending at infinitely sharp edges if {@code cut}. */
+    static int corner(Level level, int h, int reg, boolean cut) {
         int faces = 0, g = h;
         boolean open = false;
         while (true) { // counter-clockwise
             faces++;
             if (reg > 0 && level.faceSize(level.face(g)) != reg) return -1;
-            int gp = level.prev(g), t = level.hTwin[gp];
+            int gp = level.prev(g), t = across(level, gp, cut);
             if (t < 0) {
                 open = true;
                 break;
@@ -130,8 +187,8 @@ final class FaceSurface {
         if (open) {
             g = h;
             while (true) { // clockwise from h
-                if (reg > 0 && level.hTwin[g] >= 0 && Crease.isSharp(level.edgeSharpness(g))) return -1;
-                int t = level.hTwin[g];
+                int t = across(level, g, cut);
+                if (reg > 0 && t >= 0 && Crease.isSharp(level.edgeSharpness(g))) return -1;
                 if (t < 0) break;
                 g = level.next(t);
                 faces++;
@@ -161,7 +218,7 @@ final class FaceSurface {
      * it has at known lattice offsets. Writes vertex indices to {@code grid[(y+1)*4 + x+1]} for
      * x, y in -1..2, leaving -1 where there is no point.
      */
-    private static int[] lattice(Level level, int f, int[] cx, int[] cy, int[] dir, int[] dx, int[] dy) {
+    private static int[] lattice(Level level, int f, int[] cx, int[] cy, int[] dir, int[] dx, int[] dy, boolean cut) {
         int[] grid = new int[16];
         java.util.Arrays.fill(grid, -1);
         int m = dx.length, size = cx.length, h0 = level.firstHalf(f);
@@ -172,7 +229,7 @@ final class FaceSurface {
             int g = corner, k = dir[c];
             for (int step = 0; step < m; step++) {
                 collect(level, grid, g, cx[c], cy[c], k, dx, dy);
-                int t = level.hTwin[level.prev(g)];
+                int t = across(level, level.prev(g), cut);
                 if (t < 0 || t == corner) break;
                 g = t;
                 k = (k + 1) % m;
@@ -181,7 +238,7 @@ final class FaceSurface {
             g = corner;
             k = dir[c];
             for (int step = 0; step < m; step++) {
-                int t = level.hTwin[g];
+                int t = across(level, g, cut);
                 if (t < 0) break;
                 g = level.next(t);
                 if (g == corner) break;
@@ -207,11 +264,11 @@ final class FaceSurface {
         grid[i] = v;
     }
 
-    private static FaceSurface bSpline(Level level, double[] pos, int f) {
-        int[] grid = lattice(level, f, new int[] {0, 1, 1, 0}, new int[] {0, 0, 1, 1}, new int[] {0, 1, 2, 3}, QX, QY);
+    private static FaceSurface bSpline(Level level, double[] pos, int f, boolean cut) {
+        int[] grid = lattice(level, f, new int[] {0, 1, 1, 0}, new int[] {0, 0, 1, 1}, new int[] {0, 1, 2, 3}, QX, QY, cut);
         int h0 = level.firstHalf(f);
         int mask = 0;
-        for (int e = 0; e < 4; e++) if (level.hTwin[h0 + e] < 0) mask |= 1 << e;
+        for (int e = 0; e < 4; e++) if (across(level, h0 + e, cut) < 0) mask |= 1 << e;
         double[] cp = new double[48];
         int corner0 = level.hOrig[h0];
         for (int i = 0; i < 16; i++) {
@@ -227,8 +284,8 @@ final class FaceSurface {
         return new FaceSurface(BSPLINE, cp, mask, 4);
     }
 
-    private static FaceSurface boxSpline(Level level, double[] pos, int f) {
-        int[] grid = lattice(level, f, new int[] {0, 1, 0}, new int[] {0, 0, 1}, new int[] {0, 2, 4}, TX, TY);
+    private static FaceSurface boxSpline(Level level, double[] pos, int f, boolean cut) {
+        int[] grid = lattice(level, f, new int[] {0, 1, 0}, new int[] {0, 0, 1}, new int[] {0, 2, 4}, TX, TY, cut);
         double[] cp = new double[36];
         boolean[] have = new boolean[12];
         for (int i = 0; i < 16; i++) {
@@ -242,9 +299,9 @@ final class FaceSurface {
         boolean[] edge = new boolean[3], vert = new boolean[3];
         int edges = 0;
         for (int c = 0; c < 3; c++) {
-            edge[c] = level.hTwin[h0 + c] < 0;
+            edge[c] = across(level, h0 + c, cut) < 0;
             if (edge[c]) edges++;
-            vert[c] = (corner(level, h0 + c, 0) & 1) != 0;
+            vert[c] = (corner(level, h0 + c, 0, cut) & 1) != 0;
         }
         // Phantom points beyond each boundary edge.
         for (int e = 0; e < 3; e++) {
