@@ -642,13 +642,13 @@ public final class PatchRefiner {
     }
 
     /** The one-ring control mesh of a face and the face's index in it. */
-    private record Local(ControlMesh mesh, int face) {}
+    record Local(ControlMesh mesh, int face) {}
 
     /**
      * The faces sharing a vertex with {@code face}, with their vertices, UVs, creases, corners,
      * holes and the options, everything kept in its original relative order.
      */
-    private Local local(int face) {
+    Local local(int face) {
         int[] sizes = control.faceSizes(), fv = control.faceVertices();
         int total = 0;
         for (int c = cornerStart[face]; c < cornerStart[face + 1]; c++) total += vfStart[fv[c] + 1] - vfStart[fv[c]];

@@ -1,0 +1,522 @@
+package lt.spindulys.subdiv;
+
+/**
+ * The limit surface of one face of a level, evaluated directly at the face's parameters (as
+ * OpenSubdiv's {@code Bfr::Surface} does) instead of by refining: position and first derivatives
+ * at any (u,v), without allocating.
+ *
+ * <p><b>Parameterization</b> (Bfr's): a quad of Catmull-Clark or bilinear has (u,v) in [0,1]^2,
+ * corner 0 at (0,0), corner 1 at (1,0), corner 2 at (1,1); a Loop triangle has corner 1 at
+ * (1,0), corner 2 at (0,1) and u + v &le; 1. Any other face of N corners is split into N quad
+ * sub-faces, sub-face q (at corner q) covering [q % w, q % w + 1/2] x [q / w, q / w + 1/2] with
+ * w = {@link #subFaceColumns}; its local coordinates, twice the offsets into that square, run
+ * from corner q (0,0) along the edge leaving it to the face centre (1,1). Derivatives are with
+ * respect to the face's (u,v).
+ *
+ * <p><b>What is exact here.</b>
+ * <ul>
+ * <li>Regular faces ({@link #isRegular}): a Catmull-Clark quad whose corners are all interior
+ * of valence 4, or boundary of 2 faces, or sharp corners of one face, with no sharp edges and
+ * no semi-sharp vertices around it and only quads in its neighbourhood, is the uniform bicubic
+ * B-spline patch of its 16 neighbouring points; a missing row or column on a boundary stands for
+ * the phantom points that extend the boundary linearly (2 B - I), folded into the weights. A
+ * Loop triangle with the same conditions (valence 6 inside, 3 faces on a boundary) is the quartic
+ * three-direction box-spline patch of its 12 neighbouring points, phantom points again
+ * extrapolated across boundary edges and at boundary vertices, as OpenSubdiv does.</li>
+ * <li>Bilinear faces: quads bilinearly; other faces per sub-face, the bilinear patch of the
+ * corner, the two edge midpoints beside it and the face's centroid.</li>
+ * </ul>
+ * Irregular faces (extraordinary vertices, creases, n-gons of the smooth schemes) need local
+ * adaptive refinement: {@link AdaptiveFaceSurface} descends to this class's regular patches
+ * ({@link #patch}) and, at its deepest level, to Far's Gregory end patches.
+ */
+final class FaceSurface {
+    private static final int BSPLINE = 0, BOX_SPLINE = 1, BILINEAR = 2, LINEAR_SUBFACES = 3;
+
+    private final int kind;
+    /** Control points, xyz each: 16 (B-spline), 12 (box spline), 4 (bilinear) or the N corners. */
+    private final double[] cp;
+    /** B-spline: bit k set when the face's edge k is on a boundary (row or column of phantoms). */
+    private final int boundary;
+    /** Sub-faces: the face size and the columns of the sub-face layout. */
+    private final int n, columns;
+
+    private FaceSurface(int kind, double[] cp, int boundary, int n) {
+        this.kind = kind;
+        this.cp = cp;
+        this.boundary = boundary;
+        this.n = n;
+        this.columns = subFaceColumns(n);
+    }
+
+    /** Columns of Bfr's layout of an N-gon's quad sub-faces. */
+    static int subFaceColumns(int n) {
+        return n < 10 ? (n > 4 ? 3 : 2) : 1 + (int) Math.sqrt((float) (n - 1));
+    }
+
+    /**
+     * The limit surface of face f of the control mesh, if this class can evaluate it exactly:
+     * bilinear faces and regular faces ({@link #isRegular}).
+     *
+     * @throws UnsupportedOperationException for an irregular face of Catmull-Clark or Loop
+     * @throws IllegalArgumentException for a hole
+     */
+    static FaceSurface of(ControlMesh mesh, int f) {
+        return of(mesh.base, mesh.options(), mesh.positions(), f);
+    }
+
+    /** As {@link #of(ControlMesh, int)}, for face f of a level with the given vertex positions. */
+    static FaceSurface of(Level level, SubdivOptions options, double[] positions, int f) {
+        if (level.hole != null && level.hole[f]) throw new IllegalArgumentException("face " + f + " is a hole: it has no limit surface");
+        if (options.scheme() == SubdivOptions.Scheme.BILINEAR) return linear(level, positions, f);
+        if (!isRegular(level, options, f)) throw new UnsupportedOperationException("face " + f + " is irregular");
+        return options.scheme() == SubdivOptions.Scheme.LOOP ? boxSpline(level, positions, f, false) : bSpline(level, positions, f, false);
+    }
+
+    /**
+     * The regular patch of face f of a refined level where infinitely sharp edges count as
+     * boundaries (OpenSubdiv's inf-sharp patches: each side of such a crease is the boundary
+     * patch of its side), for the sub-faces of adaptive refinement.
+     *
+     * @throws UnsupportedOperationException unless {@link #isRegular(Level, SubdivOptions, int, boolean) isRegular(level, options, f, true)}
+     */
+    static FaceSurface patch(Level level, SubdivOptions options, double[] positions, int f) {
+        if (options.scheme() == SubdivOptions.Scheme.BILINEAR) throw new UnsupportedOperationException("bilinear faces are linear");
+        if (!isRegular(level, options, f, true)) throw new UnsupportedOperationException("face " + f + " is irregular");
+        return options.scheme() == SubdivOptions.Scheme.LOOP ? boxSpline(level, positions, f, true) : bSpline(level, positions, f, true);
+    }
+
+    // ------------------------------------------------------------------ regularity
+
+    /** The twin of half-edge h, or -1 on a boundary and, if {@code cut}, across an infinitely sharp edge. */
+    static int across(Level level, int h, boolean cut) {
+        int t = level.hTwin[h];
+        if (t >= 0 && cut && Crease.isInfinite(level.edgeSharpness(h))) return -1;
+        return t;
+    }
+
+    /**
+     * Whether face f has a single regular patch as its limit surface (Bfr's {@code IsRegular}):
+     * the scheme's regular face size, only such faces around its corners, no sharp edges at its
+     * corners other than boundary edges, no semi-sharp or interior infinitely sharp vertices; each
+     * corner (at a non-manifold vertex: its fan of faces holding f) interior of the regular valence (4, or 6 for Loop), a
+     * smooth boundary vertex of half that many faces, or a sharp corner (infinitely sharp, or
+     * made sharp by the boundary option) of a single face.
+     */
+    static boolean isRegular(Level level, SubdivOptions options, int f) {
+        return isRegular(level, options, f, false);
+    }
+
+    /**
+     * As {@link #isRegular(Level, SubdivOptions, int)}, or if {@code cut} with infinitely sharp
+     * edges as boundaries (each corner's fan ends at them; a vertex with three or more of them
+     * is a sharp corner).
+     */
+    static boolean isRegular(Level level, SubdivOptions options, int f, boolean cut) {
+        if (options.scheme() == SubdivOptions.Scheme.BILINEAR) return false;
+        int reg = options.scheme() == SubdivOptions.Scheme.LOOP ? 3 : 4;
+        int interior = reg == 4 ? 4 : 6;
+        if (level.faceSize(f) != reg) return false;
+        int h0 = level.firstHalf(f);
+        for (int c = 0; c < reg; c++) {
+            int h = h0 + c, v = level.hOrig[h];
+            float vs = level.vertexSharpness(v);
+            if (Crease.isSemiSharp(vs)) return false;
+            int ring = corner(level, h, reg, cut);
+            if (ring < 0) return false;
+            int faces = ring >> 1;
+            if ((ring & 1) == 0) {
+                if (Crease.isInfinite(vs) || faces != interior) return false;
+            } else {
+                boolean sharp = Crease.isInfinite(vs)
+                        || (options.boundary() == SubdivOptions.Boundary.EDGE_AND_CORNER && faces == 1 && corner(level, h, 0, false) == (1 << 1 | 1))
+                        || (cut && infSharpEdges(level, h) >= 3);
+                if (faces != (sharp ? 1 : interior / 2)) return false;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * The manifold fan of faces around the origin of half-edge h that holds h's face (all of a
+     * manifold vertex's faces; at a non-manifold vertex, as in Bfr, the faces reached without
+     * crossing a non-manifold edge): twice the number of faces, plus 1 if the fan is open (a
+     * boundary). -1 if a face of another size than {@code reg} or a sharp edge (other than the
+     * fan's ends) is in it.
+     */
+    static int corner(Level level, int h, int reg) {
+        return corner(level, h, reg, false);
+    }
+
+    /** Infinitely sharp edges (boundaries included) at the origin of h, around its fan. */
+    static int infSharpEdges(Level level, int h) {
+        int count = 0, g = h;
+        while (true) {
+            int gp = level.prev(g), t = level.hTwin[gp];
+            if (Crease.isInfinite(level.edgeSharpness(gp))) count++;
+            if (t < 0) break;
+            if (t == h) return count;
+            g = t;
+        }
+        g = h;
+        while (true) {
+            if (Crease.isInfinite(level.edgeSharpness(g))) count++;
+            int t = level.hTwin[g];
+            if (t < 0) break;
+            g = level.next(t);
+        }
+        return count;
+    }
+
+    /** As {@link #corner(Level, int, int)}, the fan ending at infinitely sharp edges if {@code cut}. */
+    static int corner(Level level, int h, int reg, boolean cut) {
+        int faces = 0, g = h;
+        boolean open = false;
+        while (true) { // counter-clockwise
+            faces++;
+            if (reg > 0 && level.faceSize(level.face(g)) != reg) return -1;
+            int gp = level.prev(g), t = across(level, gp, cut);
+            if (t < 0) {
+                open = true;
+                break;
+            }
+            if (reg > 0 && Crease.isSharp(level.edgeSharpness(gp))) return -1;
+            if (t == h) break;
+            g = t;
+        }
+        if (open) {
+            g = h;
+            while (true) { // clockwise from h
+                int t = across(level, g, cut);
+                if (reg > 0 && t >= 0 && Crease.isSharp(level.edgeSharpness(g))) return -1;
+                if (t < 0) break;
+                g = level.next(t);
+                faces++;
+                if (reg > 0 && level.faceSize(level.face(g)) != reg) return -1;
+            }
+        }
+        return faces << 1 | (open ? 1 : 0);
+    }
+
+    // ------------------------------------------------------------------ construction
+
+    /** Quad lattice directions, counter-clockwise from (1,0). */
+    private static final int[] QX = {1, 0, -1, 0}, QY = {0, 1, 0, -1};
+    /** Triangle lattice directions, counter-clockwise from (1,0) (the third axis is (-1,1)). */
+    private static final int[] TX = {1, 0, -1, -1, 0, 1}, TY = {0, 1, 1, 0, -1, -1};
+    /** Box-spline point index of lattice point (x,y), x and y in -1..2, at [(y+1)*4 + x+1]; -1 outside. */
+    private static final int[] TRI_INDEX = {
+        -1, 0, 1, 2,
+        3, 4, 5, 6,
+        7, 8, 9, -1,
+        10, 11, -1, -1};
+
+    /**
+     * The points of the regular neighbourhood of a face in lattice coordinates: the face's corner
+     * c sits at (cx[c], cy[c]) and leaves it along direction dir[c] of the lattice's directions
+     * (dx, dy); the faces around each corner are walked both ways, each contributing the points
+     * it has at known lattice offsets. Writes vertex indices to {@code grid[(y+1)*4 + x+1]} for
+     * x, y in -1..2, leaving -1 where there is no point.
+     */
+    private static int[] lattice(Level level, int f, int[] cx, int[] cy, int[] dir, int[] dx, int[] dy, boolean cut) {
+        int[] grid = new int[16];
+        java.util.Arrays.fill(grid, -1);
+        int m = dx.length, size = cx.length, h0 = level.firstHalf(f);
+        for (int c = 0; c < size; c++) {
+            int corner = h0 + c;
+            put(grid, cx[c], cy[c], level.hOrig[corner]);
+            // Counter-clockwise: g runs from the corner in direction k.
+            int g = corner, k = dir[c];
+            for (int step = 0; step < m; step++) {
+                collect(level, grid, g, cx[c], cy[c], k, dx, dy);
+                int t = across(level, level.prev(g), cut);
+                if (t < 0 || t == corner) break;
+                g = t;
+                k = (k + 1) % m;
+            }
+            // Clockwise, on a boundary (inside, the walk above went all the way round).
+            g = corner;
+            k = dir[c];
+            for (int step = 0; step < m; step++) {
+                int t = across(level, g, cut);
+                if (t < 0) break;
+                g = level.next(t);
+                if (g == corner) break;
+                k = (k + m - 1) % m;
+                collect(level, grid, g, cx[c], cy[c], k, dx, dy);
+            }
+        }
+        return grid;
+    }
+
+    /** The points of the face of half-edge g, which leaves the lattice point (x,y) in direction k. */
+    private static void collect(Level level, int[] grid, int g, int x, int y, int k, int[] dx, int[] dy) {
+        int m = dx.length, k1 = (k + 1) % m;
+        put(grid, x + dx[k], y + dy[k], level.dest(g));
+        put(grid, x + dx[k1], y + dy[k1], level.hOrig[level.prev(g)]);
+        if (m == 4) put(grid, x + dx[k] + dx[k1], y + dy[k] + dy[k1], level.hOrig[level.next(level.next(g))]);
+    }
+
+    private static void put(int[] grid, int x, int y, int v) {
+        if (x < -1 || x > 2 || y < -1 || y > 2) return;
+        int i = (y + 1) * 4 + x + 1;
+        if (grid[i] >= 0 && grid[i] != v) throw new IllegalStateException("inconsistent regular neighbourhood");
+        grid[i] = v;
+    }
+
+    private static FaceSurface bSpline(Level level, double[] pos, int f, boolean cut) {
+        int[] grid = lattice(level, f, new int[] {0, 1, 1, 0}, new int[] {0, 0, 1, 1}, new int[] {0, 1, 2, 3}, QX, QY, cut);
+        int h0 = level.firstHalf(f);
+        int mask = 0;
+        for (int e = 0; e < 4; e++) if (across(level, h0 + e, cut) < 0) mask |= 1 << e;
+        double[] cp = new double[48];
+        int corner0 = level.hOrig[h0];
+        for (int i = 0; i < 16; i++) {
+            int r = i >> 2, c = i & 3;
+            boolean phantom = (r == 0 && (mask & 1) != 0) || (c == 3 && (mask & 2) != 0) || (r == 3 && (mask & 4) != 0) || (c == 0 && (mask & 8) != 0);
+            int v = grid[i];
+            if (v < 0) {
+                if (!phantom) throw new IllegalStateException("face " + f + ": point " + i + " of its B-spline patch is missing");
+                v = corner0; // weight 0 once the boundary is folded in
+            }
+            System.arraycopy(pos, 3 * v, cp, 3 * i, 3);
+        }
+        return new FaceSurface(BSPLINE, cp, mask, 4);
+    }
+
+    private static FaceSurface boxSpline(Level level, double[] pos, int f, boolean cut) {
+        int[] grid = lattice(level, f, new int[] {0, 1, 0}, new int[] {0, 0, 1}, new int[] {0, 2, 4}, TX, TY, cut);
+        double[] cp = new double[36];
+        boolean[] have = new boolean[12];
+        for (int i = 0; i < 16; i++) {
+            int p = TRI_INDEX[i];
+            if (p >= 0 && grid[i] >= 0) {
+                System.arraycopy(pos, 3 * grid[i], cp, 3 * p, 3);
+                have[p] = true;
+            }
+        }
+        int h0 = level.firstHalf(f);
+        boolean[] edge = new boolean[3], vert = new boolean[3];
+        int edges = 0;
+        for (int c = 0; c < 3; c++) {
+            edge[c] = across(level, h0 + c, cut) < 0;
+            if (edge[c]) edges++;
+            vert[c] = (corner(level, h0 + c, 0, cut) & 1) != 0;
+        }
+        // Phantom points beyond each boundary edge.
+        for (int e = 0; e < 3; e++) {
+            if (!edge[e]) continue;
+            boolean before = edge[(e + 2) % 3], after = edge[(e + 1) % 3];
+            phantom(cp, have, e, 0, -1, 0, 0, before ? 0 : -1, before ? 0 : 0, before ? 0 : -1, before ? 1 : 1);
+            phantom(cp, have, e, 1, -1, 0, 0, 1, 0, 0, 1);
+            phantom(cp, have, e, 2, -1, 1, 0, after ? 1 : 2, 0, after ? 0 : 1, 1);
+        }
+        // Boundary vertices not on a boundary edge of the face: all of them if it has none, the
+        // one opposite its boundary edge if it has one and all three corners are on boundaries.
+        for (int c = 0; c < 3; c++) {
+            boolean apply = edges == 0 ? vert[c] : edges == 1 && vert[0] && vert[1] && vert[2] && edge[(c + 1) % 3];
+            if (!apply) continue;
+            phantom(cp, have, c, -1, 0, 0, 0, -1, 1, 0, 1);
+            phantom(cp, have, c, 0, -1, 0, 0, 1, -1, 1, 0);
+        }
+        for (int p = 0; p < 12; p++) if (!have[p]) throw new IllegalStateException("face " + f + ": point " + p + " of its box-spline patch is missing");
+        return new FaceSurface(BOX_SPLINE, cp, 0, 3);
+    }
+
+    /**
+     * Sets the box-spline point at lattice (tx,ty), rotated r times about the face (corner k to
+     * corner k+1), to the point at a plus the one at b minus the one at c (rotated the same way),
+     * unless it exists already.
+     */
+    private static void phantom(double[] cp, boolean[] have, int r, int tx, int ty, int ax, int ay, int bx, int by, int cx, int cy) {
+        int t = rotated(r, tx, ty);
+        if (have[t]) return;
+        int a = rotated(r, ax, ay), b = rotated(r, bx, by), c = rotated(r, cx, cy);
+        if (!have[a] || !have[b] || !have[c]) throw new IllegalStateException("phantom point from a missing point");
+        for (int d = 0; d < 3; d++) cp[3 * t + d] = cp[3 * a + d] + cp[3 * b + d] - cp[3 * c + d];
+        have[t] = true;
+    }
+
+    /** Box-spline index of lattice point (x,y) after r rotations (x,y) -> (1 - x - y, x). */
+    private static int rotated(int r, int x, int y) {
+        for (int i = 0; i < r; i++) {
+            int nx = 1 - x - y;
+            y = x;
+            x = nx;
+        }
+        int p = TRI_INDEX[(y + 1) * 4 + x + 1];
+        if (p < 0) throw new IllegalStateException("lattice point (" + x + "," + y + ") is not in the patch");
+        return p;
+    }
+
+    private static FaceSurface linear(Level level, double[] pos, int f) {
+        int n = level.faceSize(f), h0 = level.firstHalf(f);
+        double[] cp = new double[3 * n];
+        for (int c = 0; c < n; c++) System.arraycopy(pos, 3 * level.hOrig[h0 + c], cp, 3 * c, 3);
+        return new FaceSurface(n == 4 ? BILINEAR : LINEAR_SUBFACES, cp, 0, n);
+    }
+
+    // ------------------------------------------------------------------ evaluation
+
+    /**
+     * The limit position and its derivatives in u and v at (u,v) of the face's parameterization.
+     * Any of the outputs may be null; each takes 3 values.
+     */
+    void evaluate(double u, double v, double[] position, double[] du, double[] dv) {
+        switch (kind) {
+            case BSPLINE -> evalBSpline(u, v, position, du, dv);
+            case BOX_SPLINE -> evalBoxSpline(u, v, position, du, dv);
+            case BILINEAR -> evalBilinear(u, v, cp[0], cp[1], cp[2], cp[3], cp[4], cp[5], cp[6], cp[7], cp[8], cp[9], cp[10], cp[11], 1, position, du, dv);
+            default -> evalSubFace(u, v, position, du, dv);
+        }
+    }
+
+    private void evalBSpline(double u, double v, double[] position, double[] du, double[] dv) {
+        // Uniform cubic B-spline weights and derivatives in u (columns) and v (rows).
+        double bu0 = bs(0, u), bu1 = bs(1, u), bu2 = bs(2, u), bu3 = bs(3, u);
+        double du0 = dbs(0, u), du1 = dbs(1, u), du2 = dbs(2, u), du3 = dbs(3, u);
+        double bv0 = bs(0, v), bv1 = bs(1, v), bv2 = bs(2, v), bv3 = bs(3, v);
+        double dv0 = dbs(0, v), dv1 = dbs(1, v), dv2 = dbs(2, v), dv3 = dbs(3, v);
+        // A boundary edge's phantom row or column is 2 B - I: fold its weight onto B and I.
+        if ((boundary & 1) != 0) { bv1 += 2 * bv0; bv2 -= bv0; bv0 = 0; dv1 += 2 * dv0; dv2 -= dv0; dv0 = 0; }
+        if ((boundary & 4) != 0) { bv2 += 2 * bv3; bv1 -= bv3; bv3 = 0; dv2 += 2 * dv3; dv1 -= dv3; dv3 = 0; }
+        if ((boundary & 8) != 0) { bu1 += 2 * bu0; bu2 -= bu0; bu0 = 0; du1 += 2 * du0; du2 -= du0; du0 = 0; }
+        if ((boundary & 2) != 0) { bu2 += 2 * bu3; bu1 -= bu3; bu3 = 0; du2 += 2 * du3; du1 -= du3; du3 = 0; }
+        for (int d = 0; d < 3; d++) {
+            double p = 0, pu = 0, pv = 0;
+            for (int r = 0; r < 4; r++) {
+                int o = 12 * r + d;
+                double a = cp[o], b = cp[o + 3], c = cp[o + 6], e = cp[o + 9];
+                double row = bu0 * a + bu1 * b + bu2 * c + bu3 * e;
+                double rowU = du0 * a + du1 * b + du2 * c + du3 * e;
+                double wv = r == 0 ? bv0 : r == 1 ? bv1 : r == 2 ? bv2 : bv3;
+                double wdv = r == 0 ? dv0 : r == 1 ? dv1 : r == 2 ? dv2 : dv3;
+                p += wv * row;
+                pu += wv * rowU;
+                pv += wdv * row;
+            }
+            if (position != null) position[d] = p;
+            if (du != null) du[d] = pu;
+            if (dv != null) dv[d] = pv;
+        }
+    }
+
+    /** Uniform cubic B-spline basis function i at t in [0,1]. */
+    static double bs(int i, double t) {
+        double s = 1 - t;
+        return switch (i) {
+            case 0 -> s * s * s / 6;
+            case 1 -> (3 * t * t * t - 6 * t * t + 4) / 6;
+            case 2 -> (-3 * t * t * t + 3 * t * t + 3 * t + 1) / 6;
+            default -> t * t * t / 6;
+        };
+    }
+
+    static double dbs(int i, double t) {
+        double s = 1 - t;
+        return switch (i) {
+            case 0 -> -s * s / 2;
+            case 1 -> (3 * t * t - 4 * t) / 2;
+            case 2 -> (-3 * t * t + 2 * t + 1) / 2;
+            default -> t * t / 2;
+        };
+    }
+
+    /**
+     * The quartic box-spline basis of the regular Loop patch: 12 times the weight of point i is
+     * the polynomial sum of BOX[i][k] s^EX[k] t^EY[k] (the three-direction box spline's pieces
+     * over the 12 points' lattice offsets).
+     */
+    private static final int[] EX = {0, 1, 0, 2, 1, 0, 3, 2, 1, 0, 4, 3, 2, 1, 0};
+    private static final int[] EY = {0, 0, 1, 0, 1, 2, 0, 1, 2, 3, 0, 1, 2, 3, 4};
+    private static final int[][] BOX = {
+        {1, -2, -4, 0, 6, 6, 2, 0, -6, -4, -1, -2, 0, 2, 1},
+        {1, 2, -2, 0, -6, 0, -4, 0, 6, 2, 2, 4, 0, -2, -1},
+        {0, 0, 0, 0, 0, 0, 2, 0, 0, 0, -1, -2, 0, 0, 0},
+        {1, -4, -2, 6, 6, 0, -4, -6, 0, 2, 1, 2, 0, -2, -1},
+        {6, 0, 0, -12, -12, -12, 8, 12, 12, 8, -1, -2, 0, -2, -1},
+        {1, 4, 2, 6, 6, 0, -4, -6, -12, -4, -1, -2, 0, 4, 2},
+        {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 2, 0, 0, 0},
+        {1, -2, 2, 0, -6, 0, 2, 6, 0, -4, -1, -2, 0, 4, 2},
+        {1, 2, 4, 0, 6, 6, -4, -12, -6, -4, 2, 4, 0, -2, -1},
+        {0, 0, 0, 0, 0, 0, 2, 6, 6, 2, -1, -2, 0, -2, -1},
+        {0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, -2, -1},
+        {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 1}};
+
+    private static double pw(double x, int e) {
+        return switch (e) {
+            case 0 -> 1;
+            case 1 -> x;
+            case 2 -> x * x;
+            case 3 -> x * x * x;
+            case 4 -> x * x * x * x;
+            default -> 0; // e < 0: the derivative of a constant
+        };
+    }
+
+    private void evalBoxSpline(double s, double t, double[] position, double[] du, double[] dv) {
+        double px = 0, py = 0, pz = 0, ux = 0, uy = 0, uz = 0, vx = 0, vy = 0, vz = 0;
+        for (int i = 0; i < 12; i++) {
+            double w = 0, ws = 0, wt = 0;
+            int[] row = BOX[i];
+            for (int k = 0; k < 15; k++) {
+                int c = row[k];
+                if (c == 0) continue;
+                int a = EX[k], b = EY[k];
+                w += c * pw(s, a) * pw(t, b);
+                if (a > 0) ws += c * a * pw(s, a - 1) * pw(t, b);
+                if (b > 0) wt += c * b * pw(s, a) * pw(t, b - 1);
+            }
+            w /= 12;
+            ws /= 12;
+            wt /= 12;
+            double x = cp[3 * i], y = cp[3 * i + 1], z = cp[3 * i + 2];
+            px += w * x; py += w * y; pz += w * z;
+            ux += ws * x; uy += ws * y; uz += ws * z;
+            vx += wt * x; vy += wt * y; vz += wt * z;
+        }
+        set(position, px, py, pz);
+        set(du, ux, uy, uz);
+        set(dv, vx, vy, vz);
+    }
+
+    private void evalSubFace(double u, double v, double[] position, double[] du, double[] dv) {
+        // Bfr's tiles: a coordinate just past a tile's half (beyond 3/4) belongs to the next one.
+        int ut = (int) u, vt = (int) v;
+        double uf = u - ut, vf = v - vt;
+        if (uf > 0.75) { ut++; uf -= 1; }
+        if (vf > 0.75) { vt++; vf -= 1; }
+        int q = columns * vt + ut;
+        if (q < 0 || q >= n) throw new IllegalArgumentException("(" + u + ", " + v + ") is outside the face's sub-faces");
+        int next = (q + 1) % n, prev = (q + n - 1) % n;
+        double cx = 0, cy = 0, cz = 0;
+        for (int i = 0; i < n; i++) { cx += cp[3 * i]; cy += cp[3 * i + 1]; cz += cp[3 * i + 2]; }
+        cx /= n; cy /= n; cz /= n;
+        double ox = cp[3 * q], oy = cp[3 * q + 1], oz = cp[3 * q + 2];
+        evalBilinear(2 * uf, 2 * vf,
+                ox, oy, oz,
+                (ox + cp[3 * next]) / 2, (oy + cp[3 * next + 1]) / 2, (oz + cp[3 * next + 2]) / 2,
+                cx, cy, cz,
+                (ox + cp[3 * prev]) / 2, (oy + cp[3 * prev + 1]) / 2, (oz + cp[3 * prev + 2]) / 2,
+                2, position, du, dv);
+    }
+
+    /** Bilinear patch of corners a (0,0), b (1,0), c (1,1), d (0,1); derivatives scaled by k. */
+    private static void evalBilinear(double s, double t,
+            double ax, double ay, double az, double bx, double by, double bz,
+            double cx, double cy, double cz, double dx, double dy, double dz,
+            double k, double[] position, double[] du, double[] dv) {
+        double w0 = (1 - s) * (1 - t), w1 = s * (1 - t), w2 = s * t, w3 = (1 - s) * t;
+        set(position, w0 * ax + w1 * bx + w2 * cx + w3 * dx, w0 * ay + w1 * by + w2 * cy + w3 * dy, w0 * az + w1 * bz + w2 * cz + w3 * dz);
+        // d/ds: (1-t)(b - a) + t(c - d); d/dt: (1-s)(d - a) + s(c - b)
+        set(du, k * ((1 - t) * (bx - ax) + t * (cx - dx)), k * ((1 - t) * (by - ay) + t * (cy - dy)), k * ((1 - t) * (bz - az) + t * (cz - dz)));
+        set(dv, k * ((1 - s) * (dx - ax) + s * (cx - bx)), k * ((1 - s) * (dy - ay) + s * (cy - by)), k * ((1 - s) * (dz - az) + s * (cz - bz)));
+    }
+
+    private static void set(double[] out, double x, double y, double z) {
+        if (out == null) return;
+        out[0] = x;
+        out[1] = y;
+        out[2] = z;
+    }
+}
