@@ -28,16 +28,19 @@ import lt.spindulys.math.Ray;
  *
  * <p><b>Hierarchy.</b> A vertex range larger than a leaf ({@link #leafSize()} vertices per side) is halved along
  * its longer side (in cells), and each half that is still larger than a leaf halved again along its own longer
- * side: up to four children per node, the halves sharing their middle row or column of vertices. One node is one
- * contiguous record of {@value #NODE_INTS} ints: the four children's boxes as float bits, one row of four per
- * bound (min x, y, z, max x, y, z; from the float vertices, so exact), then per child its vertex ranges
- * (i0 | i1 &lt;&lt; 16, then j0 | j1 &lt;&lt; 16, inclusive) and its node index ({@code LEAF} for a leaf,
- * {@code EMPTY} for an unused slot, always after the used ones, whose box is inverted so that no ray enters it).
- * A node's four boxes are tested before any child is entered; a single child hit is entered directly, several
- * are pushed on the caller's {@link TraversalScratch#stack} with their entry distances, nearest on top.
+ * side, three halvings deep (fewer at the root, so that the nodes below have full sets): up to eight children per node, the halves sharing their middle row or column of
+ * vertices. One node is one contiguous record of {@value #NODE_INTS} ints: the eight children's boxes as float bits,
+ * one row of eight per plane (min x, max x, min y, max y, min z, max z; from the float vertices, so exact), then
+ * per child its vertex ranges (i0 | i1 &lt;&lt; 16, then j0 | j1 &lt;&lt; 16, inclusive) and its node index
+ * ({@code LEAF} for a leaf, {@code EMPTY} for an unused slot, always after the used ones, whose box is inverted so
+ * that no ray enters it). A node's eight boxes are tested together, with 8-lane float vectors ({@link SimdBoxes})
+ * when the JDK's vector module is present and the hardware has them ({@link WideBvh#AVAILABLE}), else one by one
+ * with the same float operations; the test is conservative (the origin moved outward, the distances widened), and
+ * only the triangle test decides hits. A single child hit is entered directly, several are pushed on the caller's
+ * {@link TraversalScratch#stack} with their entry distances, sorted nearest on top for a nearest hit.
  *
- * <p>Memory ({@link #bytes}): 12 bytes per vertex (about 6 per triangle) and 144 per node; with the default
- * leaves of 3 x 3 vertices about 12 bytes per triangle in all, with leaves of 5 x 5 about 8, plus 6 per triangle
+ * <p>Memory ({@link #bytes}): 12 bytes per vertex (about 6 per triangle) and 288 per node; with the default
+ * leaves of 3 x 3 vertices about 11 bytes per triangle in all, with leaves of 5 x 5 about 7, plus 6 per triangle
  * for float normals.
  *
  * <p>Immutable once made: any number of threads may trace one; all per-ray state is in the caller's
@@ -49,8 +52,11 @@ public final class GridPatch implements CachedPatch {
     /** Leaf size (vertices per side) used when none is given; chosen by measurement (see the tests' benchmark). */
     public static final int DEFAULT_LEAF_SIZE = 3;
 
-    /** A node record: the children's boxes as six rows of four (min x, y, z, max x, y, z), then four each of i ranges, j ranges and child references. */
-    static final int NODE_INTS = 36, I_RANGES = 24, J_RANGES = 28, REFS = 32;
+    /**
+     * A node record: the children's boxes as six rows of eight float bits (min x, max x, min y, max y, min z,
+     * max z, as {@link SimdBoxes} reads them), then eight each of i ranges, j ranges and child references.
+     */
+    static final int NODE_INTS = 72, I_RANGES = 48, J_RANGES = 56, REFS = 64, WIDTH = 8;
     static final int LEAF = -1, EMPTY = -2;
     /** The relative widening of a slab interval (as {@link Bvh}'s). */
     private static final double PAD = 4 * 3 * 0x1p-53 / (1 - 3 * 0x1p-53);
@@ -148,7 +154,7 @@ public final class GridPatch implements CachedPatch {
      * The heap this grid retains: 128 bytes for the object and its six-int box (an 88-byte object with compressed
      * references, a 40-byte array), plus per array (positions, the node records, and normals and parameters when
      * present) a 16-byte header and its elements rounded up to 8 bytes. For nu x nv vertices and N nodes that is
-     * 128 + 16 + 12 nu nv + 16 + 144 N (+ 16 + 12 nu nv with normals, + 16 + 8 nu nv with parameters), up to the
+     * 128 + 16 + 12 nu nv + 16 + 288 N (+ 16 + 12 nu nv with normals, + 16 + 8 nu nv with parameters), up to the
      * rounding.
      *
      * @return bytes, for a cache's budget
@@ -239,20 +245,22 @@ public final class GridPatch implements CachedPatch {
     private final class Builder {
         int[] nodes = new int[NODE_INTS * 16];
         int count, depth;
-        private final int[] ranges = new int[16];
+        private final int[] ranges = new int[4 * WIDTH];
 
         /** Builds the node of range [i0..i1] x [j0..j1] (larger than a leaf), its box into out[o..o+5]. */
         int build(int i0, int i1, int j0, int j1, int[] out, int o, int level) {
             depth = Math.max(depth, level);
             int n = count++;
             if (nodes.length < count * NODE_INTS) nodes = Arrays.copyOf(nodes, 2 * count * NODE_INTS);
-            int children = split(i0, i1, j0, j1, ranges, 0);
+            // the halvings down to the leaves dealt out three per level from the bottom up, the remainder at
+            // this node, so that nodes near the leaves (the most numerous) have all eight children
+            int children = split(i0, i1, j0, j1, ranges, 0, (halvings(i1 - i0, j1 - j0) - 1) % 3 + 1);
             int[] r = ranges.clone(); // the recursion reuses ranges; building is not per ray
             int base = n * NODE_INTS;
             int[] childBox = new int[6];
             float[] u = {Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY, Float.POSITIVE_INFINITY,
                 Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY, Float.NEGATIVE_INFINITY};
-            for (int c = 0; c < 4; c++) {
+            for (int c = 0; c < WIDTH; c++) {
                 int ref;
                 if (c >= children) {
                     childBox[0] = childBox[1] = childBox[2] = Float.floatToRawIntBits(Float.POSITIVE_INFINITY);
@@ -274,29 +282,43 @@ public final class GridPatch implements CachedPatch {
                         u[k + 3] = Math.max(u[k + 3], Float.intBitsToFloat(childBox[k + 3]));
                     }
                 }
-                for (int k = 0; k < 6; k++) nodes[base + 4 * k + c] = childBox[k];
+                for (int k = 0; k < 3; k++) {
+                    nodes[base + 16 * k + c] = childBox[k];
+                    nodes[base + 16 * k + 8 + c] = childBox[k + 3];
+                }
                 nodes[base + REFS + c] = ref;
             }
             for (int k = 0; k < 6; k++) out[o + k] = Float.floatToRawIntBits(u[k]);
             return n;
         }
 
+        /** How many halvings a range of cu x cv cells takes to leaves on its longest path. */
+        private int halvings(int cu, int cv) {
+            int h = 0;
+            while (!fits(cu, cv)) {
+                if (cu >= cv) cu = (cu + 1) >> 1;
+                else cv = (cv + 1) >> 1;
+                h++;
+            }
+            return h;
+        }
+
         /**
-         * Cuts [i0..i1] x [j0..j1] into up to four ranges (i0, i1, j0, j1 each) into r: halves along the longer
-         * side in cells (u on a tie), then each half that is still larger than a leaf along its own longer side.
+         * Cuts [i0..i1] x [j0..j1] into up to 2^levels ranges (i0, i1, j0, j1 each) from r[4 * at]: halves along
+         * the longer side in cells (u on a tie), then each half that is still larger than a leaf likewise, down
+         * to {@code levels} halvings; returns how many.
          */
-        private int split(int i0, int i1, int j0, int j1, int[] r, int at) {
+        private int split(int i0, int i1, int j0, int j1, int[] r, int at, int levels) {
             int k = at;
             int[] halves = new int[8];
             halve(i0, i1, j0, j1, halves, 0);
             for (int h = 0; h < 2; h++) {
                 int a0 = halves[4 * h], a1 = halves[4 * h + 1], b0 = halves[4 * h + 2], b1 = halves[4 * h + 3];
-                if (fits(a1 - a0, b1 - b0)) {
+                if (levels == 1 || fits(a1 - a0, b1 - b0)) {
                     r[4 * k] = a0; r[4 * k + 1] = a1; r[4 * k + 2] = b0; r[4 * k + 3] = b1;
                     k++;
                 } else {
-                    halve(a0, a1, b0, b1, r, 4 * k);
-                    k += 2;
+                    k += split(a0, a1, b0, b1, r, k, levels - 1);
                 }
             }
             return k - at;
@@ -317,8 +339,8 @@ public final class GridPatch implements CachedPatch {
 
     // ---- queries ----
 
-    /** Ints of traversal stack a query needs: four per entry, at most three left behind per level. */
-    private int stackNeed() { return 4 * (3 * depth + 4); }
+    /** Ints of traversal stack a query needs: four per entry, at most seven left behind per level. */
+    private int stackNeed() { return 4 * ((WIDTH - 1) * depth + WIDTH); }
 
     /**
      * The nearest hit in (ray.tMin, ray.tMax), recorded in {@code hit} (t, sub, u, v; see the class comment).
@@ -336,22 +358,37 @@ public final class GridPatch implements CachedPatch {
         return walk(ray, null, ctx);
     }
 
+    /** Whether a node's eight boxes are tested with the JDK's vector API ({@link SimdBoxes}), else one by one. */
+    private static final boolean SIMD = WideBvh.AVAILABLE;
+
     private boolean walk(Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
         ctx.direction(ray);
-        final double ox = ray.ox, oy = ray.oy, oz = ray.oz;
-        final double ix = ctx.invX, iy = ctx.invY, iz = ctx.invZ;
-        if (Double.isNaN(Bvh.slabEntry(box, 0, ox, oy, oz, ix, iy, iz, ix < 0 ? 3 : 0, iy < 0 ? 3 : 0, iz < 0 ? 3 : 0,
-                ray.tMin, ray.tMax))) {
-            return false;
+        {
+            final double ix = ctx.invX, iy = ctx.invY, iz = ctx.invZ;
+            if (Double.isNaN(Bvh.slabEntry(box, 0, ray.ox, ray.oy, ray.oz, ix, iy, iz, ix < 0 ? 3 : 0, iy < 0 ? 3 : 0,
+                    iz < 0 ? 3 : 0, ray.tMin, ray.tMax))) {
+                return false;
+            }
         }
-        // offsets of the near planes in a node record (the far ones are 12 further, or 12 nearer)
-        final int xn = ix < 0 ? 12 : 0, yn = iy < 0 ? 12 : 0, zn = iz < 0 ? 12 : 0;
         final double saved = ray.tMax;
         if (nodeCount == 0) {
             boolean any = leaf(0, nu - 1, 0, nv - 1, ray, hit, ctx);
             ray.tMax = saved;
             return any;
         }
+        // the boxes are tested as WideBvh tests its own, in float with the origin moved two ulps outward and the
+        // distances widened, so that rounding never drops a box the ray touches; unlike WideBvh's the inverse
+        // direction is not clamped: a ray in a box's plane (a direction component zero, the origin on a halving
+        // line) then gets infinite slab distances of the right sign from the moved origin, not tiny ones
+        final float ix = (float) ctx.invX, iy = (float) ctx.invY, iz = (float) ctx.invZ;
+        final float fox = (float) ray.ox, foy = (float) ray.oy, foz = (float) ray.oz;
+        final float ex = ix >= 0 ? slack(fox) : -slack(fox), ey = iy >= 0 ? slack(foy) : -slack(foy),
+                ez = iz >= 0 ? slack(foz) : -slack(foz);
+        final float oxn = fox + ex, oxf = fox - ex, oyn = foy + ey, oyf = foy - ey, ozn = foz + ez, ozf = foz - ez;
+        final int nx = ix >= 0 ? 0 : 8, ny = iy >= 0 ? 0 : 8, nz = iz >= 0 ? 0 : 8;
+        final float tMin = Bvh.down(ray.tMin);
+        float tMax = Bvh.up(ray.tMax);
+        final float[] dist = ctx.lanes;
         final int base = ctx.stackTop, need = stackNeed();
         final int[] stack = ctx.stack(base + need);
         final int[] nodes = this.nodes;
@@ -365,49 +402,54 @@ public final class GridPatch implements CachedPatch {
                     if (leaf(ir & 0xffff, ir >>> 16, jr & 0xffff, jr >>> 16, ray, hit, ctx)) {
                         any = true;
                         if (hit == null) return true;
+                        tMax = Bvh.up(ray.tMax);
                     }
                 } else {
                     final int b = n * NODE_INTS;
-                    final double tMin = ray.tMin, tMax = ray.tMax;
                     // an unused slot's box is inverted (min +inf, max -inf): no ray enters it
-                    final double d0 = entry(nodes, b, xn, yn, zn, ox, oy, oz, ix, iy, iz, tMin, tMax);
-                    final double d1 = entry(nodes, b + 1, xn, yn, zn, ox, oy, oz, ix, iy, iz, tMin, tMax);
-                    final double d2 = entry(nodes, b + 2, xn, yn, zn, ox, oy, oz, ix, iy, iz, tMin, tMax);
-                    final double d3 = entry(nodes, b + 3, xn, yn, zn, ox, oy, oz, ix, iy, iz, tMin, tMax);
-                    final int mask = (d0 < MISS ? 1 : 0) | (d1 < MISS ? 2 : 0) | (d2 < MISS ? 4 : 0) | (d3 < MISS ? 8 : 0);
-                    if (mask != 0 && (mask & (mask - 1)) == 0) { // one child: entered without the stack
-                        final int c = Integer.numberOfTrailingZeros(mask);
-                        n = nodes[b + REFS + c];
-                        ir = nodes[b + I_RANGES + c];
-                        jr = nodes[b + J_RANGES + c];
-                        continue;
-                    }
-                    // several: pushed with their entry distances rounded down to floats, those of this node kept
-                    // sorted (for a nearest hit) with the nearest on top
-                    final int first = sp;
-                    for (int bits = mask; bits != 0; bits &= bits - 1) {
-                        final int c = Integer.numberOfTrailingZeros(bits);
-                        final int tb = Float.floatToRawIntBits(Bvh.down(c == 0 ? d0 : c == 1 ? d1 : c == 2 ? d2 : d3));
-                        int at = sp;
-                        if (hit != null) {
-                            while (at > first && Float.intBitsToFloat(stack[at - 1]) < Float.intBitsToFloat(tb)) {
-                                stack[at] = stack[at - 4]; stack[at + 1] = stack[at - 3];
-                                stack[at + 2] = stack[at - 2]; stack[at + 3] = stack[at - 1];
-                                at -= 4;
-                            }
+                    int bits = SIMD
+                            ? SimdBoxes.test(nodes, b, nx, ny, nz, oxn, oxf, oyn, oyf, ozn, ozf, ix, iy, iz, tMin, tMax, dist)
+                            : boxes(nodes, b, nx, ny, nz, oxn, oxf, oyn, oyf, ozn, ozf, ix, iy, iz, tMin, tMax, dist);
+                    if (bits != 0) {
+                        final int c0 = b + REFS;
+                        if ((bits & (bits - 1)) == 0) { // one child: entered without the stack
+                            final int c = Integer.numberOfTrailingZeros(bits);
+                            n = nodes[c0 + c];
+                            ir = nodes[b + I_RANGES + c];
+                            jr = nodes[b + J_RANGES + c];
+                            continue;
                         }
-                        stack[at] = nodes[b + REFS + c];
-                        stack[at + 1] = nodes[b + I_RANGES + c];
-                        stack[at + 2] = nodes[b + J_RANGES + c];
-                        stack[at + 3] = tb;
-                        sp += 4;
+                        // several: pushed with their entry distances, those of this node kept sorted (for a
+                        // nearest hit) with the nearest on top, which is taken at once
+                        final int first = sp;
+                        do {
+                            final int c = Integer.numberOfTrailingZeros(bits);
+                            bits &= bits - 1;
+                            final float d = dist[c];
+                            int at = sp;
+                            if (hit != null) {
+                                while (at > first && Float.intBitsToFloat(stack[at - 1]) < d) {
+                                    stack[at] = stack[at - 4]; stack[at + 1] = stack[at - 3];
+                                    stack[at + 2] = stack[at - 2]; stack[at + 3] = stack[at - 1];
+                                    at -= 4;
+                                }
+                            }
+                            stack[at] = nodes[c0 + c];
+                            stack[at + 1] = nodes[b + I_RANGES + c];
+                            stack[at + 2] = nodes[b + J_RANGES + c];
+                            stack[at + 3] = Float.floatToRawIntBits(d);
+                            sp += 4;
+                        } while (bits != 0);
+                        sp -= 4;
+                        n = stack[sp]; ir = stack[sp + 1]; jr = stack[sp + 2];
+                        continue;
                     }
                 }
                 // pop the next pending entry that may still hold something nearer than the best hit
                 boolean found = false;
                 while (sp > base) {
                     sp -= 4;
-                    if (Float.intBitsToFloat(stack[sp + 3]) <= ray.tMax) {
+                    if (Float.intBitsToFloat(stack[sp + 3]) <= tMax) {
                         n = stack[sp]; ir = stack[sp + 1]; jr = stack[sp + 2];
                         found = true;
                         break;
@@ -422,31 +464,37 @@ public final class GridPatch implements CachedPatch {
         return any;
     }
 
-    private static final double MISS = Double.POSITIVE_INFINITY;
+    private static float slack(float o) { return 2 * Math.ulp(Math.abs(o)); }
+
+    /** {@link SimdBoxes}'s widening of a distance, for the scalar test. */
+    private static final float GAMMA = 8 * 0x1p-24f;
 
     /**
-     * The entry distance of child {@code o - (node record)} of a node: the slab test against [tMin, tMax], widened
-     * as {@link Bvh#slabEntry} widens it so that rounding never drops a box the ray touches, or {@code MISS}. A NaN
-     * (the origin on a plane the ray runs in) leaves near or far as they were.
+     * The eight boxes of the node record at {@code o} tested one by one, with the float operations
+     * {@link SimdBoxes#test(int[], int, int, int, int, float, float, float, float, float, float, float, float, float,
+     * float, float, float[])} does per lane: the entry distances of those hit into dist, and their lanes as bits.
      */
-    private static double entry(int[] nodes, int o, int xn, int yn, int zn, double ox, double oy, double oz,
-                                double ix, double iy, double iz, double tMin, double tMax) {
-        double near = tMin, far = tMax, t;
-        t = (Float.intBitsToFloat(nodes[o + xn]) - ox) * ix;
-        if (t > near) near = t;
-        t = (Float.intBitsToFloat(nodes[o + 12 - xn]) - ox) * ix;
-        if (t < far) far = t;
-        t = (Float.intBitsToFloat(nodes[o + 4 + yn]) - oy) * iy;
-        if (t > near) near = t;
-        t = (Float.intBitsToFloat(nodes[o + 16 - yn]) - oy) * iy;
-        if (t < far) far = t;
-        t = (Float.intBitsToFloat(nodes[o + 8 + zn]) - oz) * iz;
-        if (t > near) near = t;
-        t = (Float.intBitsToFloat(nodes[o + 20 - zn]) - oz) * iz;
-        if (t < far) far = t;
-        near -= PAD * Math.abs(near);
-        far += PAD * Math.abs(far);
-        return near <= far ? near : MISS;
+    private static int boxes(int[] nodes, int o, int nx, int ny, int nz, float oxn, float oxf, float oyn, float oyf,
+                             float ozn, float ozf, float ix, float iy, float iz, float tMin, float tMax, float[] dist) {
+        int bits = 0;
+        for (int c = 0; c < WIDTH; c++) {
+            final int p = o + c;
+            float t0 = (Float.intBitsToFloat(nodes[p + nx]) - oxn) * ix;
+            float t1 = (Float.intBitsToFloat(nodes[p + 8 - nx]) - oxf) * ix;
+            t0 = Math.max(t0, (Float.intBitsToFloat(nodes[p + 16 + ny]) - oyn) * iy);
+            t1 = Math.min(t1, (Float.intBitsToFloat(nodes[p + 24 - ny]) - oyf) * iy);
+            t0 = Math.max(t0, (Float.intBitsToFloat(nodes[p + 32 + nz]) - ozn) * iz);
+            t1 = Math.min(t1, (Float.intBitsToFloat(nodes[p + 40 - nz]) - ozf) * iz);
+            t0 = Math.max(t0, tMin);
+            t1 = Math.min(t1, tMax);
+            t0 = Math.abs(t0) * -GAMMA + t0;
+            t1 = Math.abs(t1) * GAMMA + t1;
+            if (t0 <= t1) {
+                dist[c] = t0;
+                bits |= 1 << c;
+            }
+        }
+        return bits;
     }
 
     /**

@@ -2,6 +2,7 @@ package lt.spindulys.accel;
 
 import jdk.incubator.vector.ByteVector;
 import jdk.incubator.vector.FloatVector;
+import jdk.incubator.vector.IntVector;
 import jdk.incubator.vector.VectorMask;
 import jdk.incubator.vector.VectorOperators;
 import jdk.incubator.vector.VectorSpecies;
@@ -14,6 +15,7 @@ import jdk.incubator.vector.VectorSpecies;
 final class SimdBoxes {
     private static final VectorSpecies<Float> S = FloatVector.SPECIES_256;
     private static final VectorSpecies<Byte> B = ByteVector.SPECIES_64;
+    private static final VectorSpecies<Integer> I = IntVector.SPECIES_256;
     /**
      * Relative widening of every computed distance: each is three float roundings away from the
      * exact value for the (shifted) float origin, and 8 ulps leave room to spare.
@@ -61,5 +63,35 @@ final class SimdBoxes {
     /** Eight planes: the signed bytes q[o..o+7] as floats, times scale, plus base (as {@link WideBvh#decode}). */
     private static FloatVector plane(byte[] q, int o, float scale, float base) {
         return ((FloatVector) ByteVector.fromArray(B, q, o).convertShape(VectorOperators.B2F, S, 0)).mul(scale).add(base);
+    }
+
+    /**
+     * The same test of eight boxes stored as float bits: {@code planes[o..o+47]} are min x of the eight, max x,
+     * min y, ... as rows of eight ({@link GridPatch}'s node records).
+     */
+    static int test(int[] planes, int o, int nx, int ny, int nz,
+                    float oxn, float oxf, float oyn, float oyf, float ozn, float ozf,
+                    float ix, float iy, float iz, float tMin, float tMax, float[] dist) {
+        FloatVector t0 = row(planes, o + nx).sub(oxn).mul(ix);
+        FloatVector t1 = row(planes, o + (8 - nx)).sub(oxf).mul(ix);
+        t0 = t0.max(row(planes, o + 16 + ny).sub(oyn).mul(iy));
+        t1 = t1.min(row(planes, o + 16 + (8 - ny)).sub(oyf).mul(iy));
+        t0 = t0.max(row(planes, o + 32 + nz).sub(ozn).mul(iz));
+        t1 = t1.min(row(planes, o + 32 + (8 - nz)).sub(ozf).mul(iz));
+        t0 = t0.max(tMin);
+        t1 = t1.min(tMax);
+        t0 = t0.abs().mul(-GAMMA).add(t0);
+        t1 = t1.abs().mul(GAMMA).add(t1);
+        VectorMask<Float> m = t0.compare(VectorOperators.LE, t1);
+        if (!m.anyTrue()) return 0;
+        t0.blend(Float.POSITIVE_INFINITY, m.not()).intoArray(dist, 0);
+        int bits = 0;
+        for (int i = 0; i < 8; i++) bits |= (dist[i] < Float.POSITIVE_INFINITY ? 1 : 0) << i;
+        return bits;
+    }
+
+    /** Eight floats stored as bits at p[o..o+7]. */
+    private static FloatVector row(int[] p, int o) {
+        return IntVector.fromArray(I, p, o).reinterpretAsFloats();
     }
 }

@@ -260,7 +260,7 @@ class GridPatchTest {
         assertEquals(128 + 16 + 304 + 16, one.bytes(), "one leaf: positions (75 floats, 300 bytes rounded to 304) and an empty node array");
         GridPatch g = grid(65, 65, f(GridTestSurfaces.bumpy(65, 65)), 5);
         assertTrue(g.nodeCount() > 0);
-        assertEquals(128 + 16 + up8(12L * 65 * 65) + 16 + 144L * g.nodeCount(), g.bytes());
+        assertEquals(128 + 16 + up8(12L * 65 * 65) + 16 + 288L * g.nodeCount(), g.bytes());
         float[] n = new float[3 * 65 * 65], uv = new float[2 * 65 * 65];
         GridPatch full = new GridPatch(65, 65, f(GridTestSurfaces.bumpy(65, 65)), n, uv, 0, 0, 1, 1, 5);
         assertEquals(g.bytes() + 16 + up8(12L * 65 * 65) + 16 + 8L * 65 * 65, full.bytes());
@@ -270,10 +270,12 @@ class GridPatchTest {
 
     @Test
     void theHierarchyHalvesDownToLeavesOfTheGivenSize() {
-        // 64 x 64 cells, leaves of 4 x 4 cells: 256 leaves under a four-way tree of 1 + 4 + 16 + 64 nodes
+        // 64 x 64 cells, leaves of 4 x 4 cells: eight halvings, two at the root and three per level below, so 256
+        // leaves under a tree of 1 + 4 + 32 nodes (the root cut into four 32 x 32 ranges, each of those into eight
+        // 8 x 16, each of those into eight leaves)
         GridPatch g = grid(65, 65, f(GridTestSurfaces.bumpy(65, 65)), 5);
-        assertEquals(85, g.nodeCount());
-        assertEquals(4, g.depth());
+        assertEquals(37, g.nodeCount());
+        assertEquals(3, g.depth());
         assertEquals(0, grid(17, 17, f(GridTestSurfaces.bumpy(17, 17)), 17).nodeCount());
         assertEquals(1, grid(18, 18, f(GridTestSurfaces.bumpy(18, 18)), 17).nodeCount());
     }
