@@ -14,31 +14,180 @@ package lt.spindulys.subdiv;
  * case; there the end patch is Far's Gregory patch ({@link GregoryPatch}, {@link GregoryTriangle}).
  * N-gons of Catmull-Clark start at their level-1 quads, one per Bfr sub-face.
  *
- * <p>The levels are given whole: the face's one-ring (see {@link PatchRefiner#local}) refined
- * uniformly to the sharp level, whose descendants of the face are exact. That is the simple,
- * costly form (about 9 x 4^6 faces per face); refining only the sub-faces descended into is the
- * next step for speed, not for values.
+ * <p>The whole descent is done once, when the evaluator is made ({@link #of}): the face's one-ring
+ * (see {@link PatchRefiner#local}) is refined a level at a time, each level only as deep as some
+ * sub-face still needs (level 2 where no sharp feature remains) and cut down to the one-rings of
+ * the sub-faces still descended into (as {@link PatchRefiner} prunes its levels: their
+ * refinements are exact). Every sub-face's regular patch or end patch is kept in a tree of
+ * sub-faces, and the levels are dropped; an evaluation is the walk down that tree to (u,v)'s
+ * sub-face and its patch's basis, allocating nothing. An evaluator has scratch space of its own:
+ * one thread at a time.
  */
 final class AdaptiveFaceSurface {
-    private final RefinedMesh[] levels;
-    private final int face, smooth, depth, n, columns;
+    /** A sub-face: its corners' locations in the face's (u,v), and its children or its patch. */
+    private static final class Node {
+        /** Corner locations (u,v) of a quad, or of a triangle in slots 0 to 5. */
+        final double[] loc;
+        /** Children (4, or one per corner below an n-gon), or null at a leaf. */
+        Node[] kids;
+        /** Per child of a quad, the box (u from, u to, v from, v to) that picks it. */
+        double[] box;
+        /** A leaf's patch: one of these, or none where the point is not evaluated. */
+        FaceSurface patch;
+        GregoryPatch gregory;
+        GregoryTriangle triangle;
+        /** A leaf's map from (u,v) to its patch's (s,t): s = su (u - loc0) + sv (v - loc1), likewise t. */
+        double su, sv, tu, tv;
+
+        Node(double[] loc) { this.loc = loc; }
+
+        /** The patch's parameter axes: from corner 0 to corner 1 (s) and to corner b (t). */
+        void map(int b) {
+            double ax = loc[2] - loc[0], ay = loc[3] - loc[1], bx = loc[2 * b] - loc[0], by = loc[2 * b + 1] - loc[1];
+            double det = ax * by - bx * ay;
+            su = by / det; sv = -bx / det; tu = -ay / det; tv = ax / det;
+        }
+    }
+
+    private final Node root;
+    private final int n, columns;
+    private final boolean loop;
+    private final double[] ps = new double[3], pt = new double[3];
+    private final int faces;
+
+    private AdaptiveFaceSurface(Node root, int n, boolean loop, int faces) {
+        this.root = root;
+        this.n = n;
+        this.columns = FaceSurface.subFaceColumns(n);
+        this.loop = loop;
+        this.faces = faces;
+    }
 
     /**
-     * @param levels the mesh refined uniformly: levels[0] the base, at least {@code depth + 1} of them
-     * @param face a face of the base level
+     * The evaluator of a face of a control mesh (its one-ring, see {@link PatchRefiner#local}, is
+     * enough: the descent needs nothing beyond it).
+     *
+     * @param mesh the control mesh
+     * @param face a face of it
      * @param smooth the approximation level for smooth features: sub-faces irregular only by
      *               smooth features are end patches at this level
      * @param depth the approximation level for sharp features: the deepest level descended to
      */
-    AdaptiveFaceSurface(RefinedMesh[] levels, int face, int smooth, int depth) {
-        if (levels.length <= depth) throw new IllegalArgumentException("need " + (depth + 1) + " levels");
-        this.levels = levels;
-        this.face = face;
-        this.smooth = smooth;
-        this.depth = depth;
-        this.n = levels[0].topo.faceSize(face);
-        this.columns = FaceSurface.subFaceColumns(n);
+    static AdaptiveFaceSurface of(ControlMesh mesh, int face, int smooth, int depth) {
+        SubdivOptions opt = mesh.options();
+        boolean loop = opt.scheme() == SubdivOptions.Scheme.LOOP;
+        RefinedMesh r = RefinedMesh.base(mesh);
+        int n = r.topo.faceSize(face), columns = FaceSurface.subFaceColumns(n);
+        boolean ngon = !loop && n != 4;
+        Node root = new Node(loop ? new double[] {0, 0, 1, 0, 0, 1, 0, 0} : new double[] {0, 0, 1, 0, 1, 1, 0, 1});
+        // The sub-faces at level d not yet settled, and their faces in the level as kept.
+        Node[] nodes = {root};
+        int[] at = {face};
+        int count = 1, made = 0;
+        for (int d = 0; count > 0; d++) {
+            Level p = r.topo;
+            Node[] down = new Node[count];
+            int[] downAt = new int[count];
+            int m = 0;
+            for (int i = 0; i < count; i++) {
+                if (settle(nodes[i], r, at[i], d, d == 0 && ngon, loop, smooth, depth)) {
+                    down[m] = nodes[i];
+                    downAt[m++] = at[i];
+                } else {
+                    made++;
+                }
+            }
+            if (m == 0) break;
+            RefinedMesh next = r.refine();
+            Level c = next.topo;
+            int kidsEach = d == 0 && ngon ? n : 4;
+            nodes = new Node[m * kidsEach];
+            at = new int[m * kidsEach];
+            count = 0;
+            for (int i = 0; i < m; i++) {
+                Node q = down[i];
+                int f = downAt[i], h0 = p.firstHalf(f);
+                q.kids = new Node[kidsEach];
+                if (loop) {
+                    double[] loc = q.loc;
+                    double[] m01 = mid(loc, 0, 1), m12 = mid(loc, 1, 2), m20 = mid(loc, 2, 0);
+                    double[][] kids = {
+                        {loc[0], loc[1], m01[0], m01[1], m20[0], m20[1], 0, 0},
+                        {m01[0], m01[1], loc[2], loc[3], m12[0], m12[1], 0, 0},
+                        {m20[0], m20[1], m12[0], m12[1], loc[4], loc[5], 0, 0},
+                        {m12[0], m12[1], m20[0], m20[1], m01[0], m01[1], 0, 0}};
+                    for (int k = 0; k < 4; k++) {
+                        q.kids[k] = new Node(kids[k]);
+                        nodes[count] = q.kids[k];
+                        at[count++] = 4 * f + k; // child j of face f is face 4f + j
+                    }
+                } else if (d == 0 && ngon) {
+                    // Bfr's sub-face k of an n-gon: the child face at corner k.
+                    for (int k = 0; k < n; k++) {
+                        double x = k % columns, y = k / columns;
+                        double[] cl = new double[8];
+                        placeChild(p, c, h0 + k, n, x, y, x + 0.5, y, x + 0.5, y + 0.5, x, y + 0.5, cl);
+                        q.kids[k] = new Node(cl);
+                        nodes[count] = q.kids[k];
+                        at[count++] = h0 + k; // the child face of parent half-edge h is face h
+                    }
+                } else {
+                    double[] loc = q.loc;
+                    q.box = new double[16];
+                    for (int j = 0; j < 4; j++) {
+                        int jn = (j + 1) & 3, jp = (j + 3) & 3;
+                        double cx = loc[2 * j], cy = loc[2 * j + 1];
+                        double ex = (cx + loc[2 * jn]) / 2, ey = (cy + loc[2 * jn + 1]) / 2;
+                        double mx = (loc[0] + loc[2] + loc[4] + loc[6]) / 4, my = (loc[1] + loc[3] + loc[5] + loc[7]) / 4;
+                        double px = (cx + loc[2 * jp]) / 2, py = (cy + loc[2 * jp + 1]) / 2;
+                        q.box[4 * j] = Math.min(cx, mx);
+                        q.box[4 * j + 1] = Math.max(cx, mx);
+                        q.box[4 * j + 2] = Math.min(cy, my);
+                        q.box[4 * j + 3] = Math.max(cy, my);
+                        double[] cl = new double[8];
+                        placeChild(p, c, h0 + j, 4, cx, cy, ex, ey, mx, my, px, py, cl);
+                        q.kids[j] = new Node(cl);
+                        nodes[count] = q.kids[j];
+                        at[count++] = h0 + j;
+                    }
+                }
+            }
+            // Only the one-rings of the sub-faces still to settle are kept (their values are exact).
+            if (PatchRefiner.prunable(next)) {
+                int[] faceAt = PatchRefiner.keptFaces(next, at, count);
+                next = PatchRefiner.prune(next, faceAt);
+                for (int i = 0; i < count; i++) at[i] = faceAt[at[i]];
+            }
+            r = next;
+        }
+        return new AdaptiveFaceSurface(root, n, loop, made);
     }
+
+    /**
+     * Settles a sub-face (face f of level r, at depth d) as a leaf with its regular patch or end
+     * patch (or none: not evaluated), or says it is to be refined further.
+     */
+    private static boolean settle(Node q, RefinedMesh r, int f, int d, boolean ngonRoot, boolean loop, int smooth, int depth) {
+        Level l = r.topo;
+        SubdivOptions opt = r.controlMesh().options();
+        if (!ngonRoot && FaceSurface.isRegular(l, opt, f, true)) {
+            q.patch = FaceSurface.patch(l, opt, r.positions(), f);
+            q.map(loop ? 2 : 3);
+            return false;
+        }
+        if (d == depth || (d >= smooth && !ngonRoot && !sharpFeature(l, opt, f))) {
+            if (d > 0) {
+                if (loop) q.triangle = GregoryTriangle.of(l, opt, r.positions(), f);
+                else q.gregory = GregoryPatch.of(l, opt, r.positions(), f);
+            }
+            q.map(loop ? 2 : 3);
+            return false;
+        }
+        return true;
+    }
+
+    /** The number of patches (regular, end, or none) the face is cut into. */
+    int patchCount() { return faces; }
 
     /** Whether this class handles the face: a Catmull-Clark face with a limit surface. */
     static boolean supported(Level base, SubdivOptions options, int f) {
@@ -85,58 +234,42 @@ final class AdaptiveFaceSurface {
 
     /**
      * The limit position and derivatives at (u,v) of the face's parameterization (Bfr's, see
-     * {@link FaceSurface}); false, with the outputs untouched, where the point lies in an end
-     * patch (not evaluated yet).
+     * {@link FaceSurface}); false, with the outputs untouched, where the point lies in a patch not
+     * evaluated (an end patch with a corner not handled). Any output may be null; each takes 3
+     * values. Allocates nothing.
      */
     boolean evaluate(double u, double v, double[] position, double[] du, double[] dv) {
-        // Parametric locations (in the face's (u,v)) of the current sub-face's corners.
-        double[] loc = new double[8];
-        int f = face, d = 0;
-        Level base = levels[0].topo;
-        SubdivOptions opt = levels[0].controlMesh().options();
-        if (opt.scheme() == SubdivOptions.Scheme.LOOP) return evaluateTriangle(u, v, position, du, dv);
-        if (n == 4) {
-            double[] q = {0, 0, 1, 0, 1, 1, 0, 1};
-            System.arraycopy(q, 0, loc, 0, 8);
-            if (FaceSurface.isRegular(base, opt, f, true)) return evalPatch(0, f, loc, u, v, position, du, dv);
-        }
-        while (true) {
-            if (d == depth || (d >= smooth && !(d == 0 && n != 4) && !sharpFeature(levels[d].topo, opt, f))) {
-                return endPatch(d, f, loc, u, v, position, du, dv);
-            }
-            Level p = levels[d].topo, c = levels[d + 1].topo;
-            int k, h0 = p.firstHalf(f);
-            double[] cl = new double[8];
-            if (d == 0 && n != 4) {
-                // Bfr's sub-face q of an n-gon: the child face at corner q.
+        Node q = root;
+        while (q.kids != null) {
+            int k = -1;
+            if (loop) {
+                for (int j = 0; j < 4 && k < 0; j++) if (inside(q.kids[j].loc, u, v)) k = j;
+            } else if (q == root && n != 4) {
                 int ut = (int) u, vt = (int) v;
                 if (u - ut > 0.75) ut++;
                 if (v - vt > 0.75) vt++;
                 k = columns * vt + ut;
-                if (k < 0 || k >= n) throw new IllegalArgumentException("(" + u + ", " + v + ") is outside the face");
-                double x = ut, y = vt;
-                placeChild(p, c, h0 + k, n, x, y, x + 0.5, y, x + 0.5, y + 0.5, x, y + 0.5, cl);
+                if (k >= n) k = -1;
             } else {
-                k = -1;
+                double[] b = q.box;
                 for (int j = 0; j < 4 && k < 0; j++) {
-                    int jn = (j + 1) & 3, jp = (j + 3) & 3;
-                    double cx = loc[2 * j], cy = loc[2 * j + 1];
-                    double ex = (cx + loc[2 * jn]) / 2, ey = (cy + loc[2 * jn + 1]) / 2;
-                    double mx = (loc[0] + loc[2] + loc[4] + loc[6]) / 4, my = (loc[1] + loc[3] + loc[5] + loc[7]) / 4;
-                    double px = (cx + loc[2 * jp]) / 2, py = (cy + loc[2 * jp + 1]) / 2;
-                    double lo = Math.min(cx, mx), hi = Math.max(cx, mx), lo2 = Math.min(cy, my), hi2 = Math.max(cy, my);
-                    if (u >= lo && u <= hi && v >= lo2 && v <= hi2) {
-                        k = j;
-                        placeChild(p, c, h0 + j, 4, cx, cy, ex, ey, mx, my, px, py, cl);
-                    }
+                    if (u >= b[4 * j] && u <= b[4 * j + 1] && v >= b[4 * j + 2] && v <= b[4 * j + 3]) k = j;
                 }
-                if (k < 0) throw new IllegalArgumentException("(" + u + ", " + v + ") is outside the face");
             }
-            f = h0 + k; // the child face of parent half-edge h is face h
-            loc = cl;
-            d++;
-            if (FaceSurface.isRegular(c, opt, f, true)) return evalPatch(d, f, loc, u, v, position, du, dv);
+            if (k < 0) throw new IllegalArgumentException("(" + u + ", " + v + ") is outside the face");
+            q = q.kids[k];
         }
+        double ru = u - q.loc[0], rv = v - q.loc[1];
+        double s = q.su * ru + q.sv * rv, t = q.tu * ru + q.tv * rv;
+        if (q.patch != null) q.patch.evaluate(s, t, position, ps, pt);
+        else if (q.gregory != null) q.gregory.evaluate(s, t, position, ps, pt);
+        else if (q.triangle != null) q.triangle.evaluate(s, t, position, ps, pt);
+        else return false;
+        for (int i = 0; i < 3; i++) {
+            if (du != null) du[i] = ps[i] * q.su + pt[i] * q.tu;
+            if (dv != null) dv[i] = ps[i] * q.sv + pt[i] * q.tv;
+        }
+        return true;
     }
 
     /**
@@ -169,49 +302,6 @@ final class AdaptiveFaceSurface {
         }
     }
 
-    /** Loop: the descent through the four child triangles of each triangle. */
-    private boolean evaluateTriangle(double u, double v, double[] position, double[] du, double[] dv) {
-        SubdivOptions opt = levels[0].controlMesh().options();
-        // Corner locations (u,v) of the current triangle; its corner 3 slot unused.
-        double[] loc = {0, 0, 1, 0, 0, 1, 0, 0};
-        int f = face;
-        for (int d = 0; ; d++) {
-            Level l = levels[d].topo;
-            if (FaceSurface.isRegular(l, opt, f, true)) return evalPatch(d, f, tri(loc), u, v, position, du, dv);
-            if (d == depth || (d >= smooth && !sharpFeature(l, opt, f))) return triangleEndPatch(d, f, loc, u, v, position, du, dv);
-            double[] m01 = mid(loc, 0, 1), m12 = mid(loc, 1, 2), m20 = mid(loc, 2, 0);
-            double[][] kids = {
-                {loc[0], loc[1], m01[0], m01[1], m20[0], m20[1]},
-                {m01[0], m01[1], loc[2], loc[3], m12[0], m12[1]},
-                {m20[0], m20[1], m12[0], m12[1], loc[4], loc[5]},
-                {m12[0], m12[1], m20[0], m20[1], m01[0], m01[1]}};
-            int k = -1;
-            for (int j = 0; j < 4 && k < 0; j++) if (inside(kids[j], u, v)) k = j;
-            if (k < 0) throw new IllegalArgumentException("(" + u + ", " + v + ") is outside the face");
-            loc = new double[] {kids[k][0], kids[k][1], kids[k][2], kids[k][3], kids[k][4], kids[k][5], 0, 0};
-            f = 4 * f + k; // child j of face f is face 4f + j
-        }
-    }
-
-    /** Far's end patch on a Loop sub-triangle (a quartic Gregory triangle), where handled. */
-    private boolean triangleEndPatch(int d, int f, double[] loc, double u, double v, double[] position, double[] du, double[] dv) {
-        if (d == 0) return false;
-        RefinedMesh m = levels[d];
-        GregoryTriangle g = GregoryTriangle.of(m.topo, m.controlMesh().options(), m.positions(), f);
-        if (g == null) return false;
-        double ax = loc[2] - loc[0], ay = loc[3] - loc[1], bx = loc[4] - loc[0], by = loc[5] - loc[1];
-        double det = ax * by - bx * ay;
-        double su = by / det, sv = -bx / det, tu = -ay / det, tv = ax / det;
-        double ru = u - loc[0], rv = v - loc[1];
-        double[] ps = new double[3], pt = new double[3];
-        g.evaluate(su * ru + sv * rv, tu * ru + tv * rv, position, ps, pt);
-        for (int i = 0; i < 3; i++) {
-            if (du != null) du[i] = ps[i] * su + pt[i] * tu;
-            if (dv != null) dv[i] = ps[i] * sv + pt[i] * tv;
-        }
-        return true;
-    }
-
     private static double[] mid(double[] loc, int a, int b) {
         return new double[] {(loc[2 * a] + loc[2 * b]) / 2, (loc[2 * a + 1] + loc[2 * b + 1]) / 2};
     }
@@ -222,47 +312,5 @@ final class AdaptiveFaceSurface {
         double s = (by * ru - bx * rv) / det, w = (-ay * ru + ax * rv) / det;
         double eps = 1e-12;
         return s >= -eps && w >= -eps && s + w <= 1 + eps;
-    }
-
-    /** A triangle's corner locations laid out as {@link #evalPatch} reads them (t axis at slots 6, 7). */
-    private static double[] tri(double[] loc) {
-        return new double[] {loc[0], loc[1], loc[2], loc[3], 0, 0, loc[4], loc[5]};
-    }
-
-    /** Far's end patch (a Gregory basis patch) on sub-face f of level d, where handled. */
-    private boolean endPatch(int d, int f, double[] loc, double u, double v, double[] position, double[] du, double[] dv) {
-        if (d == 0) return false;
-        RefinedMesh m = levels[d];
-        GregoryPatch g = GregoryPatch.of(m.topo, m.controlMesh().options(), m.positions(), f);
-        if (g == null) return false;
-        double ax = loc[2] - loc[0], ay = loc[3] - loc[1], bx = loc[6] - loc[0], by = loc[7] - loc[1];
-        double det = ax * by - bx * ay;
-        double su = by / det, sv = -bx / det, tu = -ay / det, tv = ax / det;
-        double ru = u - loc[0], rv = v - loc[1];
-        double[] ps = new double[3], pt = new double[3];
-        g.evaluate(su * ru + sv * rv, tu * ru + tv * rv, position, ps, pt);
-        for (int i = 0; i < 3; i++) {
-            if (du != null) du[i] = ps[i] * su + pt[i] * tu;
-            if (dv != null) dv[i] = ps[i] * sv + pt[i] * tv;
-        }
-        return true;
-    }
-
-    private boolean evalPatch(int d, int f, double[] loc, double u, double v, double[] position, double[] du, double[] dv) {
-        RefinedMesh m = levels[d];
-        FaceSurface s = FaceSurface.patch(m.topo, m.controlMesh().options(), m.positions(), f);
-        // (u,v) = L0 + s (L1 - L0) + t (L3 - L0)
-        double ax = loc[2] - loc[0], ay = loc[3] - loc[1], bx = loc[6] - loc[0], by = loc[7] - loc[1];
-        double det = ax * by - bx * ay;
-        double su = by / det, sv = -bx / det, tu = -ay / det, tv = ax / det;
-        double ru = u - loc[0], rv = v - loc[1];
-        double s0 = su * ru + sv * rv, t0 = tu * ru + tv * rv;
-        double[] ps = new double[3], pt = new double[3];
-        s.evaluate(s0, t0, position, ps, pt);
-        for (int i = 0; i < 3; i++) {
-            if (du != null) du[i] = ps[i] * su + pt[i] * tu;
-            if (dv != null) dv[i] = ps[i] * sv + pt[i] * tv;
-        }
-        return true;
     }
 }

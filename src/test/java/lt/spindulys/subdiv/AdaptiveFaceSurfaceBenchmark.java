@@ -63,10 +63,7 @@ public final class AdaptiveFaceSurfaceBenchmark {
 
     private static AdaptiveFaceSurface build(PatchRefiner refiner, int f) {
         PatchRefiner.Local local = refiner.local(f);
-        RefinedMesh[] levels = new RefinedMesh[SHARP + 1];
-        levels[0] = Subdivision.refine(local.mesh(), 0);
-        for (int l = 1; l <= SHARP; l++) levels[l] = levels[l - 1].refine();
-        return new AdaptiveFaceSurface(levels, local.face(), SMOOTH, SHARP);
+        return AdaptiveFaceSurface.of(local.mesh(), local.face(), SMOOTH, SHARP);
     }
 
     private static double[] grid(boolean triangle) {
