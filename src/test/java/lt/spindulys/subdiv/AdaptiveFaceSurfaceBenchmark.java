@@ -7,18 +7,18 @@ import java.util.List;
 /**
  * Not a test: a micro benchmark of {@link AdaptiveFaceSurface} on irregular faces of corpus
  * shapes (valence-3 corners, a valence-8 pole, semi-sharp creases, Loop). For each shape: the
- * set-up per face (one-ring, refinement, evaluator), and per evaluation of position and both
+ * set-up per face (one-ring, refinement, evaluator, the mean of 10; patches it is cut into), and per evaluation of position and both
  * derivatives on a 17 x 17 grid of each face (a triangle's half for Loop), time and bytes
  * allocated. Run with {@code java -cp target/classes:target/test-classes
  * lt.spindulys.subdiv.AdaptiveFaceSurfaceBenchmark}.
  */
 public final class AdaptiveFaceSurfaceBenchmark {
-    private static final int SMOOTH = 2, SHARP = 6, GRID = 17, FACES = 3;
+    private static final int SMOOTH = 2, SHARP = 6, GRID = 17, FACES = 3, SETUPS = 10;
 
     public static void main(String[] args) {
         String[] shapes = args.length > 0 ? args : new String[] {"catmark_cube", "catmark_pole8", "catmark_cube_creases1", "loop_cube", "loop_cube_creases1"};
-        for (int pass = 0; pass < 2; pass++) { // the first pass warms up
-            for (String shape : shapes) run(shape, pass == 1);
+        for (int pass = 0; pass < 4; pass++) { // the first three passes warm up
+            for (String shape : shapes) run(shape, pass == 3);
         }
     }
 
@@ -35,11 +35,13 @@ public final class AdaptiveFaceSurfaceBenchmark {
         int points = uv.length / 2;
         double[] p = new double[3], du = new double[3], dv = new double[3];
         double sink = 0;
-        long setupNs = 0, evalNs = 0, evalBytes = 0, evals = 0, missed = 0;
+        long setupNs = 0, evalNs = 0, evalBytes = 0, evals = 0, missed = 0, patches = 0;
         for (int f : faces) {
             long t0 = System.nanoTime();
-            AdaptiveFaceSurface s = build(refiner, f);
-            setupNs += System.nanoTime() - t0;
+            AdaptiveFaceSurface s = null;
+            for (int r = 0; r < SETUPS; r++) s = build(refiner, f);
+            setupNs += (System.nanoTime() - t0) / SETUPS;
+            patches += s.patchCount();
             for (int i = 0; i < points; i++) if (!s.evaluate(uv[2 * i], uv[2 * i + 1], p, du, dv)) missed++; // first touch
             int reps = Math.max(1, 20000 / points);
             long b0 = allocated();
@@ -55,8 +57,8 @@ public final class AdaptiveFaceSurfaceBenchmark {
             evals += (long) reps * points;
         }
         if (print) {
-            System.out.printf("%-22s %d faces: set-up %8.2f ms/face, evaluate %7.0f ns, %6.0f bytes allocated per evaluation%s (%.1f)%n",
-                    shape, faces.size(), setupNs / 1e6 / faces.size(), (double) evalNs / evals, (double) evalBytes / evals,
+            System.out.printf("%-22s %d faces: set-up %8.2f ms/face (%5.0f patches), evaluate %7.0f ns, %6.0f bytes allocated per evaluation%s (%.1f)%n",
+                    shape, faces.size(), setupNs / 1e6 / faces.size(), (double) patches / faces.size(), (double) evalNs / evals, (double) evalBytes / evals,
                     missed > 0 ? ", " + missed + " points not evaluated" : "", sink == 0 ? 0.0 : 1.0);
         }
     }
