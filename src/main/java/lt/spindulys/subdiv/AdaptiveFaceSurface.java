@@ -14,14 +14,15 @@ package lt.spindulys.subdiv;
  * case; there the end patch is Far's Gregory patch ({@link GregoryPatch}, {@link GregoryTriangle}).
  * N-gons of Catmull-Clark start at their level-1 quads, one per Bfr sub-face.
  *
- * <p>The whole descent is done once, when the evaluator is made ({@link #of}): the face's one-ring
- * (see {@link PatchRefiner#local}) is refined a level at a time, each level only as deep as some
- * sub-face still needs (level 2 where no sharp feature remains) and cut down to the one-rings of
- * the sub-faces still descended into (as {@link PatchRefiner} prunes its levels: their
- * refinements are exact). Every sub-face's regular patch or end patch is kept in a tree of
- * sub-faces, and the levels are dropped; an evaluation is the walk down that tree to (u,v)'s
- * sub-face and its patch's basis, allocating nothing. An evaluator has scratch space of its own:
- * one thread at a time.
+ * <p>The descent is made once per sub-face, where an evaluation first needs it: a sub-face still
+ * irregular keeps its level (cut down around it) until a point falls in it; then that level is
+ * refined once and cut down to the one-rings of its children (as {@link PatchRefiner} prunes its
+ * levels: their refinements are exact), and the children are settled as patches or kept for
+ * refining in turn. So only sub-faces that (u,v) values descend into are refined, each only as
+ * deep as it needs (level 2 where no sharp feature remains). Regular and end patches stay in a
+ * tree of sub-faces; once the tree is built where the points fall, an evaluation is the walk down
+ * it and its patch's basis, allocating nothing. An evaluator has scratch space and a tree of its
+ * own: one thread at a time.
  */
 final class AdaptiveFaceSurface {
     /** A sub-face: its corners' locations in the face's (u,v), and its children or its patch. */
@@ -36,6 +37,9 @@ final class AdaptiveFaceSurface {
         FaceSurface patch;
         GregoryPatch gregory;
         GregoryTriangle triangle;
+        /** A sub-face still to be refined: its level (as kept around it), its face there and its depth. */
+        RefinedMesh mesh;
+        int at, level;
         /** A leaf's map from (u,v) to its patch's (s,t): s = su (u - loc0) + sv (v - loc1), likewise t. */
         double su, sv, tu, tv;
 
@@ -50,17 +54,18 @@ final class AdaptiveFaceSurface {
     }
 
     private final Node root;
-    private final int n, columns;
+    private final int n, columns, smooth, depth;
     private final boolean loop;
     private final double[] ps = new double[3], pt = new double[3];
-    private final int faces;
+    private int patches;
 
-    private AdaptiveFaceSurface(Node root, int n, boolean loop, int faces) {
-        this.root = root;
+    private AdaptiveFaceSurface(int n, boolean loop, int smooth, int depth) {
         this.n = n;
         this.columns = FaceSurface.subFaceColumns(n);
         this.loop = loop;
-        this.faces = faces;
+        this.smooth = smooth;
+        this.depth = depth;
+        this.root = new Node(loop ? new double[] {0, 0, 1, 0, 0, 1, 0, 0} : new double[] {0, 0, 1, 0, 1, 1, 0, 1});
     }
 
     /**
@@ -74,120 +79,104 @@ final class AdaptiveFaceSurface {
      * @param depth the approximation level for sharp features: the deepest level descended to
      */
     static AdaptiveFaceSurface of(ControlMesh mesh, int face, int smooth, int depth) {
-        SubdivOptions opt = mesh.options();
-        boolean loop = opt.scheme() == SubdivOptions.Scheme.LOOP;
+        boolean loop = mesh.options().scheme() == SubdivOptions.Scheme.LOOP;
         RefinedMesh r = RefinedMesh.base(mesh);
-        int n = r.topo.faceSize(face), columns = FaceSurface.subFaceColumns(n);
-        boolean ngon = !loop && n != 4;
-        Node root = new Node(loop ? new double[] {0, 0, 1, 0, 0, 1, 0, 0} : new double[] {0, 0, 1, 0, 1, 1, 0, 1});
-        // The sub-faces at level d not yet settled, and their faces in the level as kept.
-        Node[] nodes = {root};
-        int[] at = {face};
-        int count = 1, made = 0;
-        for (int d = 0; count > 0; d++) {
-            Level p = r.topo;
-            Node[] down = new Node[count];
-            int[] downAt = new int[count];
-            int m = 0;
-            for (int i = 0; i < count; i++) {
-                if (settle(nodes[i], r, at[i], d, d == 0 && ngon, loop, smooth, depth)) {
-                    down[m] = nodes[i];
-                    downAt[m++] = at[i];
-                } else {
-                    made++;
-                }
+        int n = r.topo.faceSize(face);
+        AdaptiveFaceSurface a = new AdaptiveFaceSurface(n, loop, smooth, depth);
+        a.settle(a.root, r, face, 0, !loop && n != 4);
+        return a;
+    }
+
+    /**
+     * Refines a sub-face left to be refined: its level (kept around it) once more, cut down to
+     * its children's one-rings, and the children settled or left to be refined in turn.
+     */
+    private void expand(Node q) {
+        RefinedMesh r = q.mesh, next = r.refine();
+        Level p = r.topo, c = next.topo;
+        int f = q.at, d = q.level, h0 = p.firstHalf(f);
+        boolean ngonRoot = d == 0 && !loop && n != 4;
+        int count = ngonRoot ? n : 4;
+        Node[] kids = new Node[count];
+        int[] at = new int[count];
+        if (loop) {
+            double[] loc = q.loc;
+            double[] m01 = mid(loc, 0, 1), m12 = mid(loc, 1, 2), m20 = mid(loc, 2, 0);
+            double[][] tri = {
+                {loc[0], loc[1], m01[0], m01[1], m20[0], m20[1], 0, 0},
+                {m01[0], m01[1], loc[2], loc[3], m12[0], m12[1], 0, 0},
+                {m20[0], m20[1], m12[0], m12[1], loc[4], loc[5], 0, 0},
+                {m12[0], m12[1], m20[0], m20[1], m01[0], m01[1], 0, 0}};
+            for (int k = 0; k < 4; k++) {
+                kids[k] = new Node(tri[k]);
+                at[k] = 4 * f + k; // child j of face f is face 4f + j
             }
-            if (m == 0) break;
-            RefinedMesh next = r.refine();
-            Level c = next.topo;
-            int kidsEach = d == 0 && ngon ? n : 4;
-            nodes = new Node[m * kidsEach];
-            at = new int[m * kidsEach];
-            count = 0;
-            for (int i = 0; i < m; i++) {
-                Node q = down[i];
-                int f = downAt[i], h0 = p.firstHalf(f);
-                q.kids = new Node[kidsEach];
-                if (loop) {
-                    double[] loc = q.loc;
-                    double[] m01 = mid(loc, 0, 1), m12 = mid(loc, 1, 2), m20 = mid(loc, 2, 0);
-                    double[][] kids = {
-                        {loc[0], loc[1], m01[0], m01[1], m20[0], m20[1], 0, 0},
-                        {m01[0], m01[1], loc[2], loc[3], m12[0], m12[1], 0, 0},
-                        {m20[0], m20[1], m12[0], m12[1], loc[4], loc[5], 0, 0},
-                        {m12[0], m12[1], m20[0], m20[1], m01[0], m01[1], 0, 0}};
-                    for (int k = 0; k < 4; k++) {
-                        q.kids[k] = new Node(kids[k]);
-                        nodes[count] = q.kids[k];
-                        at[count++] = 4 * f + k; // child j of face f is face 4f + j
-                    }
-                } else if (d == 0 && ngon) {
-                    // Bfr's sub-face k of an n-gon: the child face at corner k.
-                    for (int k = 0; k < n; k++) {
-                        double x = k % columns, y = k / columns;
-                        double[] cl = new double[8];
-                        placeChild(p, c, h0 + k, n, x, y, x + 0.5, y, x + 0.5, y + 0.5, x, y + 0.5, cl);
-                        q.kids[k] = new Node(cl);
-                        nodes[count] = q.kids[k];
-                        at[count++] = h0 + k; // the child face of parent half-edge h is face h
-                    }
-                } else {
-                    double[] loc = q.loc;
-                    q.box = new double[16];
-                    for (int j = 0; j < 4; j++) {
-                        int jn = (j + 1) & 3, jp = (j + 3) & 3;
-                        double cx = loc[2 * j], cy = loc[2 * j + 1];
-                        double ex = (cx + loc[2 * jn]) / 2, ey = (cy + loc[2 * jn + 1]) / 2;
-                        double mx = (loc[0] + loc[2] + loc[4] + loc[6]) / 4, my = (loc[1] + loc[3] + loc[5] + loc[7]) / 4;
-                        double px = (cx + loc[2 * jp]) / 2, py = (cy + loc[2 * jp + 1]) / 2;
-                        q.box[4 * j] = Math.min(cx, mx);
-                        q.box[4 * j + 1] = Math.max(cx, mx);
-                        q.box[4 * j + 2] = Math.min(cy, my);
-                        q.box[4 * j + 3] = Math.max(cy, my);
-                        double[] cl = new double[8];
-                        placeChild(p, c, h0 + j, 4, cx, cy, ex, ey, mx, my, px, py, cl);
-                        q.kids[j] = new Node(cl);
-                        nodes[count] = q.kids[j];
-                        at[count++] = h0 + j;
-                    }
-                }
+        } else if (ngonRoot) {
+            // Bfr's sub-face k of an n-gon: the child face at corner k.
+            for (int k = 0; k < n; k++) {
+                double x = k % columns, y = k / columns;
+                double[] cl = new double[8];
+                placeChild(p, c, h0 + k, n, x, y, x + 0.5, y, x + 0.5, y + 0.5, x, y + 0.5, cl);
+                kids[k] = new Node(cl);
+                at[k] = h0 + k; // the child face of parent half-edge h is face h
             }
-            // Only the one-rings of the sub-faces still to settle are kept (their values are exact).
-            if (PatchRefiner.prunable(next)) {
-                int[] faceAt = PatchRefiner.keptFaces(next, at, count);
-                next = PatchRefiner.prune(next, faceAt);
-                for (int i = 0; i < count; i++) at[i] = faceAt[at[i]];
+        } else {
+            double[] loc = q.loc;
+            double[] box = new double[16];
+            for (int j = 0; j < 4; j++) {
+                int jn = (j + 1) & 3, jp = (j + 3) & 3;
+                double cx = loc[2 * j], cy = loc[2 * j + 1];
+                double ex = (cx + loc[2 * jn]) / 2, ey = (cy + loc[2 * jn + 1]) / 2;
+                double mx = (loc[0] + loc[2] + loc[4] + loc[6]) / 4, my = (loc[1] + loc[3] + loc[5] + loc[7]) / 4;
+                double px = (cx + loc[2 * jp]) / 2, py = (cy + loc[2 * jp + 1]) / 2;
+                box[4 * j] = Math.min(cx, mx);
+                box[4 * j + 1] = Math.max(cx, mx);
+                box[4 * j + 2] = Math.min(cy, my);
+                box[4 * j + 3] = Math.max(cy, my);
+                double[] cl = new double[8];
+                placeChild(p, c, h0 + j, 4, cx, cy, ex, ey, mx, my, px, py, cl);
+                kids[j] = new Node(cl);
+                at[j] = h0 + j;
             }
-            r = next;
+            q.box = box;
         }
-        return new AdaptiveFaceSurface(root, n, loop, made);
+        // Only the children's one-rings are kept (their values, and their refinements', are exact).
+        if (PatchRefiner.prunable(next)) {
+            int[] faceAt = PatchRefiner.keptFaces(next, at, count);
+            next = PatchRefiner.prune(next, faceAt);
+            for (int k = 0; k < count; k++) at[k] = faceAt[at[k]];
+        }
+        for (int k = 0; k < count; k++) settle(kids[k], next, at[k], d + 1, false);
+        q.kids = kids;
+        q.mesh = null;
     }
 
     /**
      * Settles a sub-face (face f of level r, at depth d) as a leaf with its regular patch or end
-     * patch (or none: not evaluated), or says it is to be refined further.
+     * patch (or none: not evaluated), or leaves it, with its level, to be refined further.
      */
-    private static boolean settle(Node q, RefinedMesh r, int f, int d, boolean ngonRoot, boolean loop, int smooth, int depth) {
+    private void settle(Node q, RefinedMesh r, int f, int d, boolean ngonRoot) {
         Level l = r.topo;
         SubdivOptions opt = r.controlMesh().options();
         if (!ngonRoot && FaceSurface.isRegular(l, opt, f, true)) {
             q.patch = FaceSurface.patch(l, opt, r.positions(), f);
-            q.map(loop ? 2 : 3);
-            return false;
-        }
-        if (d == depth || (d >= smooth && !ngonRoot && !sharpFeature(l, opt, f))) {
+        } else if (d == depth || (d >= smooth && !ngonRoot && !sharpFeature(l, opt, f))) {
             if (d > 0) {
                 if (loop) q.triangle = GregoryTriangle.of(l, opt, r.positions(), f);
                 else q.gregory = GregoryPatch.of(l, opt, r.positions(), f);
             }
-            q.map(loop ? 2 : 3);
-            return false;
+        } else {
+            q.mesh = r;
+            q.at = f;
+            q.level = d;
+            return;
         }
-        return true;
+        q.map(loop ? 2 : 3);
+        patches++;
     }
 
-    /** The number of patches (regular, end, or none) the face is cut into. */
-    int patchCount() { return faces; }
+    /** The number of patches (regular, end, or none) the face has been cut into so far. */
+    int patchCount() { return patches; }
 
     /** Whether this class handles the face: a Catmull-Clark face with a limit surface. */
     static boolean supported(Level base, SubdivOptions options, int f) {
@@ -236,11 +225,16 @@ final class AdaptiveFaceSurface {
      * The limit position and derivatives at (u,v) of the face's parameterization (Bfr's, see
      * {@link FaceSurface}); false, with the outputs untouched, where the point lies in a patch not
      * evaluated (an end patch with a corner not handled). Any output may be null; each takes 3
-     * values. Allocates nothing.
+     * values. Allocates nothing once the sub-face the point falls in has been reached before (the
+     * first time, the descent to it is made and kept).
      */
     boolean evaluate(double u, double v, double[] position, double[] du, double[] dv) {
         Node q = root;
-        while (q.kids != null) {
+        while (true) {
+            if (q.kids == null) {
+                if (q.mesh == null) break;
+                expand(q);
+            }
             int k = -1;
             if (loop) {
                 for (int j = 0; j < 4 && k < 0; j++) if (inside(q.kids[j].loc, u, v)) k = j;
