@@ -14,31 +14,169 @@ package lt.spindulys.subdiv;
  * case; there the end patch is Far's Gregory patch ({@link GregoryPatch}, {@link GregoryTriangle}).
  * N-gons of Catmull-Clark start at their level-1 quads, one per Bfr sub-face.
  *
- * <p>The levels are given whole: the face's one-ring (see {@link PatchRefiner#local}) refined
- * uniformly to the sharp level, whose descendants of the face are exact. That is the simple,
- * costly form (about 9 x 4^6 faces per face); refining only the sub-faces descended into is the
- * next step for speed, not for values.
+ * <p>The descent is made once per sub-face, where an evaluation first needs it: a sub-face still
+ * irregular keeps its level (cut down around it) until a point falls in it; then that level is
+ * refined once and cut down to the one-rings of its children (as {@link PatchRefiner} prunes its
+ * levels: their refinements are exact), and the children are settled as patches or kept for
+ * refining in turn. So only sub-faces that (u,v) values descend into are refined, each only as
+ * deep as it needs (level 2 where no sharp feature remains). Regular and end patches stay in a
+ * tree of sub-faces; once the tree is built where the points fall, an evaluation is the walk down
+ * it and its patch's basis, allocating nothing. An evaluator has scratch space and a tree of its
+ * own: one thread at a time.
  */
 final class AdaptiveFaceSurface {
-    private final RefinedMesh[] levels;
-    private final int face, smooth, depth, n, columns;
+    /** A sub-face: its corners' locations in the face's (u,v), and its children or its patch. */
+    private static final class Node {
+        /** Corner locations (u,v) of a quad, or of a triangle in slots 0 to 5. */
+        final double[] loc;
+        /** Children (4, or one per corner below an n-gon), or null at a leaf. */
+        Node[] kids;
+        /** Per child of a quad, the box (u from, u to, v from, v to) that picks it. */
+        double[] box;
+        /** A leaf's patch: one of these, or none where the point is not evaluated. */
+        FaceSurface patch;
+        GregoryPatch gregory;
+        GregoryTriangle triangle;
+        /** A sub-face still to be refined: its level (as kept around it), its face there and its depth. */
+        RefinedMesh mesh;
+        int at, level;
+        /** A leaf's map from (u,v) to its patch's (s,t): s = su (u - loc0) + sv (v - loc1), likewise t. */
+        double su, sv, tu, tv;
+
+        Node(double[] loc) { this.loc = loc; }
+
+        /** The patch's parameter axes: from corner 0 to corner 1 (s) and to corner b (t). */
+        void map(int b) {
+            double ax = loc[2] - loc[0], ay = loc[3] - loc[1], bx = loc[2 * b] - loc[0], by = loc[2 * b + 1] - loc[1];
+            double det = ax * by - bx * ay;
+            su = by / det; sv = -bx / det; tu = -ay / det; tv = ax / det;
+        }
+    }
+
+    private final Node root;
+    private final int n, columns, smooth, depth;
+    private final boolean loop;
+    private final double[] ps = new double[3], pt = new double[3];
+    private int patches;
+
+    private AdaptiveFaceSurface(int n, boolean loop, int smooth, int depth) {
+        this.n = n;
+        this.columns = FaceSurface.subFaceColumns(n);
+        this.loop = loop;
+        this.smooth = smooth;
+        this.depth = depth;
+        this.root = new Node(loop ? new double[] {0, 0, 1, 0, 0, 1, 0, 0} : new double[] {0, 0, 1, 0, 1, 1, 0, 1});
+    }
 
     /**
-     * @param levels the mesh refined uniformly: levels[0] the base, at least {@code depth + 1} of them
-     * @param face a face of the base level
+     * The evaluator of a face of a control mesh (its one-ring, see {@link PatchRefiner#local}, is
+     * enough: the descent needs nothing beyond it).
+     *
+     * @param mesh the control mesh
+     * @param face a face of it
      * @param smooth the approximation level for smooth features: sub-faces irregular only by
      *               smooth features are end patches at this level
      * @param depth the approximation level for sharp features: the deepest level descended to
      */
-    AdaptiveFaceSurface(RefinedMesh[] levels, int face, int smooth, int depth) {
-        if (levels.length <= depth) throw new IllegalArgumentException("need " + (depth + 1) + " levels");
-        this.levels = levels;
-        this.face = face;
-        this.smooth = smooth;
-        this.depth = depth;
-        this.n = levels[0].topo.faceSize(face);
-        this.columns = FaceSurface.subFaceColumns(n);
+    static AdaptiveFaceSurface of(ControlMesh mesh, int face, int smooth, int depth) {
+        boolean loop = mesh.options().scheme() == SubdivOptions.Scheme.LOOP;
+        RefinedMesh r = RefinedMesh.base(mesh);
+        int n = r.topo.faceSize(face);
+        AdaptiveFaceSurface a = new AdaptiveFaceSurface(n, loop, smooth, depth);
+        a.settle(a.root, r, face, 0, !loop && n != 4);
+        return a;
     }
+
+    /**
+     * Refines a sub-face left to be refined: its level (kept around it) once more, cut down to
+     * its children's one-rings, and the children settled or left to be refined in turn.
+     */
+    private void expand(Node q) {
+        RefinedMesh r = q.mesh, next = r.refine();
+        Level p = r.topo, c = next.topo;
+        int f = q.at, d = q.level, h0 = p.firstHalf(f);
+        boolean ngonRoot = d == 0 && !loop && n != 4;
+        int count = ngonRoot ? n : 4;
+        Node[] kids = new Node[count];
+        int[] at = new int[count];
+        if (loop) {
+            double[] loc = q.loc;
+            double[] m01 = mid(loc, 0, 1), m12 = mid(loc, 1, 2), m20 = mid(loc, 2, 0);
+            double[][] tri = {
+                {loc[0], loc[1], m01[0], m01[1], m20[0], m20[1], 0, 0},
+                {m01[0], m01[1], loc[2], loc[3], m12[0], m12[1], 0, 0},
+                {m20[0], m20[1], m12[0], m12[1], loc[4], loc[5], 0, 0},
+                {m12[0], m12[1], m20[0], m20[1], m01[0], m01[1], 0, 0}};
+            for (int k = 0; k < 4; k++) {
+                kids[k] = new Node(tri[k]);
+                at[k] = 4 * f + k; // child j of face f is face 4f + j
+            }
+        } else if (ngonRoot) {
+            // Bfr's sub-face k of an n-gon: the child face at corner k.
+            for (int k = 0; k < n; k++) {
+                double x = k % columns, y = k / columns;
+                double[] cl = new double[8];
+                placeChild(p, c, h0 + k, n, x, y, x + 0.5, y, x + 0.5, y + 0.5, x, y + 0.5, cl);
+                kids[k] = new Node(cl);
+                at[k] = h0 + k; // the child face of parent half-edge h is face h
+            }
+        } else {
+            double[] loc = q.loc;
+            double[] box = new double[16];
+            for (int j = 0; j < 4; j++) {
+                int jn = (j + 1) & 3, jp = (j + 3) & 3;
+                double cx = loc[2 * j], cy = loc[2 * j + 1];
+                double ex = (cx + loc[2 * jn]) / 2, ey = (cy + loc[2 * jn + 1]) / 2;
+                double mx = (loc[0] + loc[2] + loc[4] + loc[6]) / 4, my = (loc[1] + loc[3] + loc[5] + loc[7]) / 4;
+                double px = (cx + loc[2 * jp]) / 2, py = (cy + loc[2 * jp + 1]) / 2;
+                box[4 * j] = Math.min(cx, mx);
+                box[4 * j + 1] = Math.max(cx, mx);
+                box[4 * j + 2] = Math.min(cy, my);
+                box[4 * j + 3] = Math.max(cy, my);
+                double[] cl = new double[8];
+                placeChild(p, c, h0 + j, 4, cx, cy, ex, ey, mx, my, px, py, cl);
+                kids[j] = new Node(cl);
+                at[j] = h0 + j;
+            }
+            q.box = box;
+        }
+        // Only the children's one-rings are kept (their values, and their refinements', are exact).
+        if (PatchRefiner.prunable(next)) {
+            int[] faceAt = PatchRefiner.keptFaces(next, at, count);
+            next = PatchRefiner.prune(next, faceAt);
+            for (int k = 0; k < count; k++) at[k] = faceAt[at[k]];
+        }
+        for (int k = 0; k < count; k++) settle(kids[k], next, at[k], d + 1, false);
+        q.kids = kids;
+        q.mesh = null;
+    }
+
+    /**
+     * Settles a sub-face (face f of level r, at depth d) as a leaf with its regular patch or end
+     * patch (or none: not evaluated), or leaves it, with its level, to be refined further.
+     */
+    private void settle(Node q, RefinedMesh r, int f, int d, boolean ngonRoot) {
+        Level l = r.topo;
+        SubdivOptions opt = r.controlMesh().options();
+        if (!ngonRoot && FaceSurface.isRegular(l, opt, f, true)) {
+            q.patch = FaceSurface.patch(l, opt, r.positions(), f);
+        } else if (d == depth || (d >= smooth && !ngonRoot && !sharpFeature(l, opt, f))) {
+            if (d > 0) {
+                if (loop) q.triangle = GregoryTriangle.of(l, opt, r.positions(), f);
+                else q.gregory = GregoryPatch.of(l, opt, r.positions(), f);
+            }
+        } else {
+            q.mesh = r;
+            q.at = f;
+            q.level = d;
+            return;
+        }
+        q.map(loop ? 2 : 3);
+        patches++;
+    }
+
+    /** The number of patches (regular, end, or none) the face has been cut into so far. */
+    int patchCount() { return patches; }
 
     /** Whether this class handles the face: a Catmull-Clark face with a limit surface. */
     static boolean supported(Level base, SubdivOptions options, int f) {
@@ -85,58 +223,47 @@ final class AdaptiveFaceSurface {
 
     /**
      * The limit position and derivatives at (u,v) of the face's parameterization (Bfr's, see
-     * {@link FaceSurface}); false, with the outputs untouched, where the point lies in an end
-     * patch (not evaluated yet).
+     * {@link FaceSurface}); false, with the outputs untouched, where the point lies in a patch not
+     * evaluated (an end patch with a corner not handled). Any output may be null; each takes 3
+     * values. Allocates nothing once the sub-face the point falls in has been reached before (the
+     * first time, the descent to it is made and kept).
      */
     boolean evaluate(double u, double v, double[] position, double[] du, double[] dv) {
-        // Parametric locations (in the face's (u,v)) of the current sub-face's corners.
-        double[] loc = new double[8];
-        int f = face, d = 0;
-        Level base = levels[0].topo;
-        SubdivOptions opt = levels[0].controlMesh().options();
-        if (opt.scheme() == SubdivOptions.Scheme.LOOP) return evaluateTriangle(u, v, position, du, dv);
-        if (n == 4) {
-            double[] q = {0, 0, 1, 0, 1, 1, 0, 1};
-            System.arraycopy(q, 0, loc, 0, 8);
-            if (FaceSurface.isRegular(base, opt, f, true)) return evalPatch(0, f, loc, u, v, position, du, dv);
-        }
+        Node q = root;
         while (true) {
-            if (d == depth || (d >= smooth && !(d == 0 && n != 4) && !sharpFeature(levels[d].topo, opt, f))) {
-                return endPatch(d, f, loc, u, v, position, du, dv);
+            if (q.kids == null) {
+                if (q.mesh == null) break;
+                expand(q);
             }
-            Level p = levels[d].topo, c = levels[d + 1].topo;
-            int k, h0 = p.firstHalf(f);
-            double[] cl = new double[8];
-            if (d == 0 && n != 4) {
-                // Bfr's sub-face q of an n-gon: the child face at corner q.
+            int k = -1;
+            if (loop) {
+                for (int j = 0; j < 4 && k < 0; j++) if (inside(q.kids[j].loc, u, v)) k = j;
+            } else if (q == root && n != 4) {
                 int ut = (int) u, vt = (int) v;
                 if (u - ut > 0.75) ut++;
                 if (v - vt > 0.75) vt++;
                 k = columns * vt + ut;
-                if (k < 0 || k >= n) throw new IllegalArgumentException("(" + u + ", " + v + ") is outside the face");
-                double x = ut, y = vt;
-                placeChild(p, c, h0 + k, n, x, y, x + 0.5, y, x + 0.5, y + 0.5, x, y + 0.5, cl);
+                if (k >= n) k = -1;
             } else {
-                k = -1;
+                double[] b = q.box;
                 for (int j = 0; j < 4 && k < 0; j++) {
-                    int jn = (j + 1) & 3, jp = (j + 3) & 3;
-                    double cx = loc[2 * j], cy = loc[2 * j + 1];
-                    double ex = (cx + loc[2 * jn]) / 2, ey = (cy + loc[2 * jn + 1]) / 2;
-                    double mx = (loc[0] + loc[2] + loc[4] + loc[6]) / 4, my = (loc[1] + loc[3] + loc[5] + loc[7]) / 4;
-                    double px = (cx + loc[2 * jp]) / 2, py = (cy + loc[2 * jp + 1]) / 2;
-                    double lo = Math.min(cx, mx), hi = Math.max(cx, mx), lo2 = Math.min(cy, my), hi2 = Math.max(cy, my);
-                    if (u >= lo && u <= hi && v >= lo2 && v <= hi2) {
-                        k = j;
-                        placeChild(p, c, h0 + j, 4, cx, cy, ex, ey, mx, my, px, py, cl);
-                    }
+                    if (u >= b[4 * j] && u <= b[4 * j + 1] && v >= b[4 * j + 2] && v <= b[4 * j + 3]) k = j;
                 }
-                if (k < 0) throw new IllegalArgumentException("(" + u + ", " + v + ") is outside the face");
             }
-            f = h0 + k; // the child face of parent half-edge h is face h
-            loc = cl;
-            d++;
-            if (FaceSurface.isRegular(c, opt, f, true)) return evalPatch(d, f, loc, u, v, position, du, dv);
+            if (k < 0) throw new IllegalArgumentException("(" + u + ", " + v + ") is outside the face");
+            q = q.kids[k];
         }
+        double ru = u - q.loc[0], rv = v - q.loc[1];
+        double s = q.su * ru + q.sv * rv, t = q.tu * ru + q.tv * rv;
+        if (q.patch != null) q.patch.evaluate(s, t, position, ps, pt);
+        else if (q.gregory != null) q.gregory.evaluate(s, t, position, ps, pt);
+        else if (q.triangle != null) q.triangle.evaluate(s, t, position, ps, pt);
+        else return false;
+        for (int i = 0; i < 3; i++) {
+            if (du != null) du[i] = ps[i] * q.su + pt[i] * q.tu;
+            if (dv != null) dv[i] = ps[i] * q.sv + pt[i] * q.tv;
+        }
+        return true;
     }
 
     /**
@@ -169,49 +296,6 @@ final class AdaptiveFaceSurface {
         }
     }
 
-    /** Loop: the descent through the four child triangles of each triangle. */
-    private boolean evaluateTriangle(double u, double v, double[] position, double[] du, double[] dv) {
-        SubdivOptions opt = levels[0].controlMesh().options();
-        // Corner locations (u,v) of the current triangle; its corner 3 slot unused.
-        double[] loc = {0, 0, 1, 0, 0, 1, 0, 0};
-        int f = face;
-        for (int d = 0; ; d++) {
-            Level l = levels[d].topo;
-            if (FaceSurface.isRegular(l, opt, f, true)) return evalPatch(d, f, tri(loc), u, v, position, du, dv);
-            if (d == depth || (d >= smooth && !sharpFeature(l, opt, f))) return triangleEndPatch(d, f, loc, u, v, position, du, dv);
-            double[] m01 = mid(loc, 0, 1), m12 = mid(loc, 1, 2), m20 = mid(loc, 2, 0);
-            double[][] kids = {
-                {loc[0], loc[1], m01[0], m01[1], m20[0], m20[1]},
-                {m01[0], m01[1], loc[2], loc[3], m12[0], m12[1]},
-                {m20[0], m20[1], m12[0], m12[1], loc[4], loc[5]},
-                {m12[0], m12[1], m20[0], m20[1], m01[0], m01[1]}};
-            int k = -1;
-            for (int j = 0; j < 4 && k < 0; j++) if (inside(kids[j], u, v)) k = j;
-            if (k < 0) throw new IllegalArgumentException("(" + u + ", " + v + ") is outside the face");
-            loc = new double[] {kids[k][0], kids[k][1], kids[k][2], kids[k][3], kids[k][4], kids[k][5], 0, 0};
-            f = 4 * f + k; // child j of face f is face 4f + j
-        }
-    }
-
-    /** Far's end patch on a Loop sub-triangle (a quartic Gregory triangle), where handled. */
-    private boolean triangleEndPatch(int d, int f, double[] loc, double u, double v, double[] position, double[] du, double[] dv) {
-        if (d == 0) return false;
-        RefinedMesh m = levels[d];
-        GregoryTriangle g = GregoryTriangle.of(m.topo, m.controlMesh().options(), m.positions(), f);
-        if (g == null) return false;
-        double ax = loc[2] - loc[0], ay = loc[3] - loc[1], bx = loc[4] - loc[0], by = loc[5] - loc[1];
-        double det = ax * by - bx * ay;
-        double su = by / det, sv = -bx / det, tu = -ay / det, tv = ax / det;
-        double ru = u - loc[0], rv = v - loc[1];
-        double[] ps = new double[3], pt = new double[3];
-        g.evaluate(su * ru + sv * rv, tu * ru + tv * rv, position, ps, pt);
-        for (int i = 0; i < 3; i++) {
-            if (du != null) du[i] = ps[i] * su + pt[i] * tu;
-            if (dv != null) dv[i] = ps[i] * sv + pt[i] * tv;
-        }
-        return true;
-    }
-
     private static double[] mid(double[] loc, int a, int b) {
         return new double[] {(loc[2 * a] + loc[2 * b]) / 2, (loc[2 * a + 1] + loc[2 * b + 1]) / 2};
     }
@@ -222,47 +306,5 @@ final class AdaptiveFaceSurface {
         double s = (by * ru - bx * rv) / det, w = (-ay * ru + ax * rv) / det;
         double eps = 1e-12;
         return s >= -eps && w >= -eps && s + w <= 1 + eps;
-    }
-
-    /** A triangle's corner locations laid out as {@link #evalPatch} reads them (t axis at slots 6, 7). */
-    private static double[] tri(double[] loc) {
-        return new double[] {loc[0], loc[1], loc[2], loc[3], 0, 0, loc[4], loc[5]};
-    }
-
-    /** Far's end patch (a Gregory basis patch) on sub-face f of level d, where handled. */
-    private boolean endPatch(int d, int f, double[] loc, double u, double v, double[] position, double[] du, double[] dv) {
-        if (d == 0) return false;
-        RefinedMesh m = levels[d];
-        GregoryPatch g = GregoryPatch.of(m.topo, m.controlMesh().options(), m.positions(), f);
-        if (g == null) return false;
-        double ax = loc[2] - loc[0], ay = loc[3] - loc[1], bx = loc[6] - loc[0], by = loc[7] - loc[1];
-        double det = ax * by - bx * ay;
-        double su = by / det, sv = -bx / det, tu = -ay / det, tv = ax / det;
-        double ru = u - loc[0], rv = v - loc[1];
-        double[] ps = new double[3], pt = new double[3];
-        g.evaluate(su * ru + sv * rv, tu * ru + tv * rv, position, ps, pt);
-        for (int i = 0; i < 3; i++) {
-            if (du != null) du[i] = ps[i] * su + pt[i] * tu;
-            if (dv != null) dv[i] = ps[i] * sv + pt[i] * tv;
-        }
-        return true;
-    }
-
-    private boolean evalPatch(int d, int f, double[] loc, double u, double v, double[] position, double[] du, double[] dv) {
-        RefinedMesh m = levels[d];
-        FaceSurface s = FaceSurface.patch(m.topo, m.controlMesh().options(), m.positions(), f);
-        // (u,v) = L0 + s (L1 - L0) + t (L3 - L0)
-        double ax = loc[2] - loc[0], ay = loc[3] - loc[1], bx = loc[6] - loc[0], by = loc[7] - loc[1];
-        double det = ax * by - bx * ay;
-        double su = by / det, sv = -bx / det, tu = -ay / det, tv = ax / det;
-        double ru = u - loc[0], rv = v - loc[1];
-        double s0 = su * ru + sv * rv, t0 = tu * ru + tv * rv;
-        double[] ps = new double[3], pt = new double[3];
-        s.evaluate(s0, t0, position, ps, pt);
-        for (int i = 0; i < 3; i++) {
-            if (du != null) du[i] = ps[i] * su + pt[i] * tu;
-            if (dv != null) dv[i] = ps[i] * sv + pt[i] * tv;
-        }
-        return true;
     }
 }

@@ -41,12 +41,30 @@ final class FaceSurface {
     /** Sub-faces: the face size and the columns of the sub-face layout. */
     private final int n, columns;
 
+    /** Box spline: its power-basis coefficients, xyz per monomial s^EX[k] t^EY[k]. */
+    private final double[] poly;
+
     private FaceSurface(int kind, double[] cp, int boundary, int n) {
         this.kind = kind;
         this.cp = cp;
         this.boundary = boundary;
         this.n = n;
         this.columns = subFaceColumns(n);
+        this.poly = kind == BOX_SPLINE ? powerBasis(cp) : null;
+    }
+
+    /** The box spline's polynomial: per monomial k, the sum over points i of BOX[i][k] / 12 times point i. */
+    private static double[] powerBasis(double[] cp) {
+        double[] a = new double[45];
+        for (int k = 0; k < 15; k++) {
+            for (int i = 0; i < 12; i++) {
+                int c = BOX[i][k];
+                if (c == 0) continue;
+                for (int d = 0; d < 3; d++) a[3 * k + d] += c * cp[3 * i + d];
+            }
+            for (int d = 0; d < 3; d++) a[3 * k + d] /= 12;
+        }
+        return a;
     }
 
     /** Columns of Bfr's layout of an N-gon's quad sub-faces. */
@@ -443,34 +461,17 @@ final class FaceSurface {
         {0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 0, 0, 0, -2, -1},
         {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 2, 1}};
 
-    private static double pw(double x, int e) {
-        return switch (e) {
-            case 0 -> 1;
-            case 1 -> x;
-            case 2 -> x * x;
-            case 3 -> x * x * x;
-            case 4 -> x * x * x * x;
-            default -> 0; // e < 0: the derivative of a constant
-        };
-    }
-
     private void evalBoxSpline(double s, double t, double[] position, double[] du, double[] dv) {
+        double s2 = s * s, s3 = s2 * s, s4 = s3 * s, t2 = t * t, t3 = t2 * t, t4 = t3 * t;
         double px = 0, py = 0, pz = 0, ux = 0, uy = 0, uz = 0, vx = 0, vy = 0, vz = 0;
-        for (int i = 0; i < 12; i++) {
-            double w = 0, ws = 0, wt = 0;
-            int[] row = BOX[i];
-            for (int k = 0; k < 15; k++) {
-                int c = row[k];
-                if (c == 0) continue;
-                int a = EX[k], b = EY[k];
-                w += c * pw(s, a) * pw(t, b);
-                if (a > 0) ws += c * a * pw(s, a - 1) * pw(t, b);
-                if (b > 0) wt += c * b * pw(s, a) * pw(t, b - 1);
-            }
-            w /= 12;
-            ws /= 12;
-            wt /= 12;
-            double x = cp[3 * i], y = cp[3 * i + 1], z = cp[3 * i + 2];
+        for (int k = 0; k < 15; k++) {
+            int a = EX[k], b = EY[k];
+            double sa = a == 0 ? 1 : a == 1 ? s : a == 2 ? s2 : a == 3 ? s3 : s4;
+            double tb = b == 0 ? 1 : b == 1 ? t : b == 2 ? t2 : b == 3 ? t3 : t4;
+            double sa1 = a == 1 ? 1 : a == 2 ? s : a == 3 ? s2 : a == 4 ? s3 : 0;
+            double tb1 = b == 1 ? 1 : b == 2 ? t : b == 3 ? t2 : b == 4 ? t3 : 0;
+            double w = sa * tb, ws = a * sa1 * tb, wt = b * sa * tb1;
+            double x = poly[3 * k], y = poly[3 * k + 1], z = poly[3 * k + 2];
             px += w * x; py += w * y; pz += w * z;
             ux += ws * x; uy += ws * y; uz += ws * z;
             vx += wt * x; vy += wt * y; vz += wt * z;

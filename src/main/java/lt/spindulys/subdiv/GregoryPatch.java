@@ -220,28 +220,36 @@ final class GregoryPatch {
         System.arraycopy(p, 0, bez, 3 * (4 * row + col), 3);
     }
 
-    /** Position and derivatives at (s,t) of the patch's own parameterization (corner 0 at (0,0), corner 1 at (1,0)). */
+    /**
+     * Position and derivatives at (s,t) of the patch's own parameterization (corner 0 at (0,0),
+     * corner 1 at (1,0)). Allocates nothing; any output may be null.
+     */
     void evaluate(double s, double t, double[] position, double[] ds, double[] dt) {
-        double[] b = bez.clone();
-        // Interior points: G Fp + (1 - G) Fm, with G by the distance to each corner's two edges.
-        double[][] gw = {{s, s + t}, {t, 1 - s + t}, {1 - s, 2 - s - t}, {1 - t, s + 1 - t}};
-        int[] at = {5, 6, 10, 9};
-        for (int c = 0; c < 4; c++) {
-            double den = gw[c][1];
-            double g = den <= 0 ? 1 : gw[c][0] / den;
-            // Far takes G as num * (1/den), and 1 - that for Fm.
-            if (den > 0) g = gw[c][0] * (1 / den);
-            for (int d = 0; d < 3; d++) b[3 * at[c] + d] = g * bez[3 * at[c] + d] + (1 - g) * fm[3 * c + d];
-        }
-        double[] bs = bern(s), bt = bern(t), dbs = dbern(s), dbt = dbern(t);
+        // Interior points (5, 6, 10, 9 for corners 0..3): G Fp + (1 - G) Fm, with G by the
+        // distance to each corner's two edges; Far takes G as num * (1/den), and 1 - that for Fm.
+        double g0 = weight(s, s + t), g1 = weight(t, 1 - s + t), g2 = weight(1 - s, 2 - s - t), g3 = weight(1 - t, s + 1 - t);
+        double u = 1 - s, w = 1 - t;
+        double bs0 = u * u * u, bs1 = 3 * s * u * u, bs2 = 3 * s * s * u, bs3 = s * s * s;
+        double bt0 = w * w * w, bt1 = 3 * t * w * w, bt2 = 3 * t * t * w, bt3 = t * t * t;
+        double ds0 = -3 * u * u, ds1 = 3 * u * u - 6 * s * u, ds2 = 6 * s * u - 3 * s * s, ds3 = 3 * s * s;
+        double dt0 = -3 * w * w, dt1 = 3 * w * w - 6 * t * w, dt2 = 6 * t * w - 3 * t * t, dt3 = 3 * t * t;
         for (int d = 0; d < 3; d++) {
             double p = 0, ps = 0, pt = 0;
             for (int row = 0; row < 4; row++) {
+                double br = row == 0 ? bt0 : row == 1 ? bt1 : row == 2 ? bt2 : bt3;
+                double dr = row == 0 ? dt0 : row == 1 ? dt1 : row == 2 ? dt2 : dt3;
                 for (int col = 0; col < 4; col++) {
-                    double x = b[3 * (4 * row + col) + d];
-                    p += bs[col] * bt[row] * x;
-                    ps += dbs[col] * bt[row] * x;
-                    pt += bs[col] * dbt[row] * x;
+                    int i = 4 * row + col;
+                    double x = bez[3 * i + d];
+                    if (i == 5) x = g0 * x + (1 - g0) * fm[d];
+                    else if (i == 6) x = g1 * x + (1 - g1) * fm[3 + d];
+                    else if (i == 10) x = g2 * x + (1 - g2) * fm[6 + d];
+                    else if (i == 9) x = g3 * x + (1 - g3) * fm[9 + d];
+                    double bc = col == 0 ? bs0 : col == 1 ? bs1 : col == 2 ? bs2 : bs3;
+                    double dc = col == 0 ? ds0 : col == 1 ? ds1 : col == 2 ? ds2 : ds3;
+                    p += bc * br * x;
+                    ps += dc * br * x;
+                    pt += bc * dr * x;
                 }
             }
             if (position != null) position[d] = p;
@@ -250,13 +258,7 @@ final class GregoryPatch {
         }
     }
 
-    private static double[] bern(double t) {
-        double u = 1 - t;
-        return new double[] {u * u * u, 3 * t * u * u, 3 * t * t * u, t * t * t};
-    }
-
-    private static double[] dbern(double t) {
-        double u = 1 - t;
-        return new double[] {-3 * u * u, 3 * u * u - 6 * t * u, 6 * t * u - 3 * t * t, 3 * t * t};
+    private static double weight(double num, double den) {
+        return den <= 0 ? 1 : num * (1 / den);
     }
 }

@@ -20,9 +20,11 @@ final class GregoryTriangle {
 
     /** Bézier index of the point with exponents i of u and j of v (degree 4). */
     private static int bi(int i, int j) {
-        int[] rowStart = {0, 5, 9, 12, 14};
-        return rowStart[j] + i;
+        return ROW_START[j] + i;
     }
+
+    private static final int[] ROW_START = {0, 5, 9, 12, 14};
+    private static final int I11 = bi(1, 1), I21 = bi(2, 1), I12 = bi(1, 2);
 
     static GregoryTriangle of(Level level, SubdivOptions options, double[] pos, int f) {
         if (level.faceSize(f) != 3) return null;
@@ -264,17 +266,12 @@ final class GregoryTriangle {
         System.arraycopy(p, 0, bez, 3 * bi(i, j), 3);
     }
 
-    /** Position and derivatives at (s,t), corner 1 at (1,0), corner 2 at (0,1). */
+    /** Position and derivatives at (s,t), corner 1 at (1,0), corner 2 at (0,1). Allocates nothing; any output may be null. */
     void evaluate(double s, double t, double[] position, double[] ds, double[] dt) {
         double u = s, v = t, w = 1 - u - v;
-        double[] b = bez.clone();
-        double[] gp = {u + v > 0 ? u / (u + v) : 1, v + w > 0 ? v / (v + w) : 1, w + u > 0 ? w / (w + u) : 1};
-        double[] gm = {u + v > 0 ? v / (u + v) : 0, v + w > 0 ? w / (v + w) : 0, w + u > 0 ? u / (w + u) : 0};
-        int[] at = {bi(1, 1), bi(2, 1), bi(1, 2)};
-        for (int c = 0; c < 3; c++) {
-            for (int d = 0; d < 3; d++) b[3 * at[c] + d] = gp[c] * bez[3 * at[c] + d] + gm[c] * fm[3 * c + d];
-        }
-        double[] p = new double[3], pu = new double[3], pv = new double[3];
+        double gp0 = u + v > 0 ? u / (u + v) : 1, gp1 = v + w > 0 ? v / (v + w) : 1, gp2 = w + u > 0 ? w / (w + u) : 1;
+        double gm0 = u + v > 0 ? v / (u + v) : 0, gm1 = v + w > 0 ? w / (v + w) : 0, gm2 = w + u > 0 ? u / (w + u) : 0;
+        double px = 0, py = 0, pz = 0, ux = 0, uy = 0, uz = 0, vx = 0, vy = 0, vz = 0;
         for (int j = 0; j <= 4; j++) {
             for (int i = 0; i + j <= 4; i++) {
                 int k = 4 - i - j;
@@ -282,17 +279,20 @@ final class GregoryTriangle {
                 double B = coef * pw(u, i) * pw(v, j) * pw(w, k);
                 double dBu = coef * ((i > 0 ? i * pw(u, i - 1) * pw(v, j) * pw(w, k) : 0) - (k > 0 ? k * pw(u, i) * pw(v, j) * pw(w, k - 1) : 0));
                 double dBv = coef * ((j > 0 ? j * pw(u, i) * pw(v, j - 1) * pw(w, k) : 0) - (k > 0 ? k * pw(u, i) * pw(v, j) * pw(w, k - 1) : 0));
-                int x = 3 * bi(i, j);
-                for (int d = 0; d < 3; d++) {
-                    p[d] += B * b[x + d];
-                    pu[d] += dBu * b[x + d];
-                    pv[d] += dBv * b[x + d];
-                }
+                int y = bi(i, j), x = 3 * y;
+                double bx = bez[x], by = bez[x + 1], bz = bez[x + 2];
+                // The interior points blend Fp and Fm.
+                if (y == I11) { bx = gp0 * bx + gm0 * fm[0]; by = gp0 * by + gm0 * fm[1]; bz = gp0 * bz + gm0 * fm[2]; }
+                else if (y == I21) { bx = gp1 * bx + gm1 * fm[3]; by = gp1 * by + gm1 * fm[4]; bz = gp1 * bz + gm1 * fm[5]; }
+                else if (y == I12) { bx = gp2 * bx + gm2 * fm[6]; by = gp2 * by + gm2 * fm[7]; bz = gp2 * bz + gm2 * fm[8]; }
+                px += B * bx; py += B * by; pz += B * bz;
+                ux += dBu * bx; uy += dBu * by; uz += dBu * bz;
+                vx += dBv * bx; vy += dBv * by; vz += dBv * bz;
             }
         }
-        if (position != null) System.arraycopy(p, 0, position, 0, 3);
-        if (ds != null) System.arraycopy(pu, 0, ds, 0, 3);
-        if (dt != null) System.arraycopy(pv, 0, dt, 0, 3);
+        if (position != null) { position[0] = px; position[1] = py; position[2] = pz; }
+        if (ds != null) { ds[0] = ux; ds[1] = uy; ds[2] = uz; }
+        if (dt != null) { dt[0] = vx; dt[1] = vy; dt[2] = vz; }
     }
 
     private static double fact(int n) { return n <= 1 ? 1 : n == 2 ? 2 : n == 3 ? 6 : 24; }

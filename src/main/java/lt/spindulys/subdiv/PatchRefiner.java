@@ -461,7 +461,7 @@ public final class PatchRefiner {
      * split) and no non-manifold side tables (for them, and before the first refinement, the
      * whole one-ring is refined).
      */
-    private static boolean prunable(RefinedMesh r) {
+    static boolean prunable(RefinedMesh r) {
         FaceVarying.Channel uv = r.uvChannel();
         return uniform(r.topo) && (uv == null || uniform(uv.level()));
     }
@@ -480,6 +480,20 @@ public final class PatchRefiner {
         int fs = t.triangleSplit ? 3 : 4;
         boolean[] want = new boolean[t.nV];
         for (int h = fs * f0, e = fs * (f0 + count); h < e; h++) want[t.hOrig[h]] = true;
+        return keptFaces(t, want);
+    }
+
+    /** As {@link #keptFaces(RefinedMesh, int, int)}, around the faces listed (faces[0..count)). */
+    static int[] keptFaces(RefinedMesh r, int[] faces, int count) {
+        Level t = r.topo;
+        int fs = t.triangleSplit ? 3 : 4;
+        boolean[] want = new boolean[t.nV];
+        for (int i = 0; i < count; i++) for (int h = fs * faces[i], e = h + fs; h < e; h++) want[t.hOrig[h]] = true;
+        return keptFaces(t, want);
+    }
+
+    private static int[] keptFaces(Level t, boolean[] want) {
+        int fs = t.triangleSplit ? 3 : 4;
         int[] faceAt = new int[t.nF];
         int m = 0;
         for (int f = 0; f < t.nF; f++) {
@@ -490,7 +504,7 @@ public final class PatchRefiner {
     }
 
     /** The level with only the faces kept ({@code faceAt} not -1), its positions and UVs likewise. */
-    private static RefinedMesh prune(RefinedMesh r, int[] faceAt) {
+    static RefinedMesh prune(RefinedMesh r, int[] faceAt) {
         int[] vAt = new int[r.topo.nV];
         Level t = pruneLevel(r.topo, faceAt, vAt);
         double[] p = r.positions(), np = new double[3 * t.nV];

@@ -15,8 +15,7 @@ import org.junit.jupiter.params.provider.MethodSource;
 /**
  * The irregular faces of Catmull-Clark and Loop by {@link AdaptiveFaceSurface}, against Bfr's
  * limit (the data of {@link FaceSurfaceTest}): every point, position and derivatives, to 1e-9
- * of the shape's size. Each face's one-ring ({@link PatchRefiner#local}) is refined to the sharp
- * level.
+ * of the shape's size. Each face has one evaluator, made from its one-ring ({@link PatchRefiner#local}).
  */
 class AdaptiveFaceSurfaceTest {
     /** Points checked, points in end patches (not evaluated yet), unsupported irregular points. */
@@ -38,9 +37,8 @@ class AdaptiveFaceSurfaceTest {
         Map<Integer, double[]> faces = new TreeMap<>();
         for (double[] r : o.section("faces")) faces.put((int) r[0], r);
         PatchRefiner refiner = new PatchRefiner(cm);
-        PatchRefiner.Local local = null;
-        RefinedMesh[] levels = null;
-        int levelsFace = -1;
+        AdaptiveFaceSurface surface = null;
+        int surfaceFace = -1;
         double[] p = new double[3], du = new double[3], dv = new double[3];
         List<String> bad = new ArrayList<>();
         for (double[] r : o.section("points")) {
@@ -50,15 +48,13 @@ class AdaptiveFaceSurfaceTest {
                 COUNTS.incrementAndGet(2);
                 continue;
             }
-            // The face's one-ring refined to the sharp level (its descendants' values are exact).
-            if (f != levelsFace) {
-                local = refiner.local(f);
-                levels = new RefinedMesh[sharp + 1];
-                levels[0] = Subdivision.refine(local.mesh(), 0);
-                for (int l = 1; l <= sharp; l++) levels[l] = levels[l - 1].refine();
-                levelsFace = f;
+            // One evaluator per face, of the face's one-ring (all its descent needs).
+            if (f != surfaceFace) {
+                PatchRefiner.Local local = refiner.local(f);
+                surface = AdaptiveFaceSurface.of(local.mesh(), local.face(), smooth, sharp);
+                surfaceFace = f;
             }
-            if (!new AdaptiveFaceSurface(levels, local.face(), smooth, sharp).evaluate(r[1], r[2], p, du, dv)) {
+            if (!surface.evaluate(r[1], r[2], p, du, dv)) {
                 COUNTS.incrementAndGet(1);
                 bad.add("face " + f + " at (" + r[1] + ", " + r[2] + ") not evaluated");
                 continue;

@@ -1,0 +1,95 @@
+package lt.spindulys.subdiv;
+
+import java.lang.management.ManagementFactory;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Not a test: a micro benchmark of {@link AdaptiveFaceSurface} on irregular faces of corpus
+ * shapes (valence-3 corners, a valence-8 pole, semi-sharp creases, Loop). For each shape: the
+ * set-up per face (one-ring, refinement, evaluator, the mean of 10; patches it is cut into), and per evaluation of position and both
+ * derivatives on a 17 x 17 grid of each face (a triangle's half for Loop), time and bytes
+ * allocated. Run with {@code java -cp target/classes:target/test-classes
+ * lt.spindulys.subdiv.AdaptiveFaceSurfaceBenchmark}.
+ */
+public final class AdaptiveFaceSurfaceBenchmark {
+    private static final int SMOOTH = 2, SHARP = 6, GRID = 17, FACES = 3, SETUPS = 10;
+
+    public static void main(String[] args) {
+        String[] shapes = args.length > 0 ? args : new String[] {"catmark_cube", "catmark_pole8", "catmark_cube_creases1", "loop_cube", "loop_cube_creases1"};
+        for (int pass = 0; pass < 4; pass++) { // the first three passes warm up
+            for (String shape : shapes) run(shape, pass == 3);
+        }
+    }
+
+    private static void run(String shape, boolean print) {
+        ControlMesh cm = Corpus.load(shape);
+        boolean loop = cm.options().scheme() == SubdivOptions.Scheme.LOOP;
+        PatchRefiner refiner = new PatchRefiner(cm);
+        List<Integer> faces = new ArrayList<>();
+        for (int f = 0; f < cm.faceCount() && faces.size() < FACES; f++) {
+            if (cm.base.faceSize(f) == (loop ? 3 : 4) && AdaptiveFaceSurface.supported(cm.base, cm.options(), f)
+                    && !FaceSurface.isRegular(cm.base, cm.options(), f, true)) faces.add(f);
+        }
+        double[] uv = grid(loop);
+        int points = uv.length / 2;
+        double[] p = new double[3], du = new double[3], dv = new double[3];
+        double sink = 0;
+        long setupNs = 0, firstNs = 0, evalNs = 0, evalBytes = 0, evals = 0, missed = 0, patches = 0;
+        for (int f : faces) {
+            AdaptiveFaceSurface s = null;
+            for (int r = 0; r < SETUPS; r++) {
+                long t0 = System.nanoTime();
+                s = build(refiner, f);
+                long t1 = System.nanoTime();
+                int miss = 0;
+                for (int i = 0; i < points; i++) if (!s.evaluate(uv[2 * i], uv[2 * i + 1], p, du, dv)) miss++;
+                if (r == 0) missed += miss;
+                setupNs += (t1 - t0) / SETUPS;
+                firstNs += (System.nanoTime() - t0) / SETUPS;
+            }
+            patches += s.patchCount();
+            long t0;
+            int reps = Math.max(1, 20000 / points);
+            long b0 = allocated();
+            t0 = System.nanoTime();
+            for (int r = 0; r < reps; r++) {
+                for (int i = 0; i < points; i++) {
+                    s.evaluate(uv[2 * i], uv[2 * i + 1], p, du, dv);
+                    sink += p[0] + du[1] + dv[2];
+                }
+            }
+            evalNs += System.nanoTime() - t0;
+            evalBytes += allocated() - b0;
+            evals += (long) reps * points;
+        }
+        if (print) {
+            System.out.printf("%-22s %d faces: set-up %6.2f ms/face, with the first grid %6.2f ms (%4.0f patches), then evaluate %7.0f ns, %6.0f bytes allocated per evaluation%s (%.1f)%n",
+                    shape, faces.size(), setupNs / 1e6 / faces.size(), firstNs / 1e6 / faces.size(), (double) patches / faces.size(), (double) evalNs / evals, (double) evalBytes / evals,
+                    missed > 0 ? ", " + missed + " points not evaluated" : "", sink == 0 ? 0.0 : 1.0);
+        }
+    }
+
+    private static AdaptiveFaceSurface build(PatchRefiner refiner, int f) {
+        PatchRefiner.Local local = refiner.local(f);
+        return AdaptiveFaceSurface.of(local.mesh(), local.face(), SMOOTH, SHARP);
+    }
+
+    private static double[] grid(boolean triangle) {
+        double[] uv = new double[2 * GRID * GRID];
+        int k = 0;
+        for (int j = 0; j < GRID; j++) {
+            for (int i = 0; i < GRID; i++) {
+                double u = i / (GRID - 1.0), v = j / (GRID - 1.0);
+                if (triangle && u + v > 1) continue;
+                uv[k++] = u;
+                uv[k++] = v;
+            }
+        }
+        return java.util.Arrays.copyOf(uv, k);
+    }
+
+    private static long allocated() {
+        return ((com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean()).getThreadAllocatedBytes(Thread.currentThread().getId());
+    }
+}
