@@ -161,7 +161,9 @@ public final class InputFuzz {
         if (msg.isEmpty()) return "exit 2 with nothing on stderr";
         if (msg.indexOf('\n') >= 0) return "exit 2 with " + msg.split("\n", -1).length + " lines: " + firstLines(err);
         if (msg.length() > 400) return "exit 2 with a line of " + msg.length() + " characters: " + msg.substring(0, 200) + "...";
-        if (!LOCATED.matcher(msg).matches()) return "exit 2 without file:line:column: " + msg;
+        // A refusal of the scene file as a whole (too large for the heap) has no line: the file is its place.
+        boolean wholeScene = msg.startsWith(scene + ": ") && msg.length() > scene.toString().length() + 2;
+        if (!LOCATED.matcher(msg).matches() && !wholeScene) return "exit 2 without file:line:column: " + msg;
         return null;
     }
 
