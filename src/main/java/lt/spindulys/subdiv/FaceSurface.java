@@ -166,6 +166,16 @@ final class FaceSurface {
         return corner(level, h, reg, false);
     }
 
+    /**
+     * Whether the fan of an end patch's corner at the origin of h ends at infinitely sharp edges
+     * (the {@code cut} of {@link #corner(Level, int, int, boolean)}), as Far's end patches (Gregory
+     * quad and triangle) take it: it does, except at a dart (one such edge ending inside the
+     * mesh), which keeps its whole ring. Semi-sharp edges left at this level are ignored.
+     */
+    static boolean endPatchCut(Level level, int h) {
+        return !(infSharpEdges(level, h) == 1 && (corner(level, h, 0, false) & 1) == 0);
+    }
+
     /** Infinitely sharp edges (boundaries included) at the origin of h, around its fan. */
     static int infSharpEdges(Level level, int h) {
         int count = 0, g = h;

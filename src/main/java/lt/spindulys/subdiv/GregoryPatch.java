@@ -38,11 +38,7 @@ final class GregoryPatch {
         for (int c = 0; c < 4; c++) {
             int h = h0 + c, v = corners[c];
             if (level.isNonManifold(v)) return null;
-            // Infinitely sharp edges bound the corner's fan, except at a dart (one such edge ending
-            // inside the mesh), which keeps its whole ring.
-            boolean cut = !(FaceSurface.infSharpEdges(level, h) == 1 && (FaceSurface.corner(level, h, 0, false) & 1) == 0);
-            // As Far's end patches: semi-sharp edges left at this level are ignored (the corner
-            // keeps its whole fan); sharp corners are the infinitely sharp ones.
+            boolean cut = FaceSurface.endPatchCut(level, h);
             int ring = FaceSurface.corner(level, h, 0, cut);
             if (ring < 0) return null; // a sharp edge or a non-quad around the corner
             numFaces[c] = ring >> 1;
