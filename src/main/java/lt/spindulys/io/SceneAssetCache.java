@@ -310,11 +310,12 @@ final class SceneAssetCache {
                         SubdivisionSurface.bytesPerFace(input.options().scheme(), limit));
             } catch (IllegalArgumentException e) {
                 if (!(e instanceof InsufficientMemoryException) && input.refinedFaceCount(level) <= SubdivisionSurface.MAX_FACES) throw err.wrap(levelAt, e);
-                // The combined method has no limit positions: the level is refused rather than rendered otherwise.
-                if (limit) throw err.error(levelAt, e.getMessage() + "; positions limit needs uniform refinement (the adaptive methods, which render such levels otherwise, have no limit positions)");
-                // Too large to refine whole: the combined method gives the same triangles within the budget.
+                // Too large to refine whole: the combined method gives the same triangles within the budget, with the
+                // refined positions by the power-of-two levels, with the limit positions by the rates (2^level on every edge).
                 try {
-                    return adaptive(p, f, key, input, AdaptiveSubdivisionSurface.Method.COMBINED, level, null, null, null, smooth);
+                    GObject o = adaptive(p, f, key, input, AdaptiveSubdivisionSurface.Method.COMBINED, level, null, null, null, smooth);
+                    ((AdaptiveSubdivisionSurface) o).levels(limit ? AdaptiveSubdivisionSurface.Levels.RATE : AdaptiveSubdivisionSurface.Levels.EDGE);
+                    return o;
                 } catch (SceneException a) {
                     // A mesh the adaptive methods refuse: the level is refused for what the user asked.
                     if (!(a.getCause() instanceof IllegalArgumentException why)) throw a;
@@ -363,7 +364,13 @@ final class SceneAssetCache {
         } catch (IllegalArgumentException e) {
             throw err.wrap(target.at(), e);
         }
-        if (levels != null) s.levels("object".equals(levels.value()) ? AdaptiveSubdivisionSurface.Levels.OBJECT : AdaptiveSubdivisionSurface.Levels.EDGE);
+        if (levels != null) {
+            s.levels(switch ((String) levels.value()) {
+                case "object" -> AdaptiveSubdivisionSurface.Levels.OBJECT;
+                case "edge" -> AdaptiveSubdivisionSurface.Levels.EDGE;
+                default -> AdaptiveSubdivisionSurface.Levels.RATE;
+            });
+        }
         if (maxLevel != null) {
             int max = (Integer) maxLevel.value();
             if (max < 0 || max > SubdivisionSurface.MAX_LEVEL) {

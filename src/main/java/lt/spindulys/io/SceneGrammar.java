@@ -342,7 +342,7 @@ final class SceneGrammar {
             opt("level", Kind.INTEGER, 3),
             choice("method", "uniform", "uniform", "projected", "lazy", "combined"),
             opt("target", Kind.NUMBER),
-            choice("levels", "edge", "edge", "object"),
+            choice("levels", "rate", "rate", "edge", "object"),
             opt("maxlevel", Kind.INTEGER),
             choice("scheme", null, "catmark", "loop", "bilinear"),
             choice("boundary", null, "edge-only", "edge-and-corner", "none"),

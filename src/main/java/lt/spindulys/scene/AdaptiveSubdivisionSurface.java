@@ -60,14 +60,19 @@ public final class AdaptiveSubdivisionSurface extends GObject {
 
     /** How levels are chosen when no fixed level is given. */
     public enum Levels {
-        /** Per control edge, from its own projected length (neighbours agree along shared edges). */
+        /**
+         * Integer rates per control edge from their projected lengths, any number of segments, each
+         * face a grid on the limit surface at its own edges' rates (the default).
+         */
+        RATE,
+        /** The thesis's power-of-two levels per control edge, from its own projected length (neighbours agree along shared edges). */
         EDGE,
         /** The thesis's: one level for the object, from its longest projected control edge. */
         OBJECT
     }
 
     /** What instances share: the control mesh's per-face refiner and facts derived from it once. */
-    record Geometry(PatchRefiner refiner, Bounds bounds, boolean closed) {
+    record Geometry(PatchRefiner refiner, Bounds bounds, boolean closed, lt.spindulys.subdiv.LimitSurface limit) {
         static Geometry of(ControlMesh control) {
             PatchRefiner r = new PatchRefiner(control);
             double[] box = new double[6];
@@ -85,7 +90,7 @@ public final class AdaptiveSubdivisionSurface extends GObject {
             }
             boolean closed = any;
             for (int u : uses) closed &= u == 2 || u == 0;
-            return new Geometry(r, any ? new Bounds(x0, y0, z0, x1, y1, z1) : Bounds.EMPTY, closed);
+            return new Geometry(r, any ? new Bounds(x0, y0, z0, x1, y1, z1) : Bounds.EMPTY, closed, new lt.spindulys.subdiv.LimitSurface(control));
         }
     }
 
@@ -94,8 +99,8 @@ public final class AdaptiveSubdivisionSurface extends GObject {
     private final boolean smooth;
     private int level = -1, maxLevel = SubdivisionSurface.MAX_LEVEL;
     private double target = 1;
-    private Levels levels = Levels.EDGE;
-    private AdaptiveTessellation tessellation;
+    private Levels levels = Levels.RATE;
+    private SurfaceTessellation tessellation;
 
     /**
      * A surface refined by {@code method}, levels per edge for 1-pixel edges unless set otherwise.
@@ -204,7 +209,7 @@ public final class AdaptiveSubdivisionSurface extends GObject {
         BuildShared shared = context.shared();
         double t = Double.isNaN(shared.settings().targetPixels()) ? target : shared.settings().targetPixels();
         Object key = java.util.List.of(geometry, method, smooth, level, maxLevel, t, levels);
-        tessellation = shared.tessellation(key, () -> new AdaptiveTessellation(this, t));
+        tessellation = shared.tessellation(key, () -> levels == Levels.RATE ? new GridTessellation(this, t) : new AdaptiveTessellation(this, t));
         tessellation.addPlacement(placementIn(context.placement()));
         return next;
     }

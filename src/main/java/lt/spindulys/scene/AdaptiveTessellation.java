@@ -44,7 +44,7 @@ import lt.spindulys.trace.TraceContext;
  * bilinear's, are non-negative: {@link PatchRefiner#oneRingBounds}): no ray can miss a part of
  * the surface that bulges past the coarse mesh.
  */
-final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
+final class AdaptiveTessellation implements SurfaceTessellation, PrimitiveSet, PatchSource {
     /** Off-screen edges are refined as if this many times shorter (Cycles' offscreen dicing scale). */
     static final double OFFSCREEN_SCALE = 4;
 
@@ -91,9 +91,13 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
         maxLevel = s.maxLevel();
         levels = s.levels();
         this.target = target;
-        String source = refiner.control().source();
-        // An unnamed surface is known by its control mesh's file.
-        name = s.name().equals(s.kind()) && source != null ? source.substring(Math.max(source.lastIndexOf('/'), source.lastIndexOf('\\')) + 1) : s.name();
+        name = displayName(s);
+    }
+
+    /** The surface's name in --stats: an unnamed surface is known by its control mesh's file. */
+    static String displayName(AdaptiveSubdivisionSurface s) {
+        String source = s.control().source();
+        return s.name().equals(s.kind()) && source != null ? source.substring(Math.max(source.lastIndexOf('/'), source.lastIndexOf('\\')) + 1) : s.name();
     }
 
     /**
@@ -125,13 +129,16 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
     }
 
     /** Records one placement (object to world over the shutter) of a surface using this tessellation. */
-    synchronized void addPlacement(Placement p) { placements.add(p); }
+    @Override
+    public synchronized void addPlacement(Placement p) { placements.add(p); }
 
     /** True if some patch is refined on demand (not eager, not all pinned). */
-    boolean refinesWhileTracing() { return top != null && pinnedCount < faces.length; }
+    @Override
+    public boolean refinesWhileTracing() { return top != null && pinnedCount < faces.length; }
 
     /** Chooses the levels and builds the eager part; called once, after every placement is known. */
-    void finish(BuildShared shared, BuildContext root) {
+    @Override
+    public void finish(BuildShared shared, BuildContext root) {
         kind = root.accelerator();
         chooseLevels(shared);
         int nf = refiner.faceCount();
@@ -238,7 +245,8 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
      * The face group of a hit's primitive: the eager mesh's triangle's, or the control face's of
      * the lazy structure's primitive (a coarse face, whose every triangle is in its group).
      */
-    int faceGroup(int prim, int sub) {
+    @Override
+    public int faceGroup(int prim, int sub) {
         if (mesh != null) return mesh.faceGroup(prim, sub);
         int[] control = refiner.control().faceGroups();
         return control == null ? -1 : control[faces[prim]];
@@ -291,7 +299,8 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
      * stitching makes shared edge vertices bit-identical, so the welded mesh has no crack), and
      * triangles that the stitching collapsed dropped.
      */
-    MeshData welded() {
+    @Override
+    public MeshData welded() {
         long need = 0;
         for (int f : faces) need = HeapBudget.sum(need, refiner.patchBytes(f, faceLevel[f], smooth));
         HeapBudget.require(HeapBudget.product(need, 3), "the tessellation of " + name);
@@ -352,8 +361,16 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
         return false;
     }
 
+    @Override
+    public long triangleCount() {
+        long t = 0;
+        if (faceLevel != null) for (int f : faces) t = HeapBudget.sum(t, triangles(f));
+        return t;
+    }
+
     /** The level chosen for each control edge (indexed as the refiner numbers edges). */
-    int[] edgeLevels() { return edgeLevel.clone(); }
+    @Override
+    public int[] edgeLevels() { return edgeLevel.clone(); }
 
     /** The combined method: the cheapest patches built and pinned while the eager budget lasts. */
     private void pinWithinBudget(BuildShared shared) {
@@ -383,15 +400,18 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
 
     // ---- queries (object space) ----
 
-    boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
+    @Override
+    public boolean intersect(Ray ray, Hit hit, TraceContext ctx) {
         return mesh != null ? mesh.intersectLocal(ray, hit, ctx) : top.intersect(ray, hit, ctx);
     }
 
-    boolean occluded(Ray ray, TraceContext ctx) {
+    @Override
+    public boolean occluded(Ray ray, TraceContext ctx) {
         return mesh != null ? mesh.occluded(ray, ctx) : top.occluded(ray, ctx);
     }
 
-    void spans(Ray ray, SpanBuffer out, TraceContext ctx, GObject owner) {
+    @Override
+    public void spans(Ray ray, SpanBuffer out, TraceContext ctx, GObject owner) {
         if (mesh != null) {
             int first = out.size();
             mesh.spansLocal(ray, out, ctx);
@@ -401,7 +421,8 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
         }
     }
 
-    void shade(double x, double y, double z, Hit hit, ShadingData sd) {
+    @Override
+    public void shade(double x, double y, double z, Hit hit, ShadingData sd) {
         if (mesh != null) mesh.shadeLocal(x, y, z, hit, sd);
         else patch(hit.prim, sd.recentPatches).shade(smooth, hit.sub, hit.u, hit.v, sd);
     }
@@ -460,7 +481,8 @@ final class AdaptiveTessellation implements PrimitiveSet, PatchSource {
     // ---- statistics ----
 
     /** One line: name, method, faces, levels, eager or pinned bytes, and the cache's counters for this surface. */
-    String statistics() {
+    @Override
+    public String statistics() {
         int[] hist = new int[maxLevel + 1];
         if (faceLevel != null) for (int f : faces) hist[Math.min(faceLevel[f], maxLevel)]++;
         StringBuilder h = new StringBuilder();

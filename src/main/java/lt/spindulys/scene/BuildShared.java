@@ -24,7 +24,7 @@ final class BuildShared {
     private final AdaptiveSettings settings;
     private final Camera camera;
     private final int width, height;
-    private final Map<Object, AdaptiveTessellation> tessellations = new LinkedHashMap<>();
+    private final Map<Object, SurfaceTessellation> tessellations = new LinkedHashMap<>();
     private ViewFootprint view;
     private PatchCache cache;
     /** Heap left for eager tessellation: the budget less the cache's share, less what earlier surfaces took; -1 until the budget is set. */
@@ -83,7 +83,7 @@ final class BuildShared {
     AdaptiveSettings settings() { return settings; }
 
     /** The tessellation registered under {@code key}, made by {@code make} the first time. */
-    synchronized AdaptiveTessellation tessellation(Object key, Supplier<AdaptiveTessellation> make) {
+    synchronized SurfaceTessellation tessellation(Object key, Supplier<SurfaceTessellation> make) {
         if (finished) throw new IllegalStateException("the scene's tessellations are finished");
         return tessellations.computeIfAbsent(key, k -> make.get());
     }
@@ -117,14 +117,14 @@ final class BuildShared {
 
     /** Finishes every registered tessellation, in registration order (so budgets are spent deterministically). */
     void finish(BuildContext root) {
-        List<AdaptiveTessellation> all;
+        List<SurfaceTessellation> all;
         synchronized (this) {
             finished = true;
             all = new ArrayList<>(tessellations.values());
         }
-        for (AdaptiveTessellation t : all) t.finish(this, root);
+        for (SurfaceTessellation t : all) t.finish(this, root);
     }
 
     /** The tessellations of this build, in registration order. */
-    synchronized List<AdaptiveTessellation> tessellations() { return List.copyOf(tessellations.values()); }
+    synchronized List<SurfaceTessellation> tessellations() { return List.copyOf(tessellations.values()); }
 }

@@ -6,7 +6,6 @@ import lt.spindulys.accel.PrimitiveSet;
 import lt.spindulys.accel.PrimitiveVisitor;
 import lt.spindulys.accel.TraversalScratch;
 import lt.spindulys.accel.WatertightTriangles;
-import lt.spindulys.adaptive.CachedPatch;
 import lt.spindulys.math.Ray;
 import lt.spindulys.mesh.MeshData;
 import lt.spindulys.trace.ShadingData;
@@ -18,7 +17,7 @@ import lt.spindulys.trace.TraceContext;
  * normal and uv indices) with a small structure of their own. Immutable once made, so any number
  * of render threads may read one; a cache may drop it while a thread still holds it.
  */
-final class PatchTriangles implements CachedPatch, PrimitiveSet {
+final class PatchTriangles implements TessellationPiece, PrimitiveSet {
     /** The top structure's primitive this patch refines (spans name it). */
     final int prim;
     final int[] tri, triNormal, triUv;
@@ -61,8 +60,24 @@ final class PatchTriangles implements CachedPatch, PrimitiveSet {
 
     @Override public long bytes() { return bytes; }
 
-    /** Shading data of triangle {@code sub} at barycentrics (u, v). */
-    void shade(boolean smooth, int sub, double u, double v, ShadingData sd) {
+    @Override public int triangleCount() { return triangleCount; }
+
+    @Override
+    public boolean intersect(Ray ray, PrimitiveHit hit, TraceContext ctx) {
+        if (!accel.intersect(ray, hit, ctx)) return false;
+        hit.sub = hit.prim;
+        return true;
+    }
+
+    @Override
+    public boolean occluded(Ray ray, TraceContext ctx) { return accel.occluded(ray, ctx); }
+
+    /** {@inheritDoc} The primitive is the one this patch was made for. */
+    @Override
+    public void addCrossings(int prim, Ray ray, TraceContext ctx) { accel.visit(ray, ctx, crossingCollector); }
+
+    @Override
+    public void shade(boolean smooth, int sub, double u, double v, ShadingData sd) {
         TriangleShading.shade(tri, pos, smooth, triNormal, normals, null, triUv, uvs, sub, u, v, sd);
     }
 
@@ -70,8 +85,8 @@ final class PatchTriangles implements CachedPatch, PrimitiveSet {
         TriangleSpans.addCrossing(tri, pos, i, prim, i, ray, (TraceContext) traversal);
     }
 
-    /** Adds to {@code out} the box of every vertex (minX, minY, minZ, maxX, maxY, maxZ), widening it. */
-    void include(double[] out) {
+    @Override
+    public void include(double[] out) {
         for (int v = 0; v < pos.length; v += 3) {
             for (int a = 0; a < 3; a++) {
                 out[a] = Math.min(out[a], pos[v + a]);

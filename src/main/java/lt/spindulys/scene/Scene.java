@@ -102,7 +102,7 @@ public final class Scene {
     static final long BYTES_PER_COPY = 512;
 
     /** The adaptive subdivision surfaces' tessellations, for their statistics. */
-    private final List<AdaptiveTessellation> adaptive;
+    private final List<SurfaceTessellation> adaptive;
     /** What the adaptive surfaces' budget became where it differs from what was asked (capped by the heap, the cache shrunk). */
     private final List<String> adaptiveBudget;
 
@@ -115,7 +115,7 @@ public final class Scene {
      */
     public List<String> adaptiveStatistics() {
         List<String> lines = new ArrayList<>(adaptiveBudget);
-        for (AdaptiveTessellation t : adaptive) lines.add(t.statistics());
+        for (SurfaceTessellation t : adaptive) lines.add(t.statistics());
         return lines;
     }
 
@@ -148,7 +148,7 @@ public final class Scene {
      * @return whether rendering builds patches on demand
      */
     public boolean refinesWhileTracing() {
-        for (AdaptiveTessellation t : adaptive) if (t.refinesWhileTracing()) return true;
+        for (SurfaceTessellation t : adaptive) if (t.refinesWhileTracing()) return true;
         return false;
     }
 

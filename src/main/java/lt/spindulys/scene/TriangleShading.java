@@ -20,26 +20,45 @@ final class TriangleShading {
     static void shade(int[] tri, double[] pos, boolean smooth, int[] triNormal, double[] normals, double[] vertexNormals,
                       int[] triUv, double[] uvs, int prim, double u, double v, ShadingData sd) {
         int i3 = 3 * prim;
-        int a = 3 * tri[i3], b = 3 * tri[i3 + 1], c = 3 * tri[i3 + 2];
+        double[] c = sd.corners;
+        for (int k = 0; k < 3; k++) System.arraycopy(pos, 3 * tri[i3 + k], c, 3 * k, 3);
+        boolean hasNormals = false;
+        if (smooth) {
+            if (triNormal != null && triNormal[i3] >= 0) {
+                for (int k = 0; k < 3; k++) System.arraycopy(normals, 3 * triNormal[i3 + k], c, NORMALS + 3 * k, 3);
+                hasNormals = true;
+            } else if (vertexNormals != null) {
+                for (int k = 0; k < 3; k++) System.arraycopy(vertexNormals, 3 * tri[i3 + k], c, NORMALS + 3 * k, 3);
+                hasNormals = true;
+            }
+        }
+        boolean hasUv = triUv != null && triUv[i3] >= 0;
+        if (hasUv) for (int k = 0; k < 3; k++) System.arraycopy(uvs, 2 * triUv[i3 + k], c, UVS + 2 * k, 2);
+        shadeCorners(smooth && hasNormals, hasUv, u, v, sd);
+    }
+
+    /** Where {@link ShadingData#corners} holds the corners' normals (9 values) and uvs (6), after the positions (9). */
+    static final int NORMALS = 9, UVS = 18;
+
+    /**
+     * Fills {@code sd} for barycentrics (u, v) on the triangle whose corners are in
+     * {@link ShadingData#corners}: positions a, b, c, then (if {@code smooth}) their normals at
+     * {@link #NORMALS}, then (if {@code hasUv}) their texture coordinates at {@link #UVS}.
+     */
+    static void shadeCorners(boolean smooth, boolean hasUv, double u, double v, ShadingData sd) {
+        double[] p = sd.corners;
+        final int a = 0, b = 3, c = 6;
         double b1 = u, b2 = v, b0 = 1 - b1 - b2;
-        double e1x = pos[b] - pos[a], e1y = pos[b + 1] - pos[a + 1], e1z = pos[b + 2] - pos[a + 2];
-        double e2x = pos[c] - pos[a], e2y = pos[c + 1] - pos[a + 1], e2z = pos[c + 2] - pos[a + 2];
+        double e1x = p[b] - p[a], e1y = p[b + 1] - p[a + 1], e1z = p[b + 2] - p[a + 2];
+        double e2x = p[c] - p[a], e2y = p[c + 1] - p[a + 1], e2z = p[c + 2] - p[a + 2];
         double gx = e1y * e2z - e1z * e2y, gy = e1z * e2x - e1x * e2z, gz = e1x * e2y - e1y * e2x;
         sd.ng[0] = gx; sd.ng[1] = gy; sd.ng[2] = gz;
         double sx = gx, sy = gy, sz = gz;
         if (smooth) {
-            double[] src;
-            int na, nb, nc;
-            if (triNormal != null && triNormal[i3] >= 0) {
-                src = normals;
-                na = 3 * triNormal[i3]; nb = 3 * triNormal[i3 + 1]; nc = 3 * triNormal[i3 + 2];
-            } else {
-                src = vertexNormals;
-                na = a; nb = b; nc = c;
-            }
-            double nx = b0 * src[na] + b1 * src[nb] + b2 * src[nc];
-            double ny = b0 * src[na + 1] + b1 * src[nb + 1] + b2 * src[nc + 1];
-            double nz = b0 * src[na + 2] + b1 * src[nb + 2] + b2 * src[nc + 2];
+            final int na = NORMALS, nb = NORMALS + 3, nc = NORMALS + 6;
+            double nx = b0 * p[na] + b1 * p[nb] + b2 * p[nc];
+            double ny = b0 * p[na + 1] + b1 * p[nb + 1] + b2 * p[nc + 1];
+            double nz = b0 * p[na + 2] + b1 * p[nb + 2] + b2 * p[nc + 2];
             double len2 = nx * nx + ny * ny + nz * nz;
             if (len2 > 0 && Double.isFinite(len2)) {
                 // Interpolated normals may disagree with the winding; keep them on the outward side.
@@ -50,9 +69,9 @@ final class TriangleShading {
         sd.ns[0] = sx; sd.ns[1] = sy; sd.ns[2] = sz;
         if (!sd.needsParameters) return;
 
-        if (triUv != null && triUv[i3] >= 0) {
-            int ta = 2 * triUv[i3], tb = 2 * triUv[i3 + 1], tc = 2 * triUv[i3 + 2];
-            double u0 = uvs[ta], v0 = uvs[ta + 1], u1 = uvs[tb], v1 = uvs[tb + 1], u2 = uvs[tc], v2 = uvs[tc + 1];
+        if (hasUv) {
+            final int ta = UVS, tb = UVS + 2, tc = UVS + 4;
+            double u0 = p[ta], v0 = p[ta + 1], u1 = p[tb], v1 = p[tb + 1], u2 = p[tc], v2 = p[tc + 1];
             sd.u = b0 * u0 + b1 * u1 + b2 * u2;
             sd.v = b0 * v0 + b1 * v1 + b2 * v2;
             // Solve p = p2 + (u - u2) dpdu + (v - v2) dpdv on the two edges meeting at corner 2.
@@ -60,8 +79,8 @@ final class TriangleShading {
             double det = du02 * dv12 - dv02 * du12;
             if (Math.abs(det) > 1e-12 * (Math.abs(du02 * dv12) + Math.abs(dv02 * du12)) && Double.isFinite(1 / det)) {
                 double inv = 1 / det;
-                double p02x = pos[a] - pos[c], p02y = pos[a + 1] - pos[c + 1], p02z = pos[a + 2] - pos[c + 2];
-                double p12x = pos[b] - pos[c], p12y = pos[b + 1] - pos[c + 1], p12z = pos[b + 2] - pos[c + 2];
+                double p02x = p[a] - p[c], p02y = p[a + 1] - p[c + 1], p02z = p[a + 2] - p[c + 2];
+                double p12x = p[b] - p[c], p12y = p[b + 1] - p[c + 1], p12z = p[b + 2] - p[c + 2];
                 sd.setDerivatives((dv12 * p02x - dv02 * p12x) * inv, (dv12 * p02y - dv02 * p12y) * inv, (dv12 * p02z - dv02 * p12z) * inv,
                         (du02 * p12x - du12 * p02x) * inv, (du02 * p12y - du12 * p02y) * inv, (du02 * p12z - du12 * p02z) * inv);
                 return;

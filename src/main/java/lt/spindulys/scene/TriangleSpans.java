@@ -83,18 +83,27 @@ final class TriangleSpans {
      * its triangle; sub below 2^21).
      */
     static void addCrossing(int[] tri, double[] pos, int i, int prim, int sub, Ray ray, TraceContext ctx) {
+        final int i3 = 3 * i;
+        final int a = 3 * tri[i3], b = 3 * tri[i3 + 1], c = 3 * tri[i3 + 2];
+        addCrossing(pos[a], pos[a + 1], pos[a + 2], pos[b], pos[b + 1], pos[b + 2], pos[c], pos[c + 1], pos[c + 2], prim, sub, ray, ctx);
+    }
+
+    /**
+     * {@link #addCrossing(int[], double[], int, int, int, Ray, TraceContext)} of the triangle with
+     * corners a, b, c given by their coordinates (a grid's triangle, whose corners are implicit).
+     */
+    static void addCrossing(double pax, double pay, double paz, double pbx, double pby, double pbz, double pcx, double pcy, double pcz,
+                            int prim, int sub, Ray ray, TraceContext ctx) {
         ctx.direction(ray);
         final int kx = ctx.shearKx, ky = ctx.shearKy, kz = ctx.shearKz;
         final double sx = ctx.shearSx, sy = ctx.shearSy, sz = ctx.shearSz;
         final double okx = kx == 0 ? ray.ox : kx == 1 ? ray.oy : ray.oz;
         final double oky = ky == 0 ? ray.ox : ky == 1 ? ray.oy : ray.oz;
         final double okz = kz == 0 ? ray.ox : kz == 1 ? ray.oy : ray.oz;
-        final int i3 = 3 * i;
-        final int a = 3 * tri[i3], b = 3 * tri[i3 + 1], c = 3 * tri[i3 + 2];
-        final double az = pos[a + kz] - okz, bz = pos[b + kz] - okz, cz = pos[c + kz] - okz;
-        final double ax = pos[a + kx] - okx - sx * az, ay = pos[a + ky] - oky - sy * az;
-        final double bx = pos[b + kx] - okx - sx * bz, by = pos[b + ky] - oky - sy * bz;
-        final double cx = pos[c + kx] - okx - sx * cz, cy = pos[c + ky] - oky - sy * cz;
+        final double az = pick(pax, pay, paz, kz) - okz, bz = pick(pbx, pby, pbz, kz) - okz, cz = pick(pcx, pcy, pcz, kz) - okz;
+        final double ax = pick(pax, pay, paz, kx) - okx - sx * az, ay = pick(pax, pay, paz, ky) - oky - sy * az;
+        final double bx = pick(pbx, pby, pbz, kx) - okx - sx * bz, by = pick(pbx, pby, pbz, ky) - oky - sy * bz;
+        final double cx = pick(pcx, pcy, pcz, kx) - okx - sx * cz, cy = pick(pcx, pcy, pcz, ky) - oky - sy * cz;
         final double u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
         if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return;
         final double det = u + v + w;
@@ -128,6 +137,9 @@ final class TriangleSpans {
         list[o + 3] = w * inv;
         ctx.crossingCount = k + 1;
     }
+
+    /** Coordinate k (0 x, 1 y, 2 z) of a point. */
+    private static double pick(double x, double y, double z, int k) { return k == 0 ? x : k == 1 ? y : z; }
 
     /**
      * Where the line (the sheared origin, (0, 0)) crosses edge pq, computed from the two ends in a

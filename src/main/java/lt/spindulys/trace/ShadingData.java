@@ -19,6 +19,8 @@ public final class ShadingData {
 
     /** Hit point. */
     public final double[] p = new double[3];
+    /** Scratch for a triangle's corners (positions, normals, texture coordinates) while it is shaded. */
+    public final double[] corners = new double[24];
     /** Geometric normal, outward. */
     public final double[] ng = new double[3];
     /** Shading normal (interpolated or perturbed), outward, on the same side as ng. */
