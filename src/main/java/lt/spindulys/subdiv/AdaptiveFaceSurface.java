@@ -23,6 +23,12 @@ package lt.spindulys.subdiv;
  * tree of sub-faces; once the tree is built where the points fall, an evaluation is the walk down
  * it and its patch's basis, allocating nothing. An evaluator has scratch space and a tree of its
  * own: one thread at a time.
+ *
+ * <p>The same descent gives a face's face-varying (UV) limit surface ({@link #ofFaceVarying}):
+ * each level is refined with its UV value mesh ({@link FaceVarying}), whose topology (seams as
+ * boundaries, values pinned by the face-varying option) and UVs replace the level's own for
+ * deciding and building the patches, as Bfr's face-varying surfaces are the vertex surfaces of
+ * that topology.
  */
 final class AdaptiveFaceSurface {
     /** A sub-face: its corners' locations in the face's (u,v), and its children or its patch. */
@@ -56,11 +62,17 @@ final class AdaptiveFaceSurface {
     private final Node root;
     private final int n, columns, smooth, depth;
     private final boolean loop;
+    /** Whether the patches are those of the UV value mesh rather than of the positions. */
+    private final boolean faceVarying;
+    /** The options the patches are decided and built with. */
+    private final SubdivOptions options;
     private final double[] ps = new double[3], pt = new double[3];
     private int patches;
 
-    private AdaptiveFaceSurface(int n, boolean loop, int smooth, int depth) {
+    private AdaptiveFaceSurface(int n, boolean loop, boolean faceVarying, SubdivOptions options, int smooth, int depth) {
         this.n = n;
+        this.faceVarying = faceVarying;
+        this.options = options;
         this.columns = FaceSurface.subFaceColumns(n);
         this.loop = loop;
         this.smooth = smooth;
@@ -79,12 +91,47 @@ final class AdaptiveFaceSurface {
      * @param depth the approximation level for sharp features: the deepest level descended to
      */
     static AdaptiveFaceSurface of(ControlMesh mesh, int face, int smooth, int depth) {
+        return create(mesh, face, smooth, depth, false);
+    }
+
+    /**
+     * The evaluator of the UV limit surface of a face of a control mesh with UVs whose channel is
+     * not linear (see {@link FaceVaryingSurface}, which handles linear channels itself). The
+     * evaluated point's first two coordinates are the UV, the third is 0.
+     */
+    static AdaptiveFaceSurface ofFaceVarying(ControlMesh mesh, int face, int smooth, int depth) {
+        if (mesh.uvChannel == null || mesh.uvChannel.linear()) throw new IllegalArgumentException("no UVs, or linear UVs");
+        return create(mesh, face, smooth, depth, true);
+    }
+
+    private static AdaptiveFaceSurface create(ControlMesh mesh, int face, int smooth, int depth, boolean faceVarying) {
         boolean loop = mesh.options().scheme() == SubdivOptions.Scheme.LOOP;
+        // The value mesh carries its own corners (pinned values): the boundary option is the
+        // geometry's, and the value mesh's tags were made with EDGE_ONLY.
+        SubdivOptions opt = faceVarying ? mesh.options().withBoundary(SubdivOptions.Boundary.EDGE_ONLY) : mesh.options();
         RefinedMesh r = RefinedMesh.base(mesh);
+        FaceVarying.Channel uv = mesh.uvChannel;
+        if (faceVarying && uv.linearBoundaries()) {
+            // Far pins every new UV boundary value too, Bfr only the control mesh's: the values
+            // are the same (each seam segment between pinned values stays a straight, evenly
+            // split line), but unpinned the sub-faces along a seam become regular boundary patches.
+            r = r.with(r.topo, r.positions(), new FaceVarying.Channel(uv.level(), uv.values(), false, false));
+        }
         int n = r.topo.faceSize(face);
-        AdaptiveFaceSurface a = new AdaptiveFaceSurface(n, loop, smooth, depth);
-        a.settle(a.root, r, face, 0, !loop && n != 4);
+        AdaptiveFaceSurface a = new AdaptiveFaceSurface(n, loop, faceVarying, opt, smooth, depth);
+        a.settle(a.root, r, a.points(r), face, 0, !loop && n != 4);
         return a;
+    }
+
+    /** The points the patches of a level are built from: its positions, or its UVs as (u, v, 0). */
+    private double[] points(RefinedMesh r) {
+        if (!faceVarying) return r.positions();
+        double[] uv = r.uvChannel().values(), xyz = new double[uv.length / 2 * 3];
+        for (int i = 0, m = uv.length / 2; i < m; i++) {
+            xyz[3 * i] = uv[2 * i];
+            xyz[3 * i + 1] = uv[2 * i + 1];
+        }
+        return xyz;
     }
 
     /**
@@ -146,7 +193,8 @@ final class AdaptiveFaceSurface {
             next = PatchRefiner.prune(next, faceAt);
             for (int k = 0; k < count; k++) at[k] = faceAt[at[k]];
         }
-        for (int k = 0; k < count; k++) settle(kids[k], next, at[k], d + 1, false);
+        double[] points = points(next);
+        for (int k = 0; k < count; k++) settle(kids[k], next, points, at[k], d + 1, false);
         q.kids = kids;
         q.mesh = null;
     }
@@ -155,15 +203,15 @@ final class AdaptiveFaceSurface {
      * Settles a sub-face (face f of level r, at depth d) as a leaf with its regular patch or end
      * patch (or none: not evaluated), or leaves it, with its level, to be refined further.
      */
-    private void settle(Node q, RefinedMesh r, int f, int d, boolean ngonRoot) {
-        Level l = r.topo;
-        SubdivOptions opt = r.controlMesh().options();
+    private void settle(Node q, RefinedMesh r, double[] points, int f, int d, boolean ngonRoot) {
+        Level l = faceVarying ? r.uvChannel().level() : r.topo;
+        SubdivOptions opt = options;
         if (!ngonRoot && FaceSurface.isRegular(l, opt, f, true)) {
-            q.patch = FaceSurface.patch(l, opt, r.positions(), f);
+            q.patch = FaceSurface.patch(l, opt, points, f);
         } else if (d == depth || (d >= smooth && !ngonRoot && !sharpFeature(l, opt, f))) {
             if (d > 0) {
-                if (loop) q.triangle = GregoryTriangle.of(l, opt, r.positions(), f);
-                else q.gregory = GregoryPatch.of(l, opt, r.positions(), f);
+                if (loop) q.triangle = GregoryTriangle.of(l, opt, points, f);
+                else q.gregory = GregoryPatch.of(l, opt, points, f);
             }
         } else {
             q.mesh = r;

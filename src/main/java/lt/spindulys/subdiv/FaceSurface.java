@@ -377,6 +377,15 @@ final class FaceSurface {
         return p;
     }
 
+    /**
+     * The bilinear patch of a quad's corner points, or the bilinear sub-faces of any other
+     * face's (xyz per corner, in the face's order; the array is kept).
+     */
+    static FaceSurface linear(double[] cornerPoints) {
+        int n = cornerPoints.length / 3;
+        return new FaceSurface(n == 4 ? BILINEAR : LINEAR_SUBFACES, cornerPoints, 0, n);
+    }
+
     private static FaceSurface linear(Level level, double[] pos, int f) {
         int n = level.faceSize(f), h0 = level.firstHalf(f);
         double[] cp = new double[3 * n];
