@@ -9,10 +9,12 @@ import lt.spindulys.accel.WideBvh;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
+import lt.spindulys.scene.AdaptiveSubdivisionSurface;
 import lt.spindulys.scene.Bool;
 import lt.spindulys.scene.GObject;
 import lt.spindulys.material.Material;
 import lt.spindulys.mesh.MeshData;
+import lt.spindulys.subdiv.ControlMesh;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
@@ -163,6 +165,7 @@ public final class JitWarmup implements AutoCloseable {
             GObject o = pending.pop();
             if (o instanceof TriangleMesh m && m.triangleCount() >= MESH_TRIANGLES) return true;
             if (o instanceof SubdivisionSurface) return true;
+            if (o instanceof AdaptiveSubdivisionSurface a && a.levels() == AdaptiveSubdivisionSurface.Levels.RATE) return true;
             if (o instanceof Bool b) for (GObject operand : b.operands()) pending.push(operand);
         }
         return false;
@@ -175,14 +178,18 @@ public final class JitWarmup implements AutoCloseable {
                 .camera(new PinholeCamera(new Vec3(0, 2.5, 3.5), new Vec3(0, -0.2, 0), Vec3.Y, 40))
                 .light(new PointLight(new Vec3(3, 5, 2), Color.WHITE, 25, PointLight.Falloff.INVERSE_SQUARE));
         Material grey = Material.builder().name("warmup").color(new Color(0.8, 0.8, 0.8)).ka(0).kd(1).ks(0).build();
-        b.add(new TriangleMesh(torus(32, 32)).smooth(false).material(grey));
+        b.add(new TriangleMesh(torus(32, 32, 0)).smooth(false).material(grey));
+        // Behind it, a small cage as an adaptive surface: the grid path (evaluation, pieces, the grid traversal).
+        MeshData cage = torus(8, 8, -2.5);
+        b.add(new AdaptiveSubdivisionSurface(ControlMesh.builder(cage.positions(), cage.faceSizes(), cage.vertexIndex()).build(),
+                AdaptiveSubdivisionSurface.Method.LAZY, true).material(grey));
         b.add(new TriangleMesh(new MeshData(new double[] {-20, -0.4, -20, 20, -0.4, -20, 20, -0.4, 20, -20, -0.4, 20}, null, null,
                 new int[] {4}, new int[] {0, 3, 2, 1}, null, null, "warm-up ground")).smooth(false).material(grey));
         return b.build();
     }
 
-    /** A closed torus (R 1, r 0.4, axis +Y) of n x m quads. */
-    private static MeshData torus(int n, int m) {
+    /** A closed torus (R 1, r 0.4, axis +Y, centre at z = dz) of n x m quads. */
+    private static MeshData torus(int n, int m, double dz) {
         double[] p = new double[3 * n * m];
         for (int i = 0; i < n; i++) {
             double a = 2 * Math.PI * i / n;
@@ -191,7 +198,7 @@ public final class JitWarmup implements AutoCloseable {
                 int o = 3 * (i * m + j);
                 p[o] = r * Math.cos(a);
                 p[o + 1] = 0.4 * Math.sin(c);
-                p[o + 2] = r * Math.sin(a);
+                p[o + 2] = r * Math.sin(a) + dz;
             }
         }
         int[] sizes = new int[n * m], idx = new int[4 * n * m];

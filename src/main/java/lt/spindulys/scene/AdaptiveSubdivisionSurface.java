@@ -90,7 +90,7 @@ public final class AdaptiveSubdivisionSurface extends GObject {
             }
             boolean closed = any;
             for (int u : uses) closed &= u == 2 || u == 0;
-            return new Geometry(r, any ? new Bounds(x0, y0, z0, x1, y1, z1) : Bounds.EMPTY, closed, new lt.spindulys.subdiv.LimitSurface(control));
+            return new Geometry(r, any ? new Bounds(x0, y0, z0, x1, y1, z1) : Bounds.EMPTY, closed, new lt.spindulys.subdiv.LimitSurface(r));
         }
     }
 

@@ -7,7 +7,11 @@ package lt.spindulys.subdiv;
 public final class LimitSurface {
     private final ControlMesh control;
 
-    public LimitSurface(ControlMesh control) { this.control = control; }
+    private final PatchRefiner refiner;
+
+    public LimitSurface(ControlMesh control) { this.control = control; this.refiner = null; }
+
+    public LimitSurface(PatchRefiner refiner) { this.control = refiner.control(); this.refiner = refiner; }
 
     public ControlMesh control() { return control; }
 
@@ -25,29 +29,20 @@ public final class LimitSurface {
 
     public static int subFaceColumns(int n) { return FaceSurface.subFaceColumns(n); }
 
-    public UvEvaluator uvEvaluator(int f, int level) { return new UvEvaluator(control, f); }
+    public UvEvaluator uvEvaluator(int f, int level) {
+        FaceVaryingSurface s = refiner != null ? FaceVaryingSurface.of(refiner, f, Math.min(10, Math.max(2, level)), Math.min(10, Math.max(6, level)))
+                : FaceVaryingSurface.of(control, f, Math.min(10, Math.max(2, level)), Math.min(10, Math.max(6, level)));
+        return new UvEvaluator(s);
+    }
 
-    /** Temporary: bilinear UVs (linear-all). */
+    /** One face's texture coordinates on its face-varying limit surface; one thread at a time. */
     public static final class UvEvaluator {
-        private final FaceSurface s;
-        UvEvaluator(ControlMesh m, int f) {
-            int n = m.faceSizes()[f];
-            int start = 0;
-            for (int g = 0; g < f; g++) start += m.faceSizes()[g];
-            double[] cp = new double[3 * n];
-            int[] fu = m.faceUvIndices();
-            for (int k = 0; k < n; k++) { cp[3 * k] = m.uvs()[2 * fu[start + k]]; cp[3 * k + 1] = m.uvs()[2 * fu[start + k] + 1]; }
-            s = null;
-            this.cp = cp; this.n = n;
-        }
-        private final double[] cp; private final int n;
-        public boolean evaluate(double u, double v, double[] out) {
-            if (n == 4) {
-                out[0] = (1 - u) * (1 - v) * cp[0] + u * (1 - v) * cp[3] + u * v * cp[6] + (1 - u) * v * cp[9];
-                out[1] = (1 - u) * (1 - v) * cp[1] + u * (1 - v) * cp[4] + u * v * cp[7] + (1 - u) * v * cp[10];
-            } else { out[0] = cp[0]; out[1] = cp[1]; }
-            return true;
-        }
+        private final FaceVaryingSurface surface;
+
+        UvEvaluator(FaceVaryingSurface surface) { this.surface = surface; }
+
+        /** The (u, v) texture coordinates at the face's parameters into out[0..1]; false where not evaluated. */
+        public boolean evaluate(double u, double v, double[] out) { return surface.evaluate(u, v, out); }
     }
 
     /** One face's evaluator; one thread at a time. */
