@@ -587,7 +587,8 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
                     else sharedQuadPoint(g, 3, rv - j, xyz, 3 * w);
                 }
                 if (!border || normals != null) {
-                    if (!eval.evaluate(s.uv[0], s.uv[1], s.p, s.du, s.dv)) {
+                    // Flat shading needs no derivatives: positions alone cost a third as much.
+                    if (!eval.evaluate(s.uv[0], s.uv[1], s.p, normals != null ? s.du : null, normals != null ? s.dv : null)) {
                         unevaluated.incrementAndGet();
                         centroid(f, s.p);
                         s.du[0] = s.du[1] = s.du[2] = s.dv[0] = s.dv[1] = s.dv[2] = 0;
