@@ -1,5 +1,8 @@
 package lt.spindulys.render;
 
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -148,7 +151,7 @@ public final class Renderer {
         int tilesX = (rw + TILE - 1) / TILE, tilesY = (rh + TILE - 1) / TILE, tiles = tilesX * tilesY;
         WhittedIntegrator integrator = new WhittedIntegrator(scene);
         int steps = st.timeSteps(); // a multiple of the samples: the scene checked it when built
-        long[] sum = new long[4];
+        long[] sum = new long[5];
         long start = System.nanoTime();
         for (int k = 0; k < steps; k++) {
             // One time step: a fixed time and its share of the samples, or (steps == 1) all samples at their own times.
@@ -158,10 +161,18 @@ public final class Renderer {
             ProgressListener p = (pixels, all) -> progress.progress(done + pixels, total);
             long[] c = renderPass(scene, threads, p, integrator, fb, k == 0 ? aovs : null, pass, r, tilesX, tiles, cancelled,
                     k == steps - 1 ? tileListener : null);
-            for (int i = 0; i < 4; i++) sum[i] += c[i];
+            for (int i = 0; i < 5; i++) sum[i] += c[i];
         }
         double seconds = (System.nanoTime() - start) / 1e9;
-        return new RenderResult(st, fb, aovs, new RenderStats(sum[0], sum[1], sum[2], sum[3], seconds), scene.adaptiveStatistics(), scene.structureStatistics())
+        List<String> adaptive = new ArrayList<>(scene.adaptiveStatistics());
+        long triangles = scene.adaptiveTriangleCount();
+        if (triangles > 0) {
+            // Covered pixels: camera samples whose first hit is an adaptive surface, per sample of a pixel.
+            double covered = (double) sum[4] / st.samplesPerPixel();
+            adaptive.add(String.format(Locale.ROOT, "adaptive subdivision: %,d triangles, %s covered pixels, %s triangles per covered pixel",
+                    triangles, String.format(Locale.ROOT, "%,.0f", covered), covered > 0 ? String.format(Locale.ROOT, "%.2f", triangles / covered) : "no"));
+        }
+        return new RenderResult(st, fb, aovs, new RenderStats(sum[0], sum[1], sum[2], sum[3], seconds), adaptive, scene.structureStatistics())
                 .inRegion(region);
     }
 
@@ -276,10 +287,10 @@ public final class Renderer {
                         failure.compareAndSet(null, e);
                     } finally {
                         if (own == null) {
-                            counters[index] = new long[4];
+                            counters[index] = new long[5];
                         } else {
                             own.flushStatistics();
-                            counters[index] = new long[] {own.cameraRays, own.shadowRays, own.reflectionRays, own.refractionRays};
+                            counters[index] = new long[] {own.cameraRays, own.shadowRays, own.reflectionRays, own.refractionRays, own.adaptiveCameraHits};
                         }
                     }
                 }, "spindulys-render-" + k, WORKER_STACK_BYTES);
@@ -297,8 +308,8 @@ public final class Renderer {
         if (f instanceof RuntimeException re) throw re;
         if (f instanceof Error err) throw err;
         if (f != null) throw new IllegalStateException(f);
-        long[] sum = new long[4];
-        for (long[] c : counters) if (c != null) for (int i = 0; i < 4; i++) sum[i] += c[i];
+        long[] sum = new long[5];
+        for (long[] c : counters) if (c != null) for (int i = 0; i < 5; i++) sum[i] += c[i];
         return sum;
     }
 

@@ -107,6 +107,17 @@ public final class Scene {
     private final List<String> adaptiveBudget;
 
     /**
+     * The triangles of every adaptive subdivision tessellation of this scene (built or not), for --stats.
+     *
+     * @return the count, 0 without adaptive surfaces
+     */
+    public long adaptiveTriangleCount() {
+        long t = 0;
+        for (SurfaceTessellation a : adaptive) t = lt.spindulys.limits.HeapBudget.sum(t, a.triangleCount());
+        return t;
+    }
+
+    /**
      * One line per adaptive subdivision tessellation of this scene (instances of one surface share
      * one): its method, levels, patches built, cache hits, misses and evictions, peak bytes and the
      * histogram of levels used. Counters grow as the scene is rendered.

@@ -77,6 +77,8 @@ public final class TracerScratch {
 
     /** Rays traced, by kind (counted per thread and summed by the renderer). */
     public long cameraRays, shadowRays, reflectionRays, refractionRays;
+    /** Camera samples whose first hit is an adaptive subdivision surface (its covered pixels, for --stats). */
+    public long adaptiveCameraHits;
 
     public TracerScratch(int maxDepth) {
         path = new PathVertex[maxDepth + 2];

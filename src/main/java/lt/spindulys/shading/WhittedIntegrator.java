@@ -252,6 +252,7 @@ public final class WhittedIntegrator {
             if (medium != null) attenuate(medium, Double.POSITIVE_INFINITY, out);
             return;
         }
+        if (depth == 0 && hit.object instanceof lt.spindulys.scene.AdaptiveSubdivisionSurface) s.adaptiveCameraHits++;
         ShadingData sd = v.shading;
         hit.object.shade(ray, hit, sd);
         Material m = sd.material;
