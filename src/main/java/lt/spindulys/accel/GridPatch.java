@@ -10,15 +10,19 @@ import lt.spindulys.math.Ray;
  * nothing is sorted and no triangle index is stored.
  *
  * <p><b>Topology.</b> Vertex (i, j), 0 &lt;= i &lt; nu, 0 &lt;= j &lt; nv, is number {@code j * nu + i}. Cell (i, j)
- * spans vertices (i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1) and is cut along its (i, j)-(i + 1, j + 1)
- * diagonal into triangle A = ((i, j), (i + 1, j), (i + 1, j + 1)) and triangle B = ((i, j), (i + 1, j + 1),
- * (i, j + 1)). Triangle {@code sub = 2 * (j * (nu - 1) + i)} is A of cell (i, j), {@code sub + 1} its B
- * ({@link #triangleVertex}). Vertices may repeat (a grid snapped to a coarser edge): the triangles they make have
- * no area and are never hit.
+ * spans vertices v0 = (i, j), v1 = (i + 1, j), v2 = (i + 1, j + 1), v3 = (i, j + 1), and the cells are cut in a
+ * checkerboard, as uniform Catmull-Clark subdivision fans its child quads from their corner 0: with p the grid's
+ * {@linkplain #cellParity() cell parity} (the parity of i0 + j0 when the grid is the range from (i0, j0) of a
+ * larger face grid), a cell with i + j + p even is cut along its v0-v2 diagonal into triangle A = (v0, v1, v2) and
+ * B = (v0, v2, v3), and one with i + j + p odd along its v1-v3 diagonal into A = (v0, v1, v3) and B = (v2, v3, v1);
+ * all counter-clockwise in (i, j), as {@code GridPattern} numbers them. Triangle
+ * {@code sub = 2 * (j * (nu - 1) + i)} is A of cell (i, j), {@code sub + 1} its B ({@link #triangleVertex}).
+ * Vertices may repeat (a grid snapped to a coarser edge): the triangles they make have no area and are never hit.
  *
  * <p><b>Hits.</b> The triangle test is {@link WatertightTriangles}'s, in double arithmetic on the float vertices,
- * with each vertex transformed once per cell row and each edge function computed once per cell and negated
- * (exactly) for the neighbouring triangle. A triangle's edge function is therefore bit for bit the value
+ * with each vertex transformed once per cell row and each edge function (four per cell: bottom, right, top and
+ * the cell's diagonal; the left one is the previous cell's right) computed once and negated (exactly) for the
+ * neighbouring triangle. A triangle's edge function is therefore bit for bit the value
  * {@link WatertightTriangles#test} computes for the same corners, and two grids whose shared boundary vertices are
  * bit-identical floats are watertight against each other: a ray through a shared edge or vertex hits one side or
  * both, never neither. A hit fills {@link PrimitiveHit#t}, {@link PrimitiveHit#sub} (the triangle, as above) and
@@ -43,6 +47,10 @@ import lt.spindulys.math.Ray;
  * leaves of 3 x 3 vertices about 11 bytes per triangle in all, with leaves of 5 x 5 about 7, plus 6 per triangle
  * for float normals.
  *
+ * <p><b>Every crossing.</b> {@link #visitTriangles} hands every triangle of every leaf whose box the ray's interval
+ * crosses to a {@link GridTriangleVisitor}, each at most once (leaves share vertices, never cells), for a caller that
+ * needs all the crossings of a line (CSG) and tests them itself, with {@link #cornerCoordinate}'s floats.
+ *
  * <p>Immutable once made: any number of threads may trace one; all per-ray state is in the caller's
  * {@link TraversalScratch}, and a query allocates nothing.
  */
@@ -62,6 +70,8 @@ public final class GridPatch implements CachedPatch {
     private static final double PAD = 4 * 3 * 0x1p-53 / (1 - 3 * 0x1p-53);
 
     private final int nu, nv, leafSize;
+    /** 0 when cell (0, 0) is cut along its v0-v2 diagonal, 1 when along its v1-v3 one. */
+    private final int parity;
     private final float[] pos, normals, uv;
     private final double u0, v0, u1, v1;
     private final int[] nodes;
@@ -82,7 +92,16 @@ public final class GridPatch implements CachedPatch {
      * @param leafSize vertices per side of a leaf (2..17)
      */
     public GridPatch(int nu, int nv, double[] xyz, float[] normals, float[] uv, int leafSize) {
-        this(nu, nv, toFloat(xyz, nu, nv), normals, uv, 0, 0, 1, 1, leafSize);
+        this(nu, nv, toFloat(xyz, nu, nv), normals, uv, 0, 0, 1, 1, leafSize, 0);
+    }
+
+    /**
+     * A grid from float positions with cell parity 0 (cell (0, 0) cut along its (0, 0)-(1, 1) diagonal), kept as
+     * given; see {@link #GridPatch(int, int, float[], float[], float[], double, double, double, double, int, int)}.
+     */
+    public GridPatch(int nu, int nv, float[] xyz, float[] normals, float[] uv,
+                     double u0, double v0, double u1, double v1, int leafSize) {
+        this(nu, nv, xyz, normals, uv, u0, v0, u1, v1, leafSize, 0);
     }
 
     /**
@@ -98,9 +117,12 @@ public final class GridPatch implements CachedPatch {
      * @param u1 the parameter u of column nu - 1 when {@code uv} is null
      * @param v1 the parameter v of row nv - 1 when {@code uv} is null
      * @param leafSize vertices per side of a leaf (2..17)
+     * @param cellParity i0 + j0 when this grid is the vertex range from (i0, j0) of a larger face (or sub-face)
+     *                   grid, or any number of the same parity: cell (i, j) is cut along its (i, j)-(i + 1, j + 1)
+     *                   diagonal when i + j + cellParity is even, else along its (i + 1, j)-(i, j + 1) one
      */
     public GridPatch(int nu, int nv, float[] xyz, float[] normals, float[] uv,
-                     double u0, double v0, double u1, double v1, int leafSize) {
+                     double u0, double v0, double u1, double v1, int leafSize, int cellParity) {
         check(nu, nv);
         if (leafSize < 2 || leafSize > 17) throw new IllegalArgumentException("leaf size " + leafSize + " is not in 2..17");
         int n = nu * nv;
@@ -110,6 +132,7 @@ public final class GridPatch implements CachedPatch {
         this.nu = nu;
         this.nv = nv;
         this.leafSize = leafSize;
+        this.parity = cellParity & 1;
         this.pos = xyz;
         this.normals = normals;
         this.uv = uv;
@@ -149,6 +172,8 @@ public final class GridPatch implements CachedPatch {
     /** Levels of inner nodes on the longest path from the root (0 when the grid is one leaf). */
     public int depth() { return depth; }
     public boolean hasNormals() { return normals != null; }
+    /** 0 when cell (0, 0) is cut along its (0, 0)-(1, 1) diagonal, 1 when along its (1, 0)-(0, 1) one. */
+    public int cellParity() { return parity; }
 
     /**
      * The heap this grid retains: 128 bytes for the object and its six-int box (an 88-byte object with compressed
@@ -175,14 +200,27 @@ public final class GridPatch implements CachedPatch {
     /** Coordinate {@code axis} (0..2) of vertex (i, j). */
     public float x(int i, int j, int axis) { return pos[3 * (j * nu + i) + axis]; }
 
-    /** The vertex number (j * nu + i) of corner {@code corner} (0..2) of triangle {@code sub}. */
+    /**
+     * The vertex number (j * nu + i) of corner {@code corner} (0..2) of triangle {@code sub}, counter-clockwise in
+     * (i, j) (see the class comment).
+     */
     public int triangleVertex(int sub, int corner) {
         int cell = sub >> 1, i = cell % (nu - 1), j = cell / (nu - 1);
-        int a = j * nu + i;
-        if (corner == 0) return a;
-        if ((sub & 1) == 0) return corner == 1 ? a + 1 : a + nu + 1;
-        return corner == 1 ? a + nu + 1 : a + nu;
+        int a = j * nu + i; // v0; v1 = a + 1, v2 = a + nu + 1, v3 = a + nu
+        if (!odd(i, j)) { // (v0, v1, v2), (v0, v2, v3)
+            if (corner == 0) return a;
+            if ((sub & 1) == 0) return corner == 1 ? a + 1 : a + nu + 1;
+            return corner == 1 ? a + nu + 1 : a + nu;
+        }
+        if ((sub & 1) == 0) return corner == 0 ? a : corner == 1 ? a + 1 : a + nu; // (v0, v1, v3)
+        return corner == 0 ? a + nu + 1 : corner == 1 ? a + nu : a + 1;            // (v2, v3, v1)
     }
+
+    /** Coordinate {@code axis} (0..2) of corner {@code corner} (0..2) of triangle {@code sub}: its stored float. */
+    public float cornerCoordinate(int sub, int corner, int axis) { return pos[3 * triangleVertex(sub, corner) + axis]; }
+
+    /** Whether cell (i, j) is cut along its v1-v3 diagonal. */
+    private boolean odd(int i, int j) { return ((i + j + parity) & 1) != 0; }
 
     /** The cell column i of triangle {@code sub}. */
     public int cellI(int sub) { return (sub >> 1) % (nu - 1); }
@@ -203,9 +241,18 @@ public final class GridPatch implements CachedPatch {
             out[1] = b0 * uv[2 * a + 1] + b1 * uv[2 * b + 1] + b2 * uv[2 * c + 1];
             return;
         }
-        // local coordinates in the cell: A has corners (0,0), (1,0), (1,1); B has (0,0), (1,1), (0,1)
-        double cu = (sub & 1) == 0 ? b1 + b2 : b1, cv = (sub & 1) == 0 ? b2 : b1 + b2;
-        double fu = (cellI(sub) + clamp01(cu)) / (nu - 1), fv = (cellJ(sub) + clamp01(cv)) / (nv - 1);
+        // local coordinates in the cell, from the triangle's corners there: along v0-v2, A has (0,0), (1,0), (1,1)
+        // and B (0,0), (1,1), (0,1); along v1-v3, A has (0,0), (1,0), (0,1) and B (1,1), (0,1), (1,0)
+        double cu, cv;
+        int i = cellI(sub), j = cellJ(sub);
+        if (!odd(i, j)) {
+            cu = (sub & 1) == 0 ? b1 + b2 : b1;
+            cv = (sub & 1) == 0 ? b2 : b1 + b2;
+        } else {
+            cu = (sub & 1) == 0 ? b1 : 1 - b1;
+            cv = (sub & 1) == 0 ? b2 : 1 - b2;
+        }
+        double fu = (i + clamp01(cu)) / (nu - 1), fv = (j + clamp01(cv)) / (nv - 1);
         out[0] = u0 + (u1 - u0) * Math.min(1, fu);
         out[1] = v0 + (v1 - v0) * Math.min(1, fv);
     }
@@ -350,18 +397,36 @@ public final class GridPatch implements CachedPatch {
      * @return whether a hit was found
      */
     public boolean intersect(Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
-        return walk(ray, hit, ctx);
+        return walk(ray, hit, ctx, null);
     }
 
     /** Whether anything blocks the ray in (ray.tMin, ray.tMax); stops at the first hit. The ray is left alone. */
     public boolean occluded(Ray ray, TraversalScratch ctx) {
-        return walk(ray, null, ctx);
+        return walk(ray, null, ctx, null);
+    }
+
+    /**
+     * Hands every triangle of every leaf whose box the ray's [tMin, tMax] crosses to {@code visitor}, each once, in
+     * no particular order: a superset of the triangles the watertight test hits in that interval (the box tests are
+     * conservative), which a caller after every crossing of a whole line passes as an infinite interval. The
+     * visitor decides the crossings itself (with {@link #cornerCoordinate} and {@link WatertightTriangles}'s
+     * test, for example) and may use {@code ctx} for traversals of its own, whose stack lies above this one's; it
+     * must leave the ray as it found it. Allocates nothing.
+     */
+    public void visitTriangles(Ray ray, TraversalScratch ctx, GridTriangleVisitor visitor) {
+        if (visitor == null) throw new NullPointerException("visitor");
+        walk(ray, null, ctx, visitor);
     }
 
     /** Whether a node's eight boxes are tested with the JDK's vector API ({@link SimdBoxes}), else one by one. */
     private static final boolean SIMD = WideBvh.AVAILABLE;
 
-    private boolean walk(Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
+    /**
+     * The traversal of all three queries: the nearest hit when {@code hit} is given, any hit when it and
+     * {@code visitor} are null, else every leaf's triangles handed to the visitor (the return value then means
+     * nothing).
+     */
+    private boolean walk(Ray ray, PrimitiveHit hit, TraversalScratch ctx, GridTriangleVisitor visitor) {
         ctx.direction(ray);
         {
             final double ix = ctx.invX, iy = ctx.invY, iz = ctx.invZ;
@@ -372,6 +437,14 @@ public final class GridPatch implements CachedPatch {
         }
         final double saved = ray.tMax;
         if (nodeCount == 0) {
+            if (visitor != null) {
+                try {
+                    visit(0, nu - 1, 0, nv - 1, ray, ctx, visitor);
+                } finally {
+                    ray.tMax = saved;
+                }
+                return false;
+            }
             boolean any = leaf(0, nu - 1, 0, nv - 1, ray, hit, ctx);
             ray.tMax = saved;
             return any;
@@ -399,7 +472,9 @@ public final class GridPatch implements CachedPatch {
             int n = 0, ir = 0, jr = 0; // the current entry: a node index, or LEAF with its ranges
             while (true) {
                 if (n == LEAF) {
-                    if (leaf(ir & 0xffff, ir >>> 16, jr & 0xffff, jr >>> 16, ray, hit, ctx)) {
+                    if (visitor != null) {
+                        visit(ir & 0xffff, ir >>> 16, jr & 0xffff, jr >>> 16, ray, ctx, visitor);
+                    } else if (leaf(ir & 0xffff, ir >>> 16, jr & 0xffff, jr >>> 16, ray, hit, ctx)) {
                         any = true;
                         if (hit == null) return true;
                         tMax = Bvh.up(ray.tMax);
@@ -520,7 +595,9 @@ public final class GridPatch implements CachedPatch {
             z = p[q + row + kz] - okz;
             double x01 = p[q + row + kx] - okx - sx * z, y01 = p[q + row + ky] - oky - sy * z, z01 = sz * z;
             double left = x01 * y00 - y01 * x00; // E(p00, p01)
-            for (int i = i0; i < i1; i++) {
+            // the checkerboard of diagonals alternates along the row
+            boolean odd = ((i0 + j + parity) & 1) != 0;
+            for (int i = i0; i < i1; i++, odd = !odd) {
                 q += 3;
                 z = p[q + kz] - okz;
                 final double x10 = p[q + kx] - okx - sx * z, y10 = p[q + ky] - oky - sy * z, z10 = sz * z;
@@ -530,41 +607,31 @@ public final class GridPatch implements CachedPatch {
                 final double bottom = x10 * y00 - y10 * x00; // E(p00, p10)
                 final double right = x11 * y10 - y11 * x10;  // E(p10, p11)
                 final double top = x11 * y01 - y11 * x01;    // E(p01, p11)
-                final double diag = x11 * y00 - y11 * x00;   // E(p00, p11)
-                // triangle A = (p00, p10, p11): U = E(p10, p11), V = E(p11, p00), W = E(p00, p10)
-                double u = right, v = -diag, w = bottom;
-                if (!(Math.min(u, Math.min(v, w)) < 0 && Math.max(u, Math.max(v, w)) > 0)) {
-                    final double det = u + v + w;
-                    if (det != 0) {
-                        final double t = (u * z00 + v * z10 + w * z11) / det;
-                        if (t > tMin && t < ray.tMax) {
-                            if (hit == null) return true;
-                            final double inv = 1 / det;
-                            hit.t = t;
-                            hit.sub = 2 * (j * (nu - 1) + i);
-                            hit.u = v * inv;
-                            hit.v = w * inv;
-                            ray.tMax = t;
-                            any = true;
-                        }
+                final int sub = 2 * (j * (nu - 1) + i);
+                // each triangle's U, V, W are the edge functions of the edges opposite its corners 0, 1, 2
+                if (!odd) {
+                    final double diag = x11 * y00 - y11 * x00; // E(p00, p11)
+                    // A = (p00, p10, p11): U = E(p10, p11), V = E(p11, p00), W = E(p00, p10)
+                    if (triangle(right, -diag, bottom, z00, z10, z11, sub, tMin, ray, hit)) {
+                        if (hit == null) return true;
+                        any = true;
                     }
-                }
-                // triangle B = (p00, p11, p01): U = E(p11, p01), V = E(p01, p00), W = E(p00, p11)
-                u = -top; v = -left; w = diag;
-                if (!(Math.min(u, Math.min(v, w)) < 0 && Math.max(u, Math.max(v, w)) > 0)) {
-                    final double det = u + v + w;
-                    if (det != 0) {
-                        final double t = (u * z00 + v * z11 + w * z01) / det;
-                        if (t > tMin && t < ray.tMax) {
-                            if (hit == null) return true;
-                            final double inv = 1 / det;
-                            hit.t = t;
-                            hit.sub = 2 * (j * (nu - 1) + i) + 1;
-                            hit.u = v * inv;
-                            hit.v = w * inv;
-                            ray.tMax = t;
-                            any = true;
-                        }
+                    // B = (p00, p11, p01): U = E(p11, p01), V = E(p01, p00), W = E(p00, p11)
+                    if (triangle(-top, -left, diag, z00, z11, z01, sub + 1, tMin, ray, hit)) {
+                        if (hit == null) return true;
+                        any = true;
+                    }
+                } else {
+                    final double anti = x01 * y10 - y01 * x10; // E(p10, p01)
+                    // A = (p00, p10, p01): U = E(p10, p01), V = E(p01, p00), W = E(p00, p10)
+                    if (triangle(anti, -left, bottom, z00, z10, z01, sub, tMin, ray, hit)) {
+                        if (hit == null) return true;
+                        any = true;
+                    }
+                    // B = (p11, p01, p10): U = E(p01, p10), V = E(p10, p11), W = E(p11, p01)
+                    if (triangle(-anti, right, -top, z11, z01, z10, sub + 1, tMin, ray, hit)) {
+                        if (hit == null) return true;
+                        any = true;
                     }
                 }
                 x00 = x10; y00 = y10; z00 = z10;
@@ -573,5 +640,38 @@ public final class GridPatch implements CachedPatch {
             }
         }
         return any;
+    }
+
+    /**
+     * {@link WatertightTriangles#test}'s decision for one triangle from its edge functions {@code u}, {@code v},
+     * {@code w} (of the edges opposite its corners 0, 1, 2) and its corners' sheared z, in the same operations and
+     * order: whether it is hit in (tMin, ray.tMax); with {@code hit} given, the hit is recorded and shrinks ray.tMax.
+     */
+    private static boolean triangle(double u, double v, double w, double za, double zb, double zc, int sub,
+                                    double tMin, Ray ray, PrimitiveHit hit) {
+        if (Math.min(u, Math.min(v, w)) < 0 && Math.max(u, Math.max(v, w)) > 0) return false; // signs differ
+        final double det = u + v + w;
+        if (det == 0) return false;
+        final double t = (u * za + v * zb + w * zc) / det;
+        if (!(t > tMin && t < ray.tMax)) return false;
+        if (hit != null) {
+            final double inv = 1 / det;
+            hit.t = t;
+            hit.sub = sub;
+            hit.u = v * inv;
+            hit.v = w * inv;
+            ray.tMax = t;
+        }
+        return true;
+    }
+
+    /** Hands both triangles of every cell of vertex range [i0..i1] x [j0..j1] to the visitor, row by row. */
+    private void visit(int i0, int i1, int j0, int j1, Ray ray, TraversalScratch ctx, GridTriangleVisitor visitor) {
+        for (int j = j0; j < j1; j++) {
+            for (int i = i0, sub = 2 * (j * (nu - 1) + i0); i < i1; i++, sub += 2) {
+                visitor.triangle(this, sub, ray, ctx);
+                visitor.triangle(this, sub + 1, ray, ctx);
+            }
+        }
     }
 }

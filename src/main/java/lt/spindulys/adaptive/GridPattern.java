@@ -28,9 +28,13 @@ package lt.spindulys.adaptive;
  * inverted ({@link #orientation}).
  *
  * <p><b>Triangles.</b> Cell (i, j), 0 &le; i &lt; Ru, 0 &le; j &lt; Rv, with corners v0 = (i, j),
- * v1 = (i + 1, j), v2 = (i + 1, j + 1), v3 = (i, j + 1), is split along its v1-v3 diagonal into
- * triangles 2c = (v0, v1, v3) and 2c + 1 = (v2, v3, v1), c = j Ru + i: both counter-clockwise in
- * (u, v), as Embree splits its quads.
+ * v1 = (i + 1, j), v2 = (i + 1, j + 1), v3 = (i, j + 1), c = j Ru + i, is split in a
+ * checkerboard, so that at rate 2^L the triangles are exactly those of uniform subdivision at
+ * level L (whose child quads are fanned from their corner 0): when i + j is even along its v0-v2
+ * diagonal into triangles 2c = (v0, v1, v2) and 2c + 1 = (v0, v2, v3), when i + j is odd along its
+ * v1-v3 diagonal into 2c = (v0, v1, v3) and 2c + 1 = (v2, v3, v1). All are counter-clockwise in
+ * (u, v), and numbered as {@code GridPatch} numbers its triangles. Either diagonal of a convex
+ * cell gives two triangles that are not inverted, so snapping is indifferent to the choice.
  *
  * <p><b>Exact coordinates.</b> u (i, j) is {@link #uLattice} / {@link #uScale} exactly, with the
  * scale the least common multiple of Ru and the rates of edges 0 and 2 (at most 4096² for rates
@@ -238,7 +242,8 @@ public final class GridPattern {
     }
 
     /**
-     * The three vertex numbers of triangle {@code t} (see the class comment for the diagonal).
+     * The three vertex numbers of triangle {@code t} (see the class comment for the checkerboard of
+     * diagonals).
      *
      * @param t the triangle, 0 to {@link #triangleCount} - 1
      * @param out receives three vertex numbers, counter-clockwise in (u, v)
@@ -247,7 +252,11 @@ public final class GridPattern {
         if (t < 0 || t >= triangleCount()) throw new IllegalArgumentException("triangle " + t + " is not 0 to " + (triangleCount() - 1));
         int c = t >> 1, i = c % ru, j = c / ru, w = ru + 1;
         int v0 = j * w + i, v1 = v0 + 1, v3 = v0 + w, v2 = v3 + 1;
-        if ((t & 1) == 0) {
+        if (((i + j) & 1) == 0) { // along v0-v2
+            out[0] = v0;
+            out[1] = (t & 1) == 0 ? v1 : v2;
+            out[2] = (t & 1) == 0 ? v2 : v3;
+        } else if ((t & 1) == 0) {
             out[0] = v0;
             out[1] = v1;
             out[2] = v3;

@@ -16,9 +16,10 @@ import lt.spindulys.math.Ray;
 
 /**
  * The grid patch against the brute-force watertight test of every triangle: the same nearest t and cell on
- * bumpy, thin and degenerate grids for every leaf size, watertightness of a closed set of six grids that share
- * bit-identical edge vertices (rays from inside, many aimed exactly at shared edges and vertices), occlusion
- * agreeing with intersection, the hit's parameters, the byte count, and no allocation per query.
+ * bumpy, thin and degenerate grids for every leaf size and both cell parities, the checkerboard of diagonals,
+ * watertightness of a closed set of six grids that share bit-identical edge vertices (rays from inside, many aimed
+ * exactly at shared edges and vertices), occlusion agreeing with intersection, every watertight crossing of a line
+ * among the visited triangles, the hit's parameters, the byte count, and no allocation per query.
  */
 class GridPatchTest {
 
@@ -30,6 +31,10 @@ class GridPatchTest {
 
     private static GridPatch grid(int nu, int nv, float[] xyz, int leaf) {
         return new GridPatch(nu, nv, xyz, null, null, 0, 0, 1, 1, leaf);
+    }
+
+    private static GridPatch grid(int nu, int nv, float[] xyz, int leaf, int parity) {
+        return new GridPatch(nu, nv, xyz, null, null, 0, 0, 1, 1, leaf, parity);
     }
 
     /**
@@ -93,9 +98,47 @@ class GridPatchTest {
     @CsvSource({"2, 2, 2", "2, 2, 17", "3, 2, 2", "2, 40, 3", "40, 2, 5", "33, 7, 3", "17, 17, 17", "18, 18, 17",
         "65, 65, 3", "65, 65, 5", "65, 65, 9", "65, 65, 17", "100, 37, 5", "129, 129, 5"})
     void bumpyGridsAgreeWithEveryTriangleTested(int nu, int nv, int leaf) {
-        GridPatch g = grid(nu, nv, f(GridTestSurfaces.bumpy(nu, nv)), leaf);
-        assertEquals(2 * (nu - 1) * (nv - 1), g.triangleCount());
-        randomRays(g, 31 * nu + nv + leaf, 1500, nu + "x" + nv + "/" + leaf);
+        for (int parity = 0; parity < 2; parity++) {
+            GridPatch g = grid(nu, nv, f(GridTestSurfaces.bumpy(nu, nv)), leaf, parity);
+            assertEquals(2 * (nu - 1) * (nv - 1), g.triangleCount());
+            assertEquals(parity, g.cellParity());
+            randomRays(g, 31 * nu + nv + leaf + 7 * parity, 1500, nu + "x" + nv + "/" + leaf + " parity " + parity);
+        }
+    }
+
+    /**
+     * Cell (i, j) is cut along its (i, j)-(i + 1, j + 1) diagonal when i + j + parity is even, else along its
+     * (i + 1, j)-(i, j + 1) one; both triangles counter-clockwise in (i, j), together the cell's four corners, with
+     * the diagonal as their shared edge; the cell indices and the corners' floats follow.
+     */
+    @Test
+    void cellsAreCutInACheckerboardOfDiagonals() {
+        int nu = 6, nv = 5;
+        float[] p = f(GridTestSurfaces.bumpy(nu, nv));
+        assertEquals(0, grid(nu, nv, p, 3).cellParity(), "the old constructors keep parity 0");
+        assertEquals(0, new GridPatch(nu, nv, GridTestSurfaces.bumpy(nu, nv), null, null, 3).cellParity());
+        for (int given : new int[] {0, 1, 2, 7, -3}) {
+            GridPatch g = grid(nu, nv, p, 3, given);
+            int parity = given & 1;
+            assertEquals(parity, g.cellParity());
+            for (int s = 0; s < g.triangleCount(); s++) {
+                int i = g.cellI(s), j = g.cellJ(s);
+                assertEquals(s >> 1, j * (nu - 1) + i);
+                int v0 = j * nu + i, v1 = v0 + 1, v2 = v0 + nu + 1, v3 = v0 + nu;
+                int a = g.triangleVertex(s, 0), b = g.triangleVertex(s, 1), c = g.triangleVertex(s, 2);
+                int[] want = ((i + j + parity) & 1) == 0
+                        ? ((s & 1) == 0 ? new int[] {v0, v1, v2} : new int[] {v0, v2, v3})
+                        : ((s & 1) == 0 ? new int[] {v0, v1, v3} : new int[] {v2, v3, v1});
+                assertEquals(java.util.Arrays.toString(want), java.util.Arrays.toString(new int[] {a, b, c}), "triangle " + s);
+                // counter-clockwise in (i, j)
+                long ai = a % nu, aj = a / nu, bi = b % nu, bj = b / nu, ci = c % nu, cj = c / nu;
+                assertEquals(1, (bi - ai) * (cj - aj) - (ci - ai) * (bj - aj), "triangle " + s + " winds counter-clockwise");
+                for (int k = 0; k < 3; k++) {
+                    int vk = g.triangleVertex(s, k);
+                    for (int ax = 0; ax < 3; ax++) assertEquals(g.x(vk % nu, vk / nu, ax), g.cornerCoordinate(s, k, ax));
+                }
+            }
+        }
     }
 
     @Test
@@ -144,9 +187,10 @@ class GridPatchTest {
 
     // ---- six grids, one closed surface ----
 
+    /** Six faces, of cell parity 0 and 1 in turn, so that both checkerboards meet across the shared edges. */
     private static GridPatch[] cubeSphere(int n, int leaf) {
         GridPatch[] faces = new GridPatch[6];
-        for (int f = 0; f < 6; f++) faces[f] = grid(n, n, GridTestSurfaces.cubeSphereFace(f, n), leaf);
+        for (int f = 0; f < 6; f++) faces[f] = grid(n, n, GridTestSurfaces.cubeSphereFace(f, n), leaf, f >> 1);
         return faces;
     }
 
@@ -214,6 +258,116 @@ class GridPatchTest {
         }
     }
 
+    // ---- every crossing of a line ----
+
+    /** Records the triangles visited, and how often each. */
+    private static final class Visited implements GridTriangleVisitor {
+        int[] count = new int[0];
+        int calls;
+
+        void reset(GridPatch g) {
+            if (count.length != g.triangleCount()) count = new int[g.triangleCount()];
+            java.util.Arrays.fill(count, 0);
+            calls = 0;
+        }
+
+        @Override public void triangle(GridPatch grid, int sub, Ray ray, TraversalScratch ctx) {
+            count[sub]++;
+            calls++;
+        }
+    }
+
+    /**
+     * For random lines (rays over an infinite interval) through random grids of either parity and any leaf size,
+     * smooth, noisy and snapped: every triangle the watertight test hits on the line is visited, and no triangle is
+     * visited twice. Many lines run through vertices, along the axes and within the grid's plane.
+     */
+    @Test
+    void everyWatertightCrossingOfALineIsAmongTheVisitedTriangles() {
+        Random rnd = new Random(17);
+        TraversalScratch ctx = new TraversalScratch();
+        Visited visited = new Visited();
+        Ray ray = new Ray();
+        int crossings = 0, lines = 0, skipped = 0;
+        for (int grid = 0; grid < 60; grid++) {
+            int nu = 2 + rnd.nextInt(grid % 3 == 0 ? 70 : 20), nv = 2 + rnd.nextInt(grid % 3 == 0 ? 70 : 20);
+            double[] p = GridTestSurfaces.bumpy(nu, nv);
+            if (grid % 4 == 1) for (int k = 0; k < p.length; k++) p[k] += 0.3 * rnd.nextGaussian() / Math.max(nu, nv); // noisy, folded
+            if (grid % 4 == 2 && nu > 3) { // snapped: a repeated column and a bottom row collapsed 2:1
+                for (int j = 0; j < nv; j++) System.arraycopy(p, 3 * (j * nu + 1), p, 3 * (j * nu + 2), 3);
+                for (int i = 1; i < nu; i += 2) System.arraycopy(p, 3 * (i - 1), p, 3 * i, 3);
+            }
+            int[] leaves = {2, 3, 5, 9, 17};
+            GridPatch g = grid(nu, nv, f(p), leaves[rnd.nextInt(leaves.length)], rnd.nextInt(2));
+            Reference ref = new Reference(g);
+            double[] box = new double[6];
+            g.bounds(box);
+            for (int r = 0; r < 150; r++) {
+                double tx = box[0] + rnd.nextDouble() * (box[3] - box[0]), ty = box[1] + rnd.nextDouble() * (box[4] - box[1]);
+                double tz = box[2] + rnd.nextDouble() * (box[5] - box[2]);
+                if (r % 3 == 1) { // through a vertex
+                    int i = rnd.nextInt(nu), j = rnd.nextInt(nv);
+                    tx = g.x(i, j, 0); ty = g.x(i, j, 1); tz = g.x(i, j, 2);
+                }
+                double dx = rnd.nextGaussian(), dy = rnd.nextGaussian(), dz = rnd.nextGaussian();
+                if (r % 5 == 0) { dx = 0.05 * dx; dy = 0.05 * dy; } // steep
+                if (r % 7 == 3) { dz = 0; } // within the grid's plane (nearly)
+                if (r % 11 == 4) { dx = 0; dy = 0; dz = 1; } // along an axis: infinite inverses
+                // the origin anywhere along the line, beyond the grid on either side
+                double s = 4 * rnd.nextGaussian();
+                ray.set(tx - s * dx, ty - s * dy, tz - s * dz, dx, dy, dz, Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY);
+                visited.reset(g);
+                g.visitTriangles(ray, ctx, visited);
+                assertEquals(Double.NEGATIVE_INFINITY, ray.tMin, "the ray is left alone");
+                assertEquals(Double.POSITIVE_INFINITY, ray.tMax, "the ray is left alone");
+                lines++;
+                for (int t = 0; t < g.triangleCount(); t++) {
+                    assertTrue(visited.count[t] <= 1, "triangle " + t + " visited " + visited.count[t] + " times");
+                    if (WatertightTriangles.test(ref.tri, ref.pos, null, t, t + 1, ray, null, ctx)) {
+                        crossings++;
+                        if (visited.count[t] != 1) fail("grid " + grid + " (" + nu + " x " + nv + ", leaves " + g.leafSize()
+                                + ", parity " + g.cellParity() + "): triangle " + t + " is crossed but not visited: " + ray);
+                    }
+                }
+                if (visited.calls == g.triangleCount() && g.nodeCount() > 0) skipped++; // nothing culled
+            }
+        }
+        assertTrue(crossings > lines, crossings + " crossings on " + lines + " lines");
+        assertTrue(skipped < lines / 2, "the hierarchy culls: " + skipped + " of " + lines + " lines visited every triangle");
+    }
+
+    /** A visitor may run a traversal of its own on the same scratch (a nested grid): the outer one carries on. */
+    @Test
+    void aVisitorMayTraverseWithTheSameScratch() {
+        GridPatch outer = grid(65, 65, f(GridTestSurfaces.bumpy(65, 65)), 3, 1);
+        GridPatch inner = grid(129, 129, f(GridTestSurfaces.bumpy(129, 129)), 2, 0);
+        TraversalScratch ctx = new TraversalScratch();
+        ctx.stackTop = 4;
+        Visited alone = new Visited(), nested = new Visited();
+        PrimitiveHit h = new PrimitiveHit();
+        int[] innerHits = new int[1];
+        GridTriangleVisitor both = (grid, sub, ray, c) -> {
+            nested.triangle(grid, sub, ray, c);
+            if (inner.intersect(ray, h, c)) innerHits[0]++;
+        };
+        Random rnd = new Random(23);
+        Ray ray = new Ray();
+        int visitedRays = 0;
+        for (int r = 0; r < 200; r++) {
+            double tx = rnd.nextDouble(), ty = rnd.nextDouble();
+            ray.set(tx + 0.2 * rnd.nextGaussian(), ty + 0.2 * rnd.nextGaussian(), 1, 0.2 * rnd.nextGaussian(), 0.2 * rnd.nextGaussian(), -1,
+                    Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY);
+            alone.reset(outer);
+            nested.reset(outer);
+            outer.visitTriangles(ray, ctx, alone);
+            outer.visitTriangles(ray, ctx, both);
+            if (alone.calls > 0) visitedRays++;
+            assertEquals(java.util.Arrays.toString(alone.count), java.util.Arrays.toString(nested.count), "ray " + r);
+            assertEquals(4, ctx.stackTop);
+        }
+        assertTrue(visitedRays > 100 && innerHits[0] > 100, visitedRays + " rays visited triangles, " + innerHits[0] + " inner hits");
+    }
+
     // ---- the hit's parameters, normals and the byte count ----
 
     @Test
@@ -223,12 +377,12 @@ class GridPatchTest {
         for (int k = 2; k < p.length; k += 3) p[k] = 0; // flat: (x, y) is the parameter point
         float[] normals = new float[3 * nu * nv];
         for (int k = 0; k < normals.length; k += 3) { normals[k] = (float) p[k]; normals[k + 2] = 1; }
-        GridPatch g = new GridPatch(nu, nv, f(p), normals, null, 0.5, 0.25, 1, 0.75, 3);
         TraversalScratch ctx = new TraversalScratch();
         PrimitiveHit h = new PrimitiveHit();
         double[] uv = new double[2], n = new double[3];
         Random rnd = new Random(3);
-        for (int k = 0; k < 500; k++) {
+        for (int k = 0; k < 1000; k++) {
+            GridPatch g = new GridPatch(nu, nv, f(p), normals, null, 0.5, 0.25, 1, 0.75, 3, k & 1);
             double x = rnd.nextDouble(), y = rnd.nextDouble();
             Ray ray = new Ray().set(x, y, 1, 0.1 * rnd.nextGaussian(), 0.1 * rnd.nextGaussian(), -1, 0, Double.POSITIVE_INFINITY);
             if (!g.intersect(ray, h, ctx)) continue;
@@ -291,7 +445,9 @@ class GridPatchTest {
 
     @Test
     void steadyStateQueriesAllocateNothing() {
-        GridPatch g = grid(129, 129, f(GridTestSurfaces.bumpy(129, 129)), GridPatch.DEFAULT_LEAF_SIZE);
+        GridPatch g = grid(129, 129, f(GridTestSurfaces.bumpy(129, 129)), GridPatch.DEFAULT_LEAF_SIZE, 1);
+        int[] visits = new int[1];
+        GridTriangleVisitor counter = (grid, sub, ray, c) -> visits[0]++;
         TraversalScratch ctx = new TraversalScratch();
         ctx.stackTop = 8; // below a caller's entries, as inside a scene traversal
         Ray r = new Ray();
@@ -308,6 +464,10 @@ class GridPatchTest {
                 r.set(rays[k], rays[k + 1], rays[k + 2], rays[k + 3], rays[k + 4], rays[k + 5], 0, Double.POSITIVE_INFINITY);
                 g.intersect(r, h, ctx);
                 g.occluded(r, ctx);
+                if ((i & 3) == 0) {
+                    r.tMin = Double.NEGATIVE_INFINITY;
+                    g.visitTriangles(r, ctx, counter);
+                }
             }
         };
         work.run(); // warm up: the scratch stack grows once, the JIT compiles
@@ -319,7 +479,8 @@ class GridPatchTest {
             work.run();
             least = Math.min(least, bean.getCurrentThreadAllocatedBytes() - before);
         }
-        assertTrue(least < 4096, "40,000 queries allocated " + least + " bytes");
+        assertTrue(least < 4096, "45,000 queries allocated " + least + " bytes");
+        assertTrue(visits[0] > 0);
         assertEquals(8, ctx.stackTop, "the caller's stack entries are left as they were");
     }
 }

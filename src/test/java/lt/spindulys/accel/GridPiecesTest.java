@@ -58,14 +58,31 @@ class GridPiecesTest {
         }
     }
 
-    @Test
-    void builtPiecesAnswerEveryRayAsTheWholeGrid() {
-        int n = 65;
+    /** 65: pieces starting at even columns and rows; 51: some at odd ones, whose first cell is cut the other way. */
+    @ParameterizedTest(name = "{0} x {0}")
+    @CsvSource({"65", "51"})
+    void builtPiecesAnswerEveryRayAsTheWholeGrid(int n) {
         GridPieces pieces = new GridPieces(n, n, 17);
         GridPieces.Source source = bumpySource(n, n);
         GridPatch[] built = new GridPatch[pieces.count()];
         for (int k = 0; k < built.length; k++) built[k] = pieces.build(k, source, 5);
         assertEquals(16, built.length);
+        GridPatch whole = new GridPatch(n, n, GridTestSurfaces.bumpy(n, n), null, null, 5);
+        // the pieces hold exactly the whole grid's triangles, corner for corner
+        boolean odd = false;
+        for (int k = 0; k < built.length; k++) {
+            GridPatch g = built[k];
+            int i0 = pieces.i0(k), j0 = pieces.j0(k);
+            odd |= ((i0 + j0) & 1) == 1;
+            for (int s = 0; s < g.triangleCount(); s++) {
+                int ws = 2 * ((j0 + g.cellJ(s)) * (n - 1) + i0 + g.cellI(s)) + (s & 1);
+                for (int c = 0; c < 3; c++) {
+                    int v = g.triangleVertex(s, c), w = whole.triangleVertex(ws, c);
+                    assertEquals(w, (j0 + v / g.nu()) * n + i0 + v % g.nu(), "piece " + k + " triangle " + s + " corner " + c);
+                }
+            }
+        }
+        assertEquals(n == 51, odd, "some piece starts at an odd i0 + j0");
         // neighbours hold the same floats on their shared column and row
         for (int k = 0; k < built.length; k++) {
             if (k % pieces.columns() > 0) {
@@ -73,7 +90,6 @@ class GridPiecesTest {
                 for (int j = 0; j < b.nv(); j++) for (int ax = 0; ax < 3; ax++) assertEquals(a.x(a.nu() - 1, j, ax), b.x(0, j, ax));
             }
         }
-        GridPatch whole = new GridPatch(n, n, GridTestSurfaces.bumpy(n, n), null, null, 5);
         TraversalScratch ctx = new TraversalScratch();
         PrimitiveHit h = new PrimitiveHit(), w = new PrimitiveHit();
         double[] uv = new double[2], wuv = new double[2];
@@ -83,7 +99,8 @@ class GridPiecesTest {
         for (int r = 0; r < 4000; r++) {
             double tx = rnd.nextDouble(), ty = rnd.nextDouble();
             if (r % 3 == 0) { // at a vertex on a piece boundary
-                int i = 16 * rnd.nextInt(5), j = rnd.nextInt(n);
+                int c = rnd.nextInt(pieces.columns() + 1);
+                int i = c == pieces.columns() ? n - 1 : pieces.i0(c), j = rnd.nextInt(n);
                 tx = whole.x(i, j, 0); ty = whole.x(i, j, 1);
             }
             double ox = tx + 0.5 * rnd.nextGaussian(), oy = ty + 0.5 * rnd.nextGaussian(), oz = 1 + rnd.nextDouble();

@@ -161,16 +161,39 @@ class GridPatternTest {
         return out;
     }
 
+    /**
+     * The diagonals alternate in a checkerboard, as uniform subdivision's child quads are fanned
+     * from their corner 0: cell (i, j) is cut along v0-v2 when i + j is even, along v1-v3 when odd.
+     */
     @Test
-    void theDiagonalRunsFromCornerOneToCornerThree() {
+    void theDiagonalsAlternateInACheckerboard() {
         GridPattern g = new GridPattern(2, 2, 2, 2);
         int[] t = new int[3];
-        g.triangle(0, t);
-        assertArrayEquals(new int[] {0, 1, 3}, t);
+        g.triangle(0, t); // cell (0, 0): v0-v2
+        assertArrayEquals(new int[] {0, 1, 4}, t);
         g.triangle(1, t);
-        assertArrayEquals(new int[] {4, 3, 1}, t);
-        g.triangle(7, t);
-        assertArrayEquals(new int[] {8, 7, 5}, t);
+        assertArrayEquals(new int[] {0, 4, 3}, t);
+        g.triangle(2, t); // cell (1, 0): v1-v3
+        assertArrayEquals(new int[] {1, 2, 4}, t);
+        g.triangle(3, t);
+        assertArrayEquals(new int[] {5, 4, 2}, t);
+        g.triangle(4, t); // cell (0, 1): v1-v3
+        assertArrayEquals(new int[] {3, 4, 6}, t);
+        g.triangle(5, t);
+        assertArrayEquals(new int[] {7, 6, 4}, t);
+        g.triangle(7, t); // cell (1, 1): v0-v2
+        assertArrayEquals(new int[] {4, 8, 7}, t);
         assertThrows(IllegalArgumentException.class, () -> g.triangle(8, t));
+        // A child quad's children are fanned from the corners they share with it towards its centre, which at
+        // every level is the grid vertex with both indices odd: every triangle holds its cell's corner that has.
+        for (GridPattern p : new GridPattern[] {g, new GridPattern(8, 8, 8, 8), new GridPattern(5, 4, 5, 3)}) {
+            int w = p.columns() + 1;
+            for (int k = 0; k < p.triangleCount(); k++) {
+                p.triangle(k, t);
+                int c = k >> 1, i = c % p.columns(), j = c / p.columns();
+                int centre = (j | 1) * w + (i | 1);
+                assertTrue(t[0] == centre || t[1] == centre || t[2] == centre, p + ": triangle " + k + " holds vertex " + centre);
+            }
+        }
     }
 }
