@@ -83,7 +83,7 @@ public final class EdgeLevels {
     public static void perEdgeMax(ViewFootprint view, double[] positions, int[] edgeVertices, Placement placement,
                                   double targetPixels, int maxLevel, double offscreenScale, int[] levelsInOut) {
         checkTarget(targetPixels, maxLevel);
-        raise(view, positions, edgeVertices, placement, pixels -> levelFor(pixels, targetPixels, maxLevel), maxLevel, offscreenScale, levelsInOut, "levels");
+        raise(view, positions, edgeVertices, placement, pixels -> levelFor(pixels, targetPixels, maxLevel), maxLevel, offscreenScale, false, levelsInOut, "levels");
     }
 
     /**
@@ -91,9 +91,11 @@ public final class EdgeLevels {
      * pixels (bounded over the shutter as the class comment says), turned into an integer by
      * {@code quantize} (non-decreasing in the length), raising {@code valuesInOut} where that is
      * higher. Edges already at {@code max} or above are skipped; {@code noun} names the array in messages.
+     * With {@code subtended}, a still edge is measured by the angle it subtends
+     * ({@link ViewFootprint#subtendedPixels}) rather than bounded with foreshortening ignored.
      */
     static void raise(ViewFootprint view, double[] positions, int[] edgeVertices, Placement placement,
-                      DoubleToIntFunction quantize, int max, double offscreenScale, int[] valuesInOut, String noun) {
+                      DoubleToIntFunction quantize, int max, double offscreenScale, boolean subtended, int[] valuesInOut, String noun) {
         Objects.requireNonNull(view, "view");
         Objects.requireNonNull(positions, "positions");
         Objects.requireNonNull(edgeVertices, "edgeVertices");
@@ -122,7 +124,8 @@ public final class EdgeLevels {
             if (m.length == 12) {
                 apply(m, 0, positions, va, a0);
                 apply(m, 0, positions, vb, b0);
-                pixels = view.pixels(a0[0], a0[1], a0[2], b0[0], b0[1], b0[2], dist(a0, b0), 0, offscreenScale);
+                pixels = subtended ? view.subtendedPixels(a0[0], a0[1], a0[2], b0[0], b0[1], b0[2], offscreenScale)
+                        : view.pixels(a0[0], a0[1], a0[2], b0[0], b0[1], b0[2], dist(a0, b0), 0, offscreenScale);
             } else {
                 pixels = 0;
                 apply(m, 0, positions, va, a0);

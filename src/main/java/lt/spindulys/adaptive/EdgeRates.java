@@ -75,7 +75,7 @@ public final class EdgeRates {
                                   double targetPixels, int maxRate, double offscreenScale, int[] ratesInOut) {
         checkTarget(targetPixels, maxRate);
         EdgeLevels.raise(view, positions, edgeVertices, placement, pixels -> rateFor(pixels, targetPixels, maxRate),
-                maxRate, offscreenScale, ratesInOut, "rates");
+                maxRate, offscreenScale, true, ratesInOut, "rates");
     }
 
     /**

@@ -27,6 +27,8 @@ public final class ViewFootprint {
     private final double slack;               // >= 1: measured stretch over the 1 / cos² model, off-axis
     private final double minCos;              // cos of the largest angle from the axis inside the frustum
     private final double[] planes;            // 4 unit inward normals of the frustum's sides through the eye
+    /** A flat film (a pinhole's, a thin lens's centre rays): its axes in the image plane and pixels per unit of tangent; null otherwise. */
+    private double[] film;
 
     private ViewFootprint(double[] eye, double[] axis, double k0, double slack, double minCos, double[] planes) {
         ex = eye[0]; ey = eye[1]; ez = eye[2];
@@ -100,7 +102,49 @@ public final class ViewFootprint {
             double s = n[0] * axis[0] + n[1] * axis[1] + n[2] * axis[2] >= 0 ? 1 : -1;
             for (int k = 0; k < 3; k++) planes[3 * i + k] = s * n[k];
         }
-        return new ViewFootprint(eye, axis, k0, slack, minCos, planes);
+        ViewFootprint v = new ViewFootprint(eye, axis, k0, slack, minCos, planes);
+        v.film = flatFilm(camera, aspect, width, height, axis, r);
+        return v;
+    }
+
+    /**
+     * The film as a plane at unit distance along the axis, if the camera's lens-centre rays meet
+     * one (film positions linear in the image positions, checked at the corners and edge midpoints
+     * to a millionth of a pixel): its right and up unit axes and pixels per unit along each, so a
+     * point's pixel is its direction's tangent-plane coordinates times those. Null for any other camera.
+     */
+    private static double[] flatFilm(Camera camera, double aspect, int width, int height, double[] axis, Ray r) {
+        double[] x0 = plane(camera, aspect, 0, 0.5, axis, r), x1 = plane(camera, aspect, 1, 0.5, axis, r);
+        double[] y0 = plane(camera, aspect, 0.5, 0, axis, r), y1 = plane(camera, aspect, 0.5, 1, axis, r);
+        if (x0 == null || x1 == null || y0 == null || y1 == null) return null;
+        double[] right = new double[3], up = new double[3];
+        for (int k = 0; k < 3; k++) { right[k] = x1[k] - x0[k]; up[k] = y1[k] - y0[k]; }
+        double wx = Math.sqrt(right[0] * right[0] + right[1] * right[1] + right[2] * right[2]);
+        double wy = Math.sqrt(up[0] * up[0] + up[1] * up[1] + up[2] * up[2]);
+        if (!(wx > 0 && wy > 0)) return null;
+        for (int k = 0; k < 3; k++) { right[k] /= wx; up[k] /= wy; }
+        double sx = width / wx, sy = height / wy;
+        // Linear: every corner and midpoint lands where the plane puts it.
+        double[] c = plane(camera, aspect, 0.5, 0.5, axis, r);
+        for (double fx : new double[] {0, 0.5, 1}) {
+            for (double fy : new double[] {0, 0.5, 1}) {
+                double[] p = plane(camera, aspect, fx, fy, axis, r);
+                if (p == null) return null;
+                double px = 0, py = 0;
+                for (int k = 0; k < 3; k++) { px += (p[k] - c[k]) * right[k]; py += (p[k] - c[k]) * up[k]; }
+                double ex = (fx - 0.5) * width, ey = (fy - 0.5) * height;
+                if (Math.abs(px * sx - ex) > 1e-6 * width || Math.abs(py * sy - ey) > 1e-6 * height) return null;
+            }
+        }
+        return new double[] {right[0], right[1], right[2], up[0], up[1], up[2], sx, sy};
+    }
+
+    /** Where the lens-centre ray through film point (fx, fy) meets the plane at unit distance along the axis (from the eye); null if it does not. */
+    private static double[] plane(Camera camera, double aspect, double fx, double fy, double[] axis, Ray r) {
+        camera.generateRay(fx, fy, aspect, 0, 0, 0, r);
+        double d = r.dx * axis[0] + r.dy * axis[1] + r.dz * axis[2];
+        if (!(d > 0)) return null;
+        return new double[] {r.dx / d, r.dy / d, r.dz / d};
     }
 
     /** The smallest angle (radians) that a one-step film displacement in any direction makes, from two pairs of rays. */
@@ -224,6 +268,60 @@ public final class ViewFootprint {
         return angle * centrePixelsPerRadian * slack / (c * c);
     }
 
+    /**
+     * The projected length in pixels of the segment a-b by the angle it subtends at the eye (so a
+     * segment seen obliquely counts as short as it looks, as Cycles measures its dicing edges in
+     * raster space), times pixels per radian in the direction of its visible part with the same
+     * 1 / cos² and slack as {@link #pixels(double, double, double, double, double, double, double)},
+     * which bounds it from above; outside the view the angle over {@code offscreenScale} with the
+     * centre's pixel size.
+     *
+     * @param ax first end, x
+     * @param ay first end, y
+     * @param az first end, z
+     * @param bx second end, x
+     * @param by second end, y
+     * @param bz second end, z
+     * @param offscreenScale divisor outside the view, at least 1
+     * @return the length in pixels: 0 for a point, infinity for a segment through the eye
+     */
+    public double subtendedPixels(double ax, double ay, double az, double bx, double by, double bz, double offscreenScale) {
+        checkOffscreenScale(offscreenScale);
+        double dx = bx - ax, dy = by - ay, dz = bz - az;
+        double length = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        if (length == 0) return 0;
+        double wx = ax - ex, wy = ay - ey, wz = az - ez, vx = bx - ex, vy = by - ey, vz = bz - ez;
+        double dd = length * length;
+        double t = Math.max(0, Math.min(1, -(wx * dx + wy * dy + wz * dz) / dd));
+        double nx = wx + t * dx, ny = wy + t * dy, nz = wz + t * dz;
+        if (!(nx * nx + ny * ny + nz * nz > 0)) return Double.POSITIVE_INFINITY;
+        double cx = wy * vz - wz * vy, cy = wz * vx - wx * vz, cz = wx * vy - wy * vx;
+        double angle = Math.atan2(Math.sqrt(cx * cx + cy * cy + cz * cz), wx * vx + wy * vy + wz * vz);
+        double t0 = 0, t1 = 1;
+        for (int i = 0; i < 12 && t0 <= t1; i += 3) {
+            double px = planes[i], py = planes[i + 1], pz = planes[i + 2];
+            double da = px * wx + py * wy + pz * wz;
+            double db = da + px * dx + py * dy + pz * dz;
+            if (da < 0 && db < 0) { t0 = 2; break; }
+            if (da < 0) t0 = Math.max(t0, da / (da - db));
+            else if (db < 0) t1 = Math.min(t1, da / (da - db));
+        }
+        if (!(t0 <= t1)) return angle * centrePixelsPerRadian / offscreenScale;
+        double c = Math.max(minCos, Math.min(cosToAxis(wx + t0 * dx, wy + t0 * dy, wz + t0 * dz), cosToAxis(wx + t1 * dx, wy + t1 * dy, wz + t1 * dz)));
+        double bound = angle * centrePixelsPerRadian * slack / (c * c);
+        if (film == null || !(t1 > t0)) return bound;
+        // A flat film: the visible part's exact length in pixels, spread over the whole edge (its
+        // segments are even in the edge's parameter), never above the bound.
+        double p0x = wx + t0 * dx, p0y = wy + t0 * dy, p0z = wz + t0 * dz, p1x = wx + t1 * dx, p1y = wy + t1 * dy, p1z = wz + t1 * dz;
+        double z0 = p0x * ax + p0y * ay + p0z * az, z1 = p1x * ax + p1y * ay + p1z * az;
+        if (!(z0 > 0 && z1 > 0)) return bound;
+        double[] f = film;
+        double du = (p1x * f[0] + p1y * f[1] + p1z * f[2]) / z1 - (p0x * f[0] + p0y * f[1] + p0z * f[2]) / z0;
+        double dv = (p1x * f[3] + p1y * f[4] + p1z * f[5]) / z1 - (p0x * f[3] + p0y * f[4] + p0z * f[5]) / z0;
+        double visible = Math.hypot(du * f[6], dv * f[7]) / (t1 - t0);
+        return Math.min(bound, visible);
+    }
+
     /** Cosine of the angle between (x, y, z) (from the eye) and the view axis; 1 at the eye itself. */
     private double cosToAxis(double x, double y, double z) {
         double l = Math.sqrt(x * x + y * y + z * z);
@@ -233,6 +331,9 @@ public final class ViewFootprint {
     static void checkOffscreenScale(double offscreenScale) {
         if (!(offscreenScale >= 1)) throw new IllegalArgumentException("offscreen scale must be at least 1, found " + offscreenScale);
     }
+
+    /** {@return the eye: the origin of the lens-centre rays, x, y, z in a new array} */
+    public double[] eye() { return new double[] {ex, ey, ez}; }
 
     /** {@return pixels per radian at the image centre (from rays one pixel apart there)} */
     public double centrePixelsPerRadian() { return centrePixelsPerRadian; }

@@ -210,7 +210,9 @@ public final class AdaptiveSubdivisionSurface extends GObject {
         double t = Double.isNaN(shared.settings().targetPixels()) ? target : shared.settings().targetPixels();
         Object key = java.util.List.of(geometry, method, smooth, level, maxLevel, t, levels);
         tessellation = shared.tessellation(key, () -> levels == Levels.RATE ? new GridTessellation(this, t) : new AdaptiveTessellation(this, t));
-        tessellation.addPlacement(placementIn(context.placement()));
+        // Back faces are seen only through a transparent material or a CSG cut, or on an open surface.
+        boolean backHidden = geometry.closed() && solid() == this && !anyTransparentMaterial();
+        tessellation.addPlacement(placementIn(context.placement()), backHidden);
         return next;
     }
 

@@ -130,7 +130,7 @@ final class AdaptiveTessellation implements SurfaceTessellation, PrimitiveSet, P
 
     /** Records one placement (object to world over the shutter) of a surface using this tessellation. */
     @Override
-    public synchronized void addPlacement(Placement p) { placements.add(p); }
+    public synchronized void addPlacement(Placement p, boolean backHidden) { placements.add(p); }
 
     /** True if some patch is refined on demand (not eager, not all pinned). */
     @Override

@@ -471,6 +471,13 @@ public abstract class GObject implements TracedObject, Cloneable {
      */
     public final int id() { return id; }
 
+    /** Whether the object's material, or any face group's, lets light through (valid once frozen). */
+    protected final boolean anyTransparentMaterial() {
+        if (material != null && material.isTransparent()) return true;
+        if (palette != null) for (Material m : palette) if (m != null && m.isTransparent()) return true;
+        return false;
+    }
+
     /**
      * The solid this object bounds as seen from outside: the outermost {@link Bool} it is an
      * operand of (at any depth), or the object itself. A ray crossing a surface enters or leaves

@@ -1,6 +1,7 @@
 package lt.spindulys.scene;
 
 import lt.spindulys.accel.GridPatch;
+import lt.spindulys.accel.GridTriangleVisitor;
 import lt.spindulys.accel.PrimitiveHit;
 import lt.spindulys.math.Ray;
 import lt.spindulys.trace.ShadingData;
@@ -43,13 +44,17 @@ final class GridPiece implements TessellationPiece {
 
     @Override
     public void addCrossings(int prim, Ray ray, TraceContext ctx) {
-        // Every triangle: a piece holds at most 512, and CSG asks for the whole line anyway.
-        for (int t = 0, n = grid.triangleCount(); t < n; t++) {
-            int a = 3 * grid.triangleVertex(t, 0), b = 3 * grid.triangleVertex(t, 1), c = 3 * grid.triangleVertex(t, 2);
-            TriangleSpans.addCrossing(xyz[a], xyz[a + 1], xyz[a + 2], xyz[b], xyz[b + 1], xyz[b + 2], xyz[c], xyz[c + 1], xyz[c + 2],
-                    prim, t, ray, ctx);
-        }
+        ctx.crossingPiece = prim;
+        grid.visitTriangles(ray, ctx, CROSSING);
     }
+
+    /** Adds a triangle's crossing, as part {@code sub} of the primitive the context names. */
+    private static final GridTriangleVisitor CROSSING = (g, sub, ray, s) -> {
+        TraceContext ctx = (TraceContext) s;
+        TriangleSpans.addCrossing(g.cornerCoordinate(sub, 0, 0), g.cornerCoordinate(sub, 0, 1), g.cornerCoordinate(sub, 0, 2),
+                g.cornerCoordinate(sub, 1, 0), g.cornerCoordinate(sub, 1, 1), g.cornerCoordinate(sub, 1, 2),
+                g.cornerCoordinate(sub, 2, 0), g.cornerCoordinate(sub, 2, 1), g.cornerCoordinate(sub, 2, 2), ctx.crossingPiece, sub, ray, ctx);
+    };
 
     @Override
     public void shade(boolean smooth, int sub, double u, double v, ShadingData sd) {

@@ -75,6 +75,7 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
     private final double target;
     private final String name;
     private final List<Placement> placements = new ArrayList<>();
+    private final List<Boolean> backHidden = new ArrayList<>();
 
     // ---- made by finish ----
     private AdaptiveSubdivisionSurface.Method used;
@@ -123,7 +124,10 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
     }
 
     @Override
-    public synchronized void addPlacement(Placement p) { placements.add(p); }
+    public synchronized void addPlacement(Placement p, boolean hidden) {
+        placements.add(p);
+        backHidden.add(hidden);
+    }
 
     @Override
     public boolean refinesWhileTracing() { return top != null && pinnedCount < pieceCount; }
@@ -177,8 +181,13 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
             Arrays.fill(rate, 1);
             int[] ev = refiner.edgeVertices();
             int maxRate = EdgeRates.ofLevel(maxLevel);
-            for (Placement p : placements) {
-                EdgeRates.perEdgeMax(shared.view(), control.positions(), ev, p, target, maxRate, AdaptiveTessellation.OFFSCREEN_SCALE, rate);
+            int[] own = new int[ne];
+            for (int k = 0; k < placements.size(); k++) {
+                Placement p = placements.get(k);
+                Arrays.fill(own, 1);
+                EdgeRates.perEdgeMax(shared.view(), control.positions(), ev, p, target, maxRate, AdaptiveTessellation.OFFSCREEN_SCALE, own);
+                if (backHidden.get(k) && p.isStatic()) coarsenHidden(p.staticTransform(), shared.view().eye(), ev, own);
+                for (int e = 0; e < ne; e++) rate[e] = Math.max(rate[e], own[e]);
             }
         }
         if (!loop) {
@@ -191,6 +200,46 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
             EdgeRates.evenAroundPolygons(sizes, edges, rate);
         }
     }
+
+    /**
+     * Divides by the offscreen scale the rates of edges the camera cannot see: edges whose every
+     * face turns its back to the eye (by its control polygon, with a margin, so that faces near a
+     * silhouette keep their rates) on a surface whose back faces are hidden. A face seen keeps
+     * all its edges' rates, so no silhouette is coarsened.
+     * Like Cycles' offscreen dicing: such parts are seen only in shadows and reflections.
+     */
+    private void coarsenHidden(Transform toWorld, double[] eye, int[] ev, int[] rates) {
+        int nv = control.vertexCount(), nf = refiner.faceCount();
+        double[] pos = control.positions(), world = new double[3 * nv];
+        for (int v = 0; v < nv; v++) {
+            lt.spindulys.math.Vec3 w = toWorld.point(new lt.spindulys.math.Vec3(pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]));
+            world[3 * v] = w.x(); world[3 * v + 1] = w.y(); world[3 * v + 2] = w.z();
+        }
+        int[] fv = control.faceVertices();
+        boolean[] seen = new boolean[rates.length];
+        for (int f = 0; f < nf; f++) {
+            int n = refiner.faceSize(f), c0 = cornerStart[f];
+            // Newell's normal and the centroid of the control polygon.
+            double nx = 0, ny = 0, nz = 0, cx = 0, cy = 0, cz = 0;
+            for (int k = 0; k < n; k++) {
+                int a = 3 * fv[c0 + k], b = 3 * fv[c0 + (k + 1) % n];
+                nx += (world[a + 1] - world[b + 1]) * (world[a + 2] + world[b + 2]);
+                ny += (world[a + 2] - world[b + 2]) * (world[a] + world[b]);
+                nz += (world[a] - world[b]) * (world[a + 1] + world[b + 1]);
+                cx += world[a] / n; cy += world[a + 1] / n; cz += world[a + 2] / n;
+            }
+            double vx = cx - eye[0], vy = cy - eye[1], vz = cz - eye[2];
+            double nl = Math.sqrt(nx * nx + ny * ny + nz * nz), vl = Math.sqrt(vx * vx + vy * vy + vz * vz);
+            boolean back = nl > 0 && vl > 0 && (nx * vx + ny * vy + nz * vz) > HIDDEN_MARGIN * nl * vl;
+            if (!back) for (int k = 0; k < n; k++) seen[refiner.faceEdge(f, k)] = true;
+        }
+        for (int e = 0; e < rates.length; e++) {
+            if (!seen[e]) rates[e] = (int) Math.ceil(rates[e] / AdaptiveTessellation.OFFSCREEN_SCALE);
+        }
+    }
+
+    /** How far past edge-on (cosine of the angle to the eye) a control face must turn away to count as hidden. */
+    static final double HIDDEN_MARGIN = 0.1;
 
     private int faceRate(int f, int k) { return rate[refiner.faceEdge(f, k)]; }
 
@@ -605,7 +654,7 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
         }
         float[] fxyz = new float[xyz.length];
         for (int a = 0; a < xyz.length; a++) fxyz[a] = (float) xyz[a];
-        GridPatch grid = new GridPatch(nu, nv, fxyz, normals, null, 0, 0, 1, 1, GridPatch.DEFAULT_LEAF_SIZE);
+        GridPatch grid = new GridPatch(nu, nv, fxyz, normals, null, 0, 0, 1, 1, GridPatch.DEFAULT_LEAF_SIZE, i0 + j0);
         return new GridPiece(grid, fxyz, normals, tex);
     }
 

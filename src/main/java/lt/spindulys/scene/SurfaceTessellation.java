@@ -16,8 +16,12 @@ import lt.spindulys.trace.TraceContext;
  * and {@link AdaptiveTessellation} (the thesis's power-of-two levels, per edge or per object).
  */
 interface SurfaceTessellation {
-    /** Records one placement (object to world over the shutter) of a surface using this tessellation. */
-    void addPlacement(Placement p);
+    /**
+     * Records one placement (object to world over the shutter) of a surface using this
+     * tessellation; {@code backHidden} when the camera cannot see the surface's back faces there
+     * (a closed, opaque surface outside any CSG solid).
+     */
+    void addPlacement(Placement p, boolean backHidden);
 
     /** Chooses the tessellation and builds its eager part; called once, after every placement is known. */
     void finish(BuildShared shared, BuildContext root);

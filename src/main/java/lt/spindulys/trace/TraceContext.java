@@ -48,6 +48,8 @@ public final class TraceContext extends TraversalScratch {
     /** Grow-once scratch for the crossings of a line with a mesh (TriangleSpans), and how many are in it. */
     public double[] crossings = new double[64];
     public int crossingCount;
+    /** The primitive whose part's crossings are being collected (a grid piece of an adaptive surface). */
+    public int crossingPiece;
 
     private SpanBuffer[] spanPool = new SpanBuffer[8];
     private int spanDepth;
