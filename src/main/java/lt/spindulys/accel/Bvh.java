@@ -333,6 +333,18 @@ public final class Bvh implements Accelerator {
         return near <= far && near <= tMax && far >= tMin ? near : Double.NaN;
     }
 
+    /**
+     * Twice the ulp of |o|: how far the wide and grid box tests move a float ray origin outward.
+     * The ulp of a normal float is its exponent's power of two over 2^23, taken from the bits
+     * (Math.ulp costs several times as much in the traversal's setup); zero, subnormal and
+     * non-finite values go through Math.ulp.
+     */
+    static float slack(float o) {
+        int e = Float.floatToRawIntBits(o) & 0x7f800000;
+        if (e <= (24 << 23) || e == 0x7f800000) return 2 * Math.ulp(Math.abs(o));
+        return Float.intBitsToFloat(e - (22 << 23));
+    }
+
     /** Largest float not above v: node bounds must never shrink when narrowed from double. */
     static float down(double v) {
         float f = (float) v;

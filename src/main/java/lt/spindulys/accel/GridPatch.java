@@ -539,7 +539,7 @@ public final class GridPatch implements CachedPatch {
         return any;
     }
 
-    private static float slack(float o) { return 2 * Math.ulp(Math.abs(o)); }
+    private static float slack(float o) { return Bvh.slack(o); }
 
     /** {@link SimdBoxes}'s widening of a distance, for the scalar test. */
     private static final float GAMMA = 8 * 0x1p-24f;

@@ -117,7 +117,7 @@ public final class WideBvh implements Accelerator {
         return f > INV_LIMIT ? INV_LIMIT : f < -INV_LIMIT ? -INV_LIMIT : f;
     }
 
-    private static float slack(float o) { return 2 * Math.ulp(Math.abs(o)); }
+    private static float slack(float o) { return Bvh.slack(o); }
 
     /**
      * The ray's constants for the float box test, in ctx's scratch: the inverse direction
