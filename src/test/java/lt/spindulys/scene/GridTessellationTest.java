@@ -1,0 +1,349 @@
+package lt.spindulys.scene;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+import java.util.zip.GZIPInputStream;
+
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+
+import lt.spindulys.image.AovFrame;
+import lt.spindulys.math.Vec3;
+import lt.spindulys.render.RenderResult;
+
+/**
+ * The adaptive surface's default tessellation, {@code levels rate} ({@link GridTessellation}):
+ * grids evaluated on the limit surface at integer rates per control edge. At a fixed level (rate
+ * 2^level everywhere) every method renders the depth of {@code method uniform positions limit} at
+ * that level to float precision; at view-chosen rates every way of building the pieces (eager,
+ * lazy, pinned, evicted, any thread count) renders the same image bit for bit; the surface is
+ * watertight at mixed rates; CSG, motion blur, instances, face-varying UVs and face groups work
+ * on it; --stats reports it.
+ */
+class GridTessellationTest {
+    /** OpenSubdiv's shapes, unpacked from the test resources; passed to the adaptive test's helpers as absolute paths. */
+    @TempDir static Path shapes;
+
+    static final String[] REFERENCE_SHAPES = {"catmark_nonquads", "catmark_cube_creases2", "bilinear_nonquads1"};
+
+    @BeforeAll
+    static void unpackShapes() throws IOException {
+        for (String s : REFERENCE_SHAPES) {
+            try (InputStream in = new GZIPInputStream(GridTessellationTest.class.getResourceAsStream("/subdiv/" + s + ".obj.gz"))) {
+                Files.write(shapes.resolve(s + ".obj"), in.readAllBytes());
+            }
+        }
+    }
+
+    /** A reference shape's absolute path, or a model of scenes/models by name. */
+    static String file(String name) {
+        return name.contains("_") && !name.endsWith(".obj") ? shapes.resolve(name + ".obj").toString() : name;
+    }
+
+    static final AdaptiveSettings DEFAULT = AdaptiveSettings.DEFAULT;
+
+    /** A cache that holds a few pieces at most (a piece of 17 x 17 vertices is about 10 KiB), so pieces are evicted and rebuilt. */
+    static final AdaptiveSettings TINY_CACHE = DEFAULT.withCache(24 << 10);
+
+    /** The combined method with room for a few cheap pieces eager, the rest lazy. */
+    static final AdaptiveSettings FEW_PINNED = new AdaptiveSettings(DEFAULT.cacheBytes() + (40 << 10), DEFAULT.cacheBytes(), false, Double.NaN);
+
+    // ---- comparing renders ----
+
+    /** How two depth passes agree: pixels both hit, of those how many differ beyond the tolerance, and pixels only one hits. */
+    record Agreement(int bothHit, int differ, int hitMiss, String example) {
+        int disagreements() { return differ + hitMiss; }
+    }
+
+    static Agreement depthAgreement(RenderResult expected, RenderResult actual, double relative) {
+        AovFrame e = expected.passes().orElseThrow(), a = actual.passes().orElseThrow();
+        int both = 0, differ = 0, hitMiss = 0;
+        String example = null;
+        for (int y = 0; y < e.height(); y++) {
+            for (int x = 0; x < e.width(); x++) {
+                double de = e.depth(x, y), da = a.depth(x, y);
+                boolean he = Double.isFinite(de), ha = Double.isFinite(da);
+                if (he && ha) {
+                    both++;
+                    if (Math.abs(de - da) > relative * Math.abs(de)) {
+                        differ++;
+                        if (example == null) example = "(" + x + ", " + y + "): " + da + " against " + de;
+                    }
+                } else if (he != ha) {
+                    hitMiss++;
+                    if (example == null) example = "(" + x + ", " + y + "): " + da + " against " + de;
+                }
+            }
+        }
+        return new Agreement(both, differ, hitMiss, example);
+    }
+
+    /**
+     * Asserts that the grid surface's depth is the uniform limit surface's at every pixel both
+     * hit (to {@code 1e-5} of the depth: the grid's vertices are the same limit points rounded to
+     * float), with at most {@code allowed} pixels that disagree. Those can only be pixels whose
+     * ray passes within float rounding of a silhouette edge (or of an edge in front of another
+     * part of the surface), where one tessellation is hit and the other missed.
+     */
+    static void assertSameDepth(RenderResult uniform, RenderResult grid, int allowed, String what) {
+        Agreement g = depthAgreement(uniform, grid, 1e-5);
+        AovFrame e = uniform.passes().orElseThrow();
+        assertTrue(g.bothHit() > e.width() * e.height() / 40, what + ": the object fills too little of the frame to compare (" + g.bothHit() + " pixels)");
+        assertTrue(g.disagreements() <= allowed, what + ": " + g.differ() + " of " + g.bothHit() + " pixels differ in depth, " + g.hitMiss()
+                + " hit one surface only (at most " + allowed + " allowed), e.g. " + g.example());
+    }
+
+    /** Images, depth and normal passes equal bit for bit. */
+    static void assertIdentical(RenderResult expected, RenderResult actual, String what) {
+        AovFrame e = expected.passes().orElseThrow(), a = actual.passes().orElseThrow();
+        for (int y = 0; y < e.height(); y++) {
+            for (int x = 0; x < e.width(); x++) {
+                if (Double.compare(e.depth(x, y), a.depth(x, y)) != 0) {
+                    fail(what + ": depth at (" + x + ", " + y + ") is " + a.depth(x, y) + ", expected " + e.depth(x, y));
+                }
+                for (int c = 0; c < 3; c++) {
+                    if (Double.compare(e.normal(x, y, c), a.normal(x, y, c)) != 0) fail(what + ": normal at (" + x + ", " + y + ") differs");
+                }
+            }
+        }
+        BufferedImage ie = expected.image(), ia = actual.image();
+        for (int y = 0; y < ie.getHeight(); y++) {
+            for (int x = 0; x < ie.getWidth(); x++) {
+                if (ie.getRGB(x, y) != ia.getRGB(x, y)) fail(what + ": pixel (" + x + ", " + y + ") differs");
+            }
+        }
+    }
+
+    /** Pixels whose colour differs by more than {@code levels} (of 255) in some channel. */
+    static int differentPixels(RenderResult expected, RenderResult actual, int levels) {
+        BufferedImage a = expected.image(), b = actual.image();
+        int n = 0;
+        for (int y = 0; y < a.getHeight(); y++) {
+            for (int x = 0; x < a.getWidth(); x++) {
+                int p = a.getRGB(x, y), q = b.getRGB(x, y);
+                for (int s = 0; s <= 16; s += 8) {
+                    if (Math.abs(((p >> s) & 255) - ((q >> s) & 255)) > levels) {
+                        n++;
+                        break;
+                    }
+                }
+            }
+        }
+        return n;
+    }
+
+    // ---- statistics ----
+
+    static final Pattern RATES = Pattern.compile("edge rates (\\d+)(?:-(\\d+) \\(median \\d+\\))?, ");
+    static final Pattern PIECES = Pattern.compile(", (\\d+) pieces[;(]");
+
+    /** The least and largest edge rate in a grid surface's --stats line. */
+    static int[] rates(String stats) {
+        Matcher m = RATES.matcher(stats);
+        assertTrue(m.find(), "a grid surface's statistics: " + stats);
+        int lo = Integer.parseInt(m.group(1));
+        return new int[] {lo, m.group(2) == null ? lo : Integer.parseInt(m.group(2))};
+    }
+
+    static int count(Pattern p, String stats) {
+        Matcher m = p.matcher(stats);
+        assertTrue(m.find(), p + " in " + stats);
+        return Integer.parseInt(m.group(1));
+    }
+
+    // ---- scenes ----
+
+    /** The uniform surface at {@code level} with its vertices on the limit surface: what the grids at rate 2^level reproduce. */
+    static String uniformLimit(int level, String keys) {
+        return "level " + level + "  positions limit  " + keys;
+    }
+
+    /** The grid path at a fixed level by {@code method}. */
+    static String grids(String method, int level, String keys) {
+        return "method " + method + "  levels rate  level " + level + "  " + keys;
+    }
+
+    static RenderResult render(String text, AdaptiveSettings a, int threads) {
+        return AdaptiveSubdivisionTest.render(AdaptiveSubdivisionTest.build(text, a), threads);
+    }
+
+    /** A close view with depth and normal passes (the camera 1.7 radii from the centre, so edge rates differ). */
+    static String closeUp(String file, String keys, int w, int h) {
+        AdaptiveSubdivisionTest.Frame f = AdaptiveSubdivisionTest.frame(file);
+        return String.format(Locale.ROOT, "settings { width %d  height %d  aov depth normal }%n", w, h)
+                + f.camera(1.7, new Vec3(0.35, 0.25, -1), 70) + "light { position -5 8 -9 }\n"
+                + "subdiv { file \"" + AdaptiveSubdivisionTest.file(file) + "\" " + keys + " }\n";
+    }
+
+    // ---- at a fixed level: the uniform limit surface ----
+
+    /**
+     * Shapes at a fixed level, and whether their triangles are the uniform surface's exactly. A
+     * Loop triangle's grid has one triangulation; a quad's grid cuts every cell along the same
+     * diagonal (GridPatch's implicit topology), while the uniform surface cuts each refined quad
+     * along its shorter one, so on a curved quad surface half the cells differ in their diagonal
+     * and the depth differs by the cells' bulge: there only the vertices and the quads are compared
+     * ({@link #fixedLevelGridsHaveTheUniformLimitSurfacesVerticesAndQuads}). Levels are at least
+     * the largest semi-sharp crease's sharpness: until a crease has decayed, the uniform limit
+     * positions follow its sharpness at that level, and the grids the true limit.
+     */
+    static Stream<Arguments> fixedLevels() {
+        return Stream.of(
+                Arguments.of("cube.dat", 1, "", false),                       // closed quads, valence-3 corners
+                Arguments.of("cube.dat", 2, "", false),
+                Arguments.of("cube.dat", 3, "", false),
+                Arguments.of("dodecahedron.dat", 2, "", false),               // pentagons: sub-face grids
+                Arguments.of("house.dat", 2, "", false),                      // pentagons and quads
+                Arguments.of("bowl.dat", 2, "", false),                       // open: a boundary rim
+                Arguments.of("crease-cube.obj", 3, "", false),                // sharp and semi-sharp creases, a sharp corner
+                Arguments.of("catmark_cube_creases2", 2, "", true),           // infinitely sharp: flat faces, either diagonal
+                Arguments.of("catmark_nonquads", 2, "", false),               // n-gons and triangles, open
+                Arguments.of("loop_icosahedron.obj", 1, "scheme loop", true),
+                Arguments.of("loop_icosahedron.obj", 3, "scheme loop", true),
+                Arguments.of("cube.dat", 2, "scheme bilinear", true),         // planar quads: either diagonal
+                Arguments.of("bilinear_nonquads1", 2, "scheme bilinear", false));
+    }
+
+    /**
+     * Every method with {@code levels rate} at a fixed level L renders what the projected method
+     * renders, bit for bit (the lazy one on 1 thread, the combined one with a few pieces pinned,
+     * the lazy one with a cache of a few pieces); and where the triangles are the uniform ones,
+     * the depth of {@code method uniform level L positions limit} to float precision.
+     */
+    @ParameterizedTest(name = "{0} at level {1} {2}")
+    @MethodSource("fixedLevels")
+    void everyMethodAtAFixedLevelGivesTheUniformLimitSurfacesDepth(String name, int level, String keys, boolean sameTriangles) {
+        String file = file(name);
+        int w = 40, h = 30;
+        Scene eager = AdaptiveSubdivisionTest.build(AdaptiveSubdivisionTest.sceneText(file, grids("projected", level, keys), w, h), DEFAULT);
+        RenderResult expected = AdaptiveSubdivisionTest.render(eager, 2);
+        String stats = AdaptiveSubdivisionTest.surface(eager).statistics();
+        int[] r = rates(stats);
+        assertTrue(r[0] == 1 << level && r[1] == 1 << level, "rate 2^level on every edge: " + stats);
+        record V(String method, AdaptiveSettings settings, int threads) {}
+        for (V v : List.of(new V("lazy", DEFAULT, 1), new V("combined", FEW_PINNED, 2), new V("lazy", TINY_CACHE, 2))) {
+            RenderResult grid = render(AdaptiveSubdivisionTest.sceneText(file, grids(v.method(), level, keys), w, h), v.settings(), v.threads());
+            assertIdentical(expected, grid, name + " " + keys + " at level " + level + ", " + v);
+        }
+        if (sameTriangles) {
+            RenderResult uniform = render(AdaptiveSubdivisionTest.sceneText(file, uniformLimit(level, keys), w, h), DEFAULT, 2);
+            assertSameDepth(uniform, expected, 2, name + " " + keys + " at level " + level);
+        }
+    }
+
+    /**
+     * At a fixed level the welded grids have the uniform limit surface's vertices (each within
+     * float rounding of one, one for one), and every triangle of the grids lies in one refined
+     * face of the uniform refinement, which it covers with its other triangles: the same quads
+     * (and Loop triangles), each cut along some diagonal.
+     */
+    @ParameterizedTest(name = "{0} at level {1} {2}")
+    @MethodSource("fixedLevels")
+    void fixedLevelGridsHaveTheUniformLimitSurfacesVerticesAndQuads(String name, int level, String keys, boolean sameTriangles) {
+        String file = file(name);
+        Scene s = AdaptiveSubdivisionTest.build(AdaptiveSubdivisionTest.sceneText(file, grids("projected", level, keys), 8, 6), DEFAULT);
+        lt.spindulys.mesh.MeshData grid = AdaptiveSubdivisionTest.surface(s).tessellation();
+        Scene u = AdaptiveSubdivisionTest.build(AdaptiveSubdivisionTest.sceneText(file, uniformLimit(level, keys), 8, 6), DEFAULT);
+        lt.spindulys.subdiv.RefinedMesh refined = ((SubdivisionSurface) u.objects().get(0)).refined();
+        double[] limit = refined.limitPositions(), gp = grid.positions();
+        double radius = AdaptiveSubdivisionTest.frame(file).radius();
+        // Each grid vertex to the refined vertex at its limit point (float rounding: 1e-6 of the size).
+        VertexIndex index = new VertexIndex(limit, 1e-3 * radius);
+        int[] to = new int[gp.length / 3];
+        int[] uses = new int[limit.length / 3];
+        for (int i = 0; i < to.length; i++) {
+            to[i] = index.find(gp[3 * i], gp[3 * i + 1], gp[3 * i + 2], 1e-6 * radius);
+            if (to[i] < 0) fail(String.format(Locale.ROOT, "%s at level %d: grid vertex %d (%g %g %g) is no limit point of the uniform refinement",
+                    name, level, i, gp[3 * i], gp[3 * i + 1], gp[3 * i + 2]));
+            uses[to[i]]++;
+        }
+        int[] sizes = refined.faceSizes(), fv = refined.faceVertices();
+        // The faces around each refined vertex, as their corner sets.
+        java.util.Map<Integer, List<java.util.Map.Entry<Integer, java.util.Set<Integer>>>> around = new java.util.HashMap<>();
+        int faces = 0, used = 0;
+        java.util.Set<Integer> inFaces = new java.util.HashSet<>();
+        for (int f = 0, c = 0; f < sizes.length; c += sizes[f], f++) {
+            if (refined.isHole(f)) continue;
+            java.util.Set<Integer> corners = new java.util.HashSet<>();
+            for (int k = 0; k < sizes[f]; k++) corners.add(fv[c + k]);
+            for (int v : corners) around.computeIfAbsent(v, k -> new java.util.ArrayList<>()).add(java.util.Map.entry(f, corners));
+            inFaces.addAll(corners);
+            faces++;
+        }
+        for (int v : inFaces) {
+            assertEquals(1, uses[v], name + " at level " + level + ": refined vertex " + v + " is the limit point of " + uses[v] + " grid vertices");
+            used++;
+        }
+        assertEquals(used, to.length, name + ": grid vertices one for one with the refined faces' vertices");
+        // Every grid triangle within one refined face; a face of n corners covered by n - 2 triangles.
+        java.util.Map<Integer, Integer> cover = new java.util.HashMap<>();
+        int[] tri = grid.vertexIndex();
+        for (int t = 0; t < tri.length; t += 3) {
+            java.util.Set<Integer> c = java.util.Set.of(to[tri[t]], to[tri[t + 1]], to[tri[t + 2]]);
+            Integer face = null;
+            for (java.util.Map.Entry<Integer, java.util.Set<Integer>> e : around.getOrDefault(to[tri[t]], List.of())) {
+                if (e.getValue().containsAll(c)) { face = e.getKey(); break; }
+            }
+            if (face == null) fail(name + " at level " + level + ": grid triangle " + t / 3 + " lies in no refined face");
+            cover.merge(face, 1, Integer::sum);
+        }
+        assertEquals(faces, cover.size(), name + " at level " + level + ": refined faces covered");
+        for (java.util.Map.Entry<Integer, Integer> e : cover.entrySet()) {
+            int f = e.getKey(), n = sizes[f];
+            assertEquals(n - 2, (int) e.getValue(), name + " at level " + level + ": triangles in refined face " + f + " of " + n + " corners");
+        }
+    }
+
+    /** Points by cell, for finding the one within a distance of a point. */
+    static final class VertexIndex {
+        final double[] p;
+        final double cell;
+        final java.util.Map<List<Long>, List<Integer>> cells = new java.util.HashMap<>();
+
+        VertexIndex(double[] p, double cell) {
+            this.p = p;
+            this.cell = cell;
+            for (int i = 0; i < p.length / 3; i++) cells.computeIfAbsent(key(p[3 * i], p[3 * i + 1], p[3 * i + 2], 0, 0, 0), k -> new java.util.ArrayList<>()).add(i);
+        }
+
+        List<Long> key(double x, double y, double z, int dx, int dy, int dz) {
+            return List.of(Math.round(x / cell) + dx, Math.round(y / cell) + dy, Math.round(z / cell) + dz);
+        }
+
+        /** The index of the nearest point within {@code tolerance} (max norm), or -1. */
+        int find(double x, double y, double z, double tolerance) {
+            int best = -1;
+            double bestD = tolerance;
+            for (int dx = -1; dx <= 1; dx++) {
+                for (int dy = -1; dy <= 1; dy++) {
+                    for (int dz = -1; dz <= 1; dz++) {
+                        for (int i : cells.getOrDefault(key(x, y, z, dx, dy, dz), List.of())) {
+                            double d = Math.max(Math.abs(x - p[3 * i]), Math.max(Math.abs(y - p[3 * i + 1]), Math.abs(z - p[3 * i + 2])));
+                            if (d <= bestD) { bestD = d; best = i; }
+                        }
+                    }
+                }
+            }
+            return best;
+        }
+    }
+}
