@@ -364,7 +364,7 @@ class GridTessellationTest {
     @MethodSource("viewShapes")
     void eagerLazyCombinedAndEvictedPiecesRenderIdenticalImages(String name, String keys) {
         String file = file(name);
-        String rate = "levels rate  target 3  maxlevel 5  " + keys;
+        String rate = "levels rate  target 4  maxlevel 4  " + keys;
         Scene es = AdaptiveSubdivisionTest.build(closeUp(file, "method projected  " + rate, 48, 36), DEFAULT);
         RenderResult eager = AdaptiveSubdivisionTest.render(es, 2);
         String eagerStats = AdaptiveSubdivisionTest.surface(es).statistics();
