@@ -283,9 +283,10 @@ final class SceneAssetCache {
                     throw err.error(adaptiveOnly.at(), "'" + adaptiveOnly.key().name() + "' needs an adaptive method (method projected, lazy or combined)");
                 }
             }
-        } else if (levelProp != null && (target != null || levels != null)) {
-            Prop other = target != null ? target : levels;
-            throw err.error(other.at(), "'" + other.key().name() + "' chooses levels from the view, but 'level' fixes one; give one of them");
+        } else if (levelProp != null && target != null) {
+            // 'levels' may stay with a fixed level: it picks the tessellation (rate: grids on the limit surface; edge or
+            // object: the power-of-two refinement), but a target would be ignored.
+            throw err.error(target.at(), "'target' chooses levels from the view, but 'level' fixes one; give one of them");
         }
         Prop f = p.prop("file");
         String rel = (String) f.value();

@@ -266,7 +266,8 @@ class SubdivideCommandTest {
 
     @Test
     void sceneWritesTheAdaptiveTessellationCrackFree() throws IOException {
-        Path scene = cubeScene("subdiv { file \"cube.dat\"  uv \"cube.tex\"  method lazy  target 6  maxlevel 5 }\n");
+        // The power-of-two levels: no triangles of no area, so crack-free as written.
+        Path scene = cubeScene("subdiv { file \"cube.dat\"  uv \"cube.tex\"  method lazy  levels edge  target 6  maxlevel 5 }\n");
         Path out = dir.resolve("adaptive.obj");
         CliTest.Run r = run("subdivide", dir.resolve("cube.dat").toString(), "--scene", scene.toString(), "-o", out.toString());
         assertEquals(0, r.status(), r.err());
@@ -289,6 +290,44 @@ class SubdivideCommandTest {
         assertTrue(text.startsWith("# tessellation of cube.dat as close.dat renders it (" + scene + ":3:1, method lazy)"), text.substring(0, 200));
         assertTrue(text.contains("# control edges per level: level "), "levels histogram");
         assertTrue(text.contains(" " + m.faceCount() + " triangles"), "triangle count");
+    }
+
+    /**
+     * The rates' grids (the default): welded, every edge of the closed cube is shared by exactly
+     * two triangles once any triangles of no area (where a grid is snapped to a coarser edge's
+     * points) are left out; and the written mesh is the one the scene renders.
+     */
+    @Test
+    void sceneWritesTheRateTessellationCrackFree() throws IOException {
+        Path scene = cubeScene("subdiv { file \"cube.dat\"  uv \"cube.tex\"  method lazy  levels rate  target 6  maxlevel 5 }\n");
+        Path out = dir.resolve("rates.obj");
+        CliTest.Run r = run("subdivide", dir.resolve("cube.dat").toString(), "--scene", scene.toString(), "-o", out.toString());
+        assertEquals(0, r.status(), r.err());
+        MeshData m = ObjReader.read(out);
+        for (int size : m.faceSizes()) assertEquals(3, size);
+        assertNotNull(m.normals(), "vn written");
+        lt.spindulys.scene.Scene built = lt.spindulys.io.SceneParser.parse(scene).build();
+        lt.spindulys.scene.AdaptiveSubdivisionSurface s = (lt.spindulys.scene.AdaptiveSubdivisionSurface) built.objects().get(0);
+        String stats = s.statistics();
+        assertTrue(stats.contains("edge rates "), stats);
+        MeshData t = s.tessellation();
+        assertArrayEquals(t.positions(), m.positions(), "positions read back exactly");
+        assertArrayEquals(t.vertexIndex(), m.vertexIndex());
+        // Rates that differ from edge to edge, so faces are snapped to coarser neighbours.
+        java.util.regex.Matcher rates = java.util.regex.Pattern.compile("edge rates (\\d+)-(\\d+)").matcher(stats);
+        assertTrue(rates.find() && Integer.parseInt(rates.group(1)) < Integer.parseInt(rates.group(2)), "mixed rates: " + stats);
+        double[] p = m.positions();
+        int[] vi = m.vertexIndex();
+        java.util.List<Integer> keep = new java.util.ArrayList<>();
+        for (int c = 0; c < vi.length; c += 3) {
+            int a = 3 * vi[c], b = 3 * vi[c + 1], d = 3 * vi[c + 2];
+            double ux = p[b] - p[a], uy = p[b + 1] - p[a + 1], uz = p[b + 2] - p[a + 2], wx = p[d] - p[a], wy = p[d + 1] - p[a + 1], wz = p[d + 2] - p[a + 2];
+            if (uy * wz - uz * wy != 0 || uz * wx - ux * wz != 0 || ux * wy - uy * wx != 0) keep.add(c);
+        }
+        int[] sizes = new int[keep.size()], kept = new int[3 * keep.size()];
+        java.util.Arrays.fill(sizes, 3);
+        for (int k = 0; k < keep.size(); k++) System.arraycopy(vi, keep.get(k), kept, 3 * k, 3);
+        assertCrackFree(new MeshData(p, null, null, sizes, kept, null, null, null, null, null));
     }
 
     @Test

@@ -84,14 +84,50 @@ class SceneParserPositionsTest {
     }
 
     @Test
-    void aLevelTooDeepForTheHeapIsRefusedRatherThanRenderedAdaptively() {
-        // Without limit positions such a level falls back to the combined method ...
+    void aLevelTooDeepForTheHeapIsRenderedByTheCombinedMethodWithItsPositions() {
+        AdaptiveSubdivisionSurface refined, limit;
         try (HeapBudget.Scope ignored = HeapBudget.cap(4 << 10)) {
-            assertInstanceOf(AdaptiveSubdivisionSurface.class, objects("subdiv { file \"cube.dat\"  level 5 }").get(0));
-            // ... which has no limit positions: with them, the level is refused where it is.
-            SceneException e = assertThrows(SceneException.class, () -> objects("subdiv { file \"cube.dat\"  level 5  positions limit }"));
-            assertTrue(e.getMessage().startsWith("s.dat:1:27: subdivision level 5 of this mesh (6144 faces; uniform refinement;"), e.getMessage());
-            assertTrue(e.getMessage().endsWith("; positions limit needs uniform refinement (the adaptive methods, which render such levels otherwise, have no limit positions)"), e.getMessage());
+            // Refined positions: the power-of-two levels, the uniform refinement's own triangles ...
+            refined = assertInstanceOf(AdaptiveSubdivisionSurface.class, objects("subdiv { file \"cube.dat\"  level 5 }").get(0));
+            // ... limit positions: grids on the limit surface at rate 2^level on every edge.
+            limit = assertInstanceOf(AdaptiveSubdivisionSurface.class, objects("subdiv { file \"cube.dat\"  level 5  positions limit }").get(0));
         }
+        assertEquals(AdaptiveSubdivisionSurface.Method.COMBINED, refined.method());
+        assertEquals(AdaptiveSubdivisionSurface.Levels.EDGE, refined.levels());
+        assertEquals(5, refined.fixedLevel());
+        assertEquals(AdaptiveSubdivisionSurface.Method.COMBINED, limit.method());
+        assertEquals(AdaptiveSubdivisionSurface.Levels.RATE, limit.levels());
+        assertEquals(5, limit.fixedLevel());
+        // Its vertices are the uniform limit surface's (to float rounding), which the heap could not hold whole.
+        lt.spindulys.scene.SceneBuilder b = new lt.spindulys.scene.SceneBuilder();
+        b.add(limit);
+        lt.spindulys.scene.Scene scene = b.build();
+        var built = (AdaptiveSubdivisionSurface) scene.objects().get(0);
+        double[] grid = built.tessellation().positions();
+        double[] uniform = new SubdivisionSurface(limit.control(), 5, true, Positions.LIMIT).triangleData().positions();
+        java.util.Map<List<Long>, List<Integer>> cells = new java.util.HashMap<>();
+        double cell = 1e-3;
+        for (int i = 0; i < uniform.length; i += 3) {
+            cells.computeIfAbsent(List.of(Math.round(uniform[i] / cell), Math.round(uniform[i + 1] / cell), Math.round(uniform[i + 2] / cell)),
+                    k -> new java.util.ArrayList<>()).add(i);
+        }
+        int off = 0;
+        for (int i = 0; i < grid.length; i += 3) {
+            boolean found = false;
+            long cx = Math.round(grid[i] / cell), cy = Math.round(grid[i + 1] / cell), cz = Math.round(grid[i + 2] / cell);
+            for (long dx = -1; dx <= 1 && !found; dx++) {
+                for (long dy = -1; dy <= 1 && !found; dy++) {
+                    for (long dz = -1; dz <= 1 && !found; dz++) {
+                        for (int u : cells.getOrDefault(List.of(cx + dx, cy + dy, cz + dz), List.of())) {
+                            double d = Math.abs(grid[i] - uniform[u]) + Math.abs(grid[i + 1] - uniform[u + 1]) + Math.abs(grid[i + 2] - uniform[u + 2]);
+                            if (d <= 1e-6) { found = true; break; }
+                        }
+                    }
+                }
+            }
+            if (!found) off++;
+        }
+        assertTrue(grid.length > 3000, "a level-5 tessellation: " + grid.length / 3 + " vertices");
+        assertEquals(0, off, off + " of " + grid.length / 3 + " grid vertices are not on the uniform limit surface's vertices");
     }
 }

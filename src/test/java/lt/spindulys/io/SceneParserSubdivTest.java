@@ -187,6 +187,34 @@ class SceneParserSubdivTest {
         assertEquals(SubdivOptions.Scheme.BILINEAR, adaptiveScheme(b.objects().get(2)));
     }
 
+    /**
+     * With a fixed level, 'levels' still picks the tessellation: rate (the default) grids on the
+     * limit surface, edge or object the power-of-two refinement (the same at a fixed level). A
+     * 'target' there would be ignored, so it is refused.
+     */
+    @Test
+    void levelsPicksTheTessellationOfAFixedLevelButTargetIsRefusedWithIt() throws IOException {
+        Files.writeString(dir.resolve("tet.obj"), TET);
+        record Case(String keys, lt.spindulys.scene.AdaptiveSubdivisionSurface.Levels levels) {}
+        for (Case c : List.of(new Case("", lt.spindulys.scene.AdaptiveSubdivisionSurface.Levels.RATE),
+                new Case("levels rate", lt.spindulys.scene.AdaptiveSubdivisionSurface.Levels.RATE),
+                new Case("levels edge", lt.spindulys.scene.AdaptiveSubdivisionSurface.Levels.EDGE),
+                new Case("levels object", lt.spindulys.scene.AdaptiveSubdivisionSurface.Levels.OBJECT))) {
+            for (String method : List.of("projected", "lazy", "combined")) {
+                var s = assertInstanceOf(lt.spindulys.scene.AdaptiveSubdivisionSurface.class,
+                        only("subdiv { file \"tet.obj\"  method " + method + "  level 2  " + c.keys() + " }"));
+                assertEquals(2, s.fixedLevel(), c.keys());
+                assertEquals(c.levels(), s.levels(), method + " " + c.keys());
+            }
+        }
+        SceneException e = assertThrows(SceneException.class,
+                () -> SceneParser.parse("subdiv { file \"tet.obj\"  method lazy  levels edge  level 2  target 3 }", "s.dat", dir));
+        assertTrue(e.getMessage().startsWith("s.dat:1:61: 'target' chooses levels from the view, but 'level' fixes one"), e.getMessage());
+        // Without an adaptive method 'levels' is still an error.
+        SceneException u = assertThrows(SceneException.class, () -> SceneParser.parse("subdiv { file \"tet.obj\"  level 2  levels edge }", "s.dat", dir));
+        assertTrue(u.getMessage().contains("'levels' needs an adaptive method"), u.getMessage());
+    }
+
     @Test
     void aTooDeepUniformLevelBecomesTheCombinedMethodAtThatLevel() throws IOException {
         // 1,156 quads, so 4,624 corners, each 4^7 quads at level 8: over the uniform path's 2^24 faces.
@@ -204,6 +232,8 @@ class SceneParserSubdivTest {
         var s = assertInstanceOf(lt.spindulys.scene.AdaptiveSubdivisionSurface.class, only("subdiv {\n  file \"big.obj\"\n  level 8\n}"));
         assertEquals(lt.spindulys.scene.AdaptiveSubdivisionSurface.Method.COMBINED, s.method());
         assertEquals(8, s.fixedLevel());
+        // The refined positions, so the power-of-two path (the uniform refinement's own triangles), not the rates' limit grids.
+        assertEquals(lt.spindulys.scene.AdaptiveSubdivisionSurface.Levels.EDGE, s.levels());
         // The same for another scheme: the combined method refines it with that scheme.
         var b = assertInstanceOf(lt.spindulys.scene.AdaptiveSubdivisionSurface.class, only("subdiv {\n  file \"big.obj\"\n  level 8  scheme bilinear\n}"));
         assertEquals(8, b.fixedLevel());

@@ -75,7 +75,7 @@ class AdaptiveSchemesTest {
     @MethodSource("closed")
     void theWeldedTessellationAtMixedLevelsIsCrackFree(String name, String keys) {
         String file = file(name);
-        Scene s = AdaptiveSubdivisionTest.build(AdaptiveSubdivisionTest.closeUp(file, "method lazy  target 4  maxlevel 6  " + keys, 160, 120),
+        Scene s = AdaptiveSubdivisionTest.build(AdaptiveSubdivisionTest.closeUp(file, AdaptiveSubdivisionTest.LAZY_POWER_OF_TWO + "  target 4  maxlevel 6  " + keys, 160, 120),
                 AdaptiveSettings.DEFAULT);
         AdaptiveSubdivisionSurface surface = AdaptiveSubdivisionTest.surface(s);
         assertEquals(SubdivOptions.Scheme.valueOf(keys.substring(7).toUpperCase(java.util.Locale.ROOT)), surface.control().options().scheme());

@@ -74,6 +74,16 @@ class AdaptiveSubdivisionTest {
 
     // ---- scenes ----
 
+    /**
+     * The thesis's power-of-two levels, which give exactly the uniform refinement's triangles at a
+     * fixed level (the default, integer rates, evaluates grids on the limit surface instead:
+     * {@link GridTessellationTest}); these tests check that exactness, so they ask for it.
+     */
+    static final String POWER_OF_TWO = "levels edge";
+
+    /** The lazy method on the power-of-two path. */
+    static final String LAZY_POWER_OF_TWO = "method lazy  " + POWER_OF_TWO;
+
     /** A frame around an object: the camera looks at the centre of its bounds from a direction that sees three sides. */
     record Frame(Vec3 centre, double radius) {
         String camera(double distance, Vec3 from, double fov) {
@@ -231,7 +241,7 @@ class AdaptiveSubdivisionTest {
         String uniform = sceneText(file, "level " + level + " " + keys, w, h);
         RenderResult expected = render(build(uniform, AdaptiveSettings.DEFAULT), 2);
         for (Variant v : variants) {
-            Scene s = build(sceneText(file, "method " + v.method() + "  level " + level + " " + keys, w, h), v.settings());
+            Scene s = build(sceneText(file, "method " + v.method() + "  " + POWER_OF_TWO + "  level " + level + " " + keys, w, h), v.settings());
             assertSamePasses(expected, render(s, v.threads()), file + " at level " + level + ", " + v.what());
         }
     }
@@ -278,7 +288,7 @@ class AdaptiveSubdivisionTest {
     @MethodSource("closedSurfaces")
     void raysFromInsideAClosedSurfaceAtMixedLevelsAllHitIt(String file, String method) {
         // maxlevel 5 keeps the near side's patches small enough for the test's time.
-        Scene s = build(closeUp(file, "method " + method + "  target 4  maxlevel 6", 160, 120),
+        Scene s = build(closeUp(file, "method " + method + "  " + POWER_OF_TWO + "  target 4  maxlevel 6", 160, 120),
                 AdaptiveSettings.DEFAULT);
         int[] range = assertMixedLevels(surface(s), 1);
         Frame f = frame(file);
@@ -321,7 +331,7 @@ class AdaptiveSubdivisionTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("lt.spindulys.scene.AdaptiveSubdivisionTest#closedMeshes")
     void theWeldedTessellationOfAClosedSurfaceIsCrackFree(String file) {
-        Scene s = build(closeUp(file, "method lazy  target 4  maxlevel 6", 160, 120), AdaptiveSettings.DEFAULT);
+        Scene s = build(closeUp(file, "method lazy  " + POWER_OF_TWO + "  target 4  maxlevel 6", 160, 120), AdaptiveSettings.DEFAULT);
         AdaptiveSubdivisionSurface surface = surface(s);
         assertMixedLevels(surface, 1);
         assertTrue(surface.isClosed(), file + " is closed");
@@ -383,7 +393,7 @@ class AdaptiveSubdivisionTest {
     @MethodSource("levelScenes")
     void visibleEdgesOfTheTessellationProjectToAboutTheTarget(String file, double target, String keys) {
         int w = 320, h = 240;
-        String text = closeUp(file, String.format(Locale.ROOT, "method lazy  target %s  %s", target, keys), w, h);
+        String text = closeUp(file, String.format(Locale.ROOT, "method lazy  %s  target %s  %s", POWER_OF_TWO, target, keys), w, h);
         Scene s = build(text, AdaptiveSettings.DEFAULT);
         AdaptiveSubdivisionSurface surface = surface(s);
         int[] range = assertMixedLevels(surface, 1);
@@ -432,7 +442,7 @@ class AdaptiveSubdivisionTest {
     /** The lazy and uniform scenes' images and passes, equal. */
     static RenderResult[] assertLazyRendersAsUniform(String settings, String objects, String what) {
         RenderResult u = render(build(cubeScene(settings, objects, ""), AdaptiveSettings.DEFAULT), 2);
-        RenderResult l = render(build(cubeScene(settings, objects, "method lazy"), AdaptiveSettings.DEFAULT), 2);
+        RenderResult l = render(build(cubeScene(settings, objects, LAZY_POWER_OF_TWO), AdaptiveSettings.DEFAULT), 2);
         assertSamePasses(u, l, what);
         java.awt.image.BufferedImage a = u.image(), b = l.image();
         for (int y = 0; y < a.getHeight(); y++) {
@@ -468,7 +478,7 @@ class AdaptiveSubdivisionTest {
     void instancesShareOneTessellationBuiltOncePerFace() {
         String two = "subdiv { file CUBE  level 2  METHOD  scale 0.6  translate -0.7 0 0 }\nsubdiv { file CUBE  level 2  METHOD  scale 0.6  rotate y 30  translate 0.8 0 0.3 }";
         assertLazyRendersAsUniform("", two, "two instances");
-        Scene s = build(cubeScene("", two, "method lazy"), AdaptiveSettings.DEFAULT);
+        Scene s = build(cubeScene("", two, LAZY_POWER_OF_TWO), AdaptiveSettings.DEFAULT);
         render(s, 1);
         List<String> lines = s.adaptiveStatistics();
         assertEquals(1, lines.size(), "one tessellation for both instances: " + lines);
@@ -481,7 +491,7 @@ class AdaptiveSubdivisionTest {
     @Test
     void statsListPatchesHitsMissesEvictionsPeakAndLevels() throws IOException {
         Path scene = shapes.resolve("stats.dat"), out = shapes.resolve("stats.png");
-        Files.writeString(scene, cubeScene("", "subdiv { file CUBE  METHOD  target 2 }", "method lazy"));
+        Files.writeString(scene, cubeScene("", "subdiv { file CUBE  METHOD  target 2 }", LAZY_POWER_OF_TWO));
         java.io.ByteArrayOutputStream o = new java.io.ByteArrayOutputStream(), e = new java.io.ByteArrayOutputStream();
         int status = lt.spindulys.cli.Main.run(new String[] {scene.toString(), "-o", out.toString(), "--stats", "--quiet", "--threads", "2"},
                 new java.io.PrintStream(o, true, java.nio.charset.StandardCharsets.UTF_8), new java.io.PrintStream(e, true, java.nio.charset.StandardCharsets.UTF_8));

@@ -142,7 +142,8 @@ class SchemeSurfacesTest {
     }
 
     static AdaptiveSubdivisionSurface adaptive(ControlMesh c, String method, int level) {
-        AdaptiveSubdivisionSurface s = new AdaptiveSubdivisionSurface(c, method(method), true);
+        // The power-of-two path: exactly the uniform refinement's triangles at a fixed level, which these tests compare with.
+        AdaptiveSubdivisionSurface s = new AdaptiveSubdivisionSurface(c, method(method), true).levels(AdaptiveSubdivisionSurface.Levels.EDGE);
         return s.level(level);
     }
 
@@ -290,7 +291,7 @@ class SchemeSurfacesTest {
     }
 
     static AdaptiveSubdivisionSurface viewDependent(ControlMesh c, String method) {
-        return new AdaptiveSubdivisionSurface(c, method(method), true).target(4).maxLevel(6);
+        return new AdaptiveSubdivisionSurface(c, method(method), true).levels(AdaptiveSubdivisionSurface.Levels.EDGE).target(4).maxLevel(6);
     }
 
     static Stream<Arguments> closedLoopSurfaces() {
@@ -352,7 +353,8 @@ class SchemeSurfacesTest {
     @MethodSource("closedCages")
     void eagerLazyAndCombinedImagesAreIdentical(String cage) {
         ControlMesh c = cage(cage);
-        Function<String, AdaptiveSubdivisionSurface> make = m -> new AdaptiveSubdivisionSurface(c, method(m), true).target(3).maxLevel(5);
+        Function<String, AdaptiveSubdivisionSurface> make = m -> new AdaptiveSubdivisionSurface(c, method(m), true)
+                .levels(AdaptiveSubdivisionSurface.Levels.EDGE).target(3).maxLevel(5);
         Scene es = scene(64, 48, 1.9, new Vec3(0.35, 0.25, -1), 60, AdaptiveSettings.DEFAULT, RenderSettings.builder(), make.apply("projected"));
         AdaptiveSubdivisionSurface eager = AdaptiveSubdivisionTest.surface(es);
         RenderResult e = AdaptiveSubdivisionTest.render(es, 2);
