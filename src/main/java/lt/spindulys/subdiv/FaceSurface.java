@@ -533,7 +533,7 @@ final class FaceSurface {
      * Relative widening of a box, in ulps of the largest coordinate magnitude involved: the box's
      * own rounding and an evaluation's are each a few tens of ulps at most.
      */
-    private static final int BOUNDS_ULPS = 256;
+    static final int BOUNDS_ULPS = 256;
 
     /**
      * A conservative box of the patch over [u0,u1] x [v0,v1] (in a sub-face for other faces than

@@ -119,10 +119,12 @@ public final class LimitSurface {
         Level base = control.base;
         SubdivOptions options = control.options();
         if (options.scheme() == SubdivOptions.Scheme.BILINEAR || FaceSurface.isRegular(base, options, f)) {
-            return new Evaluator(f, FaceSurface.of(control, f), null);
+            double[] ring = new double[6];
+            rings.oneRingBounds(f, ring);
+            return new Evaluator(f, FaceSurface.of(control, f), null, ring);
         }
         PatchRefiner.Local local = rings.local(f);
-        return new Evaluator(f, null, AdaptiveFaceSurface.of(local.mesh(), local.face(), smooth, sharp));
+        return new Evaluator(f, null, AdaptiveFaceSurface.of(local.mesh(), local.face(), smooth, sharp, Math.min(level, smooth)), null);
     }
 
     private void checkFace(int f) {
@@ -141,12 +143,28 @@ public final class LimitSurface {
         private final AdaptiveFaceSurface adaptive;
         /** Scratch space of {@link #bounds}. */
         private final double[] scratch;
+        /**
+         * A single patch's one-ring box, widened as the patch's boxes are: it holds the limit
+         * surface too, and cuts a box-spline range's box (whose rectangle may reach beyond the
+         * triangle) down.
+         */
+        private final double[] ring;
 
-        private Evaluator(int face, FaceSurface patch, AdaptiveFaceSurface adaptive) {
+        private Evaluator(int face, FaceSurface patch, AdaptiveFaceSurface adaptive, double[] ring) {
             this.face = face;
             this.patch = patch;
             this.adaptive = adaptive;
             this.scratch = patch == null ? null : new double[FaceSurface.BOUNDS_SCRATCH];
+            if (ring != null) {
+                double magnitude = 0;
+                for (double x : ring) magnitude = Math.max(magnitude, Math.abs(x));
+                double pad = FaceSurface.BOUNDS_ULPS * Math.ulp(magnitude);
+                for (int k = 0; k < 3; k++) {
+                    ring[k] -= pad;
+                    ring[k + 3] += pad;
+                }
+            }
+            this.ring = ring;
         }
 
         /** {@return the face} */
@@ -188,7 +206,7 @@ public final class LimitSurface {
          * ({@link LimitSurface#oneRingBounds}) is known. Regular B-spline quads: the box of the
          * sub-range's Bezier control points (the patch lies in their convex hull); bilinear: of
          * the range's corners; regular Loop triangles: of the Bernstein coefficients of the
-         * box-spline polynomial over the rectangle. Irregular faces: false. Widened by a few
+         * box-spline polynomial over the rectangle, cut down to the one-ring's box. Irregular faces: false. Widened by a few
          * hundred ulps of the coordinates' magnitude, well above the rounding of both the box and
          * {@link #evaluate}, so a piece whose box misses a ray may be skipped.
          *
@@ -202,7 +220,12 @@ public final class LimitSurface {
         public boolean bounds(double u0, double u1, double v0, double v1, double[] out) {
             if (!(u0 <= u1 && v0 <= v1)) throw new IllegalArgumentException("empty range [" + u0 + ", " + u1 + "] x [" + v0 + ", " + v1 + "]");
             if (patch == null) return false;
-            return patch.bounds(u0, u1, v0, v1, out, scratch);
+            patch.bounds(u0, u1, v0, v1, out, scratch);
+            for (int k = 0; k < 3; k++) {
+                out[k] = Math.max(out[k], ring[k]);
+                out[k + 3] = Math.min(out[k + 3], ring[k + 3]);
+            }
+            return true;
         }
 
         /** The adaptive evaluator's patches so far (0 for a single patch), for benchmarks. */
