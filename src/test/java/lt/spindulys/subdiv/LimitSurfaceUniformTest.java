@@ -25,7 +25,9 @@ import org.junit.jupiter.api.Test;
  * <p>Not compared: vertices where semi-sharp features have not decayed by level L. There the
  * uniform path's limit masks take the sharp rule as if infinitely sharp (Far's
  * {@code PrimvarRefiner::Limit}), an approximation; the evaluator refines on (as Bfr does, to the
- * sharp approximation level) and gives the exact limit.
+ * sharp approximation level) and gives the exact limit. Larger shapes are checked on a seeded
+ * sample of their faces. {@code -Dlimit.shapes=<regex>} checks only the matching shapes (all
+ * their sampled faces) and prints each one's time.
  */
 class LimitSurfaceUniformTest {
     static final double TOL = 1e-9;
