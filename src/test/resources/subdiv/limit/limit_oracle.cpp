@@ -1,6 +1,8 @@
 // Writes OpenSubdiv Bfr's limit surface (position and first derivatives) of an OBJ shape at
 // pseudo-random parameters in its faces: see README.md beside this file for the format.
-// Usage: limit_oracle shape.obj out.txt [catmark|loop|bilinear] [approxSmooth approxSharp [skippedFace,...]]
+// Usage: limit_oracle shape.obj out.txt [catmark|loop|bilinear] [approxSmooth approxSharp [skippedFace,...|- [irregularFaces]]]
+// With irregularFaces > 0, only that many irregular faces (Bfr's IsRegular false) are sampled, at
+// three points each: one anywhere, one near a random corner, one very near it (see README.md).
 // The topology is built exactly as fvar_oracle.cpp builds it (same tags, same Sdc options).
 #include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/bfr/refinerSurfaceFactory.h>
@@ -37,7 +39,8 @@ int main(int argc, char** argv) {
     int approxSmooth = argc > 5 ? atoi(argv[4]) : 2, approxSharp = argc > 5 ? atoi(argv[5]) : 6;
     // Faces left out (written as "skipped", paramType -2): where this OpenSubdiv crashes.
     std::vector<int> skip;
-    if (argc > 6) { std::istringstream ss(argv[6]); std::string t; while (std::getline(ss, t, ',')) skip.push_back(atoi(t.c_str())); }
+    int irregularFaces = argc > 7 ? atoi(argv[7]) : 0;
+    if (argc > 6 && std::string(argv[6]) != "-") { std::istringstream ss(argv[6]); std::string t; while (std::getline(ss, t, ',')) skip.push_back(atoi(t.c_str())); }
     Sdc::SchemeType scheme = schemeName == "loop" ? Sdc::SCHEME_LOOP : schemeName == "bilinear" ? Sdc::SCHEME_BILINEAR : Sdc::SCHEME_CATMARK;
     std::ifstream in(argv[1]);
     std::vector<double> pos; std::vector<int> sizes, verts, creaseV, cornerV, holes; std::vector<float> creaseW, cornerW;
@@ -77,7 +80,21 @@ int main(int argc, char** argv) {
     std::string base = argv[1]; base = base.substr(base.find_last_of('/') + 1);
     state = 0; for (char c : base) state = state * 31 + (unsigned char) c;
     std::vector<int> faces(nf); for (int f = 0; f < nf; f++) faces[f] = f;
-    if (nf > MAX_FACES) {
+    if (irregularFaces > 0) {
+        // Only irregular faces with a limit surface: the approximation levels change nothing else.
+        std::vector<int> irregular;
+        Bfr::Surface<double> probe;
+        for (int f = 0; f < nf; f++) {
+            if (std::find(skip.begin(), skip.end(), f) != skip.end()) continue;
+            if (factory.InitVertexSurface(f, &probe) && !probe.IsRegular()) irregular.push_back(f);
+        }
+        faces = irregular;
+        int m = (int) faces.size();
+        if (m > irregularFaces) {
+            for (int i = 0; i < irregularFaces; i++) std::swap(faces[i], faces[i + (int) (next() % (uint64_t) (m - i))]);
+            faces.resize(irregularFaces); std::sort(faces.begin(), faces.end());
+        }
+    } else if (nf > MAX_FACES) {
         for (int i = 0; i < MAX_FACES; i++) std::swap(faces[i], faces[i + (int) (next() % (uint64_t) (nf - i))]);
         faces.resize(MAX_FACES); std::sort(faces.begin(), faces.end());
     }
@@ -100,9 +117,33 @@ int main(int argc, char** argv) {
         faceRows.push_back(buf);
         patch.resize(3 * s.GetNumPatchPoints());
         s.PreparePatchPoints(pos.data(), 3, patch.data(), 3);
-        for (int k = 0; k < POINTS_PER_FACE; k++) {
+        int pointsPerFace = irregularFaces > 0 ? 3 : POINTS_PER_FACE;
+        int corner = 0, q = 0;
+        for (int k = 0; k < pointsPerFace; k++) {
             double uv[2];
-            if (p.GetType() == Bfr::Parameterization::QUAD) { uv[0] = grid() / 1024.0; uv[1] = grid() / 1024.0; }
+            if (irregularFaces > 0) {
+                // Point 0 anywhere; 1 within 1/32 of a random corner, 2 within 1/512 of it (deep
+                // in the adaptive refinement, where the approximation levels matter). Sub-faces:
+                // their corner 0 (the face's corner) or 2 (the face's centre).
+                int span = k == 0 ? 1023 : k == 1 ? 32 : 2;
+                if (k == 1) corner = (int) (next() % (uint64_t) (p.GetType() == Bfr::Parameterization::TRI ? 3 : 4));
+                int i = 1 + (int) (next() % (uint64_t) span), j = 1 + (int) (next() % (uint64_t) span);
+                double a = i / 1024.0, b = j / 1024.0;
+                if (p.GetType() == Bfr::Parameterization::QUAD) {
+                    if (k == 0) { uv[0] = a; uv[1] = b; }
+                    else { uv[0] = corner == 1 || corner == 2 ? 1 - a : a; uv[1] = corner >= 2 ? 1 - b : b; }
+                } else if (p.GetType() == Bfr::Parameterization::TRI) {
+                    if (k == 0) { while (i + j >= 1024) { i = grid(); j = grid(); } uv[0] = i / 1024.0; uv[1] = j / 1024.0; }
+                    else if (corner == 0) { uv[0] = a; uv[1] = b; }
+                    else if (corner == 1) { uv[0] = 1 - a - b; uv[1] = b; }
+                    else { uv[0] = a; uv[1] = 1 - a - b; }
+                } else {
+                    if (k < 2) q = (int) (next() % (uint64_t) p.GetFaceSize()); // point 2 near point 1
+                    double sub[2] = {a, b};
+                    if (k > 0 && corner >= 2) { sub[0] = 1 - a; sub[1] = 1 - b; }
+                    p.ConvertNormalizedSubFaceToCoord(q, sub, uv);
+                }
+            } else if (p.GetType() == Bfr::Parameterization::QUAD) { uv[0] = grid() / 1024.0; uv[1] = grid() / 1024.0; }
             else if (p.GetType() == Bfr::Parameterization::TRI) {
                 int i, j; do { i = grid(); j = grid(); } while (i + j >= 1024);
                 uv[0] = i / 1024.0; uv[1] = j / 1024.0;

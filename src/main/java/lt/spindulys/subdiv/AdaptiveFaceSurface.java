@@ -43,6 +43,11 @@ final class AdaptiveFaceSurface {
         FaceSurface patch;
         GregoryPatch gregory;
         GregoryTriangle triangle;
+        /**
+         * At the grid level, an irregular sub-face's corners' limit positions there (xyz each, by
+         * the scheme's limit masks), which a point exactly at a corner takes.
+         */
+        double[] cornerLimit;
         /** A sub-face still to be refined: its level (as kept around it), its face there and its depth. */
         RefinedMesh mesh;
         int at, level;
@@ -60,7 +65,7 @@ final class AdaptiveFaceSurface {
     }
 
     private final Node root;
-    private final int n, columns, smooth, depth;
+    private final int n, columns, smooth, depth, gridLevel;
     private final boolean loop;
     /** Whether the patches are those of the UV value mesh rather than of the positions. */
     private final boolean faceVarying;
@@ -69,7 +74,8 @@ final class AdaptiveFaceSurface {
     private final double[] ps = new double[3], pt = new double[3];
     private int patches;
 
-    private AdaptiveFaceSurface(int n, boolean loop, boolean faceVarying, SubdivOptions options, int smooth, int depth) {
+    private AdaptiveFaceSurface(int n, boolean loop, boolean faceVarying, SubdivOptions options, int smooth, int depth, int gridLevel) {
+        this.gridLevel = gridLevel;
         this.n = n;
         this.faceVarying = faceVarying;
         this.options = options;
@@ -91,7 +97,18 @@ final class AdaptiveFaceSurface {
      * @param depth the approximation level for sharp features: the deepest level descended to
      */
     static AdaptiveFaceSurface of(ControlMesh mesh, int face, int smooth, int depth) {
-        return create(mesh, face, smooth, depth, false);
+        return create(mesh, face, smooth, depth, -1, false);
+    }
+
+    /**
+     * As {@link #of(ControlMesh, int, int, int)}, with the points of the power-of-two grid of
+     * level {@code gridLevel} (rate 2^gridLevel per edge, at most {@code smooth}; -1 for none) at
+     * the limit positions of the limit masks at that level, as uniform refinement to that level
+     * places its vertices: Far's end patches, and its masks at deeper levels, do not give the same
+     * value at every vertex (valence-2 vertices, darts, some irregular boundaries).
+     */
+    static AdaptiveFaceSurface of(ControlMesh mesh, int face, int smooth, int depth, int gridLevel) {
+        return create(mesh, face, smooth, depth, gridLevel, false);
     }
 
     /**
@@ -101,10 +118,10 @@ final class AdaptiveFaceSurface {
      */
     static AdaptiveFaceSurface ofFaceVarying(ControlMesh mesh, int face, int smooth, int depth) {
         if (mesh.uvChannel == null || mesh.uvChannel.linear()) throw new IllegalArgumentException("no UVs, or linear UVs");
-        return create(mesh, face, smooth, depth, true);
+        return create(mesh, face, smooth, depth, -1, true);
     }
 
-    private static AdaptiveFaceSurface create(ControlMesh mesh, int face, int smooth, int depth, boolean faceVarying) {
+    private static AdaptiveFaceSurface create(ControlMesh mesh, int face, int smooth, int depth, int gridLevel, boolean faceVarying) {
         boolean loop = mesh.options().scheme() == SubdivOptions.Scheme.LOOP;
         // The value mesh carries its own corners (pinned values): the boundary option is the
         // geometry's, and the value mesh's tags were made with EDGE_ONLY.
@@ -118,7 +135,7 @@ final class AdaptiveFaceSurface {
             r = r.with(r.topo, r.positions(), new FaceVarying.Channel(uv.level(), uv.values(), false, false));
         }
         int n = r.topo.faceSize(face);
-        AdaptiveFaceSurface a = new AdaptiveFaceSurface(n, loop, faceVarying, opt, smooth, depth);
+        AdaptiveFaceSurface a = new AdaptiveFaceSurface(n, loop, faceVarying, opt, smooth, depth, gridLevel);
         a.settle(a.root, r, a.points(r), face, 0, !loop && n != 4);
         return a;
     }
@@ -206,7 +223,10 @@ final class AdaptiveFaceSurface {
     private void settle(Node q, RefinedMesh r, double[] points, int f, int d, boolean ngonRoot) {
         Level l = faceVarying ? r.uvChannel().level() : r.topo;
         SubdivOptions opt = options;
-        if (!ngonRoot && FaceSurface.isRegular(l, opt, f, true)) {
+        boolean regular = !ngonRoot && FaceSurface.isRegular(l, opt, f, true);
+        // A regular patch's corners are its limit points already.
+        if (d == gridLevel && !ngonRoot && !regular) q.cornerLimit = cornerLimits(r, f);
+        if (regular) {
             q.patch = FaceSurface.patch(l, opt, points, f);
         } else if (d == depth || (d >= smooth && !ngonRoot && !sharpFeature(l, opt, f))) {
             if (d > 0) {
@@ -221,6 +241,18 @@ final class AdaptiveFaceSurface {
         }
         q.map(loop ? 2 : 3);
         patches++;
+    }
+
+    /** The limit positions (by the limit masks) of face f's corners, xyz each. */
+    private static double[] cornerLimits(RefinedMesh r, int f) {
+        Level l = r.topo;
+        int size = l.faceSize(f), h0 = l.firstHalf(f);
+        boolean[] only = new boolean[l.nV];
+        for (int c = 0; c < size; c++) only[l.hOrig[h0 + c]] = true;
+        double[] all = new double[3 * l.nV], out = new double[3 * size];
+        Limit.evaluate(l, SchemeRules.of(r.controlMesh().options()), r.positions(), all, null, only);
+        for (int c = 0; c < size; c++) System.arraycopy(all, 3 * l.hOrig[h0 + c], out, 3 * c, 3);
+        return out;
     }
 
     /** The number of patches (regular, end, or none) the face has been cut into so far. */
@@ -277,8 +309,13 @@ final class AdaptiveFaceSurface {
      * first time, the descent to it is made and kept).
      */
     boolean evaluate(double u, double v, double[] position, double[] du, double[] dv) {
-        Node q = root;
+        Node q = root, grid = null;
+        int gridCorner = -1;
         while (true) {
+            if (q.cornerLimit != null) {
+                grid = q;
+                gridCorner = corner(q.loc, u, v);
+            }
             if (q.kids == null) {
                 if (q.mesh == null) break;
                 expand(q);
@@ -311,7 +348,14 @@ final class AdaptiveFaceSurface {
             if (du != null) du[i] = ps[i] * q.su + pt[i] * q.tu;
             if (dv != null) dv[i] = ps[i] * q.sv + pt[i] * q.tv;
         }
+        if (gridCorner >= 0 && position != null) System.arraycopy(grid.cornerLimit, 3 * gridCorner, position, 0, 3);
         return true;
+    }
+
+    /** The corner of a sub-face (corner locations loc) that is exactly at (u,v), or -1. */
+    private int corner(double[] loc, double u, double v) {
+        for (int c = 0, size = loop ? 3 : 4; c < size; c++) if (loc[2 * c] == u && loc[2 * c + 1] == v) return c;
+        return -1;
     }
 
     /**

@@ -533,6 +533,165 @@ final class FaceSurface {
         set(dv, k * ((1 - s) * (dx - ax) + s * (cx - bx)), k * ((1 - s) * (dy - ay) + s * (cy - by)), k * ((1 - s) * (dz - az) + s * (cz - bz)));
     }
 
+    // ------------------------------------------------------------------ bounds
+
+    /** Doubles of scratch space {@link #bounds} needs (the largest use: 25 points and 20 powers). */
+    static final int BOUNDS_SCRATCH = 3 * 25 + 20;
+
+    /**
+     * Relative widening of a box, in ulps of the largest coordinate magnitude involved: the box's
+     * own rounding and an evaluation's are each a few tens of ulps at most.
+     */
+    static final int BOUNDS_ULPS = 256;
+
+    /**
+     * A conservative box of the patch over [u0,u1] x [v0,v1] (in a sub-face for other faces than
+     * quads): the box of control points whose convex hull holds the patch over the range,
+     * widened by {@link #BOUNDS_ULPS}. See {@link LimitSurface.Evaluator#bounds}.
+     *
+     * @param scratch {@link #BOUNDS_SCRATCH} doubles
+     * @return true (every kind of patch here has a box)
+     */
+    boolean bounds(double u0, double u1, double v0, double v1, double[] out, double[] scratch) {
+        switch (kind) {
+            case BSPLINE -> bezierBounds(u0, u1, v0, v1, out, scratch);
+            case BOX_SPLINE -> bernsteinBounds(u0, u1, v0, v1, out, scratch);
+            default -> cornerBounds(u0, u1, v0, v1, out, scratch);
+        }
+        return true;
+    }
+
+    /**
+     * The B-spline patch's Bezier points over the range: phantom rows and columns made explicit
+     * (2 B - I, rows first, then columns, which is the separable fold of the evaluation), each
+     * row's B-spline segment turned into its Bezier points and cut to [u0,u1] by blossoming,
+     * then each column likewise in v. Every step after the phantoms is a convex combination.
+     */
+    private void bezierBounds(double u0, double u1, double v0, double v1, double[] out, double[] s) {
+        double[] g = s; // 16 points, xyz: [12 r + 3 c + d]
+        System.arraycopy(cp, 0, g, 0, 48);
+        for (int c = 0; c < 4; c++) {
+            if ((boundary & 1) != 0) phantomPoint(g, c, c + 4, c + 8);
+            if ((boundary & 4) != 0) phantomPoint(g, 12 + c, 8 + c, 4 + c);
+        }
+        for (int r = 0; r < 4; r++) {
+            if ((boundary & 8) != 0) phantomPoint(g, 4 * r, 4 * r + 1, 4 * r + 2);
+            if ((boundary & 2) != 0) phantomPoint(g, 4 * r + 3, 4 * r + 2, 4 * r + 1);
+        }
+        double magnitude = 0;
+        for (int i = 0; i < 48; i++) magnitude = Math.max(magnitude, Math.abs(g[i]));
+        for (int r = 0; r < 4; r++) for (int d = 0; d < 3; d++) cutSegment(g, 12 * r + d, 3, u0, u1, s, 48);
+        for (int c = 0; c < 4; c++) for (int d = 0; d < 3; d++) cutSegment(g, 3 * c + d, 12, v0, v1, s, 48);
+        box(g, 16, magnitude, out);
+    }
+
+    /** Point a := 2 b - c (xyz, point indices into g). */
+    private static void phantomPoint(double[] g, int a, int b, int c) {
+        for (int d = 0; d < 3; d++) g[3 * a + d] = 2 * g[3 * b + d] - g[3 * c + d];
+    }
+
+    /**
+     * The four values g[o], g[o + step], g[o + 2 step], g[o + 3 step] of a uniform cubic B-spline
+     * segment replaced by the Bezier points of its piece over [t0,t1], using 4 doubles of tmp at k.
+     */
+    private static void cutSegment(double[] g, int o, int step, double t0, double t1, double[] tmp, int k) {
+        double p0 = g[o], p1 = g[o + step], p2 = g[o + 2 * step], p3 = g[o + 3 * step];
+        // The segment's Bezier points over [0,1].
+        double b0 = (p0 + 4 * p1 + p2) / 6, b1 = (2 * p1 + p2) / 3, b2 = (p1 + 2 * p2) / 3, b3 = (p1 + 4 * p2 + p3) / 6;
+        // Point j of the piece over [t0,t1] is the blossom at (t0 x (3 - j), t1 x j).
+        tmp[k] = blossom(b0, b1, b2, b3, t0, t0, t0);
+        tmp[k + 1] = blossom(b0, b1, b2, b3, t0, t0, t1);
+        tmp[k + 2] = blossom(b0, b1, b2, b3, t0, t1, t1);
+        tmp[k + 3] = blossom(b0, b1, b2, b3, t1, t1, t1);
+        for (int j = 0; j < 4; j++) g[o + j * step] = tmp[k + j];
+    }
+
+    /** The cubic Bezier's blossom at (a, b, c): de Casteljau with a different parameter per step. */
+    private static double blossom(double b0, double b1, double b2, double b3, double a, double b, double c) {
+        double x0 = lerp(b0, b1, a), x1 = lerp(b1, b2, a), x2 = lerp(b2, b3, a);
+        double y0 = lerp(x0, x1, b), y1 = lerp(x1, x2, b);
+        return lerp(y0, y1, c);
+    }
+
+    private static double lerp(double p, double q, double t) { return (1 - t) * p + t * q; }
+
+    /**
+     * The box-spline polynomial over the rectangle [u0,u1] x [v0,v1] in the tensor Bernstein
+     * basis of degree 4 x 4 (its total degree is 4): the polynomial lies in the hull of those 25
+     * coefficients over the whole rectangle, so also over its part in the triangle.
+     */
+    private void bernsteinBounds(double u0, double u1, double v0, double v1, double[] out, double[] s) {
+        // Powers 0..4 of u0, du, v0, dv at s[75..95).
+        double du = u1 - u0, dv = v1 - v0;
+        powers(s, 75, u0);
+        powers(s, 80, du);
+        powers(s, 85, v0);
+        powers(s, 90, dv);
+        // q[5 i + j], xyz: the coefficient of a^i b^j after s = u0 + du a, t = v0 + dv b.
+        double[] q = s;
+        java.util.Arrays.fill(q, 0, 75, 0.0);
+        double magnitude = 0;
+        for (int k = 0; k < 15; k++) {
+            int ex = EX[k], ey = EY[k];
+            for (int d = 0; d < 3; d++) magnitude += Math.abs(poly[3 * k + d]);
+            for (int i = 0; i <= ex; i++) {
+                double wu = BINOMIAL[ex][i] * s[75 + ex - i] * s[80 + i];
+                for (int j = 0; j <= ey; j++) {
+                    double w = wu * BINOMIAL[ey][j] * s[85 + ey - j] * s[90 + j];
+                    for (int d = 0; d < 3; d++) q[3 * (5 * i + j) + d] += w * poly[3 * k + d];
+                }
+            }
+        }
+        // Power to Bernstein in b (each row i), then in a (each column j).
+        for (int i = 0; i < 5; i++) for (int d = 0; d < 3; d++) toBernstein(q, 15 * i + d, 3, s, 75);
+        for (int j = 0; j < 5; j++) for (int d = 0; d < 3; d++) toBernstein(q, 3 * j + d, 15, s, 75);
+        box(q, 25, magnitude, out);
+    }
+
+    /** x^0 .. x^4 into s[k .. k+5). */
+    private static void powers(double[] s, int k, double x) {
+        s[k] = 1;
+        for (int i = 1; i < 5; i++) s[k + i] = s[k + i - 1] * x;
+    }
+
+    private static final double[][] BINOMIAL = {{1}, {1, 1}, {1, 2, 1}, {1, 3, 3, 1}, {1, 4, 6, 4, 1}};
+
+    /** Degree-4 power coefficients g[o + i step] (i = 0..4) replaced by their Bernstein coefficients over [0,1]. */
+    private static void toBernstein(double[] g, int o, int step, double[] tmp, int k) {
+        for (int b = 0; b < 5; b++) {
+            double acc = 0;
+            for (int i = 0; i <= b; i++) acc += BINOMIAL[b][i] / BINOMIAL[4][i] * g[o + i * step];
+            tmp[k + b] = acc;
+        }
+        for (int b = 0; b < 5; b++) g[o + b * step] = tmp[k + b];
+    }
+
+    /** Bilinear faces: the box of the range's four corners (a bilinear patch lies in their hull). */
+    private void cornerBounds(double u0, double u1, double v0, double v1, double[] out, double[] s) {
+        // Corner k evaluated into s[0..3), then kept at s[3 + 3k].
+        for (int k = 0; k < 4; k++) {
+            evaluate(k == 0 || k == 3 ? u0 : u1, k < 2 ? v0 : v1, s, null, null);
+            System.arraycopy(s, 0, s, 3 + 3 * k, 3);
+        }
+        System.arraycopy(s, 3, s, 0, 12);
+        box(s, 4, 0, out);
+    }
+
+    /** The box of n points (xyz in g), widened by {@link #BOUNDS_ULPS} ulps of the larger of magnitude and the points' own. */
+    private static void box(double[] g, int n, double magnitude, double[] out) {
+        double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+        for (int i = 0; i < n; i++) {
+            double x = g[3 * i], y = g[3 * i + 1], z = g[3 * i + 2];
+            x0 = Math.min(x0, x); x1 = Math.max(x1, x);
+            y0 = Math.min(y0, y); y1 = Math.max(y1, y);
+            z0 = Math.min(z0, z); z1 = Math.max(z1, z);
+        }
+        double m = Math.max(magnitude, Math.max(Math.max(Math.abs(x0), Math.abs(x1)), Math.max(Math.max(Math.abs(y0), Math.abs(y1)), Math.max(Math.abs(z0), Math.abs(z1)))));
+        double pad = BOUNDS_ULPS * Math.ulp(m);
+        out[0] = x0 - pad; out[1] = y0 - pad; out[2] = z0 - pad;
+        out[3] = x1 + pad; out[4] = y1 + pad; out[5] = z1 + pad;
+    }
+
     private static void set(double[] out, double x, double y, double z) {
         if (out == null) return;
         out[0] = x;

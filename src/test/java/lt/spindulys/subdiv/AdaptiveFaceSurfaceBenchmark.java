@@ -20,6 +20,81 @@ public final class AdaptiveFaceSurfaceBenchmark {
         for (int pass = 0; pass < 4; pass++) { // the first three passes warm up
             for (String shape : shapes) run(shape, pass == 3);
         }
+        String[] limitShapes = {"catmark_car", "catmark_pole8", "catmark_cube_creases1", "loop_cube", "bilinear_nonquads0"};
+        for (int pass = 0; pass < 3; pass++) {
+            for (String shape : limitShapes) for (int level = 2; level <= 4; level += 2) limitSurface(shape, level, pass == 2);
+        }
+        wholeMeshSetup("catmark_car");
+    }
+
+    /**
+     * {@link LimitSurface} on every face (at most 200) of a shape: the evaluator's set-up, the
+     * first evaluation of the face's grid at rate 2^level (which refines an irregular face where
+     * the grid falls), then ns per evaluation of the warm grid, regular and irregular faces apart.
+     */
+    private static void limitSurface(String shape, int level, boolean print) {
+        ControlMesh cm = Corpus.load(shape);
+        long t0 = System.nanoTime();
+        LimitSurface surface = new LimitSurface(cm);
+        long constructNs = System.nanoTime() - t0;
+        boolean loop = cm.options().scheme() == SubdivOptions.Scheme.LOOP;
+        double[] p = new double[3], du = new double[3], dv = new double[3];
+        long[] setup = new long[2], first = new long[2], eval = new long[2], faces = new long[2], evals = new long[2];
+        double sink = 0;
+        for (int f = 0; f < Math.min(cm.faceCount(), 200); f++) {
+            if (!surface.hasSurface(f)) continue;
+            double[] uv = LimitSurfaceTest.grid(cm.base.faceSize(f), loop, 1 << level);
+            long a = System.nanoTime();
+            LimitSurface.Evaluator e = surface.evaluator(f, level);
+            long b = System.nanoTime();
+            for (int i = 0; i < uv.length; i += 2) e.evaluate(uv[i], uv[i + 1], p, du, dv);
+            long c = System.nanoTime();
+            int reps = Math.max(1, 4000 / uv.length);
+            for (int r = 0; r < reps; r++) {
+                for (int i = 0; i < uv.length; i += 2) {
+                    e.evaluate(uv[i], uv[i + 1], p, du, dv);
+                    sink += p[0] + du[1] + dv[2];
+                }
+            }
+            long d = System.nanoTime();
+            int k = e.isRegular() ? 0 : 1;
+            setup[k] += b - a;
+            first[k] += c - b;
+            eval[k] += d - c;
+            faces[k]++;
+            evals[k] += (long) reps * uv.length / 2;
+        }
+        if (!print) return;
+        System.out.printf("LimitSurface %-20s L%d: constructor %.2f ms;", shape, level, constructNs / 1e6);
+        for (int k = 0; k < 2; k++) {
+            if (faces[k] == 0) continue;
+            System.out.printf(" %s %d faces: set-up %.1f us, first grid %.1f us, evaluate %.0f ns;", k == 0 ? "single-patch" : "adaptive", faces[k],
+                    setup[k] / 1e3 / faces[k], first[k] / 1e3 / faces[k], (double) eval[k] / evals[k]);
+        }
+        System.out.printf(" (%.1f)%n", sink == 0 ? 0.0 : 1.0);
+    }
+
+    /** An irregular face's evaluator made from the whole control mesh rather than its one-ring: what the one-ring saves. */
+    private static void wholeMeshSetup(String shape) {
+        ControlMesh cm = Corpus.load(shape);
+        PatchRefiner refiner = new PatchRefiner(cm);
+        double[] p = new double[3];
+        for (int pass = 0; pass < 3; pass++) {
+            long whole = 0, ring = 0;
+            int count = 0;
+            for (int f = 0; f < cm.faceCount() && count < 10; f++) {
+                if (FaceSurface.isRegular(cm.base, cm.options(), f)) continue;
+                long a = System.nanoTime();
+                AdaptiveFaceSurface.of(cm, f, SMOOTH, SHARP).evaluate(0.5, 0.5, p, null, null);
+                long b = System.nanoTime();
+                build(refiner, f).evaluate(0.5, 0.5, p, null, null);
+                long c = System.nanoTime();
+                whole += b - a;
+                ring += c - b;
+                count++;
+            }
+            if (pass == 2) System.out.printf("%s: irregular face set-up and first evaluation from the whole mesh %.2f ms, from its one-ring %.3f ms%n", shape, whole / 1e6 / count, ring / 1e6 / count);
+        }
     }
 
     private static void run(String shape, boolean print) {
