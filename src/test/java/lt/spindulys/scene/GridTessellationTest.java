@@ -380,7 +380,8 @@ class GridTessellationTest {
             String stats = AdaptiveSubdivisionTest.surface(s).statistics();
             assertEquals(rates(eagerStats)[1], rates(stats)[1], "the same rates: " + stats);
             if (v.settings() == TINY_CACHE) {
-                assertTrue(count(Pattern.compile("patches (\\d+) built"), stats) > count(PIECES, stats), "pieces built again: " + stats);
+                // Pieces were evicted (and so built again when rays came back to them), and the image is still the same.
+                assertTrue(count(Pattern.compile("(\\d+) evictions"), stats) > 0, "pieces evicted: " + stats);
             }
             if (v.method().equals("combined")) {
                 int pinned = count(Pattern.compile("; (\\d+) pieces eager"), stats), pieces = count(PIECES, stats);
