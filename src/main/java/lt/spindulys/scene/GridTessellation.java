@@ -621,7 +621,7 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
         int k = p - firstPiece[g];
         int i0 = pieces.i0(k), i1 = pieces.i1(k), j0 = pieces.j0(k), j1 = pieces.j1(k);
         int nu = i1 - i0 + 1, nv = j1 - j0 + 1, ru = pattern.columns(), rv = pattern.rows();
-        double[] xyz = new double[3 * nu * nv];
+        float[] xyz = new float[3 * nu * nv];
         float[] normals = smooth ? new float[3 * nu * nv] : null, tex = uvEval != null ? new float[2 * nu * nv] : null;
         VertexScratch s = new VertexScratch();
         for (int j = j0; j <= j1; j++) {
@@ -630,10 +630,11 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
                 faceParameters(n, sub, pattern.u(ii, j), pattern.v(ii, j), s.uv);
                 boolean border = j == 0 || ii == ru || j == rv || ii == 0;
                 if (border) {
-                    if (j == 0) sharedQuadPoint(g, 0, ii, xyz, 3 * w);
-                    else if (ii == ru) sharedQuadPoint(g, 1, j, xyz, 3 * w);
-                    else if (j == rv) sharedQuadPoint(g, 2, ru - ii, xyz, 3 * w);
-                    else sharedQuadPoint(g, 3, rv - j, xyz, 3 * w);
+                    if (j == 0) sharedQuadPoint(g, 0, ii, s.p, 0);
+                    else if (ii == ru) sharedQuadPoint(g, 1, j, s.p, 0);
+                    else if (j == rv) sharedQuadPoint(g, 2, ru - ii, s.p, 0);
+                    else sharedQuadPoint(g, 3, rv - j, s.p, 0);
+                    for (int a = 0; a < 3; a++) xyz[3 * w + a] = (float) s.p[a];
                 }
                 if (!border || normals != null) {
                     // Flat shading needs no derivatives: positions alone cost a third as much.
@@ -642,7 +643,7 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
                         centroid(f, s.p);
                         s.du[0] = s.du[1] = s.du[2] = s.dv[0] = s.dv[1] = s.dv[2] = 0;
                     }
-                    if (!border) System.arraycopy(s.p, 0, xyz, 3 * w, 3);
+                    if (!border) for (int a = 0; a < 3; a++) xyz[3 * w + a] = (float) s.p[a];
                     if (normals != null) normal(s.du, s.dv, normals, 3 * w);
                 }
                 if (tex != null) {
@@ -652,10 +653,8 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
                 }
             }
         }
-        float[] fxyz = new float[xyz.length];
-        for (int a = 0; a < xyz.length; a++) fxyz[a] = (float) xyz[a];
-        GridPatch grid = new GridPatch(nu, nv, fxyz, normals, null, 0, 0, 1, 1, GridPatch.DEFAULT_LEAF_SIZE, i0 + j0);
-        return new GridPiece(grid, fxyz, normals, tex);
+        GridPatch grid = new GridPatch(nu, nv, xyz, normals, null, 0, 0, 1, 1, GridPatch.DEFAULT_LEAF_SIZE, i0 + j0);
+        return new GridPiece(grid, xyz, normals, tex);
     }
 
     /** The unit normal du x dv into out at o (zero where the derivatives are degenerate: then the facet's normal shades). */
