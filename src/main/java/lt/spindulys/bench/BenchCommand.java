@@ -132,6 +132,17 @@ public final class BenchCommand {
                     (b, out) -> b.adaptive(out, AdaptiveBench::cache), ADAPTIVE),
             peerVariant("1k", "lazy", "the 1k cage as a lazy adaptive subdiv, target 1 px (beside Cycles' adaptive subdivision, dicing rate 1 px)"),
             peerVariant("1k", "combined", "the 1k cage as a combined adaptive subdiv, target 1 px (beside Cycles' adaptive subdivision)"),
+            peerVariant("1k", "projected", "the 1k cage as a projected (eager) adaptive subdiv, target 1 px (beside Cycles' adaptive subdivision)"),
+            new Row("torus-1k-close", "Peer scene, subdivision",
+                    String.format(Locale.ROOT, "scenes/bench/torus-1k-close.dat: the 1k cage as a combined adaptive subdiv, target 1 px, seen from "
+                            + "inside its ring so that the surface fills the frame, 1920x1080, 1 spp, %d threads; in-process and cold process "
+                            + "(beside Cycles' adaptive subdivision, dicing rate 1 px, on the same view)", BenchCommand.THREADS),
+                    (b, out) -> b.peerScene(out, BenchMeshes.size("1k"), "torus-1k-close", null), ADAPTIVE),
+            new Row("adaptive-warm", "Adaptive subdivision: lazy against eager",
+                    String.format(Locale.ROOT, "scenes/bench/torus-1k-lazy.dat against torus-1k-projected.dat (the same 1-pixel tessellation of the 1k cage, "
+                            + "1280x720, %d threads), alternated in this JVM after warm-up, each frame loaded and built anew (target: lazy at least "
+                            + "0.8x the eager speed)", BenchCommand.THREADS),
+                    (b, out) -> b.warmLazyVsEager(out), ADAPTIVE),
             peerVariant("1k", "level2", "the 1k cage as a uniform subdiv at level 2 (beside Embree's subdivision at edge level 4)"),
             peerVariant("1k", "level2-lazy", "the 1k cage as a lazy subdiv at fixed level 2 (beside Embree's subdivision at edge level 4)"),
             new Row("viewer", "Viewer",
@@ -352,6 +363,61 @@ public final class BenchCommand {
                         : "  pixel not equal: we trace " + spp + " at stratified spots, POV-Ray one at the pixel centre (no anti-aliasing).");
             }
         }
+    }
+
+    // ---- adaptive subdivision in a warm JVM ----
+
+    /** Least speed of the lazy method against the eager one, re-rendering in a warm JVM. */
+    static final double LAZY_MIN_SPEED = 0.8;
+
+    /**
+     * The lazy method (64 MiB cache) against the eager one at the same tessellation, both in this
+     * JVM: torus-1k-lazy and torus-1k-projected timed alternately after warm-up (so drift on a
+     * shared machine hits both alike), each frame loaded, built and rendered from its file, so the
+     * lazy one refines its patches during every render and the eager one during every build. The
+     * speed ratios of render alone (judged) and of build + render, with each one's peak heap.
+     */
+    private void warmLazyVsEager(PrintStream out) throws IOException {
+        BenchMeshes.ensure(benchDir.resolve("meshes"), BenchMeshes.size("1k"));
+        Path lazy = benchDir.resolve("torus-1k-lazy.dat"), eager = benchDir.resolve("torus-1k-projected.dat");
+        for (Path p : List.of(lazy, eager)) {
+            if (!Files.isRegularFile(p)) throw new IOException("bench scene not found: " + p.toAbsolutePath());
+        }
+        for (int i = 0; i < WARMUPS; i++) {
+            renderOnce(lazy, accel);
+            renderOnce(eager, accel);
+        }
+        double[] rl = new double[runs], re = new double[runs], tl = new double[runs], te = new double[runs], hl = new double[runs], he = new double[runs];
+        Measured l = null, e = null;
+        for (int i = 0; i < runs; i++) {
+            // Pairs alternate which goes first, as the peer rows' pairs do.
+            if (i % 2 == 0) {
+                l = renderOnce(lazy, accel);
+                e = renderOnce(eager, accel);
+            } else {
+                e = renderOnce(eager, accel);
+                l = renderOnce(lazy, accel);
+            }
+            rl[i] = l.stats.seconds();
+            re[i] = e.stats.seconds();
+            tl[i] = l.build + l.stats.seconds();
+            te[i] = e.build + e.stats.seconds();
+            hl[i] = l.peakHeap / 1048576.0;
+            he[i] = e.peakHeap / 1048576.0;
+        }
+        BenchTable t = new BenchTable("scene", "build s", "render s", "build + render s", "Mrays/s", "peak heap MiB");
+        t.add("torus-1k-projected", fmt(median(te) - median(re), 3), fmt(median(re), 3), fmt(median(te), 3),
+                fmt(e.stats.totalRays() / median(re) / 1e6, 2), fmt(median(he), 0));
+        t.add("torus-1k-lazy", fmt(median(tl) - median(rl), 3), fmt(median(rl), 3), fmt(median(tl), 3),
+                fmt(l.stats.totalRays() / median(rl) / 1e6, 2), fmt(median(hl), 0));
+        t.print(out);
+        for (String line : e.subdivision) out.println("    projected: " + line);
+        for (String line : l.subdivision) out.println("    lazy: " + line);
+        double render = PeerBench.medianRatio(re, rl), whole = PeerBench.medianRatio(te, tl);
+        out.printf(Locale.ROOT, "  adaptive-warm: lazy at %.2fx the eager speed rendering (target: at least %.1fx) %s; %.2fx over build + render%n",
+                render, LAZY_MIN_SPEED, render >= LAZY_MIN_SPEED ? "met" : "NOT met", whole);
+        out.println("  medians of alternated frames in this JVM; speed = eager s / lazy s, the median of the pairs' ratios; build s: the");
+        out.println("  medians' difference. The eager method refines while building, the lazy one while rendering (64 MiB cache).");
     }
 
     // ---- CSG ----

@@ -237,7 +237,8 @@ class CliTest {
         Run unknown = run("bench", "--only", "nope");
         assertEquals(2, unknown.status());
         assertEquals("render: unknown bench row 'nope' (rows: refine-bishop, refine-loop-bishop, torus-1k, torus-16k, torus-250k, torus-1m, knot-1m, torus-1m-close, soft-shadow, soft-shadow-light16, soft-shadow-16k, csg-subdiv, motion-blur, "
-                + "adaptive-close, adaptive-huge, adaptive-lazy, adaptive-cache, torus-1k-lazy, torus-1k-combined, torus-1k-level2, torus-1k-level2-lazy, viewer; "
+                + "adaptive-close, adaptive-huge, adaptive-lazy, adaptive-cache, torus-1k-lazy, torus-1k-combined, torus-1k-projected, "
+                + "torus-1k-close, adaptive-warm, torus-1k-level2, torus-1k-level2-lazy, viewer; "
                 + "groups: adaptive, viewer)" + System.lineSeparator(), unknown.err());
         // A list names rows and groups; each must exist.
         Run unknownInList = run("bench", "--only", "torus-1k,viewer,nope");
