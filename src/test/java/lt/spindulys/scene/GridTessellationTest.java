@@ -502,8 +502,7 @@ class GridTessellationTest {
      * float rounding of a checker edge or a silhouette.
      */
     @Test
-    @org.junit.jupiter.api.Disabled("fails: 45 of 532 pixels differ by more than 8 levels, in strips of cells along two of the cube's edges,"
-            + " while the depth agrees: the grids' face-varying UVs (LimitSurface.uvEvaluator) are not the uniform surface's there")
+    @Test
     void aCheckerOnFaceVaryingUvsRendersAsTheUniformLimitSurface() {
         AdaptiveSubdivisionTest.Frame f = AdaptiveSubdivisionTest.frame("cube.dat");
         java.util.function.Function<String, String> scene = keys -> "settings { width 48  height 36  aov depth normal }\n"
