@@ -654,7 +654,7 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
         }
         float[] fxyz = new float[xyz.length];
         for (int a = 0; a < xyz.length; a++) fxyz[a] = (float) xyz[a];
-        GridPatch grid = new GridPatch(nu, nv, fxyz, normals, null, 0, 0, 1, 1, GridPatch.DEFAULT_LEAF_SIZE, i0 + j0);
+        GridPatch grid = new GridPatch(nu, nv, fxyz, normals, null, 0, 0, 1, 1, GridPatch.DEFAULT_LEAF_SIZE);
         return new GridPiece(grid, fxyz, normals, tex);
     }
 
