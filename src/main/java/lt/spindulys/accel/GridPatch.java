@@ -15,9 +15,9 @@ import lt.spindulys.math.Ray;
  * the same triangles): along v0-v2 when |v0 - v2|² &lt;= |v1 - v3|² (a tie included), into triangle
  * A = (v0, v1, v2) and B = (v0, v2, v3), else along v1-v3, into A = (v0, v1, v3) and B = (v2, v3, v1); all
  * counter-clockwise in (i, j), numbered as {@code GridPattern} numbers its triangles ({@link #cutAlongV0V2}). The
- * squared lengths are computed in double from the stored floats, the same way wherever a cell's triangles are
- * needed (the hit test, {@link #triangleVertex} and all that use it), so the choice is a function of the cell's
- * four floats alone: nothing is stored for it, and a piece of a larger grid cuts its cells as the whole grid does.
+ * squared lengths are computed in double from the stored floats when the grid is built, and the choice kept as one
+ * bit per cell that the hit test, {@link #triangleVertex} and all that use it read: a function of the cell's four
+ * floats alone, so a piece of a larger grid cuts its cells as the whole grid does.
  * Triangle
  * {@code sub = 2 * (j * (nu - 1) + i)} is A of cell (i, j), {@code sub + 1} its B ({@link #triangleVertex}).
  * Vertices may repeat (a grid snapped to a coarser edge): the triangles they make have no area and are never hit.
@@ -46,9 +46,9 @@ import lt.spindulys.math.Ray;
  * only the triangle test decides hits. A single child hit is entered directly, several are pushed on the caller's
  * {@link TraversalScratch#stack} with their entry distances, sorted nearest on top for a nearest hit.
  *
- * <p>Memory ({@link #bytes}): 12 bytes per vertex (about 6 per triangle) and 288 per node; with the default
- * leaves of 3 x 3 vertices about 11 bytes per triangle in all, with leaves of 5 x 5 about 7, plus 6 per triangle
- * for float normals.
+ * <p>Memory ({@link #bytes}): 12 bytes per vertex (about 6 per triangle), 288 per node and a bit per cell; with
+ * the default leaves of 3 x 3 vertices about 11 bytes per triangle in all, with leaves of 5 x 5 about 7, plus 6
+ * per triangle for float normals.
  *
  * <p><b>Every crossing.</b> {@link #visitTriangles} hands every triangle of every leaf whose box the ray's interval
  * crosses to a {@link GridTriangleVisitor}, each at most once (leaves share vertices, never cells), for a caller that
@@ -76,6 +76,11 @@ public final class GridPatch implements CachedPatch {
     private final float[] pos, normals, uv;
     private final double u0, v0, u1, v1;
     private final int[] nodes;
+    /**
+     * Bit c set when cell c (j * (nu - 1) + i) is cut along its v1-v3 diagonal: decided once, when built, as computing
+     * it per cell in the hit test costs a tenth to a fifth of the rays per second.
+     */
+    private final long[] alongV1V3;
     private final int nodeCount, depth;
     /** The whole grid's box, as float bits in the node-record order (min x, y, z, max x, y, z). */
     private final int[] box = new int[6];
@@ -125,6 +130,12 @@ public final class GridPatch implements CachedPatch {
         this.normals = normals;
         this.uv = uv;
         this.u0 = u0; this.v0 = v0; this.u1 = u1; this.v1 = v1;
+        alongV1V3 = new long[((nu - 1) * (nv - 1) + 63) >> 6];
+        for (int j = 0, c = 0; j < nv - 1; j++) {
+            for (int i = 0; i < nu - 1; i++, c++) {
+                if (!shorterAlongV0V2(3 * (j * nu + i))) alongV1V3[c >> 6] |= 1L << c;
+            }
+        }
         if (fits(nu - 1, nv - 1)) {
             nodes = new int[0];
             nodeCount = 0;
@@ -168,15 +179,18 @@ public final class GridPatch implements CachedPatch {
      */
     public boolean cutAlongV0V2(int i, int j) {
         if (i < 0 || j < 0 || i >= nu - 1 || j >= nv - 1) throw new IndexOutOfBoundsException("cell " + i + ", " + j);
-        return alongV0V2(3 * (j * nu + i));
+        return alongV0V2(j * (nu - 1) + i);
     }
 
+    /** Whether cell c (j * (nu - 1) + i) is cut along its v0-v2 diagonal, as decided when built. */
+    private boolean alongV0V2(int c) { return (alongV1V3[c >> 6] & 1L << c) == 0; }
+
     /**
-     * Whether the cell whose corner v0 is at {@code pos[q]} is cut along its v0-v2 diagonal. Every use of a cell's
-     * diagonal goes through here, so the choice is the same everywhere; written as RefinedTriangles' rule
-     * (v0-v2 unless its square is not {@code <=} the other's, so a NaN picks v1-v3 in both).
+     * Whether the cell whose corner v0 is at {@code pos[q]} is cut along its v0-v2 diagonal, written as the uniform
+     * path's rule (RefinedTriangles): v0-v2 unless its square is not {@code <=} the other's, so that a NaN picks
+     * v1-v3 in both.
      */
-    private boolean alongV0V2(int q) {
+    private boolean shorterAlongV0V2(int q) {
         final float[] p = pos;
         final int r = q + 3 * nu; // v3
         return dist2(p, q, r + 3) <= dist2(p, q + 3, r);
@@ -190,16 +204,17 @@ public final class GridPatch implements CachedPatch {
 
     /**
      * The heap this grid retains: 128 bytes for the object and its six-int box (an 88-byte object with compressed
-     * references, a 40-byte array), plus per array (positions, the node records, and normals and parameters when
-     * present) a 16-byte header and its elements rounded up to 8 bytes. For nu x nv vertices and N nodes that is
-     * 128 + 16 + 12 nu nv + 16 + 288 N (+ 16 + 12 nu nv with normals, + 16 + 8 nu nv with parameters), up to the
-     * rounding.
+     * references, a 40-byte array), plus per array (positions, the node records, the cells' diagonal bits, and
+     * normals and parameters when present) a 16-byte header and its elements rounded up to 8 bytes. For nu x nv
+     * vertices, C = (nu - 1)(nv - 1) cells and N nodes that is 128 + 16 + 12 nu nv + 16 + 288 N + 16 + 8 ceil(C / 64)
+     * (+ 16 + 12 nu nv with normals, + 16 + 8 nu nv with parameters), up to the rounding.
      *
      * @return bytes, for a cache's budget
      */
     @Override
     public long bytes() {
-        return 128 + array(pos.length) + array(nodes.length) + (normals == null ? 0 : array(normals.length))
+        return 128 + array(pos.length) + array(nodes.length) + array(2 * alongV1V3.length)
+                + (normals == null ? 0 : array(normals.length))
                 + (uv == null ? 0 : array(uv.length));
     }
 
@@ -220,7 +235,7 @@ public final class GridPatch implements CachedPatch {
     public int triangleVertex(int sub, int corner) {
         int cell = sub >> 1, i = cell % (nu - 1), j = cell / (nu - 1);
         int a = j * nu + i; // v0; v1 = a + 1, v2 = a + nu + 1, v3 = a + nu
-        if (alongV0V2(3 * a)) { // (v0, v1, v2), (v0, v2, v3)
+        if (alongV0V2(cell)) { // (v0, v1, v2), (v0, v2, v3)
             if (corner == 0) return a;
             if ((sub & 1) == 0) return corner == 1 ? a + 1 : a + nu + 1;
             return corner == 1 ? a + nu + 1 : a + nu;
@@ -255,7 +270,7 @@ public final class GridPatch implements CachedPatch {
         // and B (0,0), (1,1), (0,1); along v1-v3, A has (0,0), (1,0), (0,1) and B (1,1), (0,1), (1,0)
         double cu, cv;
         int i = cellI(sub), j = cellJ(sub);
-        if (alongV0V2(3 * (j * nu + i))) {
+        if (alongV0V2(sub >> 1)) {
             cu = (sub & 1) == 0 ? b1 + b2 : b1;
             cv = (sub & 1) == 0 ? b2 : b1 + b2;
         } else {
@@ -606,7 +621,8 @@ public final class GridPatch implements CachedPatch {
             double x01 = p[q + row + kx] - okx - sx * z, y01 = p[q + row + ky] - oky - sy * z, z01 = sz * z;
             double left = x01 * y00 - y01 * x00; // E(p00, p01)
             for (int i = i0; i < i1; i++) {
-                final boolean v02 = alongV0V2(q);
+                final int sub = 2 * (j * (nu - 1) + i);
+                final boolean v02 = alongV0V2(sub >> 1);
                 q += 3;
                 z = p[q + kz] - okz;
                 final double x10 = p[q + kx] - okx - sx * z, y10 = p[q + ky] - oky - sy * z, z10 = sz * z;
@@ -616,32 +632,24 @@ public final class GridPatch implements CachedPatch {
                 final double bottom = x10 * y00 - y10 * x00; // E(p00, p10)
                 final double right = x11 * y10 - y11 * x10;  // E(p10, p11)
                 final double top = x11 * y01 - y11 * x01;    // E(p01, p11)
-                final int sub = 2 * (j * (nu - 1) + i);
-                // each triangle's U, V, W are the edge functions of the edges opposite its corners 0, 1, 2
-                if (v02) {
-                    final double diag = x11 * y00 - y11 * x00; // E(p00, p11)
-                    // A = (p00, p10, p11): U = E(p10, p11), V = E(p11, p00), W = E(p00, p10)
-                    if (triangle(right, -diag, bottom, z00, z10, z11, sub, tMin, ray, hit)) {
-                        if (hit == null) return true;
-                        any = true;
-                    }
-                    // B = (p00, p11, p01): U = E(p11, p01), V = E(p01, p00), W = E(p00, p11)
-                    if (triangle(-top, -left, diag, z00, z11, z01, sub + 1, tMin, ray, hit)) {
-                        if (hit == null) return true;
-                        any = true;
-                    }
-                } else {
-                    final double anti = x01 * y10 - y01 * x10; // E(p10, p01)
-                    // A = (p00, p10, p01): U = E(p10, p01), V = E(p01, p00), W = E(p00, p10)
-                    if (triangle(anti, -left, bottom, z00, z10, z01, sub, tMin, ray, hit)) {
-                        if (hit == null) return true;
-                        any = true;
-                    }
-                    // B = (p11, p01, p10): U = E(p01, p10), V = E(p10, p11), W = E(p11, p01)
-                    if (triangle(-anti, right, -top, z11, z01, z10, sub + 1, tMin, ray, hit)) {
-                        if (hit == null) return true;
-                        any = true;
-                    }
+                final double diag = x11 * y00 - y11 * x00; // E(p00, p11)
+                final double anti = x01 * y10 - y01 * x10; // E(p10, p01)
+                // each triangle's U, V, W are the edge functions of the edges opposite its corners 0, 1, 2, picked
+                // by the cell's diagonal without a branch: the diagonal follows the surface's shape, so a branch
+                // on it is mispredicted often. Along v0-v2, A = (p00, p10, p11): U = E(p10, p11), V = E(p11, p00),
+                // W = E(p00, p10), and B = (p00, p11, p01): U = E(p11, p01), V = E(p01, p00), W = E(p00, p11);
+                // along v1-v3, A = (p00, p10, p01): U = E(p10, p01), V = E(p01, p00), W = E(p00, p10), and
+                // B = (p11, p01, p10): U = E(p01, p10), V = E(p10, p11), W = E(p11, p01)
+                final double au = v02 ? right : anti, av = v02 ? -diag : -left, azc = v02 ? z11 : z01;
+                if (triangle(au, av, bottom, z00, z10, azc, sub, tMin, ray, hit)) {
+                    if (hit == null) return true;
+                    any = true;
+                }
+                final double bu = v02 ? -top : -anti, bv = v02 ? -left : right, bw = v02 ? diag : -top;
+                final double bza = v02 ? z00 : z11, bzb = v02 ? z11 : z01, bzc = v02 ? z01 : z10;
+                if (triangle(bu, bv, bw, bza, bzb, bzc, sub + 1, tMin, ray, hit)) {
+                    if (hit == null) return true;
+                    any = true;
                 }
                 x00 = x10; y00 = y10; z00 = z10;
                 x01 = x11; y01 = y11; z01 = z11;

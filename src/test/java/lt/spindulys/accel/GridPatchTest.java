@@ -500,10 +500,11 @@ class GridPatchTest {
     void bytesFollowTheDocumentedFormula() {
         GridPatch one = grid(5, 5, f(GridTestSurfaces.bumpy(5, 5)), 5);
         assertEquals(0, one.nodeCount());
-        assertEquals(128 + 16 + 304 + 16, one.bytes(), "one leaf: positions (75 floats, 300 bytes rounded to 304) and an empty node array");
+        assertEquals(128 + 16 + 304 + 16 + 24, one.bytes(),
+                "one leaf: positions (75 floats, 300 bytes rounded to 304), an empty node array and one long of diagonal bits");
         GridPatch g = grid(65, 65, f(GridTestSurfaces.bumpy(65, 65)), 5);
         assertTrue(g.nodeCount() > 0);
-        assertEquals(128 + 16 + up8(12L * 65 * 65) + 16 + 288L * g.nodeCount(), g.bytes());
+        assertEquals(128 + 16 + up8(12L * 65 * 65) + 16 + 288L * g.nodeCount() + 16 + 8 * 64, g.bytes(), "64 x 64 cells: 64 longs of bits");
         float[] n = new float[3 * 65 * 65], uv = new float[2 * 65 * 65];
         GridPatch full = new GridPatch(65, 65, f(GridTestSurfaces.bumpy(65, 65)), n, uv, 0, 0, 1, 1, 5);
         assertEquals(g.bytes() + 16 + up8(12L * 65 * 65) + 16 + 8L * 65 * 65, full.bytes());
