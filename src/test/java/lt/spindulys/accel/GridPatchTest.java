@@ -17,8 +17,8 @@ import lt.spindulys.math.Ray;
 /**
  * The grid patch against the brute-force watertight test of every triangle: the same nearest t and cell on
  * bumpy, jittered, thin and degenerate grids for every leaf size, each cell cut along its shorter diagonal (v0-v2
- * on a tie) as the uniform subdivision path cuts its quads, watertightness of a closed set of six grids that share bit-identical edge vertices (rays from inside, many aimed
- * exactly at shared edges and vertices), occlusion agreeing with intersection, every watertight crossing of a line
+ * on a tie) as the uniform subdivision path cuts its quads, watertightness of a closed set of six grids that share
+ * bit-identical edge vertices (rays from inside, many aimed exactly at shared edges and vertices), occlusion agreeing with intersection, every watertight crossing of a line
  * among the visited triangles, the hit's parameters, the byte count, and no allocation per query.
  */
 class GridPatchTest {
