@@ -10,12 +10,15 @@ import lt.spindulys.math.Ray;
  * nothing is sorted and no triangle index is stored.
  *
  * <p><b>Topology.</b> Vertex (i, j), 0 &lt;= i &lt; nu, 0 &lt;= j &lt; nv, is number {@code j * nu + i}. Cell (i, j)
- * spans vertices v0 = (i, j), v1 = (i + 1, j), v2 = (i + 1, j + 1), v3 = (i, j + 1), and the cells are cut in a
- * checkerboard, as uniform Catmull-Clark subdivision fans its child quads from their corner 0: with p the grid's
- * {@linkplain #cellParity() cell parity} (the parity of i0 + j0 when the grid is the range from (i0, j0) of a
- * larger face grid), a cell with i + j + p even is cut along its v0-v2 diagonal into triangle A = (v0, v1, v2) and
- * B = (v0, v2, v3), and one with i + j + p odd along its v1-v3 diagonal into A = (v0, v1, v3) and B = (v2, v3, v1);
- * all counter-clockwise in (i, j), as {@code GridPattern} numbers them. Triangle
+ * spans vertices v0 = (i, j), v1 = (i + 1, j), v2 = (i + 1, j + 1), v3 = (i, j + 1), and each cell is cut along
+ * its shorter diagonal, as uniform subdivision cuts its refined quads (so that at power-of-two rates the two give
+ * the same triangles): along v0-v2 when |v0 - v2|² &lt;= |v1 - v3|² (a tie included), into triangle
+ * A = (v0, v1, v2) and B = (v0, v2, v3), else along v1-v3, into A = (v0, v1, v3) and B = (v2, v3, v1); all
+ * counter-clockwise in (i, j), numbered as {@code GridPattern} numbers its triangles ({@link #cutAlongV0V2}). The
+ * squared lengths are computed in double from the stored floats when the grid is built, and the choice kept as one
+ * bit per cell that the hit test, {@link #triangleVertex} and all that use it read: a function of the cell's four
+ * floats alone, so a piece of a larger grid cuts its cells as the whole grid does.
+ * Triangle
  * {@code sub = 2 * (j * (nu - 1) + i)} is A of cell (i, j), {@code sub + 1} its B ({@link #triangleVertex}).
  * Vertices may repeat (a grid snapped to a coarser edge): the triangles they make have no area and are never hit.
  *
@@ -43,9 +46,9 @@ import lt.spindulys.math.Ray;
  * only the triangle test decides hits. A single child hit is entered directly, several are pushed on the caller's
  * {@link TraversalScratch#stack} with their entry distances, sorted nearest on top for a nearest hit.
  *
- * <p>Memory ({@link #bytes}): 12 bytes per vertex (about 6 per triangle) and 288 per node; with the default
- * leaves of 3 x 3 vertices about 11 bytes per triangle in all, with leaves of 5 x 5 about 7, plus 6 per triangle
- * for float normals.
+ * <p>Memory ({@link #bytes}): 12 bytes per vertex (about 6 per triangle), 288 per node and a bit per cell; with
+ * the default leaves of 3 x 3 vertices about 11 bytes per triangle in all, with leaves of 5 x 5 about 7, plus 6
+ * per triangle for float normals.
  *
  * <p><b>Every crossing.</b> {@link #visitTriangles} hands every triangle of every leaf whose box the ray's interval
  * crosses to a {@link GridTriangleVisitor}, each at most once (leaves share vertices, never cells), for a caller that
@@ -70,11 +73,14 @@ public final class GridPatch implements CachedPatch {
     private static final double PAD = 4 * 3 * 0x1p-53 / (1 - 3 * 0x1p-53);
 
     private final int nu, nv, leafSize;
-    /** 0 when cell (0, 0) is cut along its v0-v2 diagonal, 1 when along its v1-v3 one. */
-    private final int parity;
     private final float[] pos, normals, uv;
     private final double u0, v0, u1, v1;
     private final int[] nodes;
+    /**
+     * Bit c set when cell c (j * (nu - 1) + i) is cut along its v1-v3 diagonal: decided once, when built, as computing
+     * it per cell in the hit test costs a tenth to a fifth of the rays per second.
+     */
+    private final long[] alongV1V3;
     private final int nodeCount, depth;
     /** The whole grid's box, as float bits in the node-record order (min x, y, z, max x, y, z). */
     private final int[] box = new int[6];
@@ -92,16 +98,7 @@ public final class GridPatch implements CachedPatch {
      * @param leafSize vertices per side of a leaf (2..17)
      */
     public GridPatch(int nu, int nv, double[] xyz, float[] normals, float[] uv, int leafSize) {
-        this(nu, nv, toFloat(xyz, nu, nv), normals, uv, 0, 0, 1, 1, leafSize, 0);
-    }
-
-    /**
-     * A grid from float positions with cell parity 0 (cell (0, 0) cut along its (0, 0)-(1, 1) diagonal), kept as
-     * given; see {@link #GridPatch(int, int, float[], float[], float[], double, double, double, double, int, int)}.
-     */
-    public GridPatch(int nu, int nv, float[] xyz, float[] normals, float[] uv,
-                     double u0, double v0, double u1, double v1, int leafSize) {
-        this(nu, nv, xyz, normals, uv, u0, v0, u1, v1, leafSize, 0);
+        this(nu, nv, toFloat(xyz, nu, nv), normals, uv, 0, 0, 1, 1, leafSize);
     }
 
     /**
@@ -117,12 +114,9 @@ public final class GridPatch implements CachedPatch {
      * @param u1 the parameter u of column nu - 1 when {@code uv} is null
      * @param v1 the parameter v of row nv - 1 when {@code uv} is null
      * @param leafSize vertices per side of a leaf (2..17)
-     * @param cellParity i0 + j0 when this grid is the vertex range from (i0, j0) of a larger face (or sub-face)
-     *                   grid, or any number of the same parity: cell (i, j) is cut along its (i, j)-(i + 1, j + 1)
-     *                   diagonal when i + j + cellParity is even, else along its (i + 1, j)-(i, j + 1) one
      */
     public GridPatch(int nu, int nv, float[] xyz, float[] normals, float[] uv,
-                     double u0, double v0, double u1, double v1, int leafSize, int cellParity) {
+                     double u0, double v0, double u1, double v1, int leafSize) {
         check(nu, nv);
         if (leafSize < 2 || leafSize > 17) throw new IllegalArgumentException("leaf size " + leafSize + " is not in 2..17");
         int n = nu * nv;
@@ -132,11 +126,16 @@ public final class GridPatch implements CachedPatch {
         this.nu = nu;
         this.nv = nv;
         this.leafSize = leafSize;
-        this.parity = cellParity & 1;
         this.pos = xyz;
         this.normals = normals;
         this.uv = uv;
         this.u0 = u0; this.v0 = v0; this.u1 = u1; this.v1 = v1;
+        alongV1V3 = new long[((nu - 1) * (nv - 1) + 63) >> 6];
+        for (int j = 0, c = 0; j < nv - 1; j++) {
+            for (int i = 0; i < nu - 1; i++, c++) {
+                if (!shorterAlongV0V2(3 * (j * nu + i))) alongV1V3[c >> 6] |= 1L << c;
+            }
+        }
         if (fits(nu - 1, nv - 1)) {
             nodes = new int[0];
             nodeCount = 0;
@@ -172,21 +171,50 @@ public final class GridPatch implements CachedPatch {
     /** Levels of inner nodes on the longest path from the root (0 when the grid is one leaf). */
     public int depth() { return depth; }
     public boolean hasNormals() { return normals != null; }
-    /** 0 when cell (0, 0) is cut along its (0, 0)-(1, 1) diagonal, 1 when along its (1, 0)-(0, 1) one. */
-    public int cellParity() { return parity; }
+
+    /**
+     * Whether cell (i, j) is cut along its (i, j)-(i + 1, j + 1) diagonal, else along its (i + 1, j)-(i, j + 1) one:
+     * the shorter, by the squared lengths in double of the stored floats, (i, j)-(i + 1, j + 1) on a tie (see the
+     * class comment).
+     */
+    public boolean cutAlongV0V2(int i, int j) {
+        if (i < 0 || j < 0 || i >= nu - 1 || j >= nv - 1) throw new IndexOutOfBoundsException("cell " + i + ", " + j);
+        return alongV0V2(j * (nu - 1) + i);
+    }
+
+    /** Whether cell c (j * (nu - 1) + i) is cut along its v0-v2 diagonal, as decided when built. */
+    private boolean alongV0V2(int c) { return (alongV1V3[c >> 6] & 1L << c) == 0; }
+
+    /**
+     * Whether the cell whose corner v0 is at {@code pos[q]} is cut along its v0-v2 diagonal, written as the uniform
+     * path's rule (RefinedTriangles): v0-v2 unless its square is not {@code <=} the other's, so that a NaN picks
+     * v1-v3 in both.
+     */
+    private boolean shorterAlongV0V2(int q) {
+        final float[] p = pos;
+        final int r = q + 3 * nu; // v3
+        return dist2(p, q, r + 3) <= dist2(p, q + 3, r);
+    }
+
+    /** The squared distance of the float vertices at p[a] and p[b], in double (no overflow for any finite floats). */
+    private static double dist2(float[] p, int a, int b) {
+        final double dx = (double) p[a] - p[b], dy = (double) p[a + 1] - p[b + 1], dz = (double) p[a + 2] - p[b + 2];
+        return dx * dx + dy * dy + dz * dz;
+    }
 
     /**
      * The heap this grid retains: 128 bytes for the object and its six-int box (an 88-byte object with compressed
-     * references, a 40-byte array), plus per array (positions, the node records, and normals and parameters when
-     * present) a 16-byte header and its elements rounded up to 8 bytes. For nu x nv vertices and N nodes that is
-     * 128 + 16 + 12 nu nv + 16 + 288 N (+ 16 + 12 nu nv with normals, + 16 + 8 nu nv with parameters), up to the
-     * rounding.
+     * references, a 40-byte array), plus per array (positions, the node records, the cells' diagonal bits, and
+     * normals and parameters when present) a 16-byte header and its elements rounded up to 8 bytes. For nu x nv
+     * vertices, C = (nu - 1)(nv - 1) cells and N nodes that is 128 + 16 + 12 nu nv + 16 + 288 N + 16 + 8 ceil(C / 64)
+     * (+ 16 + 12 nu nv with normals, + 16 + 8 nu nv with parameters), up to the rounding.
      *
      * @return bytes, for a cache's budget
      */
     @Override
     public long bytes() {
-        return 128 + array(pos.length) + array(nodes.length) + (normals == null ? 0 : array(normals.length))
+        return 128 + array(pos.length) + array(nodes.length) + array(2 * alongV1V3.length)
+                + (normals == null ? 0 : array(normals.length))
                 + (uv == null ? 0 : array(uv.length));
     }
 
@@ -207,7 +235,7 @@ public final class GridPatch implements CachedPatch {
     public int triangleVertex(int sub, int corner) {
         int cell = sub >> 1, i = cell % (nu - 1), j = cell / (nu - 1);
         int a = j * nu + i; // v0; v1 = a + 1, v2 = a + nu + 1, v3 = a + nu
-        if (!odd(i, j)) { // (v0, v1, v2), (v0, v2, v3)
+        if (alongV0V2(cell)) { // (v0, v1, v2), (v0, v2, v3)
             if (corner == 0) return a;
             if ((sub & 1) == 0) return corner == 1 ? a + 1 : a + nu + 1;
             return corner == 1 ? a + nu + 1 : a + nu;
@@ -218,9 +246,6 @@ public final class GridPatch implements CachedPatch {
 
     /** Coordinate {@code axis} (0..2) of corner {@code corner} (0..2) of triangle {@code sub}: its stored float. */
     public float cornerCoordinate(int sub, int corner, int axis) { return pos[3 * triangleVertex(sub, corner) + axis]; }
-
-    /** Whether cell (i, j) is cut along its v1-v3 diagonal. */
-    private boolean odd(int i, int j) { return ((i + j + parity) & 1) != 0; }
 
     /** The cell column i of triangle {@code sub}. */
     public int cellI(int sub) { return (sub >> 1) % (nu - 1); }
@@ -245,7 +270,7 @@ public final class GridPatch implements CachedPatch {
         // and B (0,0), (1,1), (0,1); along v1-v3, A has (0,0), (1,0), (0,1) and B (1,1), (0,1), (1,0)
         double cu, cv;
         int i = cellI(sub), j = cellJ(sub);
-        if (!odd(i, j)) {
+        if (alongV0V2(sub >> 1)) {
             cu = (sub & 1) == 0 ? b1 + b2 : b1;
             cv = (sub & 1) == 0 ? b2 : b1 + b2;
         } else {
@@ -595,9 +620,9 @@ public final class GridPatch implements CachedPatch {
             z = p[q + row + kz] - okz;
             double x01 = p[q + row + kx] - okx - sx * z, y01 = p[q + row + ky] - oky - sy * z, z01 = sz * z;
             double left = x01 * y00 - y01 * x00; // E(p00, p01)
-            // the checkerboard of diagonals alternates along the row
-            boolean odd = ((i0 + j + parity) & 1) != 0;
-            for (int i = i0; i < i1; i++, odd = !odd) {
+            for (int i = i0; i < i1; i++) {
+                final int sub = 2 * (j * (nu - 1) + i);
+                final boolean v02 = alongV0V2(sub >> 1);
                 q += 3;
                 z = p[q + kz] - okz;
                 final double x10 = p[q + kx] - okx - sx * z, y10 = p[q + ky] - oky - sy * z, z10 = sz * z;
@@ -607,32 +632,24 @@ public final class GridPatch implements CachedPatch {
                 final double bottom = x10 * y00 - y10 * x00; // E(p00, p10)
                 final double right = x11 * y10 - y11 * x10;  // E(p10, p11)
                 final double top = x11 * y01 - y11 * x01;    // E(p01, p11)
-                final int sub = 2 * (j * (nu - 1) + i);
-                // each triangle's U, V, W are the edge functions of the edges opposite its corners 0, 1, 2
-                if (!odd) {
-                    final double diag = x11 * y00 - y11 * x00; // E(p00, p11)
-                    // A = (p00, p10, p11): U = E(p10, p11), V = E(p11, p00), W = E(p00, p10)
-                    if (triangle(right, -diag, bottom, z00, z10, z11, sub, tMin, ray, hit)) {
-                        if (hit == null) return true;
-                        any = true;
-                    }
-                    // B = (p00, p11, p01): U = E(p11, p01), V = E(p01, p00), W = E(p00, p11)
-                    if (triangle(-top, -left, diag, z00, z11, z01, sub + 1, tMin, ray, hit)) {
-                        if (hit == null) return true;
-                        any = true;
-                    }
-                } else {
-                    final double anti = x01 * y10 - y01 * x10; // E(p10, p01)
-                    // A = (p00, p10, p01): U = E(p10, p01), V = E(p01, p00), W = E(p00, p10)
-                    if (triangle(anti, -left, bottom, z00, z10, z01, sub, tMin, ray, hit)) {
-                        if (hit == null) return true;
-                        any = true;
-                    }
-                    // B = (p11, p01, p10): U = E(p01, p10), V = E(p10, p11), W = E(p11, p01)
-                    if (triangle(-anti, right, -top, z11, z01, z10, sub + 1, tMin, ray, hit)) {
-                        if (hit == null) return true;
-                        any = true;
-                    }
+                final double diag = x11 * y00 - y11 * x00; // E(p00, p11)
+                final double anti = x01 * y10 - y01 * x10; // E(p10, p01)
+                // each triangle's U, V, W are the edge functions of the edges opposite its corners 0, 1, 2, picked
+                // by the cell's diagonal without a branch: the diagonal follows the surface's shape, so a branch
+                // on it is mispredicted often. Along v0-v2, A = (p00, p10, p11): U = E(p10, p11), V = E(p11, p00),
+                // W = E(p00, p10), and B = (p00, p11, p01): U = E(p11, p01), V = E(p01, p00), W = E(p00, p11);
+                // along v1-v3, A = (p00, p10, p01): U = E(p10, p01), V = E(p01, p00), W = E(p00, p10), and
+                // B = (p11, p01, p10): U = E(p01, p10), V = E(p10, p11), W = E(p11, p01)
+                final double au = v02 ? right : anti, av = v02 ? -diag : -left, azc = v02 ? z11 : z01;
+                if (triangle(au, av, bottom, z00, z10, azc, sub, tMin, ray, hit)) {
+                    if (hit == null) return true;
+                    any = true;
+                }
+                final double bu = v02 ? -top : -anti, bv = v02 ? -left : right, bw = v02 ? diag : -top;
+                final double bza = v02 ? z00 : z11, bzb = v02 ? z11 : z01, bzc = v02 ? z01 : z10;
+                if (triangle(bu, bv, bw, bza, bzb, bzc, sub + 1, tMin, ray, hit)) {
+                    if (hit == null) return true;
+                    any = true;
                 }
                 x00 = x10; y00 = y10; z00 = z10;
                 x01 = x11; y01 = y11; z01 = z11;

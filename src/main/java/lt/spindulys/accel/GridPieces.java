@@ -108,8 +108,9 @@ public final class GridPieces {
 
     /**
      * Builds piece {@code k}: evaluates its vertices with {@code source} and makes their grid, with parameters
-     * those of the face (so a hit's {@link GridPatch#parameters} are face parameters) and the face's checkerboard
-     * of cell diagonals (cell parity i0 + j0), so that the pieces hold exactly the face grid's triangles.
+     * those of the face (so a hit's {@link GridPatch#parameters} are face parameters). A cell's diagonal follows
+     * from its four vertices alone ({@link GridPatch#cutAlongV0V2}), so the pieces hold exactly the face grid's
+     * triangles.
      *
      * @param leafSize the piece's leaf size ({@link GridPatch#GridPatch(int, int, double[], float[], float[], int)})
      */
@@ -125,6 +126,6 @@ public final class GridPieces {
         float[] uv = new float[2 * n];
         if (!source.parameters(a0, b0, pu, pv, uv)) uv = null;
         return new GridPatch(pu, pv, f, normals, uv,
-                (double) a0 / (nu - 1), (double) b0 / (nv - 1), (double) a1 / (nu - 1), (double) b1 / (nv - 1), leafSize, a0 + b0);
+                (double) a0 / (nu - 1), (double) b0 / (nv - 1), (double) a1 / (nu - 1), (double) b1 / (nv - 1), leafSize);
     }
 }

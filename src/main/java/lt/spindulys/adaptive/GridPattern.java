@@ -34,7 +34,10 @@ package lt.spindulys.adaptive;
  * diagonal into triangles 2c = (v0, v1, v2) and 2c + 1 = (v0, v2, v3), when i + j is odd along its
  * v1-v3 diagonal into 2c = (v0, v1, v3) and 2c + 1 = (v2, v3, v1). All are counter-clockwise in
  * (u, v), and numbered as {@code GridPatch} numbers its triangles. Either diagonal of a convex
- * cell gives two triangles that are not inverted, so snapping is indifferent to the choice.
+ * cell gives two triangles that are not inverted, so snapping is indifferent to the choice. This
+ * checkerboard serves counting only (the pattern has parameters, not positions): the rendered
+ * grid ({@code GridPatch}) cuts each cell along its shorter diagonal in 3D, as the uniform
+ * subdivision path cuts its quads, and {@link #zeroAreaTriangles} is the same for either diagonal.
  *
  * <p><b>Exact coordinates.</b> u (i, j) is {@link #uLattice} / {@link #uScale} exactly, with the
  * scale the least common multiple of Ru and the rates of edges 0 and 2 (at most 4096² for rates

@@ -653,7 +653,7 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
                 }
             }
         }
-        GridPatch grid = new GridPatch(nu, nv, xyz, normals, null, 0, 0, 1, 1, GridPatch.DEFAULT_LEAF_SIZE, i0 + j0);
+        GridPatch grid = new GridPatch(nu, nv, xyz, normals, null, 0, 0, 1, 1, GridPatch.DEFAULT_LEAF_SIZE);
         return new GridPiece(grid, xyz, normals, tex);
     }
 

@@ -16,9 +16,9 @@ import lt.spindulys.math.Ray;
 
 /**
  * The grid patch against the brute-force watertight test of every triangle: the same nearest t and cell on
- * bumpy, thin and degenerate grids for every leaf size and both cell parities, the checkerboard of diagonals,
- * watertightness of a closed set of six grids that share bit-identical edge vertices (rays from inside, many aimed
- * exactly at shared edges and vertices), occlusion agreeing with intersection, every watertight crossing of a line
+ * bumpy, jittered, thin and degenerate grids for every leaf size, each cell cut along its shorter diagonal (v0-v2
+ * on a tie) as the uniform subdivision path cuts its quads, watertightness of a closed set of six grids that share
+ * bit-identical edge vertices (rays from inside, many aimed exactly at shared edges and vertices), occlusion agreeing with intersection, every watertight crossing of a line
  * among the visited triangles, the hit's parameters, the byte count, and no allocation per query.
  */
 class GridPatchTest {
@@ -31,10 +31,6 @@ class GridPatchTest {
 
     private static GridPatch grid(int nu, int nv, float[] xyz, int leaf) {
         return new GridPatch(nu, nv, xyz, null, null, 0, 0, 1, 1, leaf);
-    }
-
-    private static GridPatch grid(int nu, int nv, float[] xyz, int leaf, int parity) {
-        return new GridPatch(nu, nv, xyz, null, null, 0, 0, 1, 1, leaf, parity);
     }
 
     /**
@@ -98,46 +94,132 @@ class GridPatchTest {
     @CsvSource({"2, 2, 2", "2, 2, 17", "3, 2, 2", "2, 40, 3", "40, 2, 5", "33, 7, 3", "17, 17, 17", "18, 18, 17",
         "65, 65, 3", "65, 65, 5", "65, 65, 9", "65, 65, 17", "100, 37, 5", "129, 129, 5"})
     void bumpyGridsAgreeWithEveryTriangleTested(int nu, int nv, int leaf) {
-        for (int parity = 0; parity < 2; parity++) {
-            GridPatch g = grid(nu, nv, f(GridTestSurfaces.bumpy(nu, nv)), leaf, parity);
+        for (int jittered = 0; jittered < 2; jittered++) {
+            double[] p = jittered == 0 ? GridTestSurfaces.bumpy(nu, nv) : GridTestSurfaces.jittered(nu, nv);
+            GridPatch g = grid(nu, nv, f(p), leaf);
             assertEquals(2 * (nu - 1) * (nv - 1), g.triangleCount());
-            assertEquals(parity, g.cellParity());
-            randomRays(g, 31 * nu + nv + leaf + 7 * parity, 1500, nu + "x" + nv + "/" + leaf + " parity " + parity);
+            randomRays(g, 31 * nu + nv + leaf + 7 * jittered, 1500, nu + "x" + nv + "/" + leaf + (jittered == 0 ? " smooth" : " jittered"));
         }
     }
 
+    /** The squared distance of vertices a and b, in double from their floats, written apart from the grid's. */
+    private static double dist2(GridPatch g, int a, int b) {
+        double s = 0;
+        for (int ax = 0; ax < 3; ax++) {
+            double d = (double) g.x(a % g.nu(), a / g.nu(), ax) - g.x(b % g.nu(), b / g.nu(), ax);
+            s += d * d;
+        }
+        return s;
+    }
+
     /**
-     * Cell (i, j) is cut along its (i, j)-(i + 1, j + 1) diagonal when i + j + parity is even, else along its
-     * (i + 1, j)-(i, j + 1) one; both triangles counter-clockwise in (i, j), together the cell's four corners, with
-     * the diagonal as their shared edge; the cell indices and the corners' floats follow.
+     * Checks every cell of {@code g}: it is cut along its shorter diagonal by the squared lengths of its floats,
+     * (i, j)-(i + 1, j + 1) on a tie; both triangles are counter-clockwise in (i, j), together the cell's four
+     * corners, with the diagonal as their shared edge; the cell indices and the corners' floats follow. Returns
+     * how many cells are cut along v1-v3.
+     */
+    private static int checkCells(GridPatch g) {
+        int nu = g.nu(), alongV1V3 = 0;
+        for (int s = 0; s < g.triangleCount(); s++) {
+            int i = g.cellI(s), j = g.cellJ(s);
+            assertEquals(s >> 1, j * (nu - 1) + i);
+            int v0 = j * nu + i, v1 = v0 + 1, v2 = v0 + nu + 1, v3 = v0 + nu;
+            double d02 = dist2(g, v0, v2), d13 = dist2(g, v1, v3);
+            boolean along02 = d02 <= d13;
+            assertEquals(along02, g.cutAlongV0V2(i, j), "cell " + i + ", " + j + ": |v0v2|² " + d02 + ", |v1v3|² " + d13);
+            if (!along02 && (s & 1) == 0) alongV1V3++;
+            int a = g.triangleVertex(s, 0), b = g.triangleVertex(s, 1), c = g.triangleVertex(s, 2);
+            int[] want = along02
+                    ? ((s & 1) == 0 ? new int[] {v0, v1, v2} : new int[] {v0, v2, v3})
+                    : ((s & 1) == 0 ? new int[] {v0, v1, v3} : new int[] {v2, v3, v1});
+            assertEquals(java.util.Arrays.toString(want), java.util.Arrays.toString(new int[] {a, b, c}), "triangle " + s);
+            // counter-clockwise in (i, j)
+            long ai = a % nu, aj = a / nu, bi = b % nu, bj = b / nu, ci = c % nu, cj = c / nu;
+            assertEquals(1, (bi - ai) * (cj - aj) - (ci - ai) * (bj - aj), "triangle " + s + " winds counter-clockwise");
+            for (int k = 0; k < 3; k++) {
+                int vk = g.triangleVertex(s, k);
+                for (int ax = 0; ax < 3; ax++) assertEquals(g.x(vk % nu, vk / nu, ax), g.cornerCoordinate(s, k, ax));
+            }
+        }
+        return alongV1V3;
+    }
+
+    /**
+     * On random bumpy grids (smooth, jittered, noisy) every cell is cut along its shorter diagonal, and both
+     * diagonals occur. Against the uniform path's rule on the double positions the grid was rounded from, the two
+     * disagree only where the squared lengths lie within float rounding of each other.
      */
     @Test
-    void cellsAreCutInACheckerboardOfDiagonals() {
-        int nu = 6, nv = 5;
-        float[] p = f(GridTestSurfaces.bumpy(nu, nv));
-        assertEquals(0, grid(nu, nv, p, 3).cellParity(), "the old constructors keep parity 0");
-        assertEquals(0, new GridPatch(nu, nv, GridTestSurfaces.bumpy(nu, nv), null, null, 3).cellParity());
-        for (int given : new int[] {0, 1, 2, 7, -3}) {
-            GridPatch g = grid(nu, nv, p, 3, given);
-            int parity = given & 1;
-            assertEquals(parity, g.cellParity());
-            for (int s = 0; s < g.triangleCount(); s++) {
-                int i = g.cellI(s), j = g.cellJ(s);
-                assertEquals(s >> 1, j * (nu - 1) + i);
-                int v0 = j * nu + i, v1 = v0 + 1, v2 = v0 + nu + 1, v3 = v0 + nu;
-                int a = g.triangleVertex(s, 0), b = g.triangleVertex(s, 1), c = g.triangleVertex(s, 2);
-                int[] want = ((i + j + parity) & 1) == 0
-                        ? ((s & 1) == 0 ? new int[] {v0, v1, v2} : new int[] {v0, v2, v3})
-                        : ((s & 1) == 0 ? new int[] {v0, v1, v3} : new int[] {v2, v3, v1});
-                assertEquals(java.util.Arrays.toString(want), java.util.Arrays.toString(new int[] {a, b, c}), "triangle " + s);
-                // counter-clockwise in (i, j)
-                long ai = a % nu, aj = a / nu, bi = b % nu, bj = b / nu, ci = c % nu, cj = c / nu;
-                assertEquals(1, (bi - ai) * (cj - aj) - (ci - ai) * (bj - aj), "triangle " + s + " winds counter-clockwise");
-                for (int k = 0; k < 3; k++) {
-                    int vk = g.triangleVertex(s, k);
-                    for (int ax = 0; ax < 3; ax++) assertEquals(g.x(vk % nu, vk / nu, ax), g.cornerCoordinate(s, k, ax));
+    void cellsAreCutAlongTheirShorterDiagonal() {
+        Random rnd = new Random(41);
+        int cells = 0, v1v3 = 0, disagree = 0;
+        for (int k = 0; k < 30; k++) {
+            int nu = 2 + rnd.nextInt(40), nv = 2 + rnd.nextInt(40);
+            double[] p = k % 3 == 0 ? GridTestSurfaces.bumpy(nu, nv) : GridTestSurfaces.jittered(nu, nv);
+            if (k % 3 == 2) for (int q = 0; q < p.length; q++) p[q] += 0.3 * rnd.nextGaussian() / Math.max(nu, nv);
+            GridPatch g = grid(nu, nv, f(p), 2 + rnd.nextInt(16));
+            cells += (nu - 1) * (nv - 1);
+            v1v3 += checkCells(g);
+            for (int j = 0; j < nv - 1; j++) for (int i = 0; i < nu - 1; i++) {
+                int v0 = j * nu + i, v2 = v0 + nu + 1;
+                double d02 = dist2(p, v0, v2), d13 = dist2(p, v0 + 1, v0 + nu);
+                if ((d02 <= d13) != g.cutAlongV0V2(i, j)) {
+                    disagree++;
+                    assertTrue(Math.abs(d02 - d13) <= 0x1p-20 * (d02 + d13), "cell " + i + ", " + j + ": " + d02 + " vs " + d13);
                 }
             }
+        }
+        assertTrue(v1v3 > cells / 5 && v1v3 < 4 * cells / 5, v1v3 + " of " + cells + " cells cut along v1-v3");
+        assertTrue(disagree < cells / 1000, disagree + " of " + cells + " cells cut otherwise than their doubles would be");
+        GridPatch g = new GridPatch(6, 5, GridTestSurfaces.jittered(6, 5), null, null, 3);
+        assertThrows(IndexOutOfBoundsException.class, () -> g.cutAlongV0V2(5, 0));
+        assertThrows(IndexOutOfBoundsException.class, () -> g.cutAlongV0V2(0, -1));
+    }
+
+    private static double dist2(double[] p, int a, int b) {
+        double dx = p[3 * a] - p[3 * b], dy = p[3 * a + 1] - p[3 * b + 1], dz = p[3 * a + 2] - p[3 * b + 2];
+        return dx * dx + dy * dy + dz * dz;
+    }
+
+    /** A grid of one cell with corners v0..v3 (x, y, z each). */
+    private static GridPatch cell(float... v) {
+        float[] p = new float[12];
+        System.arraycopy(v, 0, p, 0, 6); // v0, v1: row 0
+        System.arraycopy(v, 9, p, 6, 3); // v3, v2: row 1
+        System.arraycopy(v, 6, p, 9, 3);
+        return grid(2, 2, p, 2);
+    }
+
+    /**
+     * Diagonals of exactly equal length go v0-v2: a flat rectangle, a saddle (v0, v2 raised), a grid of saddles
+     * (every cell a tie); one float step longer, v1-v3; a NaN corner v1-v3, as the uniform path's rule decides.
+     * Rays agree with every triangle tested.
+     */
+    @Test
+    void tiesGoAlongV0V2() {
+        assertTrue(cell(0, 0, 0, 2, 0, 0, 2, 1, 0, 0, 1, 0).cutAlongV0V2(0, 0), "flat rectangle");
+        assertTrue(cell(0, 0, 1, 2, 0, 0, 2, 1, 1, 0, 1, 0).cutAlongV0V2(0, 0), "saddle");
+        assertFalse(cell(0, 0, 1, 2, 0, 0, Math.nextUp(2f), 1, 1, 0, 1, 0).cutAlongV0V2(0, 0), "v0-v2 a float step longer");
+        assertTrue(cell(0, 0, 1, Math.nextUp(2f), 0, 0, 2, 1, 1, 0, 1, 0).cutAlongV0V2(0, 0), "v1-v3 a float step longer");
+        assertFalse(cell(0, 0, 1, 2, 0, 0, 2, 1, 1, 0, 1, Float.NaN).cutAlongV0V2(0, 0), "NaN");
+        for (GridPatch g : new GridPatch[] {cell(0, 0, 1, 2, 0, 0, 2, 1, 1, 0, 1, 0), cell(0, 0, 1, 2, 0, 0, Math.nextUp(2f), 1, 1, 0, 1, 0)}) {
+            checkCells(g);
+            randomRays(g, 3, 300, "one cell");
+        }
+        // every cell a saddle of equal diagonals, and a flat grid of floats i / (n - 1): all v0-v2
+        int nu = 23, nv = 17;
+        float[] saddles = new float[3 * nu * nv];
+        double[] flat = GridTestSurfaces.bumpy(nu, nv);
+        for (int j = 0; j < nv; j++) for (int i = 0; i < nu; i++) {
+            int q = 3 * (j * nu + i);
+            saddles[q] = 0.25f * i;
+            saddles[q + 1] = 0.5f * j;
+            saddles[q + 2] = 0.125f * ((i + j) & 1);
+            flat[q + 2] = 0;
+        }
+        for (GridPatch g : new GridPatch[] {grid(nu, nv, saddles, 3), grid(nu, nv, f(flat), 3)}) {
+            assertEquals(0, checkCells(g));
+            randomRays(g, 5, 1000, "ties");
         }
     }
 
@@ -187,10 +269,13 @@ class GridPatchTest {
 
     // ---- six grids, one closed surface ----
 
-    /** Six faces, of cell parity 0 and 1 in turn, so that both checkerboards meet across the shared edges. */
+    /**
+     * Six faces, their cells cut along either diagonal, both kinds meeting along the shared edges (a shared edge is
+     * a grid edge on both sides, whichever diagonal its cells take).
+     */
     private static GridPatch[] cubeSphere(int n, int leaf) {
         GridPatch[] faces = new GridPatch[6];
-        for (int f = 0; f < 6; f++) faces[f] = grid(n, n, GridTestSurfaces.cubeSphereFace(f, n), leaf, f >> 1);
+        for (int f = 0; f < 6; f++) faces[f] = grid(n, n, GridTestSurfaces.cubeSphereFace(f, n), leaf);
         return faces;
     }
 
@@ -278,7 +363,7 @@ class GridPatchTest {
     }
 
     /**
-     * For random lines (rays over an infinite interval) through random grids of either parity and any leaf size,
+     * For random lines (rays over an infinite interval) through random grids of any leaf size,
      * smooth, noisy and snapped: every triangle the watertight test hits on the line is visited, and no triangle is
      * visited twice. Many lines run through vertices, along the axes and within the grid's plane.
      */
@@ -298,7 +383,7 @@ class GridPatchTest {
                 for (int i = 1; i < nu; i += 2) System.arraycopy(p, 3 * (i - 1), p, 3 * i, 3);
             }
             int[] leaves = {2, 3, 5, 9, 17};
-            GridPatch g = grid(nu, nv, f(p), leaves[rnd.nextInt(leaves.length)], rnd.nextInt(2));
+            GridPatch g = grid(nu, nv, f(p), leaves[rnd.nextInt(leaves.length)]);
             Reference ref = new Reference(g);
             double[] box = new double[6];
             g.bounds(box);
@@ -326,7 +411,7 @@ class GridPatchTest {
                     if (WatertightTriangles.test(ref.tri, ref.pos, null, t, t + 1, ray, null, ctx)) {
                         crossings++;
                         if (visited.count[t] != 1) fail("grid " + grid + " (" + nu + " x " + nv + ", leaves " + g.leafSize()
-                                + ", parity " + g.cellParity() + "): triangle " + t + " is crossed but not visited: " + ray);
+                                + "): triangle " + t + " is crossed but not visited: " + ray);
                     }
                 }
                 if (visited.calls == g.triangleCount() && g.nodeCount() > 0) skipped++; // nothing culled
@@ -339,8 +424,8 @@ class GridPatchTest {
     /** A visitor may run a traversal of its own on the same scratch (a nested grid): the outer one carries on. */
     @Test
     void aVisitorMayTraverseWithTheSameScratch() {
-        GridPatch outer = grid(65, 65, f(GridTestSurfaces.bumpy(65, 65)), 3, 1);
-        GridPatch inner = grid(129, 129, f(GridTestSurfaces.bumpy(129, 129)), 2, 0);
+        GridPatch outer = grid(65, 65, f(GridTestSurfaces.jittered(65, 65)), 3);
+        GridPatch inner = grid(129, 129, f(GridTestSurfaces.bumpy(129, 129)), 2);
         TraversalScratch ctx = new TraversalScratch();
         ctx.stackTop = 4;
         Visited alone = new Visited(), nested = new Visited();
@@ -373,19 +458,22 @@ class GridPatchTest {
     @Test
     void parametersAreInterpolatedFromTheCellAndNormalsFromTheVertices() {
         int nu = 11, nv = 6;
+        // x and y linear in the indices, so that (x, y) is the parameter point whatever z does; z bumpy, so that
+        // cells of both diagonals are hit
         double[] p = GridTestSurfaces.bumpy(nu, nv);
-        for (int k = 2; k < p.length; k += 3) p[k] = 0; // flat: (x, y) is the parameter point
         float[] normals = new float[3 * nu * nv];
         for (int k = 0; k < normals.length; k += 3) { normals[k] = (float) p[k]; normals[k + 2] = 1; }
         TraversalScratch ctx = new TraversalScratch();
         PrimitiveHit h = new PrimitiveHit();
         double[] uv = new double[2], n = new double[3];
         Random rnd = new Random(3);
+        GridPatch g = new GridPatch(nu, nv, f(p), normals, null, 0.5, 0.25, 1, 0.75, 3);
+        int[] hitsAlong = new int[2];
         for (int k = 0; k < 1000; k++) {
-            GridPatch g = new GridPatch(nu, nv, f(p), normals, null, 0.5, 0.25, 1, 0.75, 3, k & 1);
             double x = rnd.nextDouble(), y = rnd.nextDouble();
             Ray ray = new Ray().set(x, y, 1, 0.1 * rnd.nextGaussian(), 0.1 * rnd.nextGaussian(), -1, 0, Double.POSITIVE_INFINITY);
             if (!g.intersect(ray, h, ctx)) continue;
+            hitsAlong[g.cutAlongV0V2(g.cellI(h.sub), g.cellJ(h.sub)) ? 0 : 1]++;
             double hx = ray.pointX(h.t), hy = ray.pointY(h.t);
             assertEquals(g.cellI(h.sub), Math.min(nu - 2, (int) (hx * (nu - 1))), 1, "cell column");
             g.parameters(h.sub, h.u, h.v, uv);
@@ -395,6 +483,7 @@ class GridPatchTest {
             assertEquals(hx, n[0], 1e-6);
             assertEquals(1, n[2], 1e-6);
         }
+        assertTrue(hitsAlong[0] > 100 && hitsAlong[1] > 100, hitsAlong[0] + " hits in cells cut along v0-v2, " + hitsAlong[1] + " along v1-v3");
         // explicit parameters win over the linear ones
         float[] given = new float[2 * nu * nv];
         for (int v = 0; v < nu * nv; v++) { given[2 * v] = (float) (p[3 * v] * p[3 * v]); given[2 * v + 1] = (float) p[3 * v + 1]; }
@@ -411,10 +500,11 @@ class GridPatchTest {
     void bytesFollowTheDocumentedFormula() {
         GridPatch one = grid(5, 5, f(GridTestSurfaces.bumpy(5, 5)), 5);
         assertEquals(0, one.nodeCount());
-        assertEquals(128 + 16 + 304 + 16, one.bytes(), "one leaf: positions (75 floats, 300 bytes rounded to 304) and an empty node array");
+        assertEquals(128 + 16 + 304 + 16 + 24, one.bytes(),
+                "one leaf: positions (75 floats, 300 bytes rounded to 304), an empty node array and one long of diagonal bits");
         GridPatch g = grid(65, 65, f(GridTestSurfaces.bumpy(65, 65)), 5);
         assertTrue(g.nodeCount() > 0);
-        assertEquals(128 + 16 + up8(12L * 65 * 65) + 16 + 288L * g.nodeCount(), g.bytes());
+        assertEquals(128 + 16 + up8(12L * 65 * 65) + 16 + 288L * g.nodeCount() + 16 + 8 * 64, g.bytes(), "64 x 64 cells: 64 longs of bits");
         float[] n = new float[3 * 65 * 65], uv = new float[2 * 65 * 65];
         GridPatch full = new GridPatch(65, 65, f(GridTestSurfaces.bumpy(65, 65)), n, uv, 0, 0, 1, 1, 5);
         assertEquals(g.bytes() + 16 + up8(12L * 65 * 65) + 16 + 8L * 65 * 65, full.bytes());
@@ -445,7 +535,7 @@ class GridPatchTest {
 
     @Test
     void steadyStateQueriesAllocateNothing() {
-        GridPatch g = grid(129, 129, f(GridTestSurfaces.bumpy(129, 129)), GridPatch.DEFAULT_LEAF_SIZE, 1);
+        GridPatch g = grid(129, 129, f(GridTestSurfaces.jittered(129, 129)), GridPatch.DEFAULT_LEAF_SIZE);
         int[] visits = new int[1];
         GridTriangleVisitor counter = (grid, sub, ray, c) -> visits[0]++;
         TraversalScratch ctx = new TraversalScratch();

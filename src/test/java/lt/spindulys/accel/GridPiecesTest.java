@@ -13,7 +13,8 @@ import lt.spindulys.math.Ray;
 
 /**
  * A face's grid cut into pieces: the pieces tile the grid, sharing their boundary rows and columns, each at most
- * the given size; built pieces hold bit-identical shared vertices, answer every ray as the whole grid does, give
+ * the given size; built pieces hold bit-identical shared vertices and the whole grid's triangles (each cell cut
+ * along the same diagonal), answer every ray as the whole grid does, give
  * face parameters, and lie inside the bound supplied before building.
  */
 class GridPiecesTest {
@@ -29,6 +30,15 @@ class GridPiecesTest {
                     xyz[q + 1] = y;
                     xyz[q + 2] = GridTestSurfaces.bump(x, y);
                 }
+            }
+        };
+    }
+
+    /** {@link GridTestSurfaces#jittered} of a face of nu x nv vertices, as a source. */
+    private static GridPieces.Source jitteredSource(int faceNu, int faceNv) {
+        return (i0, j0, nu, nv, xyz) -> {
+            for (int b = 0; b < nv; b++) {
+                for (int a = 0; a < nu; a++) GridTestSurfaces.jitteredVertex(i0 + a, j0 + b, faceNu, faceNv, xyz, 3 * (b * nu + a));
             }
         };
     }
@@ -58,23 +68,29 @@ class GridPiecesTest {
         }
     }
 
-    /** 65: pieces starting at even columns and rows; 51: some at odd ones, whose first cell is cut the other way. */
-    @ParameterizedTest(name = "{0} x {0}")
-    @CsvSource({"65", "51"})
-    void builtPiecesAnswerEveryRayAsTheWholeGrid(int n) {
+    /**
+     * 65: pieces starting at even columns and rows; 51: some at odd ones. Each cell takes its diagonal from its own
+     * four vertices, so a piece cuts it as the whole grid does wherever the piece starts, on smooth and jittered
+     * faces alike.
+     */
+    @ParameterizedTest(name = "{0} x {0}, jittered {1}")
+    @CsvSource({"65, false", "51, false", "65, true", "51, true"})
+    void builtPiecesAnswerEveryRayAsTheWholeGrid(int n, boolean jittered) {
         GridPieces pieces = new GridPieces(n, n, 17);
-        GridPieces.Source source = bumpySource(n, n);
+        GridPieces.Source source = jittered ? jitteredSource(n, n) : bumpySource(n, n);
         GridPatch[] built = new GridPatch[pieces.count()];
         for (int k = 0; k < built.length; k++) built[k] = pieces.build(k, source, 5);
         assertEquals(16, built.length);
-        GridPatch whole = new GridPatch(n, n, GridTestSurfaces.bumpy(n, n), null, null, 5);
+        GridPatch whole = new GridPatch(n, n, jittered ? GridTestSurfaces.jittered(n, n) : GridTestSurfaces.bumpy(n, n), null, null, 5);
         // the pieces hold exactly the whole grid's triangles, corner for corner
         boolean odd = false;
+        int alongV1V3 = 0;
         for (int k = 0; k < built.length; k++) {
             GridPatch g = built[k];
             int i0 = pieces.i0(k), j0 = pieces.j0(k);
             odd |= ((i0 + j0) & 1) == 1;
             for (int s = 0; s < g.triangleCount(); s++) {
+                if ((s & 1) == 0 && !g.cutAlongV0V2(g.cellI(s), g.cellJ(s))) alongV1V3++;
                 int ws = 2 * ((j0 + g.cellJ(s)) * (n - 1) + i0 + g.cellI(s)) + (s & 1);
                 for (int c = 0; c < 3; c++) {
                     int v = g.triangleVertex(s, c), w = whole.triangleVertex(ws, c);
@@ -83,6 +99,8 @@ class GridPiecesTest {
             }
         }
         assertEquals(n == 51, odd, "some piece starts at an odd i0 + j0");
+        int cells = (n - 1) * (n - 1);
+        assertTrue(alongV1V3 > cells / 5 && alongV1V3 < 4 * cells / 5, alongV1V3 + " of " + cells + " cells cut along v1-v3");
         // neighbours hold the same floats on their shared column and row
         for (int k = 0; k < built.length; k++) {
             if (k % pieces.columns() > 0) {
@@ -97,14 +115,14 @@ class GridPiecesTest {
         Ray ray = new Ray();
         int hits = 0;
         for (int r = 0; r < 4000; r++) {
-            double tx = rnd.nextDouble(), ty = rnd.nextDouble();
+            double tx = rnd.nextDouble(), ty = rnd.nextDouble(), tz = GridTestSurfaces.bump(tx, ty);
             if (r % 3 == 0) { // at a vertex on a piece boundary
                 int c = rnd.nextInt(pieces.columns() + 1);
                 int i = c == pieces.columns() ? n - 1 : pieces.i0(c), j = rnd.nextInt(n);
-                tx = whole.x(i, j, 0); ty = whole.x(i, j, 1);
+                tx = whole.x(i, j, 0); ty = whole.x(i, j, 1); tz = whole.x(i, j, 2);
             }
             double ox = tx + 0.5 * rnd.nextGaussian(), oy = ty + 0.5 * rnd.nextGaussian(), oz = 1 + rnd.nextDouble();
-            ray.set(ox, oy, oz, tx - ox, ty - oy, GridTestSurfaces.bump(tx, ty) - oz, 0, Double.POSITIVE_INFINITY);
+            ray.set(ox, oy, oz, tx - ox, ty - oy, tz - oz, 0, Double.POSITIVE_INFINITY);
             boolean hw = whole.intersect(ray, w, ctx);
             double best = Double.POSITIVE_INFINITY;
             int bestPiece = -1, bestSub = -1;

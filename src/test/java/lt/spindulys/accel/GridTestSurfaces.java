@@ -3,7 +3,7 @@ package lt.spindulys.accel;
 import lt.spindulys.math.Ray;
 
 /**
- * Grids for the grid patch tests and benchmark: a bumpy height field, a closed cube-sphere of six grids whose
+ * Grids for the grid patch tests and benchmark: a bumpy height field (smooth or jittered), a closed cube-sphere of six grids whose
  * shared edges hold bit-identical vertices, and the brute-force reference (every triangle through
  * {@link WatertightTriangles}, on the same float values widened to double).
  */
@@ -23,6 +23,35 @@ final class GridTestSurfaces {
             }
         }
         return p;
+    }
+
+    /**
+     * {@link #bumpy} with every vertex moved by up to a fifth of a cell in x and y and by up to 0.02 in z, by a hash
+     * of its face indices (i, j) alone (so that pieces of one face agree on their shared vertices): cells of every
+     * shape, cut along either diagonal about equally often.
+     */
+    static double[] jittered(int nu, int nv) {
+        double[] p = new double[3 * nu * nv];
+        for (int j = 0; j < nv; j++) {
+            for (int i = 0; i < nu; i++) jitteredVertex(i, j, nu, nv, p, 3 * (j * nu + i));
+        }
+        return p;
+    }
+
+    /** Vertex (i, j) of {@link #jittered}(nu, nv) into out[o..o+2]. */
+    static void jitteredVertex(int i, int j, int nu, int nv, double[] out, int o) {
+        double x = (double) i / (nu - 1), y = (double) j / (nv - 1);
+        out[o] = x + 0.2 * jitter(i, j, 0) / (nu - 1);
+        out[o + 1] = y + 0.2 * jitter(i, j, 1) / (nv - 1);
+        out[o + 2] = bump(x, y) + 0.02 * jitter(i, j, 2);
+    }
+
+    /** A number in [-1, 1) from a hash of (i, j, axis). */
+    private static double jitter(int i, int j, int axis) {
+        long h = (i * 0x9E3779B97F4A7C15L) ^ (j * 0xC2B2AE3D27D4EB4FL) ^ (axis * 0x165667B19E3779F9L);
+        h = (h ^ (h >>> 31)) * 0xBF58476D1CE4E5B9L;
+        h ^= h >>> 29;
+        return (h >>> 11) * 0x1p-52 - 1;
     }
 
     static double bump(double x, double y) {

@@ -196,4 +196,34 @@ class GridPatternTest {
             }
         }
     }
+
+    /**
+     * The rendered grid cuts each cell along its shorter diagonal in 3D, not by this checkerboard, so the
+     * zero-area count must not depend on the diagonal: for every rate set up to 12 per edge, every cell has as
+     * many zero-area triangles (exactly, in the lattice) cut along v0-v2 as along v1-v3.
+     */
+    @Test
+    void everyCellHasAsManyZeroAreaTrianglesForEitherDiagonal() {
+        int[][][] cuts = {{{0, 1, 2}, {0, 2, 3}}, {{0, 1, 3}, {2, 3, 1}}};
+        long[][] p = new long[4][2];
+        for (int r0 = 1; r0 <= 12; r0++) for (int r1 = 1; r1 <= 12; r1++) for (int r2 = 1; r2 <= 12; r2++) for (int r3 = 1; r3 <= 12; r3++) {
+            GridPattern g = new GridPattern(r0, r1, r2, r3);
+            int total = 0;
+            for (int j = 0; j < g.rows(); j++) for (int i = 0; i < g.columns(); i++) {
+                int[] ij = {i, j, i + 1, j, i + 1, j + 1, i, j + 1};
+                for (int k = 0; k < 4; k++) {
+                    p[k][0] = g.uLattice(ij[2 * k], ij[2 * k + 1]);
+                    p[k][1] = g.vLattice(ij[2 * k], ij[2 * k + 1]);
+                }
+                int[] zero = new int[2];
+                for (int d = 0; d < 2; d++) for (int[] t : cuts[d]) {
+                    long[] a = p[t[0]], b = p[t[1]], c = p[t[2]];
+                    if ((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]) == 0) zero[d]++;
+                }
+                assertEquals(zero[0], zero[1], g + ": cell " + i + ", " + j);
+                total += zero[0];
+            }
+            assertEquals(g.zeroAreaTriangles(), total, g.toString());
+        }
+    }
 }
