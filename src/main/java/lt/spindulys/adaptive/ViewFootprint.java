@@ -313,7 +313,8 @@ public final class ViewFootprint {
         // A flat film: the visible part's exact length in pixels, spread over the whole edge (its
         // segments are even in the edge's parameter), never above the bound.
         double p0x = wx + t0 * dx, p0y = wy + t0 * dy, p0z = wz + t0 * dz, p1x = wx + t1 * dx, p1y = wy + t1 * dy, p1z = wz + t1 * dz;
-        double z0 = p0x * ax + p0y * ay + p0z * az, z1 = p1x * ax + p1y * ay + p1z * az;
+        // this.a*: the view axis (the parameters a* are the first end).
+        double z0 = p0x * this.ax + p0y * this.ay + p0z * this.az, z1 = p1x * this.ax + p1y * this.ay + p1z * this.az;
         if (!(z0 > 0 && z1 > 0)) return bound;
         double[] f = film;
         double du = (p1x * f[0] + p1y * f[1] + p1z * f[2]) / z1 - (p0x * f[0] + p0y * f[1] + p0z * f[2]) / z0;
