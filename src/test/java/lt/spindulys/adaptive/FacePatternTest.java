@@ -148,7 +148,7 @@ class FacePatternTest {
     void aLongNarrowFaceGetsItsOwnResolutionNotAPowerOfTwoSquare() {
         ViewFootprint v = ViewFootprint.of(PINHOLE, W, H);
         // A rectangle facing the camera at the image centre, 10 units away, about 68 x 19 pixels.
-        double perUnit = v.pixels(1, 2, -7, 2, 2, -7, 4);
+        double perUnit = v.subtendedPixels(1, 2, -7, 2, 2, -7, 4);
         double hw = 67.5 / perUnit / 2, hh = 18.6 / perUnit / 2;
         double[] pos = {1 - hw, 2 - hh, -7, 1 + hw, 2 - hh, -7, 1 + hw, 2 + hh, -7, 1 - hw, 2 + hh, -7};
         int[] ev = {0, 1, 1, 2, 2, 3, 3, 0};
