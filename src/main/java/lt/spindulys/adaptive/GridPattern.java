@@ -28,14 +28,13 @@ package lt.spindulys.adaptive;
  * inverted ({@link #orientation}).
  *
  * <p><b>Triangles.</b> Cell (i, j), 0 &le; i &lt; Ru, 0 &le; j &lt; Rv, with corners v0 = (i, j),
- * v1 = (i + 1, j), v2 = (i + 1, j + 1), v3 = (i, j + 1), c = j Ru + i, is split in a
- * checkerboard, so that at rate 2^L the triangles are exactly those of uniform subdivision at
- * level L (whose child quads are fanned from their corner 0): when i + j is even along its v0-v2
+ * v1 = (i + 1, j), v2 = (i + 1, j + 1), v3 = (i, j + 1), c = j Ru + i, is split here in a
+ * checkerboard (the pattern has parameters, not positions): when i + j is even along its v0-v2
  * diagonal into triangles 2c = (v0, v1, v2) and 2c + 1 = (v0, v2, v3), when i + j is odd along its
  * v1-v3 diagonal into 2c = (v0, v1, v3) and 2c + 1 = (v2, v3, v1). All are counter-clockwise in
  * (u, v), and numbered as {@code GridPatch} numbers its triangles. Either diagonal of a convex
- * cell gives two triangles that are not inverted, so snapping is indifferent to the choice. This
- * checkerboard serves counting only (the pattern has parameters, not positions): the rendered
+ * cell gives two triangles that are not inverted, so snapping is indifferent to the choice. The
+ * checkerboard serves counting only: the rendered
  * grid ({@code GridPatch}) cuts each cell along its shorter diagonal in 3D, as the uniform
  * subdivision path cuts its quads, and {@link #zeroAreaTriangles} is the same for either diagonal.
  *
