@@ -197,30 +197,28 @@ class GridTessellationTest {
     // ---- at a fixed level: the uniform limit surface ----
 
     /**
-     * Shapes at a fixed level, and whether their triangles are the uniform surface's exactly. A
-     * Loop triangle's grid has one triangulation; a quad's grid cuts every cell along the same
-     * diagonal (GridPatch's implicit topology), while the uniform surface cuts each refined quad
-     * along its shorter one, so on a curved quad surface half the cells differ in their diagonal
-     * and the depth differs by the cells' bulge: there only the vertices and the quads are compared
-     * ({@link #fixedLevelGridsHaveTheUniformLimitSurfacesVerticesAndQuads}). Levels are at least
+     * Shapes at a fixed level, and whether their triangles are the uniform surface's exactly: a
+     * Loop triangle's grid has one triangulation, and a quad's grid cuts each cell along its
+     * shorter diagonal as the uniform surface cuts its refined quads (from the float vertices, the
+     * uniform surface from the doubles: a near-tie may fall either way, a pixel or two). Levels are at least
      * the largest semi-sharp crease's sharpness: until a crease has decayed, the uniform limit
      * positions follow its sharpness at that level, and the grids the true limit.
      */
     static Stream<Arguments> fixedLevels() {
         return Stream.of(
-                Arguments.of("cube.dat", 1, "", false),                       // closed quads, valence-3 corners
-                Arguments.of("cube.dat", 2, "", false),
-                Arguments.of("cube.dat", 3, "", false),
-                Arguments.of("dodecahedron.dat", 2, "", false),               // pentagons: sub-face grids
-                Arguments.of("house.dat", 2, "", false),                      // pentagons and quads
-                Arguments.of("bowl.dat", 2, "", false),                       // open: a boundary rim
-                Arguments.of("crease-cube.obj", 3, "", false),                // sharp and semi-sharp creases, a sharp corner
+                Arguments.of("cube.dat", 1, "", true),                       // closed quads, valence-3 corners
+                Arguments.of("cube.dat", 2, "", true),
+                Arguments.of("cube.dat", 3, "", true),
+                Arguments.of("dodecahedron.dat", 2, "", true),               // pentagons: sub-face grids
+                Arguments.of("house.dat", 2, "", true),                      // pentagons and quads
+                Arguments.of("bowl.dat", 2, "", true),                       // open: a boundary rim
+                Arguments.of("crease-cube.obj", 3, "", true),                // sharp and semi-sharp creases, a sharp corner
                 Arguments.of("catmark_cube_creases2", 2, "", true),           // infinitely sharp: flat faces, either diagonal
-                Arguments.of("catmark_nonquads", 2, "", false),               // n-gons and triangles, open
+                Arguments.of("catmark_nonquads", 2, "", true),               // n-gons and triangles, open
                 Arguments.of("loop_icosahedron.obj", 1, "scheme loop", true),
                 Arguments.of("loop_icosahedron.obj", 3, "scheme loop", true),
                 Arguments.of("cube.dat", 2, "scheme bilinear", true),         // planar quads: either diagonal
-                Arguments.of("bilinear_nonquads1", 2, "scheme bilinear", false));
+                Arguments.of("bilinear_nonquads1", 2, "scheme bilinear", true));
     }
 
     /**
