@@ -376,18 +376,9 @@ final class AdaptiveTessellation implements SurfaceTessellation, PrimitiveSet, P
     private void pinWithinBudget(BuildShared shared) {
         pinned = new PatchTriangles[faces.length];
         long[] cost = new long[faces.length];
-        Integer[] order = new Integer[faces.length];
-        for (int i = 0; i < faces.length; i++) {
-            cost[i] = patchCost(faces[i]);
-            order[i] = i;
-        }
-        Arrays.sort(order, (a, b) -> cost[a] != cost[b] ? Long.compare(cost[a], cost[b]) : Integer.compare(a, b));
-        int take = 0;
-        long sum = 0;
-        while (take < order.length && HeapBudget.sum(sum, cost[order[take]]) <= shared.eagerLeft()) sum += cost[order[take++]];
-        if (take == 0 || !HeapBudget.fits(sum) || !shared.takeEager(sum)) return;
-        int[] chosen = new int[take];
-        for (int k = 0; k < take; k++) chosen[k] = order[k];
+        for (int i = 0; i < faces.length; i++) cost[i] = patchCost(faces[i]);
+        int[] chosen = shared.takeCheapest(cost);
+        int take = chosen.length;
         IntStream.range(0, take).parallel().forEach(k -> {
             int i = chosen[k];
             PatchTriangles p = (PatchTriangles) build(i);

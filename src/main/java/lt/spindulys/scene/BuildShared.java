@@ -109,6 +109,27 @@ final class BuildShared {
         return true;
     }
 
+    /**
+     * The combined method's choice: the cheapest of the items (by {@code cost}, ties by index)
+     * while their sum fits in the eager budget left, taken from it.
+     *
+     * @return the chosen items' indices, or an empty array when none fits
+     */
+    synchronized int[] takeCheapest(long[] cost) {
+        budget();
+        Integer[] order = new Integer[cost.length];
+        for (int i = 0; i < cost.length; i++) order[i] = i;
+        java.util.Arrays.sort(order, (a, b) -> cost[a] != cost[b] ? Long.compare(cost[a], cost[b]) : Integer.compare(a, b));
+        int take = 0;
+        long sum = 0;
+        while (take < order.length && HeapBudget.sum(sum, cost[order[take]]) <= eagerLeft) sum += cost[order[take++]];
+        if (take == 0 || !HeapBudget.fits(sum)) return new int[0];
+        eagerLeft -= sum;
+        int[] chosen = new int[take];
+        for (int k = 0; k < take; k++) chosen[k] = order[k];
+        return chosen;
+    }
+
     /** Heap left for eager tessellation. */
     synchronized long eagerLeft() {
         budget();

@@ -572,18 +572,9 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
     private void pinWithinBudget(BuildShared shared) {
         pinned = new TessellationPiece[pieceCount];
         long[] cost = new long[pieceCount];
-        Integer[] order = new Integer[pieceCount];
-        for (int p = 0; p < pieceCount; p++) {
-            cost[p] = pieceBytes(p);
-            order[p] = p;
-        }
-        Arrays.sort(order, (a, b) -> cost[a] != cost[b] ? Long.compare(cost[a], cost[b]) : Integer.compare(a, b));
-        int take = 0;
-        long sum = 0;
-        while (take < order.length && HeapBudget.sum(sum, cost[order[take]]) <= shared.eagerLeft()) sum += cost[order[take++]];
-        if (take == 0 || !HeapBudget.fits(sum) || !shared.takeEager(sum)) return;
-        int[] chosen = new int[take];
-        for (int k = 0; k < take; k++) chosen[k] = order[k];
+        for (int p = 0; p < pieceCount; p++) cost[p] = pieceBytes(p);
+        int[] chosen = shared.takeCheapest(cost);
+        int take = chosen.length;
         Arrays.sort(chosen);
         IntStream.range(0, take).parallel().forEach(k -> pinned[chosen[k]] = (TessellationPiece) build(chosen[k]));
         for (int k = 0; k < take; k++) pinnedBytes += pinned[chosen[k]].bytes();
