@@ -268,6 +268,16 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
             }
         }
         int grids = firstGrid[n];
+        long pieceTotal = 0;
+        for (int i = 0; i < n && !loop; i++) {
+            for (int k = 0; k < quadPattern[i].subFaceCount(); k++) {
+                GridPattern p = quadPattern[i].subFace(k);
+                pieceTotal += (long) ceilDiv(p.columns(), PIECE_SIDE - 1) * ceilDiv(p.rows(), PIECE_SIDE - 1);
+            }
+        }
+        if (loop) pieceTotal = n;
+        // Per grid and per piece: their indices, boxes, slots in the cache and pinned references.
+        HeapBudget.require(HeapBudget.sum(HeapBudget.product(grids, 64), HeapBudget.product(pieceTotal, 64)), "the " + pieceTotal + " grid pieces of " + name);
         gridFace = new int[grids];
         gridSub = new int[grids];
         firstPiece = new int[grids + 1];
@@ -289,6 +299,8 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
         pieceGrid = new int[pieceCount];
         for (int g = 0; g < grids; g++) Arrays.fill(pieceGrid, firstPiece[g], firstPiece[g + 1], g);
     }
+
+    private static int ceilDiv(int a, int b) { return (a + b - 1) / b; }
 
     // ------------------------------------------------------------------ shared points
 
