@@ -36,7 +36,8 @@ import lt.spindulys.subdiv.PatchRefiner;
  * behind, and "does not fit" is what a user with that heap would see. Two heap figures are read:
  * the heap pools' peak (what {@code --stats} prints: everything the collector let accumulate,
  * garbage included) and the largest heap left live after a collection (from the child's GC log:
- * the retained data, the fairer figure for comparing methods). The cages are generated here, in a
+ * the retained data, the fairer figure for comparing methods). A third, the process's peak
+ * resident memory ({@code --stats}' memory line, Linux only), is what the peers' figures compare. The cages are generated here, in a
  * scratch folder, from fixed formulas, so the rows do not depend on any scene file.
  */
 final class AdaptiveBench {
@@ -78,7 +79,7 @@ final class AdaptiveBench {
 
     /** One child run: what came out. {@code failure} is null on success. */
     record Cell(Spec spec, String failure, double wall, double load, double build, double render, long rays,
-                double peakHeapMiB, double liveHeapMiB, String subdivLine, boolean becameCombined,
+                double peakHeapMiB, double liveHeapMiB, double peakRssMiB, String subdivLine, boolean becameCombined,
                 long hits, long misses, long evictions, String cachePeak) {
         double hitRate() { return hits + misses == 0 ? Double.NaN : hits / (double) (hits + misses); }
     }
@@ -177,7 +178,8 @@ final class AdaptiveBench {
 
     private static final Pattern LOAD = Pattern.compile("(?m)^load:\\s+([0-9.]+) s"), BUILD = Pattern.compile("(?m)^build:\\s+([0-9.]+) s"),
             RENDER = Pattern.compile("(?m)^render:\\s+([0-9.]+) s"), RAYS = Pattern.compile("(?m)^rays:\\s+(\\d+) camera, (\\d+) shadow"),
-            HEAP = Pattern.compile("(?m)^heap:\\s+([0-9.]+) MiB peak"), SUBDIV = Pattern.compile("(?m)^subdiv .*$"),
+            HEAP = Pattern.compile("(?m)^heap:\\s+([0-9.]+) MiB peak"), RSS = Pattern.compile("(?m)^memory:\\s+([0-9.]+) MiB peak resident"),
+            SUBDIV = Pattern.compile("(?m)^subdiv .*$"),
             PATCHES = Pattern.compile("patches (\\d+) built, (\\d+) hits, (\\d+) misses, (\\d+) evictions"),
             CACHE_PEAK = Pattern.compile("evictions[^;]*?, peak ([0-9.]+ [KMGT]?i?B|[0-9]+ bytes)"),
             GC = Pattern.compile("(\\d+)([KMG])->(\\d+)([KMG])\\(");
@@ -230,13 +232,13 @@ final class AdaptiveBench {
         boolean patches = pm.find();
         Matcher rays = RAYS.matcher(text);
         long nRays = rays.find() ? Long.parseLong(rays.group(1)) + Long.parseLong(rays.group(2)) : 0;
-        return new Cell(s, null, wall, num(LOAD, text), num(BUILD, text), num(RENDER, text), nRays, num(HEAP, text), live, subdiv,
+        return new Cell(s, null, wall, num(LOAD, text), num(BUILD, text), num(RENDER, text), nRays, num(HEAP, text), live, num(RSS, text), subdiv,
                 subdiv.contains("as combined"), patches ? Long.parseLong(pm.group(2)) : 0, patches ? Long.parseLong(pm.group(3)) : 0,
                 patches ? Long.parseLong(pm.group(4)) : 0, cp.find() ? cp.group(1) : "-");
     }
 
     private static Cell failed(Spec s, String why, double wall, double live) {
-        return new Cell(s, why, wall, Double.NaN, Double.NaN, Double.NaN, 0, Double.NaN, live, "", false, 0, 0, 0, "-");
+        return new Cell(s, why, wall, Double.NaN, Double.NaN, Double.NaN, 0, Double.NaN, live, Double.NaN, "", false, 0, 0, 0, "-");
     }
 
     private static double num(Pattern p, String text) {
@@ -318,7 +320,7 @@ final class AdaptiveBench {
                 scene.equals("close") ? CLOSE_RING * CLOSE_TUBE + "-quad torus cage" : HUGE_CELLS * HUGE_CELLS + "-quad hills cage",
                 view.name(), heapMiB);
         BenchTable t = new BenchTable("size", "face levels", "fine quads", "eager patches", "method", "wall s", "build s", "render s",
-                "peak heap MiB", "live heap MiB", "hit rate", "note");
+                "peak heap MiB", "live heap MiB", "peak RSS MiB", "hit rate", "note");
         for (int[] size : TABLE_SIZES) {
             Need n = need(scene, view, size[0], size[1]);
             out.printf(Locale.ROOT, "    %s %dx%d: face levels %s, %,d fine quads, eager patches %s%n", scene, size[0], size[1], n.levels(), n.quads(),
@@ -332,10 +334,10 @@ final class AdaptiveBench {
                         m.equals("projected") ? String.format(Locale.ROOT, "%,d", n.quads()) : "",
                         m.equals("projected") ? HeapBudget.format(n.patchBytes()) : "", m,
                         fmt(c.wall(), 2), fmt(c.build(), 2), fmt(c.render(), 2), fmt(c.peakHeapMiB(), 0), fmt(c.liveHeapMiB(), 0),
-                        Double.isNaN(c.hitRate()) ? "-" : fmt(100 * c.hitRate(), 1) + " %", note);
+                        fmt(c.peakRssMiB(), 0), Double.isNaN(c.hitRate()) ? "-" : fmt(100 * c.hitRate(), 1) + " %", note);
                 out.printf(Locale.ROOT, "    %s: %s%n", c.spec().label(), c.failure() != null ? c.failure()
-                        : String.format(Locale.ROOT, "wall %.2f s, render %.2f s, peak heap %.0f MiB, live %.0f MiB; %s", c.wall(), c.render(),
-                        c.peakHeapMiB(), c.liveHeapMiB(), c.subdivLine()));
+                        : String.format(Locale.ROOT, "wall %.2f s, render %.2f s, peak heap %.0f MiB, live %.0f MiB, peak RSS %.0f MiB; %s", c.wall(),
+                        c.render(), c.peakHeapMiB(), c.liveHeapMiB(), c.peakRssMiB(), c.subdivLine()));
             }
         }
         t.print(out);
@@ -355,7 +357,8 @@ final class AdaptiveBench {
      */
     void lazyVsEager() throws IOException {
         BenchTable t = new BenchTable("view", "face levels", "eager render s", "lazy render s", "speed lazy/eager", "eager cold wall s",
-                "lazy cold wall s", "eager peak/live MiB", "lazy peak/live MiB", "heap eager/lazy (peak, live)", "lazy hit rate");
+                "lazy cold wall s", "eager peak/live MiB", "lazy peak/live MiB", "heap eager/lazy (peak, live)", "peak RSS MiB eager/lazy",
+                "lazy hit rate");
         for (View v : List.of(CLOSE_FRONT, CLOSE_GRAZING)) {
             Need n = need("close", v, PAIR_WIDTH, PAIR_HEIGHT);
             Path eagerScene = dir.resolve("eager-" + v.name() + ".dat"), lazyScene = dir.resolve("lazy-" + v.name() + ".dat");
@@ -390,24 +393,26 @@ final class AdaptiveBench {
             Cell l = run(new Spec("close", v, "lazy", PAIR_WIDTH, PAIR_HEIGHT, 64, false, CLOSE_HEAP_MIB));
             for (Cell c : List.of(e, l)) {
                 out.printf(Locale.ROOT, "    %s: %s%n", c.spec().label(), c.failure() != null ? c.failure()
-                        : String.format(Locale.ROOT, "wall %.2f s, render %.2f s, peak heap %.0f MiB, live %.0f MiB; %s", c.wall(), c.render(),
-                        c.peakHeapMiB(), c.liveHeapMiB(), c.subdivLine()));
+                        : String.format(Locale.ROOT, "wall %.2f s, render %.2f s, peak heap %.0f MiB, live %.0f MiB, peak RSS %.0f MiB; %s", c.wall(),
+                        c.render(), c.peakHeapMiB(), c.liveHeapMiB(), c.peakRssMiB(), c.subdivLine()));
             }
             t.add(v.name(), n.levels(), fmt(median(er), 3), fmt(median(lr), 3), fmt(median(speed), 2) + "x", fmt(e.wall(), 2), fmt(l.wall(), 2),
                     fmt(e.peakHeapMiB(), 0) + " / " + fmt(e.liveHeapMiB(), 0), fmt(l.peakHeapMiB(), 0) + " / " + fmt(l.liveHeapMiB(), 0),
                     fmt(e.peakHeapMiB() / l.peakHeapMiB(), 1) + "x, " + fmt(e.liveHeapMiB() / l.liveHeapMiB(), 1) + "x",
+                    fmt(e.peakRssMiB(), 0) + " / " + fmt(l.peakRssMiB(), 0),
                     Double.isNaN(l.hitRate()) ? "-" : fmt(100 * l.hitRate(), 2) + " %");
         }
         t.print(out);
         out.printf(Locale.ROOT, "  close scene at %dx%d, target 1 px (both methods choose the same levels from the same view). Render s: in this JVM%n", PAIR_WIDTH, PAIR_HEIGHT);
         out.printf(Locale.ROOT, "  after 2 warm-up renders of each, %d alternated pairs, speed = median of eager s / lazy s (target: at least 0.8x).%n", runs);
-        out.printf(Locale.ROOT, "  Heap and cold wall: one new JVM each (-Xmx%dm); peak: heap pools' peak; live: largest heap after a collection%n", CLOSE_HEAP_MIB);
+        out.printf(Locale.ROOT, "  Heap and cold wall: one new JVM each (-Xmx%dm); peak: heap pools' peak; live: largest heap after a collection;%n", CLOSE_HEAP_MIB);
+        out.println("  peak RSS: the whole process's peak resident memory (Linux; '-' elsewhere)");
         out.println("  (target: eager's at least 5x lazy's).");
     }
 
     /** The thesis's last-two policy and the shared LRU cache at several sizes, front view of the close scene. */
     void cache() throws IOException {
-        BenchTable t = new BenchTable("policy", "cache", "render s", "wall s", "peak heap MiB", "live heap MiB", "built", "hits", "misses", "evictions",
+        BenchTable t = new BenchTable("policy", "cache", "render s", "wall s", "peak heap MiB", "live heap MiB", "peak RSS MiB", "built", "hits", "misses", "evictions",
                 "hit rate", "cache peak");
         List<Spec> specs = new ArrayList<>();
         specs.add(new Spec("close", CLOSE_FRONT, "lazy", PAIR_WIDTH, PAIR_HEIGHT, 64, true));
@@ -431,6 +436,7 @@ final class AdaptiveBench {
             long built = last.misses();
             t.add(s.lastTwo() ? "last two" : "LRU", s.lastTwo() ? "2 per thread" : s.cacheMiB() + " MiB", fmt(medianOf(cs, Cell::render), 2),
                     fmt(medianOf(cs, Cell::wall), 2), fmt(medianOf(cs, Cell::peakHeapMiB), 0), fmt(medianOf(cs, Cell::liveHeapMiB), 0),
+                    fmt(medianOf(cs, Cell::peakRssMiB), 0),
                     Long.toString(built), Long.toString(last.hits()), Long.toString(last.misses()), Long.toString(last.evictions()),
                     Double.isNaN(last.hitRate()) ? "-" : fmt(100 * last.hitRate(), 2) + " %", last.cachePeak());
         }

@@ -276,8 +276,9 @@ public final class BenchCommand {
             out.printf(Locale.ROOT, "  after %d warm-up renders in this JVM. Mrays/s: rays of all kinds / render s. peak heap: the heap pools'%n", WARMUPS);
             out.println("  peak use during one load+build+render. bytes/tri: the meshes' arrays and BVHs / their triangles.");
             out.println("  cold s: wall clock of a whole new process `java [this JVM's options] -jar render.jar SCENE -o x.tga");
-            out.println("  --quiet --threads 2`");
-            out.println("  (median; one untimed run first so the files are in the page cache).");
+            out.println("  --quiet --stats --threads 2`");
+            out.println("  (median; one untimed run first so the files are in the page cache); cold peak RSS: that process's peak");
+            out.println("  resident memory from its --stats (Linux; '-' elsewhere), the figure to set beside a peer's.");
         }
         return 0;
     }
@@ -325,10 +326,11 @@ public final class BenchCommand {
             mrays[i] = last.stats.mraysPerSecond();
             peak[i] = last.peakHeap;
         }
-        double cold = coldSeconds(scene, runs, accel);
+        Cold coldRuns = coldRuns(scene, runs, accel);
+        double cold = coldRuns.wall();
         if (peerTable == null) {
             peerTable = new BenchTable("row", "triangles", "load s", "build s", "render s", "camera rays", "shadow rays",
-                    "refl. rays", "refr. rays", "Mrays/s", "peak heap MiB", "bytes/tri", "cold s");
+                    "refl. rays", "refr. rays", "Mrays/s", "peak heap MiB", "bytes/tri", "cold s", "cold peak RSS MiB");
         }
         String label = name + (accel != null ? " " + accel.keyword() : "");
         peerTable.add(label, String.format(Locale.ROOT, "%,d", last.triangles), fmt(median(load), 3),
@@ -336,9 +338,9 @@ public final class BenchCommand {
                 String.format(Locale.ROOT, "%,d", last.stats.shadowRays()), String.format(Locale.ROOT, "%,d", last.stats.reflectionRays()),
                 String.format(Locale.ROOT, "%,d", last.stats.refractionRays()), fmt(median(mrays), 2),
                 fmt(median(peak) / 1048576.0, 0), fmt(last.meshBytes / (double) last.triangles, 1),
-                Double.isNaN(cold) ? "failed" : fmt(cold, 3));
-        out.printf(Locale.ROOT, "  %s: load %.3f s, build %.3f s, render %.3f s (%.2f Mrays/s), cold %.3f s%n", label,
-                median(load), median(build), median(render), median(mrays), cold);
+                Double.isNaN(cold) ? "failed" : fmt(cold, 3), fmt(coldRuns.peakRssMiB(), 0));
+        out.printf(Locale.ROOT, "  %s: load %.3f s, build %.3f s, render %.3f s (%.2f Mrays/s), cold %.3f s, cold peak RSS %s MiB%n", label,
+                median(load), median(build), median(render), median(mrays), cold, fmt(coldRuns.peakRssMiB(), 0));
         for (String line : last.subdivision) out.println("    " + line);
         if (targets != null && !peers.isEmpty()) {
             List<Path> files = List.of(meshes.resolve(size.file()).toAbsolutePath(), meshes.resolve(BenchMeshes.GROUND_FILE).toAbsolutePath());
@@ -353,7 +355,7 @@ public final class BenchCommand {
             }
             PeerBench.run(out, label, view, which, runs, THREADS, targets, new PeerBench.Ours() {
                 @Override public Measured render() throws IOException { return renderOnce(scene, accel); }
-                @Override public double cold() throws IOException { return coldOnce(scene, accel); }
+                @Override public double cold() throws IOException { return coldOnce(scene, accel).wall(); }
             });
             if (soft && which.contains(PeerBench.Peer.POVRAY) && ExternalTimer.onPath(PeerBench.Peer.POVRAY.program) != null) {
                 int spp = parsed.settings().samplesPerPixel();
@@ -560,52 +562,67 @@ public final class BenchCommand {
     }
 
     /**
-     * Median wall time of {@code runs} whole new processes rendering {@code scene} with this
-     * program's own classes, after one untimed run; NaN if a run fails.
+     * One whole new process or the median of several: wall seconds (NaN if one failed) and the
+     * process's peak resident memory from its {@code --stats} (NaN where the platform gives none).
      */
-    private double coldSeconds(Path scene, int runs, AcceleratorKind accel) throws IOException {
-        double[] t = new double[runs];
+    record Cold(double wall, double peakRssMiB) {}
+
+    private static final java.util.regex.Pattern RSS_LINE = java.util.regex.Pattern.compile("(?m)^memory:\\s+([0-9.]+) MiB peak resident");
+
+    /** Median of {@code runs} whole new processes after one more that is not counted (the file cache warm). */
+    private Cold coldRuns(Path scene, int runs, AcceleratorKind accel) throws IOException {
+        double[] t = new double[runs], rss = new double[runs];
         for (int i = -1; i < runs; i++) {
-            double s = coldOnce(scene, accel);
-            if (Double.isNaN(s)) return Double.NaN;
-            if (i >= 0) t[i] = s;
+            Cold c = coldOnce(scene, accel);
+            if (Double.isNaN(c.wall())) return c;
+            if (i >= 0) {
+                t[i] = c.wall();
+                rss[i] = c.peakRssMiB();
+            }
         }
-        return median(t);
+        return new Cold(median(t), median(rss));
     }
 
-    /** Wall time of one whole new process rendering {@code scene} with this program's own classes; NaN if it fails. */
-    private double coldOnce(Path scene, AcceleratorKind accel) throws IOException {
+    /**
+     * One whole new process rendering {@code scene} with this program's own classes, with
+     * {@code --stats} for its peak resident memory (a few lines of output, not a cost to see).
+     */
+    private Cold coldOnce(Path scene, AcceleratorKind accel) throws IOException {
+        Cold failed = new Cold(Double.NaN, Double.NaN);
         String javaExe = Path.of(System.getProperty("java.home"), "bin", "java").toString();
         String cp;
         try {
             cp = Path.of(BenchCommand.class.getProtectionDomain().getCodeSource().getLocation().toURI()).toString();
         } catch (java.net.URISyntaxException e) {
-            return Double.NaN;
+            return failed;
         }
-        Path image = Files.createTempFile("spindulys-bench", ".tga");
+        Path image = Files.createTempFile("spindulys-bench", ".tga"), log = Files.createTempFile("spindulys-bench", ".out");
         try {
             List<String> cmd = new java.util.ArrayList<>(List.of(javaExe));
             // The new process gets this one's JVM options (those ./render passes: the vector
             // module, the collector), so it measures what a render from the launcher does.
             cmd.addAll(java.lang.management.ManagementFactory.getRuntimeMXBean().getInputArguments());
             cmd.addAll(List.of("-cp", cp, commandLine, scene.toString(), "-o", image.toString(),
-                    "--quiet", "--threads", Integer.toString(THREADS)));
+                    "--quiet", "--stats", "--threads", Integer.toString(THREADS)));
             if (accel != null) cmd.addAll(List.of("--accel", accel.keyword()));
             long t0 = System.nanoTime();
-            Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+            Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile()).start();
             try {
                 if (!p.waitFor(10, java.util.concurrent.TimeUnit.MINUTES) || p.exitValue() != 0) {
                     p.destroyForcibly();
-                    return Double.NaN;
+                    return failed;
                 }
             } catch (InterruptedException e) {
                 p.destroyForcibly();
                 Thread.currentThread().interrupt();
-                return Double.NaN;
+                return failed;
             }
-            return (System.nanoTime() - t0) / 1e9;
+            double wall = (System.nanoTime() - t0) / 1e9;
+            java.util.regex.Matcher m = RSS_LINE.matcher(Files.readString(log, java.nio.charset.StandardCharsets.UTF_8));
+            return new Cold(wall, m.find() ? Double.parseDouble(m.group(1)) : Double.NaN);
         } finally {
             Files.deleteIfExists(image);
+            Files.deleteIfExists(log);
         }
     }
 

@@ -24,6 +24,7 @@ import lt.spindulys.limits.MessageText;
 import lt.spindulys.math.Ranges;
 import lt.spindulys.frontend.FailureMessage;
 import lt.spindulys.frontend.HeapPeak;
+import lt.spindulys.frontend.PeakResident;
 import lt.spindulys.render.JitWarmup;
 import lt.spindulys.render.RenderStats;
 import lt.spindulys.render.RenderJob;
@@ -473,6 +474,8 @@ final class RenderCommand {
                 r.cameraRays(), r.shadowRays(), r.reflectionRays(), r.refractionRays());
         out.printf(Locale.ROOT, "speed:   %s Mrays/s%n", threeFigures(r.mraysPerSecond()));
         out.printf(Locale.ROOT, "heap:    %.1f MiB peak%n", HeapPeak.bytes() / 1048576.0);
+        // The whole process, JVM included, as the peers' figures are taken: read after the render, so it covers it.
+        PeakResident.bytes().ifPresent(b -> out.printf(Locale.ROOT, "memory:  %.1f MiB peak resident%n", b / 1048576.0));
     }
 
     /**

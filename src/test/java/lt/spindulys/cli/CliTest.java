@@ -130,6 +130,11 @@ class CliTest {
         assertEquals(0, r.status(), r.err());
         assertTrue(r.out().contains("rays:    384 camera"), r.out());
         assertTrue(r.out().matches("(?s).*speed: +\\d+\\.\\d+ Mrays/s.*"), r.out());
+        // The whole process's peak, where the kernel tells it (Linux); no line elsewhere.
+        boolean proc = Files.isReadable(Path.of("/proc/self/status"));
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("(?m)^memory:  (\\d+\\.\\d) MiB peak resident$").matcher(r.out());
+        assertEquals(proc, m.find(), r.out());
+        if (proc) assertTrue(Double.parseDouble(m.group(1)) > 0, r.out());
     }
 
     @Test
