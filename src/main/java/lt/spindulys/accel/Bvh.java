@@ -184,9 +184,11 @@ public final class Bvh implements Accelerator {
             while (true) {
                 int count = node[8 * n + 7];
                 if (count > 0) {
+                    if (TraversalScratch.COUNTING) ctx.leavesEntered[ctx.rayKind]++;
                     int k = node[8 * n + 6];
                     if (set.intersectRange(perm, k, k + count, ray, hit, ctx)) any = true;
                 } else {
+                    if (TraversalScratch.COUNTING) ctx.nodesVisited[ctx.rayKind]++;
                     int l = n + 1, r = node[8 * n + 6];
                     double tMin = ray.tMin, tMax = ray.tMax;
                     double tl = entry(l, ox, oy, oz, ix, iy, iz, xn, yn, zn, tMin, tMax);
@@ -239,9 +241,12 @@ public final class Bvh implements Accelerator {
                 if (boxHit(n, ox, oy, oz, ix, iy, iz, nx, ny, nz, ray.tMin, ray.tMax)) {
                     int count = node[8 * n + 7];
                     if (count > 0) {
+                        if (TraversalScratch.COUNTING) ctx.leavesEntered[ctx.rayKind]++;
                         int k = node[8 * n + 6];
                         if (set.occludedRange(perm, k, k + count, ray, ctx)) return true;
                     } else {
+                        // Its box is hit and its children's are tested next: a visit, as intersect counts them.
+                        if (TraversalScratch.COUNTING) ctx.nodesVisited[ctx.rayKind]++;
                         stack[sp++] = node[8 * n + 6];
                         n = n + 1;
                         continue;
@@ -277,8 +282,10 @@ public final class Bvh implements Accelerator {
                 if (boxHit(n, ox, oy, oz, ix, iy, iz, nx, ny, nz, ray.tMin, ray.tMax)) {
                     int count = node[8 * n + 7];
                     if (count > 0) {
+                        if (TraversalScratch.COUNTING) ctx.leavesEntered[ctx.rayKind]++;
                         for (int k = node[8 * n + 6], end = k + count; k < end; k++) visitor.visit(perm == null ? k : perm[k], ray, ctx);
                     } else {
+                        if (TraversalScratch.COUNTING) ctx.nodesVisited[ctx.rayKind]++;
                         stack[sp++] = node[8 * n + 6];
                         n = n + 1;
                         continue;

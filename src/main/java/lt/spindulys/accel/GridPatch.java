@@ -506,6 +506,7 @@ public final class GridPatch implements CachedPatch {
                     }
                 } else {
                     final int b = n * NODE_INTS;
+                    if (TraversalScratch.COUNTING) ctx.nodesVisited[ctx.rayKind]++;
                     // an unused slot's box is inverted (min +inf, max -inf): no ray enters it
                     int bits = SIMD
                             ? SimdBoxes.test(nodes, b, nx, ny, nz, oxn, oxf, oyn, oyf, ozn, ozf, ix, iy, iz, tMin, tMax, dist)
@@ -603,6 +604,7 @@ public final class GridPatch implements CachedPatch {
      * Each cell takes the transformed vertices and the edge function of its left side from its left neighbour.
      */
     private boolean leaf(int i0, int i1, int j0, int j1, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
+        if (TraversalScratch.COUNTING) ctx.leavesEntered[ctx.rayKind]++;
         final float[] p = pos;
         final int kx = ctx.shearKx, ky = ctx.shearKy, kz = ctx.shearKz;
         final double sx = ctx.shearSx, sy = ctx.shearSy, sz = ctx.shearSz;
@@ -641,12 +643,14 @@ public final class GridPatch implements CachedPatch {
                 // along v1-v3, A = (p00, p10, p01): U = E(p10, p01), V = E(p01, p00), W = E(p00, p10), and
                 // B = (p11, p01, p10): U = E(p01, p10), V = E(p10, p11), W = E(p11, p01)
                 final double au = v02 ? right : anti, av = v02 ? -diag : -left, azc = v02 ? z11 : z01;
+                if (TraversalScratch.COUNTING) ctx.triangleTests[ctx.rayKind]++;
                 if (triangle(au, av, bottom, z00, z10, azc, sub, tMin, ray, hit)) {
                     if (hit == null) return true;
                     any = true;
                 }
                 final double bu = v02 ? -top : -anti, bv = v02 ? -left : right, bw = v02 ? diag : -top;
                 final double bza = v02 ? z00 : z11, bzb = v02 ? z11 : z01, bzc = v02 ? z01 : z10;
+                if (TraversalScratch.COUNTING) ctx.triangleTests[ctx.rayKind]++;
                 if (triangle(bu, bv, bw, bza, bzb, bzc, sub + 1, tMin, ray, hit)) {
                     if (hit == null) return true;
                     any = true;
@@ -684,6 +688,7 @@ public final class GridPatch implements CachedPatch {
 
     /** Hands both triangles of every cell of vertex range [i0..i1] x [j0..j1] to the visitor, row by row. */
     private void visit(int i0, int i1, int j0, int j1, Ray ray, TraversalScratch ctx, GridTriangleVisitor visitor) {
+        if (TraversalScratch.COUNTING) ctx.leavesEntered[ctx.rayKind]++;
         for (int j = j0; j < j1; j++) {
             for (int i = i0, sub = 2 * (j * (nu - 1) + i0); i < i1; i++, sub += 2) {
                 visitor.triangle(this, sub, ray, ctx);

@@ -38,6 +38,27 @@ public class TraversalScratch {
      */
     public int blockingPrimitive = -1;
 
+    /**
+     * Whether the traversal counters are on: {@code -Dspindulys.counters=true} on the JVM's
+     * command line. Read once into a constant, so that with it off the JIT drops every counting
+     * statement ({@code if (COUNTING) ...}) and traversal costs what it did without them.
+     */
+    public static final boolean COUNTING = Boolean.getBoolean("spindulys.counters");
+
+    /** Ray kinds of the counters ({@link #rayKind}): camera rays, shadow rays, reflected and refracted rays. */
+    public static final int CAMERA = 0, SHADOW = 1, SECONDARY = 2, KINDS = 3;
+
+    /** The kind of the ray being traced, which the counters are charged to; set by the integrator when {@link #COUNTING}. */
+    public int rayKind;
+
+    /**
+     * Traversal counts of this thread by {@link #rayKind}, only while {@link #COUNTING}: inner
+     * nodes visited (one node = the box tests of its children, whether two or eight), leaves
+     * entered (their primitives tested), and ray/triangle tests (each triangle a leaf or a tiny
+     * mesh tests, including those a shadow ray's occluder cache tries first).
+     */
+    public final long[] nodesVisited = new long[KINDS], leavesEntered = new long[KINDS], triangleTests = new long[KINDS];
+
     private int[] stack = new int[64];
 
     /** Makes the per-direction constants those of {@code ray}'s direction. */

@@ -55,6 +55,7 @@ public final class WatertightTriangles {
         final double tMin = ray.tMin;
         boolean any = false;
         for (int k = from; k < to; k++) {
+            if (TraversalScratch.COUNTING) ctx.triangleTests[ctx.rayKind]++;
             final int i = prims == null ? k : prims[k];
             final int i3 = 3 * i;
             final int a = 3 * tri[i3], b = 3 * tri[i3 + 1], c = 3 * tri[i3 + 2];

@@ -155,6 +155,7 @@ public final class WideBvh implements Accelerator {
             int sp = base, n = 0;
             while (true) {
                 if (n >= 0) {
+                    if (TraversalScratch.COUNTING) ctx.nodesVisited[ctx.rayKind]++;
                     int bits = SimdBoxes.test(q, PLANES * n, frame, 6 * n, nx, ny, nz, oxn, oxf, oyn, oyf, ozn, ozf, ix, iy, iz, tMin, tMax, dist);
                     if (bits != 0) {
                         int c0 = 8 * n;
@@ -184,6 +185,7 @@ public final class WideBvh implements Accelerator {
                         continue;
                     }
                 } else {
+                    if (TraversalScratch.COUNTING) ctx.leavesEntered[ctx.rayKind]++;
                     int code = -1 - n;
                     int first = code >>> 4;
                     if (set.intersectRange(perm, first, first + (code & 15), ray, hit, ctx)) {
@@ -235,6 +237,7 @@ public final class WideBvh implements Accelerator {
             int sp = base, n = 0;
             while (true) {
                 if (n >= 0) {
+                    if (TraversalScratch.COUNTING) ctx.nodesVisited[ctx.rayKind]++;
                     int bits = SimdBoxes.test(q, PLANES * n, frame, 6 * n, nx, ny, nz, oxn, oxf, oyn, oyf, ozn, ozf, ix, iy, iz, tMin, tMax, dist);
                     int c0 = 8 * n;
                     while (bits != 0) {
@@ -242,6 +245,7 @@ public final class WideBvh implements Accelerator {
                         bits &= bits - 1;
                     }
                 } else {
+                    if (TraversalScratch.COUNTING) ctx.leavesEntered[ctx.rayKind]++;
                     int code = -1 - n;
                     int first = code >>> 4, end = first + (code & 15);
                     if (visitor == null) {

@@ -473,6 +473,16 @@ final class RenderCommand {
         out.printf(Locale.ROOT, "rays:    %d camera, %d shadow, %d reflection, %d refraction%n",
                 r.cameraRays(), r.shadowRays(), r.reflectionRays(), r.refractionRays());
         out.printf(Locale.ROOT, "speed:   %s Mrays/s%n", threeFigures(r.mraysPerSecond()));
+        if (r.traversal() != null) {
+            // Per ray of each kind; secondary rays are the reflected and refracted ones together.
+            String[] kinds = {"camera", "shadow", "secondary"};
+            long[] rays = {r.cameraRays(), r.shadowRays(), r.reflectionRays() + r.refractionRays()};
+            for (int k = 0; k < kinds.length; k++) {
+                double n = Math.max(1, rays[k]);
+                out.printf(Locale.ROOT, "traversal %s: %d rays, %.3f nodes/ray, %.3f leaves/ray, %.3f triangle tests/ray%n", kinds[k], rays[k],
+                        r.traversal().nodes(k) / n, r.traversal().leaves(k) / n, r.traversal().triangleTests(k) / n);
+            }
+        }
         out.printf(Locale.ROOT, "heap:    %.1f MiB peak%n", HeapPeak.bytes() / 1048576.0);
         // The whole process, JVM included, as the peers' figures are taken: read after the render, so it covers it.
         PeakResident.bytes().ifPresent(b -> out.printf(Locale.ROOT, "memory:  %.1f MiB peak resident%n", b / 1048576.0));

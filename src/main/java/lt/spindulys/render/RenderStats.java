@@ -8,8 +8,16 @@ package lt.spindulys.render;
  * @param reflectionRays mirror rays
  * @param refractionRays rays through transparent surfaces
  * @param seconds        wall-clock seconds spent tracing (camera rays to finished frame)
+ * @param traversal      nodes, leaves and triangle tests by ray kind, summed over the threads, or
+ *                       null unless the counters are on ({@link lt.spindulys.accel.TraversalScratch#COUNTING})
  */
-public record RenderStats(long cameraRays, long shadowRays, long reflectionRays, long refractionRays, double seconds) {
+public record RenderStats(long cameraRays, long shadowRays, long reflectionRays, long refractionRays, double seconds,
+                          TraversalCounts traversal) {
+    /** Stats without traversal counts. */
+    public RenderStats(long cameraRays, long shadowRays, long reflectionRays, long refractionRays, double seconds) {
+        this(cameraRays, shadowRays, reflectionRays, refractionRays, seconds, null);
+    }
+
     /**
      * All rays traced.
      *

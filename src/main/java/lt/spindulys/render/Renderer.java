@@ -10,6 +10,7 @@ import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
 
+import lt.spindulys.accel.TraversalScratch;
 import lt.spindulys.camera.Camera;
 import lt.spindulys.image.AovFrame;
 import lt.spindulys.image.FrameBuffer;
@@ -41,6 +42,8 @@ import lt.spindulys.shading.WhittedIntegrator;
 public final class Renderer {
     /** Tile side in pixels: small enough to balance two cores, large enough to keep counters cheap. */
     static final int TILE = 16;
+    /** Per-thread counts summed after a pass: the four ray kinds, adaptive camera hits, then the traversal counts ({@link TraversalCounts#SIZE}). */
+    private static final int COUNTS = 5 + TraversalCounts.SIZE;
 
     /**
      * The tile (row-major index) handed out {@code k}-th: {@code k * stride mod tiles}, with the
@@ -151,7 +154,7 @@ public final class Renderer {
         int tilesX = (rw + TILE - 1) / TILE, tilesY = (rh + TILE - 1) / TILE, tiles = tilesX * tilesY;
         WhittedIntegrator integrator = new WhittedIntegrator(scene);
         int steps = st.timeSteps(); // a multiple of the samples: the scene checked it when built
-        long[] sum = new long[5];
+        long[] sum = new long[COUNTS];
         long start = System.nanoTime();
         for (int k = 0; k < steps; k++) {
             // One time step: a fixed time and its share of the samples, or (steps == 1) all samples at their own times.
@@ -161,7 +164,7 @@ public final class Renderer {
             ProgressListener p = (pixels, all) -> progress.progress(done + pixels, total);
             long[] c = renderPass(scene, threads, p, integrator, fb, k == 0 ? aovs : null, pass, r, tilesX, tiles, cancelled,
                     k == steps - 1 ? tileListener : null);
-            for (int i = 0; i < 5; i++) sum[i] += c[i];
+            for (int i = 0; i < COUNTS; i++) sum[i] += c[i];
         }
         double seconds = (System.nanoTime() - start) / 1e9;
         List<String> adaptive = new ArrayList<>(scene.adaptiveStatistics());
@@ -172,7 +175,8 @@ public final class Renderer {
             adaptive.add(String.format(Locale.ROOT, "adaptive subdivision: %,d triangles, %s covered pixels, %s triangles per covered pixel",
                     triangles, String.format(Locale.ROOT, "%,.0f", covered), covered > 0 ? String.format(Locale.ROOT, "%.2f", triangles / covered) : "no"));
         }
-        return new RenderResult(st, fb, aovs, new RenderStats(sum[0], sum[1], sum[2], sum[3], seconds), adaptive, scene.structureStatistics())
+        return new RenderResult(st, fb, aovs, new RenderStats(sum[0], sum[1], sum[2], sum[3], seconds,
+                TraversalScratch.COUNTING ? TraversalCounts.of(sum, 5) : null), adaptive, scene.structureStatistics())
                 .inRegion(region);
     }
 
@@ -287,10 +291,13 @@ public final class Renderer {
                         failure.compareAndSet(null, e);
                     } finally {
                         if (own == null) {
-                            counters[index] = new long[5];
+                            counters[index] = new long[COUNTS];
                         } else {
                             own.flushStatistics();
-                            counters[index] = new long[] {own.cameraRays, own.shadowRays, own.reflectionRays, own.refractionRays, own.adaptiveCameraHits};
+                            long[] c = counters[index] = new long[COUNTS];
+                            c[0] = own.cameraRays; c[1] = own.shadowRays; c[2] = own.reflectionRays; c[3] = own.refractionRays;
+                            c[4] = own.adaptiveCameraHits;
+                            TraversalCounts.copy(own.ctx, c, 5);
                         }
                     }
                 }, "spindulys-render-" + k, WORKER_STACK_BYTES);
@@ -308,8 +315,8 @@ public final class Renderer {
         if (f instanceof RuntimeException re) throw re;
         if (f instanceof Error err) throw err;
         if (f != null) throw new IllegalStateException(f);
-        long[] sum = new long[5];
-        for (long[] c : counters) if (c != null) for (int i = 0; i < 5; i++) sum[i] += c[i];
+        long[] sum = new long[COUNTS];
+        for (long[] c : counters) if (c != null) for (int i = 0; i < COUNTS; i++) sum[i] += c[i];
         return sum;
     }
 

@@ -1,5 +1,6 @@
 package lt.spindulys.shading;
 
+import lt.spindulys.accel.TraversalScratch;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Ray;
 import lt.spindulys.trace.TracedObject;
@@ -199,6 +200,7 @@ public final class WhittedIntegrator {
      */
     public int traceFirstHit(Ray ray, TracerScratch s, double[] out) {
         s.cameraRays++;
+        if (TraversalScratch.COUNTING) s.ctx.rayKind = TraversalScratch.CAMERA;
         TracerScratch.PathVertex v = s.path[0];
         Hit hit = v.hit;
         if (!scene.intersect(ray, hit, s.ctx)) {
@@ -234,6 +236,8 @@ public final class WhittedIntegrator {
         Hit hit = v.hit;
         Material medium = s.innermost();
         double dlen = Math.sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
+        // Set before each query: the shadow rays of the depth above left it at SHADOW.
+        if (TraversalScratch.COUNTING) s.ctx.rayKind = depth == 0 ? TraversalScratch.CAMERA : TraversalScratch.SECONDARY;
         boolean found = scene.intersect(ray, hit, s.ctx);
         if (lights.hasSurfaces()) {
             double tLight = lights.nearestSurface(ray, found ? hit.t : Double.POSITIVE_INFINITY, out);
@@ -420,6 +424,7 @@ public final class WhittedIntegrator {
      */
     private boolean shadowTransmission(Ray ray, double dist, TracerScratch s) {
         s.shadowRays++;
+        if (TraversalScratch.COUNTING) s.ctx.rayKind = TraversalScratch.SHADOW;
         double[] t = s.transmission;
         t[0] = t[1] = t[2] = 1;
         if (!transparentShadows) return !scene.occluded(ray, s.ctx);
