@@ -54,6 +54,9 @@ public final class JitWarmup implements AutoCloseable {
     @FunctionalInterface
     interface Work {
         void render() throws InterruptedException;
+
+        /** From now on warm the grid path of adaptive surfaces rather than the mesh path. */
+        default void wantGrids() {}
     }
 
     private final AtomicBoolean stop = new AtomicBoolean();
@@ -97,15 +100,27 @@ public final class JitWarmup implements AutoCloseable {
         }
     }
 
-    /** The real work: the built-in scene, built on the warm-up thread at the first render, rendered on one thread. */
+    /**
+     * The real work: the built-in scenes, each built on the warm-up thread at its first render,
+     * rendered on one thread: the mesh scene until the real scene turns out to hold adaptive
+     * surfaces, then the grid scene (their code: evaluation, pieces, the grid traversal).
+     */
     private static final class SceneRenders implements Work {
-        private Scene scene;
+        private Scene meshes;
+        private volatile boolean wantGrids;
 
         @Override
         public void render() throws InterruptedException {
-            if (scene == null) scene = scene();
-            Renderer.render(scene, 1, ProgressListener.NONE);
+            if (wantGrids) {
+                Renderer.render(gridScene(), 1, ProgressListener.NONE);
+            } else {
+                if (meshes == null) meshes = scene();
+                Renderer.render(meshes, 1, ProgressListener.NONE);
+            }
         }
+
+        @Override
+        public void wantGrids() { wantGrids = true; }
     }
 
     /**
@@ -132,6 +147,8 @@ public final class JitWarmup implements AutoCloseable {
      * @throws InterruptedException when interrupted while waiting ({@link #close} then stops the warm-up)
      */
     public void finishFor(SceneBuilder scene, AcceleratorKind accel) throws InterruptedException {
+        // The renders still to come warm what the scene will run: the grids of its adaptive surfaces.
+        if (scene.objects().stream().anyMatch(JitWarmup::hasGrids)) work.wantGrids();
         if (waitsFor(scene, accel)) thread.join();
         close();
     }
@@ -165,6 +182,18 @@ public final class JitWarmup implements AutoCloseable {
             GObject o = pending.pop();
             if (o instanceof TriangleMesh m && m.triangleCount() >= MESH_TRIANGLES) return true;
             if (o instanceof SubdivisionSurface) return true;
+            if (hasGrids(o)) return true;
+            if (o instanceof Bool b) for (GObject operand : b.operands()) pending.push(operand);
+        }
+        return false;
+    }
+
+    /** Whether the scene holds an adaptive surface tessellated in grids (at any depth of CSG). */
+    private static boolean hasGrids(GObject top) {
+        ArrayDeque<GObject> pending = new ArrayDeque<>();
+        pending.push(top);
+        while (!pending.isEmpty()) {
+            GObject o = pending.pop();
             if (o instanceof AdaptiveSubdivisionSurface a && a.levels() == AdaptiveSubdivisionSurface.Levels.RATE) return true;
             if (o instanceof Bool b) for (GObject operand : b.operands()) pending.push(operand);
         }
@@ -179,13 +208,25 @@ public final class JitWarmup implements AutoCloseable {
                 .light(new PointLight(new Vec3(3, 5, 2), Color.WHITE, 25, PointLight.Falloff.INVERSE_SQUARE));
         Material grey = Material.builder().name("warmup").color(new Color(0.8, 0.8, 0.8)).ka(0).kd(1).ks(0).build();
         b.add(new TriangleMesh(torus(32, 32, 0)).smooth(false).material(grey));
-        // Behind it, a small cage as an adaptive surface: the grid path (evaluation, pieces, the grid traversal).
-        MeshData cage = torus(8, 8, -2.5);
+        return withGround(b, grey).build();
+    }
+
+    /** The same view of a small cage as an adaptive surface (grids), for scenes that have them; built anew each time, so evaluation and piece building warm too. */
+    static Scene gridScene() {
+        SceneBuilder b = new SceneBuilder()
+                .settings(RenderSettings.builder().size(96, 54).ambient(Color.BLACK).srgb(true).build())
+                .camera(new PinholeCamera(new Vec3(0, 2.5, 3.5), new Vec3(0, -0.2, 0), Vec3.Y, 40))
+                .light(new PointLight(new Vec3(3, 5, 2), Color.WHITE, 25, PointLight.Falloff.INVERSE_SQUARE));
+        Material grey = Material.builder().name("warmup").color(new Color(0.8, 0.8, 0.8)).ka(0).kd(1).ks(0).build();
+        MeshData cage = torus(8, 8, 0);
         b.add(new AdaptiveSubdivisionSurface(ControlMesh.builder(cage.positions(), cage.faceSizes(), cage.vertexIndex()).build(),
                 AdaptiveSubdivisionSurface.Method.LAZY, true).material(grey));
-        b.add(new TriangleMesh(new MeshData(new double[] {-20, -0.4, -20, 20, -0.4, -20, 20, -0.4, 20, -20, -0.4, 20}, null, null,
+        return withGround(b, grey).build();
+    }
+
+    private static SceneBuilder withGround(SceneBuilder b, Material grey) {
+        return b.add(new TriangleMesh(new MeshData(new double[] {-20, -0.4, -20, 20, -0.4, -20, 20, -0.4, 20, -20, -0.4, 20}, null, null,
                 new int[] {4}, new int[] {0, 3, 2, 1}, null, null, "warm-up ground")).smooth(false).material(grey));
-        return b.build();
     }
 
     /** A closed torus (R 1, r 0.4, axis +Y, centre at z = dz) of n x m quads. */

@@ -103,6 +103,36 @@ class JitWarmupTest {
     }
 
     @Test
+    void theGridSceneRendersItsAdaptiveSurfaceInGrids() throws InterruptedException {
+        // The grid warm-up must reach the grid path: an adaptive surface tessellated by rates, lit, with pieces built.
+        Scene s = JitWarmup.gridScene();
+        FrameBuffer fb = Renderer.render(s, 1, ProgressListener.NONE).frame();
+        int lit = 0;
+        for (int y = 0; y < 54; y++) for (int x = 0; x < 96; x++) if (fb.get(x, y, 0) > 0.05) lit++;
+        assertTrue(lit > 500, "lit pixels: " + lit);
+        String stats = String.join("\n", s.adaptiveStatistics());
+        assertTrue(stats.contains("edge rates") && !stats.contains("patches 0 built"), stats);
+    }
+
+    @Test
+    void aSceneWithGridsTurnsTheRemainingRendersToTheGridScene() throws InterruptedException {
+        java.util.concurrent.atomic.AtomicInteger asked = new java.util.concurrent.atomic.AtomicInteger();
+        JitWarmup.Work work = new JitWarmup.Work() {
+            @Override public void render() {}
+            @Override public void wantGrids() { asked.incrementAndGet(); }
+        };
+        JitWarmup w = JitWarmup.start(work);
+        w.finishFor(MESH_SCENE, AcceleratorKind.BVH);
+        assertEquals(0, asked.get(), "a mesh scene keeps the mesh warm-up");
+        SceneBuilder grids = new SceneBuilder().add(new lt.spindulys.scene.AdaptiveSubdivisionSurface(
+                lt.spindulys.subdiv.ControlMesh.builder(new double[] {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, new int[] {4}, new int[] {0, 1, 2, 3}).build(),
+                lt.spindulys.scene.AdaptiveSubdivisionSurface.Method.LAZY, true));
+        JitWarmup w2 = JitWarmup.start(work);
+        w2.finishFor(grids, AcceleratorKind.BVH);
+        assertEquals(1, asked.get(), "a scene with grids asks for the grid warm-up");
+    }
+
+    @Test
     void leftAloneTheWarmupRendersItsBudgetAndEnds() throws InterruptedException {
         JitWarmup w = JitWarmup.start();
         w.join();
