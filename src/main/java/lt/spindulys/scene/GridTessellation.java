@@ -828,6 +828,7 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
 
     @Override
     public String statistics() {
+        if (rate == null) return "subdiv " + name + ": " + method.word() + ", not tessellated (the scene was not built)";
         int min = Integer.MAX_VALUE, max = 0;
         int[] sorted = rate.clone();
         Arrays.sort(sorted);
