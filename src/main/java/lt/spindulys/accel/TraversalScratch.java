@@ -32,9 +32,6 @@ public class TraversalScratch {
     /** Per-lane scratch of the wide BVH's vector box test, and its per-ray constants. */
     public final float[] lanes = new float[8], wideRay = new float[9];
 
-    /** Per-lane scratch of {@link TriangleBlocks}' four-triangle test ({@link TriangleBlocks#SCRATCH} floats). */
-    public final float[] blockLanes = new float[TriangleBlocks.SCRATCH];
-
     /**
      * The triangle whose any-hit test ({@link WatertightTriangles#test} without a hit record) last
      * returned true on this thread, for the scene's occluder cache; not reset by other queries.
