@@ -202,31 +202,27 @@ public final class JitWarmup implements AutoCloseable {
 
     /** The benchmark's view of a small torus; 96 x 54 pixels, so that the renders are short beside a large parse. */
     static Scene scene() {
-        SceneBuilder b = new SceneBuilder()
-                .settings(RenderSettings.builder().size(96, 54).ambient(Color.BLACK).srgb(true).build())
-                .camera(new PinholeCamera(new Vec3(0, 2.5, 3.5), new Vec3(0, -0.2, 0), Vec3.Y, 40))
-                .light(new PointLight(new Vec3(3, 5, 2), Color.WHITE, 25, PointLight.Falloff.INVERSE_SQUARE));
-        Material grey = Material.builder().name("warmup").color(new Color(0.8, 0.8, 0.8)).ka(0).kd(1).ks(0).build();
-        b.add(new TriangleMesh(torus(32, 32, 0)).smooth(false).material(grey));
-        return withGround(b, grey).build();
+        return view(new TriangleMesh(torus(32, 32, 0)).smooth(false));
     }
 
     /** The same view of a small cage as an adaptive surface (grids), for scenes that have them; built anew each time, so evaluation and piece building warm too. */
     static Scene gridScene() {
-        SceneBuilder b = new SceneBuilder()
-                .settings(RenderSettings.builder().size(96, 54).ambient(Color.BLACK).srgb(true).build())
-                .camera(new PinholeCamera(new Vec3(0, 2.5, 3.5), new Vec3(0, -0.2, 0), Vec3.Y, 40))
-                .light(new PointLight(new Vec3(3, 5, 2), Color.WHITE, 25, PointLight.Falloff.INVERSE_SQUARE));
-        Material grey = Material.builder().name("warmup").color(new Color(0.8, 0.8, 0.8)).ka(0).kd(1).ks(0).build();
         MeshData cage = torus(8, 8, 0);
-        b.add(new AdaptiveSubdivisionSurface(ControlMesh.builder(cage.positions(), cage.faceSizes(), cage.vertexIndex()).build(),
-                AdaptiveSubdivisionSurface.Method.LAZY, true).material(grey));
-        return withGround(b, grey).build();
+        return view(new AdaptiveSubdivisionSurface(ControlMesh.builder(cage.positions(), cage.faceSizes(), cage.vertexIndex()).build(),
+                AdaptiveSubdivisionSurface.Method.LAZY, true));
     }
 
-    private static SceneBuilder withGround(SceneBuilder b, Material grey) {
-        return b.add(new TriangleMesh(new MeshData(new double[] {-20, -0.4, -20, 20, -0.4, -20, 20, -0.4, 20, -20, -0.4, 20}, null, null,
-                new int[] {4}, new int[] {0, 3, 2, 1}, null, null, "warm-up ground")).smooth(false).material(grey));
+    /** {@code object} on the benchmark's ground, under its light, seen by its camera, all grey. */
+    private static Scene view(GObject object) {
+        Material grey = Material.builder().name("warmup").color(new Color(0.8, 0.8, 0.8)).ka(0).kd(1).ks(0).build();
+        return new SceneBuilder()
+                .settings(RenderSettings.builder().size(96, 54).ambient(Color.BLACK).srgb(true).build())
+                .camera(new PinholeCamera(new Vec3(0, 2.5, 3.5), new Vec3(0, -0.2, 0), Vec3.Y, 40))
+                .light(new PointLight(new Vec3(3, 5, 2), Color.WHITE, 25, PointLight.Falloff.INVERSE_SQUARE))
+                .add(object.material(grey))
+                .add(new TriangleMesh(new MeshData(new double[] {-20, -0.4, -20, 20, -0.4, -20, 20, -0.4, 20, -20, -0.4, 20}, null, null,
+                        new int[] {4}, new int[] {0, 3, 2, 1}, null, null, "warm-up ground")).smooth(false).material(grey))
+                .build();
     }
 
     /** A closed torus (R 1, r 0.4, axis +Y, centre at z = dz) of n x m quads. */
