@@ -147,8 +147,8 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
         faces = new int[count];
         for (int f = 0, k = 0; f < nf; f++) if (!refiner.isHole(f)) faces[k++] = f;
         makePatterns();
+        tight = new int[6 * pieceCount];
         evaluateSharedPoints();
-        boundPieces();
         used = method;
         if (method == AdaptiveSubdivisionSurface.Method.PROJECTED) {
             long need = 0;
@@ -367,7 +367,8 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
     /**
      * Evaluates every point that faces share, each once, from the first face that has it: the
      * control vertices' limit points, the inner points of every control edge at its rate, and of
-     * every n-gon its spokes' inner points and centre.
+     * every n-gon its spokes' inner points and centre; and, with the same evaluator of each face,
+     * its pieces' boxes ({@link #boundPieces}).
      */
     private void evaluateSharedPoints() {
         int nv = control.vertexCount(), ne = refiner.edgeCount();
@@ -436,6 +437,7 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
                 System.arraycopy(p, 0, pts, o, 3);
                 spokePoints[i] = pts;
             }
+            boundPieces(i, eval);
         });
     }
 
@@ -510,25 +512,22 @@ final class GridTessellation implements SurfaceTessellation, PrimitiveSet, Patch
 
     // ------------------------------------------------------------------ pieces
 
-    /** Boxes of the pieces before they are built: the Bezier hull of their range where known, else the face's one-ring hull. */
-    private void boundPieces() {
-        tight = new int[6 * pieceCount];
-        IntStream.range(0, faces.length).parallel().forEach(i -> {
-            int f = faces[i], n = refiner.faceSize(f);
-            double[] ring = new double[6], box = new double[6], lo = new double[2], hi = new double[2];
-            refiner.oneRingBounds(f, ring);
-            LimitSurface.Evaluator eval = loop ? null : limit.evaluator(f, faceLevel[i]);
-            for (int g = firstGrid[i]; g < firstGrid[i + 1]; g++) {
-                for (int piece = firstPiece[g]; piece < firstPiece[g + 1]; piece++) {
-                    double[] b = ring;
-                    if (eval != null && eval.isRegular()) {
-                        parameterRange(g, piece - firstPiece[g], n, lo, hi);
-                        if (eval.bounds(lo[0], hi[0], lo[1], hi[1], box)) b = box;
-                    }
-                    BoxList.store(tight, piece, b);
+    /** Boxes of face i's pieces before they are built: the Bezier hull of their range where known, else the face's one-ring hull. */
+    private void boundPieces(int i, LimitSurface.Evaluator eval) {
+        int f = faces[i], n = refiner.faceSize(f);
+        double[] ring = new double[6], box = new double[6], lo = new double[2], hi = new double[2];
+        refiner.oneRingBounds(f, ring);
+        boolean hull = !loop && eval.isRegular();
+        for (int g = firstGrid[i]; g < firstGrid[i + 1]; g++) {
+            for (int piece = firstPiece[g]; piece < firstPiece[g + 1]; piece++) {
+                double[] b = ring;
+                if (hull) {
+                    parameterRange(g, piece - firstPiece[g], n, lo, hi);
+                    if (eval.bounds(lo[0], hi[0], lo[1], hi[1], box)) b = box;
                 }
+                BoxList.store(tight, piece, b);
             }
-        });
+        }
     }
 
     /** The face-parameter range of the vertices of piece k of grid g (snapped edge vertices may lie past the cells' range). */
