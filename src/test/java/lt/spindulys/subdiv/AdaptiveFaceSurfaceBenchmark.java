@@ -150,7 +150,8 @@ public final class AdaptiveFaceSurfaceBenchmark {
         return AdaptiveFaceSurface.of(local.mesh(), local.face(), SMOOTH, SHARP);
     }
 
-    private static double[] grid(boolean triangle) {
+    /** The (u, v) of a GRID x GRID grid over the face (its lower-left half for a triangle), shared with the face-varying benchmark. */
+    static double[] grid(boolean triangle) {
         double[] uv = new double[2 * GRID * GRID];
         int k = 0;
         for (int j = 0; j < GRID; j++) {
@@ -164,7 +165,7 @@ public final class AdaptiveFaceSurfaceBenchmark {
         return java.util.Arrays.copyOf(uv, k);
     }
 
-    private static long allocated() {
+    static long allocated() {
         return ((com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean()).getThreadAllocatedBytes(Thread.currentThread().getId());
     }
 }

@@ -1,6 +1,5 @@
 package lt.spindulys.subdiv;
 
-import java.lang.management.ManagementFactory;
 
 /**
  * Not a test: a micro benchmark of {@link FaceVaryingSurface} on corpus shapes with UV seams,
@@ -10,7 +9,7 @@ import java.lang.management.ManagementFactory;
  * {@code java -cp target/classes:target/test-classes lt.spindulys.subdiv.FaceVaryingSurfaceBenchmark}.
  */
 public final class FaceVaryingSurfaceBenchmark {
-    private static final int SMOOTH = 2, SHARP = 6, GRID = 17;
+    private static final int SMOOTH = 2, SHARP = 6;
 
     public static void main(String[] args) {
         String[] shapes = args.length > 0 ? args : new String[] {"catmark_fvar_bound1", "catmark_cubes_semisharp", "loop_fvar_bound1"};
@@ -24,7 +23,7 @@ public final class FaceVaryingSurfaceBenchmark {
         ControlMesh cm = Corpus.load(shape, o -> o.withFaceVarying(mode));
         boolean loop = cm.options().scheme() == SubdivOptions.Scheme.LOOP;
         PatchRefiner refiner = new PatchRefiner(cm);
-        double[] grid = grid(loop), uv = new double[2];
+        double[] grid = AdaptiveFaceSurfaceBenchmark.grid(loop), uv = new double[2];
         int points = grid.length / 2, faces = 0;
         double sink = 0;
         long setupNs = 0, evalNs = 0, evalBytes = 0, evals = 0;
@@ -36,7 +35,7 @@ public final class FaceVaryingSurfaceBenchmark {
             for (int i = 0; i < points; i++) s.evaluate(grid[2 * i], grid[2 * i + 1], uv);
             setupNs += System.nanoTime() - t0;
             int reps = Math.max(1, 20000 / points);
-            long b0 = allocated();
+            long b0 = AdaptiveFaceSurfaceBenchmark.allocated();
             t0 = System.nanoTime();
             for (int r = 0; r < reps; r++) {
                 for (int i = 0; i < points; i++) {
@@ -45,30 +44,12 @@ public final class FaceVaryingSurfaceBenchmark {
                 }
             }
             evalNs += System.nanoTime() - t0;
-            evalBytes += allocated() - b0;
+            evalBytes += AdaptiveFaceSurfaceBenchmark.allocated() - b0;
             evals += (long) reps * points;
         }
         if (print) {
             System.out.printf("%-24s %-13s %3d faces: set-up with the first grid %6.3f ms/face, then evaluate %5.0f ns, %4.1f bytes allocated per evaluation (%.1f)%n",
                     shape, mode, faces, setupNs / 1e6 / faces, (double) evalNs / evals, (double) evalBytes / evals, sink == 0 ? 0.0 : 1.0);
         }
-    }
-
-    private static double[] grid(boolean triangle) {
-        double[] uv = new double[2 * GRID * GRID];
-        int k = 0;
-        for (int j = 0; j < GRID; j++) {
-            for (int i = 0; i < GRID; i++) {
-                double u = i / (GRID - 1.0), v = j / (GRID - 1.0);
-                if (triangle && u + v > 1) continue;
-                uv[k++] = u;
-                uv[k++] = v;
-            }
-        }
-        return java.util.Arrays.copyOf(uv, k);
-    }
-
-    private static long allocated() {
-        return ((com.sun.management.ThreadMXBean) ManagementFactory.getThreadMXBean()).getThreadAllocatedBytes(Thread.currentThread().getId());
     }
 }
