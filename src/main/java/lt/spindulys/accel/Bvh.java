@@ -64,14 +64,26 @@ public final class Bvh implements Accelerator {
      * @param parallel whether large builds may split across a pool of threads
      */
     public Bvh(PrimitiveSet set, int maxLeafSize, boolean parallel) {
-        this(set, maxLeafSize, parallel ? Runtime.getRuntime().availableProcessors() : 1);
+        this(set, maxLeafSize, 1, parallel ? Runtime.getRuntime().availableProcessors() : 1);
     }
+
+    /**
+     * As {@link #Bvh(PrimitiveSet, int, boolean)}, with the surface-area heuristic counting
+     * primitives in blocks of {@code costBlock} (a leaf costs its area times its number of
+     * blocks), for leaves whose primitives are tested a block at a time.
+     */
+    public Bvh(PrimitiveSet set, int maxLeafSize, int costBlock, boolean parallel) {
+        this(set, maxLeafSize, costBlock, parallel ? Runtime.getRuntime().availableProcessors() : 1);
+    }
+
+    Bvh(PrimitiveSet set, int maxLeafSize, int threads) { this(set, maxLeafSize, 1, threads); }
 
     /**
      * Builds the hierarchy on at most {@code threads} threads (1: the calling thread alone). The
      * tree is the same for every thread count: how work is divided depends on range sizes only.
      */
-    Bvh(PrimitiveSet set, int maxLeafSize, int threads) {
+    Bvh(PrimitiveSet set, int maxLeafSize, int costBlock, int threads) {
+        if (costBlock < 1) throw new IllegalArgumentException("cost block must be at least 1, got " + costBlock);
         if (maxLeafSize < 1) throw new IllegalArgumentException("leaf size must be at least 1, got " + maxLeafSize);
         this.set = set;
         int n = set.size();
@@ -79,7 +91,8 @@ public final class Bvh implements Accelerator {
         ForkJoinPool pool = threads > 1 && n >= BvhBuilder.PARALLEL_GRAIN ? new ForkJoinPool(threads) : null;
         try {
             // Made inside the pool, so that reading the bounds can fork.
-            BvhBuilder b = pool == null ? new BvhBuilder(set, maxLeafSize, null) : pool.invoke(ForkJoinTask.adapt(() -> new BvhBuilder(set, maxLeafSize, pool)));
+            BvhBuilder b = pool == null ? new BvhBuilder(set, maxLeafSize, costBlock, null)
+                    : pool.invoke(ForkJoinTask.adapt(() -> new BvhBuilder(set, maxLeafSize, costBlock, pool)));
             if (b.nonFinite >= 0) {
                 double[] tmp = new double[6];
                 set.bounds(b.nonFinite, tmp);

@@ -17,6 +17,12 @@ final class BvhBuilder {
     static final int PARALLEL_GRAIN = 8192;
     final int leafSize;
     /**
+     * The SAH counts primitives in blocks of this many (1: one by one): a leaf's cost is its
+     * area times its number of blocks, as for leaves whose primitives are tested a block at a
+     * time ({@link TriangleBlocks}).
+     */
+    final int costBlock;
+    /**
      * Bounds of the primitive in each slot of {@link #perm} (floats rounded outward), six
      * per slot, moved along with perm so that every pass over a range reads memory in order
      * (2M primitives' bounds do not fit in any cache, and following perm into them would
@@ -39,8 +45,9 @@ final class BvhBuilder {
      * Reads every primitive's bounds, in blocks on the pool when there is one (called
      * inside it then, so the blocks can fork), and finds the root's bounds on the way.
      */
-    BvhBuilder(PrimitiveSet set, int leafSize, ForkJoinPool pool) {
+    BvhBuilder(PrimitiveSet set, int leafSize, int costBlock, ForkJoinPool pool) {
         this.leafSize = leafSize;
+        this.costBlock = costBlock;
         this.pool = pool;
         int n = set.size();
         float[] bb = new float[6 * n];
@@ -79,7 +86,7 @@ final class BvhBuilder {
         if (pool != null) {
             root = pool.invoke(new Task(this, 0, n, 0, rootBounds));
         } else {
-            Chunk c = new Chunk(pb, perm, leafSize);
+            Chunk c = new Chunk(pb, perm, leafSize, costBlock);
             c.build(0, n, 0, rootBounds);
             root = new Part(c);
         }
@@ -256,11 +263,11 @@ final class BvhBuilder {
         @Override
         protected Part compute() {
             if (e - s < BvhBuilder.PARALLEL_GRAIN) {
-                Chunk c = new Chunk(b.pb, b.perm, b.leafSize);
+                Chunk c = new Chunk(b.pb, b.perm, b.leafSize, b.costBlock);
                 c.build(s, e, d, bc);
                 return new Part(c);
             }
-            Splitter sp = new Splitter(b.pb, b.perm);
+            Splitter sp = new Splitter(b.pb, b.perm, b.costBlock);
             sp.forkBins = true;
             float[] lr = new float[24];
             long split = sp.split(s, e, bc, 0, d, lr, 0);
@@ -298,7 +305,7 @@ final class BvhBuilder {
                 return;
             }
             int mid = (s + e) >>> 1;
-            Splitter other = new Splitter(into.pb, into.perm);
+            Splitter other = new Splitter(into.pb, into.perm, into.costBlock);
             BinTask right = new BinTask(other, mid, e, nb, mx, my, mz, sx, sy, sz);
             right.fork();
             new BinTask(into, s, mid, nb, mx, my, mz, sx, sy, sz).compute();
@@ -315,8 +322,8 @@ final class BvhBuilder {
         int[] node;
         int count, maxDepth;
 
-        Chunk(float[] pb, int[] perm, int leafSize) {
-            sp = new Splitter(pb, perm);
+        Chunk(float[] pb, int[] perm, int leafSize, int costBlock) {
+            sp = new Splitter(pb, perm, costBlock);
             this.leafSize = leafSize;
         }
 
@@ -386,7 +393,15 @@ final class BvhBuilder {
         /** Whether large ranges are binned in blocks on the fork/join pool this runs in. */
         boolean forkBins;
 
-        Splitter(float[] pb, int[] perm) { this.pb = pb; this.perm = perm; }
+        /** Primitives per block of the cost ({@link BvhBuilder#costBlock}). */
+        final int costBlock;
+
+        Splitter(float[] pb, int[] perm, int costBlock) { this.pb = pb; this.perm = perm; this.costBlock = costBlock; }
+
+        /** The cost units of n primitives: blocks of {@link #costBlock}, the last one partial. */
+        private long blocks(int n) {
+            return costBlock == 1 ? n : (n + costBlock - 1) / costBlock;
+        }
 
         /** Centroid coordinate (times two: only order matters) of the primitive in slot k. */
         private float centroid(int k, int axis) {
@@ -472,7 +487,7 @@ final class BvhBuilder {
             } else {
                 binRange(s, e, nb, mx, my, mz, sx, sy, sz);
             }
-            double leafCost = (double) (e - s) * area((double) bc[o6 + 3] - bc[o6], (double) bc[o6 + 4] - bc[o6 + 1], (double) bc[o6 + 5] - bc[o6 + 2]);
+            double leafCost = (double) blocks(e - s) * area((double) bc[o6 + 3] - bc[o6], (double) bc[o6 + 4] - bc[o6 + 1], (double) bc[o6 + 5] - bc[o6 + 2]);
             double best = leafCost;
             int bestAxis = -1, bestBin = -1;
             for (int a = 0; a < 3; a++) {
@@ -500,7 +515,7 @@ final class BvhBuilder {
                         x1 = Math.max(x1, bb[o + 3]); y1 = Math.max(y1, bb[o + 4]); z1 = Math.max(z1, bb[o + 5]);
                     }
                     if (cnt == 0 || rightCount[i] == 0) continue;
-                    double cost = cnt * area((double) x1 - x0, (double) y1 - y0, (double) z1 - z0) + rightCount[i] * rightArea[i];
+                    double cost = blocks(cnt) * area((double) x1 - x0, (double) y1 - y0, (double) z1 - z0) + blocks(rightCount[i]) * rightArea[i];
                     if (cost < best) { best = cost; bestAxis = a; bestBin = i; }
                 }
             }

@@ -22,6 +22,10 @@ final class SimdBoxes {
      */
     private static final float GAMMA = 8 * 0x1p-24f;
 
+    /** Lane i holds the float whose bits are the integer 1 << i (never computed with, only blended). */
+    private static final FloatVector LANE_BITS = IntVector.fromArray(I, new int[] {1, 2, 4, 8, 16, 32, 64, 128}, 0).reinterpretAsFloats();
+    private static final FloatVector ZERO = FloatVector.zero(S);
+
     private SimdBoxes() {}
 
     /** Whether 8-lane float vectors are compiled to single instructions on this machine. */
@@ -39,30 +43,31 @@ final class SimdBoxes {
                     float oxn, float oxf, float oyn, float oyf, float ozn, float ozf,
                     float ix, float iy, float iz, float tMin, float tMax, float[] dist) {
         float bx = frame[f], by = frame[f + 1], bz = frame[f + 2], sx = frame[f + 3], sy = frame[f + 4], sz = frame[f + 5];
-        FloatVector t0 = plane(q, o + nx, sx, bx).sub(oxn).mul(ix);
-        FloatVector t1 = plane(q, o + (8 - nx), sx, bx).sub(oxf).mul(ix);
-        t0 = t0.max(plane(q, o + 16 + ny, sy, by).sub(oyn).mul(iy));
-        t1 = t1.min(plane(q, o + 16 + (8 - ny), sy, by).sub(oyf).mul(iy));
-        t0 = t0.max(plane(q, o + 32 + nz, sz, bz).sub(ozn).mul(iz));
-        t1 = t1.min(plane(q, o + 32 + (8 - nz), sz, bz).sub(ozf).mul(iz));
-        t0 = t0.max(tMin);
-        t1 = t1.min(tMax);
+        // The six rows decoded here and the tail written out (in both tests), not in helpers: a
+        // helper C2 declines to inline boxes its vectors, and one more call site can push the
+        // method past C2's inlining node budget (docs/performance.md, one record per wide node).
+        // Maxima and minima are compares and blends: the distances are never NaN (inverse
+        // directions are clamped and finite), and FloatVector.max pays five instructions for
+        // Java's NaN and signed-zero rules.
+        FloatVector t0 = ((FloatVector) ByteVector.fromArray(B, q, o + nx).convertShape(VectorOperators.B2F, S, 0)).mul(sx).add(bx).sub(oxn).mul(ix);
+        FloatVector t1 = ((FloatVector) ByteVector.fromArray(B, q, o + (8 - nx)).convertShape(VectorOperators.B2F, S, 0)).mul(sx).add(bx).sub(oxf).mul(ix);
+        FloatVector y0 = ((FloatVector) ByteVector.fromArray(B, q, o + 16 + ny).convertShape(VectorOperators.B2F, S, 0)).mul(sy).add(by).sub(oyn).mul(iy);
+        FloatVector y1 = ((FloatVector) ByteVector.fromArray(B, q, o + 16 + (8 - ny)).convertShape(VectorOperators.B2F, S, 0)).mul(sy).add(by).sub(oyf).mul(iy);
+        FloatVector z0 = ((FloatVector) ByteVector.fromArray(B, q, o + 32 + nz).convertShape(VectorOperators.B2F, S, 0)).mul(sz).add(bz).sub(ozn).mul(iz);
+        FloatVector z1 = ((FloatVector) ByteVector.fromArray(B, q, o + 32 + (8 - nz)).convertShape(VectorOperators.B2F, S, 0)).mul(sz).add(bz).sub(ozf).mul(iz);
+        t0 = t0.blend(y0, t0.compare(VectorOperators.LT, y0));
+        t1 = t1.blend(y1, t1.compare(VectorOperators.GT, y1));
+        t0 = t0.blend(z0, t0.compare(VectorOperators.LT, z0));
+        t1 = t1.blend(z1, t1.compare(VectorOperators.GT, z1));
+        t0 = t0.blend(tMin, t0.compare(VectorOperators.LT, tMin));
+        t1 = t1.blend(tMax, t1.compare(VectorOperators.GT, tMax));
         t0 = t0.abs().mul(-GAMMA).add(t0);
         t1 = t1.abs().mul(GAMMA).add(t1);
         VectorMask<Float> m = t0.compare(VectorOperators.LE, t1);
-        // The lanes hit are read back from the stored distances, not with VectorMask.toLong():
-        // JDK 17 does not compile that to an instruction, which made the whole render slower
-        // (docs/performance.md, the wide vector BVH).
         if (!m.anyTrue()) return 0;
         t0.blend(Float.POSITIVE_INFINITY, m.not()).intoArray(dist, 0);
-        int bits = 0;
-        for (int i = 0; i < 8; i++) bits |= (dist[i] < Float.POSITIVE_INFINITY ? 1 : 0) << i;
-        return bits;
-    }
-
-    /** Eight planes: the signed bytes q[o..o+7] as floats, times scale, plus base (as {@link WideBvh#decode}). */
-    private static FloatVector plane(byte[] q, int o, float scale, float base) {
-        return ((FloatVector) ByteVector.fromArray(B, q, o).convertShape(VectorOperators.B2F, S, 0)).mul(scale).add(base);
+        // The lanes' bits as one integer sum: VectorMask.toLong() is not an instruction on JDK 17
+        return ZERO.blend(LANE_BITS, m).reinterpretAsInts().reduceLanes(VectorOperators.ADD);
     }
 
     /**
@@ -74,20 +79,23 @@ final class SimdBoxes {
                     float ix, float iy, float iz, float tMin, float tMax, float[] dist) {
         FloatVector t0 = row(planes, o + nx).sub(oxn).mul(ix);
         FloatVector t1 = row(planes, o + (8 - nx)).sub(oxf).mul(ix);
-        t0 = t0.max(row(planes, o + 16 + ny).sub(oyn).mul(iy));
-        t1 = t1.min(row(planes, o + 16 + (8 - ny)).sub(oyf).mul(iy));
-        t0 = t0.max(row(planes, o + 32 + nz).sub(ozn).mul(iz));
-        t1 = t1.min(row(planes, o + 32 + (8 - nz)).sub(ozf).mul(iz));
-        t0 = t0.max(tMin);
-        t1 = t1.min(tMax);
+        FloatVector y0 = row(planes, o + 16 + ny).sub(oyn).mul(iy);
+        FloatVector y1 = row(planes, o + 16 + (8 - ny)).sub(oyf).mul(iy);
+        FloatVector z0 = row(planes, o + 32 + nz).sub(ozn).mul(iz);
+        FloatVector z1 = row(planes, o + 32 + (8 - nz)).sub(ozf).mul(iz);
+        t0 = t0.blend(y0, t0.compare(VectorOperators.LT, y0));
+        t1 = t1.blend(y1, t1.compare(VectorOperators.GT, y1));
+        t0 = t0.blend(z0, t0.compare(VectorOperators.LT, z0));
+        t1 = t1.blend(z1, t1.compare(VectorOperators.GT, z1));
+        t0 = t0.blend(tMin, t0.compare(VectorOperators.LT, tMin));
+        t1 = t1.blend(tMax, t1.compare(VectorOperators.GT, tMax));
         t0 = t0.abs().mul(-GAMMA).add(t0);
         t1 = t1.abs().mul(GAMMA).add(t1);
         VectorMask<Float> m = t0.compare(VectorOperators.LE, t1);
         if (!m.anyTrue()) return 0;
         t0.blend(Float.POSITIVE_INFINITY, m.not()).intoArray(dist, 0);
-        int bits = 0;
-        for (int i = 0; i < 8; i++) bits |= (dist[i] < Float.POSITIVE_INFINITY ? 1 : 0) << i;
-        return bits;
+        // The lanes' bits as one integer sum: VectorMask.toLong() is not an instruction on JDK 17
+        return ZERO.blend(LANE_BITS, m).reinterpretAsInts().reduceLanes(VectorOperators.ADD);
     }
 
     /** Eight floats stored as bits at p[o..o+7]. */

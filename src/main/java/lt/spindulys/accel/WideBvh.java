@@ -1,5 +1,7 @@
 package lt.spindulys.accel;
 
+import lt.spindulys.limits.HeapBudget;
+import lt.spindulys.limits.InsufficientMemoryException;
 import lt.spindulys.math.Ray;
 
 /**
@@ -7,7 +9,10 @@ import lt.spindulys.math.Ray;
  * the JDK's Vector API ({@link SimdBoxes}). Used in place of the binary tree when the
  * {@code jdk.incubator.vector} module is present and the machine has 256-bit vectors. A node is
  * 104 bytes: its children's boxes as bytes on a grid over its own box (48), the grid (6 floats)
- * and eight links. Immutable after construction; thread-safe.
+ * and eight links. Over triangles ({@link #build}) each leaf may also hold its triangles'
+ * corners in float ({@link TriangleBlocks}), tested eight at a time before the exact test
+ * confirms a hit, so a leaf's possible misses cost no trip to the mesh's arrays. Immutable
+ * after construction; thread-safe.
  */
 public final class WideBvh implements Accelerator {
     /** Whether the vector test can run here: the module is resolved and the hardware is wide enough. */
@@ -30,9 +35,15 @@ public final class WideBvh implements Accelerator {
     private final byte[] q;
     /** Per node six floats: the base and the scale of its planes' grid on x, y and z. */
     private final float[] frame;
-    /** Per node eight links: a node index (>= 0), or -1 - (first << 4 | count) for a leaf. */
+    /**
+     * Per node eight links: a node index (>= 0), or -1 - (first << 4 | count) for a leaf, where
+     * first is the leaf's first slot, or its block in {@link #blocks} when the leaves hold their
+     * triangles.
+     */
     private final int[] child;
     private final int nodeCount, depth;
+    /** The leaves' triangles copied into the leaves, or null: then links name leaf slots. */
+    private final TriangleBlocks blocks;
     /** The SAH cost of the binary tree this one was collapsed from (a linear pass over its nodes). */
     private final double sah;
 
@@ -56,10 +67,29 @@ public final class WideBvh implements Accelerator {
 
     /**
      * {@code bvh} collapsed to a wide tree when the vector test can run here and the tree allows
-     * it ({@link #AVAILABLE}, {@link #canCollapse}); otherwise {@code bvh} itself.
+     * it ({@link #AVAILABLE}, {@link #canCollapse}); otherwise {@code bvh} itself. Leaves keep
+     * naming their primitives: the compact layout.
      */
     public static Accelerator widen(Bvh bvh) {
-        return AVAILABLE && canCollapse(bvh) ? new WideBvh(bvh) : bvh;
+        return AVAILABLE && canCollapse(bvh) ? new WideBvh(bvh, false) : bvh;
+    }
+
+    /**
+     * The default structure over {@code set}: for triangles ({@link TriangleSet}) where the
+     * vector tests can run, a tree built with leaves of up to {@link TriangleBlocks#LANES}
+     * triangles, costed in blocks, collapsed to eight children per node, each leaf's triangles
+     * copied into it ({@link TriangleBlocks}) when the heap has room for the copies; otherwise
+     * {@link #widen} of the usual tree.
+     *
+     * @param parallel whether the build may use a pool of threads
+     */
+    public static Accelerator build(PrimitiveSet set, boolean parallel) {
+        if (AVAILABLE && set instanceof TriangleSet) {
+            Bvh bvh = new Bvh(set, TriangleBlocks.LANES, TriangleBlocks.LANES, parallel);
+            if (canCollapse(bvh)) return new WideBvh(bvh, true);
+            return bvh;
+        }
+        return widen(new Bvh(set, Bvh.DEFAULT_LEAF_SIZE, parallel));
     }
 
     /** Whether {@code bvh} can be collapsed: an inner root and leaves of at most 15 primitives. */
@@ -67,7 +97,10 @@ public final class WideBvh implements Accelerator {
         return bvh.nodeCount() > 1 && bvh.maxLeafCount() <= 15 && bvh.primitiveCount() < (1 << 26);
     }
 
-    WideBvh(Bvh bvh) {
+    WideBvh(Bvh bvh) { this(bvh, false); }
+
+    /** Collapses {@code bvh}; with {@code blocks}, copies the leaves' triangles into them when they fit the heap. */
+    WideBvh(Bvh bvh, boolean blocks) {
         this.set = bvh.set();
         this.perm = bvh.perm();
         int[] node = bvh.nodes();
@@ -80,12 +113,45 @@ public final class WideBvh implements Accelerator {
         nodeCount = c.count;
         depth = c.maxDepth;
         sah = bvh.sahCost();
+        this.blocks = blocks && set instanceof TriangleSet ts && leavesFit() ? copyLeaves(ts) : null;
     }
 
     @Override
     public double sahCost() { return sah; }
 
+    /** Whether every leaf fits one block. */
+    private boolean leavesFit() {
+        for (int c : child) if (c < 0 && ((-1 - c) & 15) > TriangleBlocks.LANES) return false;
+        return true;
+    }
+
+    /**
+     * Copies every leaf's triangles into a block, and links the leaves to their blocks; null,
+     * leaving the leaves as they are, when the heap has no room for the copies (the compact layout).
+     */
+    private TriangleBlocks copyLeaves(TriangleSet ts) {
+        int leaves = 0;
+        for (int c : child) if (c < 0 && ((-1 - c) & 15) > 0) leaves++;
+        TriangleBlocks b;
+        try (HeapBudget.Reservation r = HeapBudget.reserve(TriangleBlocks.bytes(leaves), "the leaf blocks of " + ts.size() + " triangles")) {
+            b = new TriangleBlocks(ts, perm, leaves);
+        } catch (InsufficientMemoryException e) {
+            return null;
+        }
+        for (int i = 0; i < child.length; i++) {
+            int c = child[i];
+            if (c < 0 && ((-1 - c) & 15) > 0) {
+                int code = -1 - c, n = code & 15;
+                child[i] = -1 - (b.add(code >>> 4, n) << 4 | n);
+            }
+        }
+        return b;
+    }
+
     public int nodeCount() { return nodeCount; }
+
+    /** Whether the leaves hold their triangles' corners ({@link TriangleBlocks}), or name them only (compact). */
+    public boolean hasLeafBlocks() { return blocks != null; }
 
     /** The node arrays, shared, not copied (for tests comparing collapses). */
     byte[] planes() { return q; }
@@ -100,15 +166,15 @@ public final class WideBvh implements Accelerator {
             int row = PLANES * (i / 8) + i % 8;
             boolean empty = q[row] > q[row + 8]; // an empty lane's min x lies above its max x
             if (c < 0 && !empty) {
-                int code = -1 - c;
-                for (int k = code >>> 4, end = k + (code & 15); k < end; k++) seen[k]++;
+                int code = -1 - c, first = blocks == null || (code & 15) == 0 ? code >>> 4 : blocks.first(code >>> 4);
+                for (int k = first, end = k + (code & 15); k < end; k++) seen[k]++;
             }
         }
         return seen;
     }
 
     @Override
-    public long memoryBytes() { return q.length + 4L * frame.length + 4L * child.length + (perm == null ? 0 : 4L * perm.length); }
+    public long memoryBytes() { return q.length + 4L * frame.length + 4L * child.length + (perm == null ? 0 : 4L * perm.length) + (blocks == null ? 0 : blocks.bytes()); }
 
     private int stackNeed() { return 2 * (7 * (depth + 1) + 2); }
 
@@ -188,7 +254,8 @@ public final class WideBvh implements Accelerator {
                     if (TraversalScratch.COUNTING) ctx.leavesEntered[ctx.rayKind]++;
                     int code = -1 - n;
                     int first = code >>> 4;
-                    if (set.intersectRange(perm, first, first + (code & 15), ray, hit, ctx)) {
+                    if (blocks != null ? blocks.intersect(first, code & 15, ray, hit, ctx)
+                            : set.intersectRange(perm, first, first + (code & 15), ray, hit, ctx)) {
                         any = true;
                         tMax = Bvh.up(ray.tMax);
                     }
@@ -249,8 +316,9 @@ public final class WideBvh implements Accelerator {
                     int code = -1 - n;
                     int first = code >>> 4, end = first + (code & 15);
                     if (visitor == null) {
-                        if (set.occludedRange(perm, first, end, ray, ctx)) return true;
+                        if (blocks != null ? blocks.occluded(first, code & 15, ray, ctx) : set.occludedRange(perm, first, end, ray, ctx)) return true;
                     } else {
+                        if (blocks != null) { first = blocks.first(first); end = first + (code & 15); }
                         for (int k = first; k < end; k++) visitor.visit(perm == null ? k : perm[k], ray, ctx);
                     }
                 }

@@ -48,7 +48,7 @@ public final class BenchCommand {
                             (adaptive rows: alternated pairs of new JVMs; Table 1 cells run once each)
               --cell-timeout S  stop an adaptive-row cell after S seconds (default 600) and report it as stopped
               --accel A     acceleration structure of the peer-scene rows: bvh (the scenes' default),
-                            bvh2, octree or bruteforce; to compare structures on the same scene
+                            bvh-compact, bvh2, octree or bruteforce; to compare structures on the same scene
               --peers LIST  peer renderers run beside the rows torus-1m, knot-1m and torus-1m-close, those of LIST
                             (comma-separated: embree, povray, cycles; default all three) that are on PATH, in --runs
                             alternated pairs each; 'none' runs none

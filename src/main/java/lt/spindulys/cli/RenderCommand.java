@@ -65,7 +65,7 @@ final class RenderCommand {
               --focus D          distance to the focal plane along the view (overrides the scene)
               --threads N        render threads (default: all cores)
               --seed S           global random seed (overrides the scene)
-              --accel A          acceleration structure: bvh, bvh2, octree or bruteforce (overrides the scene)
+              --accel A          acceleration structure: bvh, bvh-compact, bvh2, octree or bruteforce (overrides the scene)
               --aov LIST         render passes beside the image, comma-separated: depth, normal, object
                                  (OUT.depth.pfm, OUT.normal.pfm, OUT.object.png; overrides the scene)
               --shutter OPEN,CLOSE  shutter interval of the motion blur, e.g. 0,1 (overrides the scene)

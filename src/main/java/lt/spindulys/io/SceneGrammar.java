@@ -180,7 +180,7 @@ final class SceneGrammar {
             opt("ambient", Kind.COLOR),
             choice("encoding", null, "linear", "srgb"),
             opt("seed", Kind.LONG),
-            choice("accelerator", null, "bvh", "bvh2", "octree", "bruteforce"),
+            choice("accelerator", null, "bvh", "bvh-compact", "bvh2", "octree", "bruteforce"),
             new Key("aov", Kind.CHOICES, false, false, null, Aov.keywords()),
             opt("shutter", Kind.INTERVAL),
             opt("timesteps", Kind.INTEGER),

@@ -20,12 +20,19 @@ public enum AcceleratorKind {
     /**
      * The default, the fastest in our measurements: a {@link Bvh} collapsed to a {@link WideBvh}
      * whose eight boxes per node are tested with one vector pass when the JVM has the
-     * {@code jdk.incubator.vector} module; otherwise the binary {@link Bvh} itself.
+     * {@code jdk.incubator.vector} module, a mesh's leaves holding up to eight triangles whose
+     * corners are copied into them in float and tested together (when the heap has room for the
+     * copies; otherwise as {@link #BVH_COMPACT}); without the module the binary {@link Bvh}.
      */
     BVH("bvh") {
-        @Override Accelerator build(PrimitiveSet set) {
-            return WideBvh.widen(new Bvh(set));
-        }
+        @Override Accelerator build(PrimitiveSet set) { return WideBvh.build(set, true); }
+    },
+    /**
+     * {@link #BVH} without the copies: leaves of up to four triangles that name them, about 36
+     * bytes a triangle less, for meshes that would not fit the heap otherwise.
+     */
+    BVH_COMPACT("bvh-compact") {
+        @Override Accelerator build(PrimitiveSet set) { return WideBvh.widen(new Bvh(set)); }
     },
     /** {@link Bvh}: the binary binned-SAH hierarchy with scalar box tests, whatever the JVM. */
     BVH2("bvh2") {
@@ -53,7 +60,8 @@ public enum AcceleratorKind {
     /** {@link #build}, on the calling thread alone (a render thread refining a lazy patch). */
     Accelerator buildOnThisThread(PrimitiveSet set) {
         return switch (this) {
-            case BVH -> WideBvh.widen(new Bvh(set, Bvh.DEFAULT_LEAF_SIZE, false));
+            case BVH -> WideBvh.build(set, false);
+            case BVH_COMPACT -> WideBvh.widen(new Bvh(set, Bvh.DEFAULT_LEAF_SIZE, false));
             case BVH2 -> new Bvh(set, Bvh.DEFAULT_LEAF_SIZE, false);
             default -> build(set);
         };
@@ -67,8 +75,10 @@ public enum AcceleratorKind {
      */
     public String description() {
         return switch (this) {
-            case BVH -> WideBvh.AVAILABLE ? "bvh: 8 children per node, vector box tests"
+            case BVH -> WideBvh.AVAILABLE ? "bvh: 8 children per node, vector box tests, triangles in the leaves"
                     : "bvh: binary, scalar box tests (the JVM has no jdk.incubator.vector module or no 256-bit vectors)";
+            case BVH_COMPACT -> WideBvh.AVAILABLE ? "bvh-compact: 8 children per node, vector box tests, leaves naming their triangles"
+                    : "bvh-compact: binary, scalar box tests (the JVM has no jdk.incubator.vector module or no 256-bit vectors)";
             case BVH2 -> "bvh2: binary, scalar box tests";
             case OCTREE -> "octree";
             case BRUTE_FORCE -> "bruteforce: every primitive tested";
@@ -98,7 +108,7 @@ public enum AcceleratorKind {
      *
      * @param keyword the keyword
      * @return the kind
-     * @throws IllegalArgumentException "unknown accelerator 'kd' (expected one of bvh, bvh2, octree, bruteforce)"
+     * @throws IllegalArgumentException "unknown accelerator 'kd' (expected one of bvh, bvh-compact, bvh2, octree, bruteforce)"
      */
     public static AcceleratorKind fromKeyword(String keyword) {
         for (AcceleratorKind a : values()) if (a.keyword.equals(keyword)) return a;

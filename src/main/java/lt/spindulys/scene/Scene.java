@@ -134,7 +134,9 @@ public final class Scene {
      * One line per triangle mesh among the scene's objects that owns its geometry (instances
      * share their original's structure) and has a hierarchy over its triangles: its name,
      * triangle count and the hierarchy's SAH cost ({@link lt.spindulys.accel.Bvh#sahCost()}),
-     * so that a change to the build shows whether the tree kept its quality.
+     * so that a change to the build shows whether the tree kept its quality; whether the wide
+     * tree's leaves hold their triangles or name them (the compact layout, chosen or forced by
+     * the heap); and the mesh's bytes per triangle, arrays and structures.
      *
      * @return the lines, empty when no mesh has a hierarchy
      */
@@ -144,7 +146,10 @@ public final class Scene {
             if (o instanceof TriangleMesh m && !m.isInstance()) {
                 double sah = m.accelerator() == null ? Double.NaN : m.accelerator().sahCost();
                 if (!Double.isNaN(sah)) {
-                    lines.add(String.format(java.util.Locale.ROOT, "mesh %s: %d triangles, SAH cost %.4f", m.name(), m.size(), sah));
+                    String leaves = m.accelerator() instanceof lt.spindulys.accel.WideBvh w
+                            ? (w.hasLeafBlocks() ? ", triangles in the leaves" : ", leaves naming their triangles") : "";
+                    lines.add(String.format(java.util.Locale.ROOT, "mesh %s: %d triangles, SAH cost %.4f%s, %.1f bytes/triangle",
+                            m.name(), m.size(), sah, leaves, (double) m.memoryBytes() / Math.max(1, m.size())));
                 }
             }
         }

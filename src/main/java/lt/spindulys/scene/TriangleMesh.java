@@ -42,7 +42,7 @@ import lt.spindulys.material.Material;
  * {@code MeshTopology}, the crossings CSG pairs into spans in {@code TriangleSpans}; this class
  * triangulates, owns the arrays and their structures, and shades.
  */
-public final class TriangleMesh extends GObject implements PrimitiveSet {
+public final class TriangleMesh extends GObject implements lt.spindulys.accel.TriangleSet {
     /**
      * Where the mesh came from, for messages. The polygon record itself is not kept: its
      * per-corner index arrays would cost another 18 bytes per triangle of a quad mesh, and the
@@ -525,6 +525,12 @@ public final class TriangleMesh extends GObject implements PrimitiveSet {
 
     @Override
     public void bounds(int i, double[] out) { WatertightTriangles.bounds(tri, pos, i, out); }
+
+    @Override
+    public int[] corners() { return tri; }
+
+    @Override
+    public double[] positions() { return pos; }
 
     /**
      * Puts the triangles in the structure's leaf order and numbers the vertices by first use in

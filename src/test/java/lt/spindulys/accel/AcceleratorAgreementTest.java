@@ -43,7 +43,8 @@ class AcceleratorAgreementTest {
      */
     static Accelerator build(AcceleratorKind kind, PrimitiveSet set) {
         return switch (kind) {
-            case BVH -> WideBvh.widen(new Bvh(set));
+            case BVH -> WideBvh.build(set, true);
+            case BVH_COMPACT -> WideBvh.widen(new Bvh(set));
             case BVH2 -> new Bvh(set);
             case OCTREE -> new Octree(set);
             case BRUTE_FORCE -> new BruteForce(set);
@@ -51,13 +52,13 @@ class AcceleratorAgreementTest {
     }
 
     @ParameterizedTest
-    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "BVH2", "OCTREE"})
+    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "BVH_COMPACT", "BVH2", "OCTREE"})
     void randomSoup(AcceleratorKind kind) {
         mesh(kind, soup(new Random(101), 150, 0.005, 0.2), 102);
     }
 
     @ParameterizedTest
-    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "BVH2", "OCTREE"})
+    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "BVH_COMPACT", "BVH2", "OCTREE"})
     void closedGridWithFacesOnCellPlanes(AcceleratorKind kind) {
         // Faces at multiples of 1/2 from the low corner: exactly on octree cell planes from level 2 on.
         TriangleMesh m = new TriangleMesh(TestMeshes.gridCube(4));
@@ -87,7 +88,7 @@ class AcceleratorAgreementTest {
     }
 
     @ParameterizedTest
-    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "BVH2", "OCTREE"})
+    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "BVH_COMPACT", "BVH2", "OCTREE"})
     void twoLevelSceneAgreesWithBruteForceAtBothLevels(AcceleratorKind kind) {
         Scene fast = scene(kind, 110), slow = scene(AcceleratorKind.BRUTE_FORCE, 110);
         Random r = new Random(111);
@@ -122,7 +123,7 @@ class AcceleratorAgreementTest {
      * which asks every object, finds.
      */
     @ParameterizedTest
-    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "BVH2", "OCTREE"})
+    @EnumSource(value = AcceleratorKind.class, names = {"BVH", "BVH_COMPACT", "BVH2", "OCTREE"})
     void movingObjectsAreFoundAtEveryTime(AcceleratorKind kind) {
         Scene fast = movingScene(kind, 120), slow = movingScene(AcceleratorKind.BRUTE_FORCE, 120);
         Random r = new Random(121);

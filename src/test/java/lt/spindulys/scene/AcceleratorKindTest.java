@@ -17,7 +17,7 @@ class AcceleratorKindTest {
         for (AcceleratorKind k : AcceleratorKind.values()) assertEquals(k, AcceleratorKind.fromKeyword(k.keyword()));
         assertEquals(AcceleratorKind.BVH, AcceleratorKind.DEFAULT);
         var e = assertThrows(IllegalArgumentException.class, () -> AcceleratorKind.fromKeyword("kd"));
-        assertEquals("unknown accelerator 'kd' (expected one of bvh, bvh2, octree, bruteforce)", e.getMessage());
+        assertEquals("unknown accelerator 'kd' (expected one of bvh, bvh-compact, bvh2, octree, bruteforce)", e.getMessage());
     }
 
     @Test

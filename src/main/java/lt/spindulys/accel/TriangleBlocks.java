@@ -1,0 +1,113 @@
+package lt.spindulys.accel;
+
+import lt.spindulys.math.Ray;
+
+/**
+ * The triangles of a wide tree's leaves copied into the leaves: per leaf one block of up to
+ * {@link #LANES} triangles, their corners in float, structure of arrays (a row of eight x of the
+ * first corners, then their y, ...), so that one pass of 256-bit vectors tells which of the
+ * leaf's triangles the ray certainly misses. Those it may hit are then tested exactly, in double,
+ * by {@link WatertightTriangles} on the mesh's own arrays: a hit, its distance and its
+ * barycentrics are bit for bit what the double test gives alone, so every image and every
+ * agreement between structures is unchanged, and watertightness is the double test's.
+ *
+ * <p>The float test is conservative. Corners, origin and shear are rounded to float; each 2D
+ * coordinate of the sheared frame is then within {@code delta = 12 eps (P + O)} of its exact
+ * value (eps = 2^-24, P the largest coordinate of the mesh, O of the ray's origin), and each edge
+ * function within {@code 4 eps S^2 + 4 delta S + 2 delta^2} (S the lane's largest coordinate).
+ * A lane is dropped only when its edge functions have strictly mixed signs beyond twice that
+ * bound, where the exact test also finds mixed signs.
+ */
+public final class TriangleBlocks {
+    /** Triangles per block (the lanes of one 256-bit float vector). */
+    public static final int LANES = 8;
+    /** Floats per block: three corners, three coordinates, eight lanes. */
+    public static final int BLOCK = 9 * LANES;
+
+    private final float[] corners;
+    /** The first leaf slot of each block; its triangles are those of slots first .. first + count - 1. */
+    private final int[] first;
+    /** The triangle of each leaf slot, or null when slot k holds triangle k. */
+    private final int[] perm;
+    private final int[] tri;
+    private final double[] pos;
+    /** The largest absolute coordinate of any corner. */
+    private final double maxAbs;
+    private int count;
+
+    /** Bytes of {@code blocks} blocks (what {@link #bytes()} will say), to check before making them. */
+    static long bytes(long blocks) { return blocks * (4L * BLOCK + 4); }
+
+    /**
+     * Room for {@code blocks} blocks of {@code set}'s triangles, leaf slot k holding triangle
+     * {@code perm[k]} (or k when perm is null); filled by {@link #add}.
+     */
+    TriangleBlocks(TriangleSet set, int[] perm, int blocks) {
+        this.perm = perm;
+        corners = new float[BLOCK * blocks];
+        first = new int[blocks];
+        tri = set.corners();
+        pos = set.positions();
+        double m = 0;
+        for (double p : pos) m = Math.max(m, Math.abs(p));
+        maxAbs = m;
+    }
+
+    /** Copies leaf slots [from, from + n) into the next block; returns its index. */
+    int add(int from, int n) {
+        int b = count++;
+        first[b] = from;
+        int o = BLOCK * b;
+        for (int l = 0; l < n; l++) {
+            int i = perm == null ? from + l : perm[from + l];
+            for (int c = 0; c < 3; c++) {
+                int p = 3 * tri[3 * i + c];
+                for (int a = 0; a < 3; a++) corners[o + LANES * (3 * c + a) + l] = (float) pos[p + a];
+            }
+        }
+        return b;
+    }
+
+    /** The first leaf slot of block b. */
+    int first(int b) { return first[b]; }
+
+    long bytes() { return 4L * corners.length + 4L * first.length; }
+
+    /** The closest hit among block b's n triangles, as {@link WatertightTriangles#test} records it. */
+    boolean intersect(int b, int n, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
+        int bits = candidates(b, ray, ctx) & ((1 << n) - 1);
+        boolean any = false;
+        int f = first[b];
+        while (bits != 0) {
+            int k = f + Integer.numberOfTrailingZeros(bits);
+            bits &= bits - 1;
+            if (WatertightTriangles.test(tri, pos, perm, k, k + 1, ray, hit, ctx)) any = true;
+        }
+        return any;
+    }
+
+    /** Whether any of block b's n triangles blocks the ray. */
+    boolean occluded(int b, int n, Ray ray, TraversalScratch ctx) {
+        int bits = candidates(b, ray, ctx) & ((1 << n) - 1);
+        int f = first[b];
+        while (bits != 0) {
+            int k = f + Integer.numberOfTrailingZeros(bits);
+            bits &= bits - 1;
+            if (WatertightTriangles.test(tri, pos, perm, k, k + 1, ray, null, ctx)) return true;
+        }
+        return false;
+    }
+
+    /** The lanes of block b (all eight, whatever its count) that the ray may hit, as bits. */
+    int candidates(int b, Ray ray, TraversalScratch ctx) {
+        ctx.direction(ray);
+        final int kx = ctx.shearKx, ky = ctx.shearKy, kz = ctx.shearKz;
+        final double okx = kx == 0 ? ray.ox : kx == 1 ? ray.oy : ray.oz;
+        final double oky = ky == 0 ? ray.ox : ky == 1 ? ray.oy : ray.oz;
+        final double okz = kz == 0 ? ray.ox : kz == 1 ? ray.oy : ray.oz;
+        double o = Math.max(Math.abs(okx), Math.max(Math.abs(oky), Math.abs(okz)));
+        float delta = (float) (12 * 0x1p-24 * (maxAbs + o));
+        return SimdTriangles.candidates(corners, BLOCK * b, kx, ky, kz, (float) okx, (float) oky, (float) okz,
+                (float) ctx.shearSx, (float) ctx.shearSy, delta, ctx.lanes);
+    }
+}
