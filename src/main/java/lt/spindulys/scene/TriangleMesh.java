@@ -526,9 +526,15 @@ public final class TriangleMesh extends GObject implements lt.spindulys.accel.Tr
     @Override
     public void bounds(int i, double[] out) { WatertightTriangles.bounds(tri, pos, i, out); }
 
+    /**
+     * Three position indices per triangle, in the structure's leaf order once it is built: the
+     * array itself, for the structure over the triangles, which copies their corners into its
+     * leaves; not to be changed.
+     */
     @Override
     public int[] corners() { return tri; }
 
+    /** Three coordinates per position: the array itself, as {@link #corners()}; not to be changed. */
     @Override
     public double[] positions() { return pos; }
 

@@ -69,7 +69,8 @@ class ModuleTest {
      */
     private static final Set<String> MACHINERY = Set.of("lt.spindulys.trace.Hit", "lt.spindulys.trace.TraceContext",
             "lt.spindulys.trace.ShadingData", "lt.spindulys.trace.SpanBuffer", "lt.spindulys.trace.TracedObject",
-            "lt.spindulys.accel.PrimitiveSet", "lt.spindulys.accel.PrimitiveHit", "lt.spindulys.accel.TraversalScratch");
+            "lt.spindulys.accel.PrimitiveSet", "lt.spindulys.accel.TriangleSet", "lt.spindulys.accel.PrimitiveHit",
+            "lt.spindulys.accel.TraversalScratch");
 
     @TempDir Path dir;
 

@@ -153,7 +153,7 @@ public final class BadInputCases {
                 c("integer out of range", "settings { height 99999999999 }", "1:19: integer 99999999999 is out of range for 'height'"),
                 c("seed out of range", "settings { seed 99999999999999999999 }", "1:17: integer 99999999999999999999 is out of range for 'seed'"),
                 c("bad encoding", "settings { encoding gamma }", "1:21: expected linear or srgb for 'encoding', found 'gamma'"),
-                c("unknown accelerator", "settings { accelerator grid }", "1:24: expected bvh, bvh2, octree or bruteforce for 'accelerator', found 'grid'"),
+                c("unknown accelerator", "settings { accelerator grid }", "1:24: expected bvh, bvh-compact, bvh2, octree or bruteforce for 'accelerator', found 'grid'"),
                 c("unknown aov", "settings { aov depth albedo }", "1:22: expected depth, normal or object for 'aov', found 'albedo'"),
                 c("misspelt aov", "settings {\n  aov normall\n}", "2:7: expected depth, normal or object for 'aov', found 'normall' (did you mean 'normal'?)"),
                 c("aov listed twice", "settings { aov depth normal depth }", "1:29: 'depth' listed twice for 'aov'"),
