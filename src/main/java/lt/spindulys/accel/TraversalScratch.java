@@ -32,6 +32,9 @@ public class TraversalScratch {
     /** Per-lane scratch of the wide BVH's vector box test, and its per-ray constants. */
     public final float[] lanes = new float[8], wideRay = new float[9];
 
+    /** Per-ray constants of the float triangle test of a wide tree's leaves ({@link TriangleBlocks#prepare}). */
+    final float[] blockRay = new float[6];
+
     /**
      * The triangle whose any-hit test ({@link WatertightTriangles#test} without a hit record) last
      * returned true on this thread, for the scene's occluder cache; not reset by other queries.

@@ -73,9 +73,29 @@ public final class TriangleBlocks {
 
     long bytes() { return 4L * corners.length + 4L * first.length; }
 
-    /** The closest hit among block b's n triangles, as {@link WatertightTriangles#test} records it. */
+    /**
+     * The ray's constants of the float test, once per traversal, into {@code ctx.blockRay}: the
+     * origin in the permuted axes, the shear, and the error bound of a sheared coordinate.
+     */
+    void prepare(Ray ray, TraversalScratch ctx) {
+        ctx.direction(ray);
+        final int kx = ctx.shearKx, ky = ctx.shearKy, kz = ctx.shearKz;
+        final double okx = kx == 0 ? ray.ox : kx == 1 ? ray.oy : ray.oz;
+        final double oky = ky == 0 ? ray.ox : ky == 1 ? ray.oy : ray.oz;
+        final double okz = kz == 0 ? ray.ox : kz == 1 ? ray.oy : ray.oz;
+        double o = Math.max(Math.abs(okx), Math.max(Math.abs(oky), Math.abs(okz)));
+        float[] r = ctx.blockRay;
+        r[0] = (float) okx;
+        r[1] = (float) oky;
+        r[2] = (float) okz;
+        r[3] = (float) ctx.shearSx;
+        r[4] = (float) ctx.shearSy;
+        r[5] = (float) (12 * 0x1p-24 * (maxAbs + o));
+    }
+
+    /** The closest hit among block b's n triangles, as {@link WatertightTriangles#test} records it ({@link #prepare} first). */
     boolean intersect(int b, int n, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
-        int bits = candidates(b, ray, ctx) & ((1 << n) - 1);
+        int bits = candidates(b, ctx) & ((1 << n) - 1);
         boolean any = false;
         int f = first[b];
         while (bits != 0) {
@@ -86,9 +106,9 @@ public final class TriangleBlocks {
         return any;
     }
 
-    /** Whether any of block b's n triangles blocks the ray. */
+    /** Whether any of block b's n triangles blocks the ray ({@link #prepare} first). */
     boolean occluded(int b, int n, Ray ray, TraversalScratch ctx) {
-        int bits = candidates(b, ray, ctx) & ((1 << n) - 1);
+        int bits = candidates(b, ctx) & ((1 << n) - 1);
         int f = first[b];
         while (bits != 0) {
             int k = f + Integer.numberOfTrailingZeros(bits);
@@ -98,16 +118,14 @@ public final class TriangleBlocks {
         return false;
     }
 
-    /** The lanes of block b (all eight, whatever its count) that the ray may hit, as bits. */
+    /** The lanes of block b (all eight, whatever its count) that the ray may hit, as bits (for tests). */
     int candidates(int b, Ray ray, TraversalScratch ctx) {
-        ctx.direction(ray);
-        final int kx = ctx.shearKx, ky = ctx.shearKy, kz = ctx.shearKz;
-        final double okx = kx == 0 ? ray.ox : kx == 1 ? ray.oy : ray.oz;
-        final double oky = ky == 0 ? ray.ox : ky == 1 ? ray.oy : ray.oz;
-        final double okz = kz == 0 ? ray.ox : kz == 1 ? ray.oy : ray.oz;
-        double o = Math.max(Math.abs(okx), Math.max(Math.abs(oky), Math.abs(okz)));
-        float delta = (float) (12 * 0x1p-24 * (maxAbs + o));
-        return SimdTriangles.candidates(corners, BLOCK * b, kx, ky, kz, (float) okx, (float) oky, (float) okz,
-                (float) ctx.shearSx, (float) ctx.shearSy, delta, ctx.lanes);
+        prepare(ray, ctx);
+        return candidates(b, ctx);
+    }
+
+    private int candidates(int b, TraversalScratch ctx) {
+        float[] r = ctx.blockRay;
+        return SimdTriangles.candidates(corners, BLOCK * b, ctx.shearKx, ctx.shearKy, ctx.shearKz, r[0], r[1], r[2], r[3], r[4], r[5], ctx.lanes);
     }
 }

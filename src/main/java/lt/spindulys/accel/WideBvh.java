@@ -205,6 +205,8 @@ public final class WideBvh implements Accelerator {
     public boolean intersect(Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
         final float[] r = prepare(ray, ctx);
         final float ix = r[0], iy = r[1], iz = r[2], oxn = r[3], oxf = r[4], oyn = r[5], oyf = r[6], ozn = r[7], ozf = r[8];
+        final TriangleBlocks blocks = this.blocks;
+        if (blocks != null) blocks.prepare(ray, ctx);
         final int nx = ix >= 0 ? 0 : 8, ny = iy >= 0 ? 0 : 8, nz = iz >= 0 ? 0 : 8;
         final float tMin = Bvh.down(ray.tMin);
         float tMax = Bvh.up(ray.tMax);
@@ -291,6 +293,8 @@ public final class WideBvh implements Accelerator {
     private boolean walk(Ray ray, TraversalScratch ctx, PrimitiveVisitor visitor) {
         final float[] r = prepare(ray, ctx);
         final float ix = r[0], iy = r[1], iz = r[2], oxn = r[3], oxf = r[4], oyn = r[5], oyf = r[6], ozn = r[7], ozf = r[8];
+        final TriangleBlocks blocks = this.blocks;
+        if (blocks != null) blocks.prepare(ray, ctx);
         final int nx = ix >= 0 ? 0 : 8, ny = iy >= 0 ? 0 : 8, nz = iz >= 0 ? 0 : 8;
         final float tMin = Bvh.down(ray.tMin), tMax = Bvh.up(ray.tMax);
         final int base = ctx.stackTop, need = stackNeed();

@@ -49,7 +49,7 @@ public final class BenchCommand {
               --cell-timeout S  stop an adaptive-row cell after S seconds (default 600) and report it as stopped
               --accel A     acceleration structure of the peer-scene rows: bvh (the scenes' default),
                             bvh-compact, bvh2, octree or bruteforce; to compare structures on the same scene
-              --peers LIST  peer renderers run beside the rows torus-1m, knot-1m and torus-1m-close, those of LIST
+              --peers LIST  peer renderers run beside the rows torus-250k, torus-1m, knot-1m and torus-1m-close, those of LIST
                             (comma-separated: embree, povray, cycles; default all three) that are on PATH, in --runs
                             alternated pairs each; 'none' runs none
               --list        list the rows and exit
@@ -161,8 +161,8 @@ public final class BenchCommand {
 
     private static Row torusRow(String size) {
         BenchMeshes.Size s = BenchMeshes.size(size);
-        // The 1m torus is the size with targets beside the peers.
-        PeerBench.Targets targets = size.equals("1m") ? PeerBench.Targets.meshTracing(1.0) : null;
+        // The 1m and 250k tori are the sizes with targets beside the peers.
+        PeerBench.Targets targets = size.equals("1m") || size.equals("250k") ? PeerBench.Targets.meshTracing(1.0) : null;
         return new Row("torus-" + size, "Peer scene",
                 String.format(Locale.ROOT, "scenes/bench/torus-%s.dat: torus of %,d triangles on a ground quad, 1280x720, 1 spp, %d threads; in-process and cold process%s",
                         size, s.triangles(), THREADS, targets != null ? "; beside the peers" : ""),
