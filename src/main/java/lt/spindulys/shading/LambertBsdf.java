@@ -1,0 +1,64 @@
+package lt.spindulys.shading;
+
+import lt.spindulys.math.Color;
+
+/**
+ * Ideal diffuse reflection: f = albedo / pi on wo's side of the surface, sampled with a cosine
+ * weighted hemisphere there, so every sample's weight f |cos wi| / pdf is exactly the albedo.
+ */
+public final class LambertBsdf implements Bsdf {
+    private final double fr, fg, fb;
+
+    /**
+     * A Lambertian reflector.
+     *
+     * @param r red albedo (reflected fraction, normally in [0,1])
+     * @param g green albedo
+     * @param b blue albedo
+     */
+    public LambertBsdf(double r, double g, double b) {
+        fr = r / Math.PI;
+        fg = g / Math.PI;
+        fb = b / Math.PI;
+    }
+
+    /**
+     * A Lambertian reflector.
+     *
+     * @param albedo reflected fraction per channel
+     */
+    public LambertBsdf(Color albedo) { this(albedo.r(), albedo.g(), albedo.b()); }
+
+    @Override
+    public void eval(double wox, double woy, double woz, double wix, double wiy, double wiz, double[] rgbOut) {
+        if (woz * wiz > 0) {
+            rgbOut[0] = fr; rgbOut[1] = fg; rgbOut[2] = fb;
+        } else {
+            rgbOut[0] = 0; rgbOut[1] = 0; rgbOut[2] = 0;
+        }
+    }
+
+    @Override
+    public double pdf(double wox, double woy, double woz, double wix, double wiy, double wiz) {
+        return woz * wiz > 0 ? Math.abs(wiz) / Math.PI : 0;
+    }
+
+    @Override
+    public boolean sample(double wox, double woy, double woz, double uc, double u1, double u2, BsdfSample out) {
+        out.clear();
+        if (woz == 0) return false;
+        // Project a uniform disk point up onto the hemisphere (Malley), then onto wo's side.
+        double r = Math.sqrt(u1), phi = 2 * Math.PI * u2;
+        double z = Math.sqrt(Math.max(0, 1 - u1));
+        if (z == 0) return false; // zero density on the horizon
+        out.wix = r * Math.cos(phi);
+        out.wiy = r * Math.sin(phi);
+        out.wiz = woz > 0 ? z : -z;
+        out.f[0] = fr; out.f[1] = fg; out.f[2] = fb;
+        out.pdf = z / Math.PI;
+        return true;
+    }
+
+    @Override
+    public boolean isSpecular() { return false; }
+}
