@@ -1,0 +1,81 @@
+package lt.spindulys.shading;
+
+/**
+ * The specular coat of an opaque dielectric (plastic, paint): GGX reflection weighted by the exact
+ * dielectric Fresnel reflectance F(|wo.wm|, ior), untinted, with no transmitted lobe: the light
+ * Fresnel lets through is what {@link FresnelDiffuseLobe} scatters. Two-sided like
+ * {@link LambertBsdf}: a wo below the surface sees the same coat mirrored. Effectively smooth
+ * roughness gives a delta mirror lobe of weight F(|cos wo|).
+ */
+final class DielectricSpecularLobe implements Bsdf {
+    private final double ior;
+    private final MicrofacetDistribution distribution;
+    private final boolean smooth;
+
+    DielectricSpecularLobe(double ior, double roughness) {
+        this.ior = ior;
+        distribution = MicrofacetDistribution.fromRoughness(roughness);
+        smooth = distribution.isEffectivelySmooth();
+    }
+
+    @Override
+    public boolean isSpecular() { return smooth; }
+
+    @Override
+    public void eval(double wox, double woy, double woz, double wix, double wiy, double wiz, double[] rgbOut) {
+        rgbOut[0] = 0; rgbOut[1] = 0; rgbOut[2] = 0;
+        if (smooth || !(woz * wiz > 0)) return;
+        double hx = wox + wix, hy = woy + wiy, hz = woz + wiz;
+        double len2 = hx * hx + hy * hy + hz * hz;
+        if (!(len2 > 0)) return;
+        double inv = (hz < 0 ? -1 : 1) / Math.sqrt(len2);
+        hx *= inv; hy *= inv; hz *= inv;
+        double d = distribution.d(hx, hy, hz);
+        if (d == 0) return;
+        double fresnel = DielectricBsdf.fresnel(Math.abs(wox * hx + woy * hy + woz * hz), ior);
+        double f = d * distribution.g(wox, woy, woz, wix, wiy, wiz) * fresnel / (4 * Math.abs(woz) * Math.abs(wiz));
+        if (!(f > 0) || Double.isInfinite(f)) return;
+        rgbOut[0] = f; rgbOut[1] = f; rgbOut[2] = f;
+    }
+
+    @Override
+    public double pdf(double wox, double woy, double woz, double wix, double wiy, double wiz) {
+        if (smooth || !(woz * wiz > 0)) return 0;
+        double hx = wox + wix, hy = woy + wiy, hz = woz + wiz;
+        double len2 = hx * hx + hy * hy + hz * hz;
+        if (!(len2 > 0)) return 0;
+        double inv = (hz < 0 ? -1 : 1) / Math.sqrt(len2);
+        hx *= inv; hy *= inv; hz *= inv;
+        double cosOM = Math.abs(wox * hx + woy * hy + woz * hz);
+        if (cosOM == 0) return 0;
+        double pdf = distribution.visibleNormalPdf(wox, woy, woz, hx, hy, hz) / (4 * cosOM);
+        return pdf > 0 && Double.isFinite(pdf) ? pdf : 0;
+    }
+
+    @Override
+    public boolean sample(double wox, double woy, double woz, double uc, double u1, double u2, BsdfSample out) {
+        out.clear();
+        if (woz == 0) return false;
+        if (smooth) {
+            double fresnel = DielectricBsdf.fresnel(Math.abs(woz), ior);
+            if (!(fresnel > 0)) return false;
+            double f = fresnel / Math.abs(woz);
+            out.wix = -wox; out.wiy = -woy; out.wiz = woz;
+            out.f[0] = f; out.f[1] = f; out.f[2] = f;
+            out.pdf = 1;
+            out.specular = true;
+            return true;
+        }
+        double[] wm = out.microNormal;
+        distribution.sampleVisibleNormal(wox, woy, woz, u1, u2, wm);
+        double k = 2 * (wox * wm[0] + woy * wm[1] + woz * wm[2]);
+        double wix = k * wm[0] - wox, wiy = k * wm[1] - woy, wiz = k * wm[2] - woz;
+        if (!(woz * wiz > 0)) return false;
+        double pdf = pdf(wox, woy, woz, wix, wiy, wiz);
+        if (!(pdf > 0)) return false;
+        eval(wox, woy, woz, wix, wiy, wiz, out.f);
+        out.wix = wix; out.wiy = wiy; out.wiz = wiz;
+        out.pdf = pdf;
+        return true;
+    }
+}

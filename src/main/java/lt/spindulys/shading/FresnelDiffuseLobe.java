@@ -1,0 +1,81 @@
+package lt.spindulys.shading;
+
+/**
+ * The diffuse base under a {@link DielectricSpecularLobe} coat: Lambert reflection of the base
+ * colour, of the light the coat's Fresnel lets in and lets back out,
+ * f = c / pi * (1 - F(|cos wo|)) * (1 - F(|cos wi|)) / (1 - F_avg), with F the smooth-interface
+ * dielectric Fresnel reflectance of the coat's index and F_avg = 2 int_0^1 F(mu) mu dmu its
+ * cosine-weighted hemispherical average.
+ *
+ * <p>Why this form: it is symmetric in wo and wi, so reciprocal; and the normalisation makes its
+ * albedo exactly c (1 - F(|cos wo|)), since int (1 - F(cos wi)) cos wi dwi / pi = 1 - F_avg. The
+ * coat above reflects at most F(|cos wo|) for a smooth surface, and a rough single-scattering GGX
+ * coat reflects less (masking loses energy; PrincipledBsdfTest measures it), so coat plus base
+ * never exceed 1 for c &lt;= 1. A tabulated coat albedo would also recover the energy the rough
+ * coat loses, at the price of a three-dimensional table; the Fresnel form needs none.
+ * Sampled with the cosine-weighted hemisphere on wo's side; two-sided.
+ */
+final class FresnelDiffuseLobe implements Bsdf {
+    private final double ior;
+    private final double fr, fg, fb;
+
+    FresnelDiffuseLobe(double r, double g, double b, double ior) {
+        this.ior = ior;
+        double transmitted = 1 - averageFresnel(ior);
+        // When almost nothing crosses the coat there is nothing to scatter: no diffuse at all rather than 0/0.
+        double scale = transmitted > 1e-12 ? 1 / (Math.PI * transmitted) : 0;
+        fr = r * scale; fg = g * scale; fb = b * scale;
+    }
+
+    /**
+     * {@return F_avg = 2 int_0^1 F(mu, ior) mu dmu}, by five-point Gauss-Legendre on 32 panels:
+     * F is smooth for ior &gt; 1; for ior &lt; 1 its kink at the critical angle costs well under 1e-4.
+     */
+    static double averageFresnel(double ior) {
+        final int panels = 32;
+        double h = 1.0 / panels, sum = 0;
+        for (int p = 0; p < panels; p++) {
+            double mid = (p + 0.5) * h;
+            for (int i = 0; i < GAUSS_NODES.length; i++) {
+                double mu = mid + 0.5 * h * GAUSS_NODES[i];
+                sum += GAUSS_WEIGHTS[i] * DielectricBsdf.fresnel(mu, ior) * mu;
+            }
+        }
+        return 2 * sum * 0.5 * h;
+    }
+
+    private static final double[] GAUSS_NODES = {
+        -0.9061798459386640, -0.5384693101056831, 0, 0.5384693101056831, 0.9061798459386640};
+    private static final double[] GAUSS_WEIGHTS = {
+        0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665, 0.2369268850561891};
+
+    @Override
+    public boolean isSpecular() { return false; }
+
+    @Override
+    public void eval(double wox, double woy, double woz, double wix, double wiy, double wiz, double[] rgbOut) {
+        if (!(woz * wiz > 0)) { rgbOut[0] = 0; rgbOut[1] = 0; rgbOut[2] = 0; return; }
+        double t = (1 - DielectricBsdf.fresnel(Math.abs(woz), ior)) * (1 - DielectricBsdf.fresnel(Math.abs(wiz), ior));
+        rgbOut[0] = fr * t; rgbOut[1] = fg * t; rgbOut[2] = fb * t;
+    }
+
+    @Override
+    public double pdf(double wox, double woy, double woz, double wix, double wiy, double wiz) {
+        return woz * wiz > 0 ? Math.abs(wiz) / Math.PI : 0;
+    }
+
+    @Override
+    public boolean sample(double wox, double woy, double woz, double uc, double u1, double u2, BsdfSample out) {
+        out.clear();
+        if (woz == 0) return false;
+        double r = Math.sqrt(u1), phi = 2 * Math.PI * u2;
+        double z = Math.sqrt(Math.max(0, 1 - u1));
+        if (z == 0) return false;
+        out.wix = r * Math.cos(phi);
+        out.wiy = r * Math.sin(phi);
+        out.wiz = woz > 0 ? z : -z;
+        eval(wox, woy, woz, out.wix, out.wiy, out.wiz, out.f);
+        out.pdf = z / Math.PI;
+        return true;
+    }
+}
