@@ -1,0 +1,110 @@
+package lt.spindulys.shading;
+
+/**
+ * The thesis's Whitted material terms at a hit, read as a BSDF so that every existing scene renders
+ * under a path tracer. The rule, per term (colour, kd, ks, shininess, kr, kt, ior, filter):
+ * <ul>
+ * <li>{@code kd * colour}: a Lambert lobe of that albedo (the Whitted diffuse term is kd colour
+ *     times the cosine, exactly Lambert's);</li>
+ * <li>{@code ks} with Phong exponent n: a GGX glossy reflection of weight ks, untinted and
+ *     Fresnel-free (a {@link ConductorBsdf} with F0 = 1), with alpha = sqrt(2 / (n + 2)), the
+ *     usual Blinn-Phong to Beckmann/GGX width correspondence (n = 2 / alpha^2 - 2); so n = 0 is
+ *     alpha 1 and a large n a mirror. The lobe is normalised where the Whitted highlight
+ *     ks (n.h)^n is not, so the highlight's shape carries over but its absolute height changes
+ *     with n; a path tracer cannot keep an unnormalised lobe without breaking energy;</li>
+ * <li>{@code kr}: a perfect mirror of weight kr, untinted (Whitted reflection is);</li>
+ * <li>{@code kt}: a perfect refraction of weight kt by Snell's law with the material's ior
+ *     (relative to the outside: a path tracer keeps no medium stack), tinted by the filter, with
+ *     no Fresnel reflection and total internal reflection turned into an untinted mirror, as
+ *     in {@link WhittedIntegrator}; {@code fresnel} set instead gives a smooth
+ *     {@link DielectricBsdf} (exact Fresnel in place of the thesis's Schlick).</li>
+ * </ul>
+ * The Whitted tracer lets kd + ks + kr + kt exceed 1; here the four weights are scaled down by
+ * the same factor when their sum exceeds 1, so the material never creates energy (colour and
+ * filter are clamped to [0,1] for the same reason). Emission is not a BSDF and stays with the
+ * caller. Lobes are picked with probability proportional to weight times the lobe's mean tint.
+ */
+public final class WhittedMaterialBsdf implements Bsdf {
+    private final LobeMixture mixture;
+    private final double glossAlpha;
+    private final double scale;
+
+    private WhittedMaterialBsdf(double r, double g, double b, double kd, double ks, double shininess,
+            double kr, double kt, double ior, double fr, double fg, double fb, boolean fresnel) {
+        kd = Math.max(0, kd); ks = Math.max(0, ks); kr = Math.max(0, kr); kt = Math.max(0, kt);
+        double sum = kd + ks + kr + kt;
+        scale = sum > 1 ? 1 / sum : 1;
+        r = clamp(r); g = clamp(g); b = clamp(b);
+        fr = clamp(fr); fg = clamp(fg); fb = clamp(fb);
+        glossAlpha = glossAlpha(shininess);
+        Bsdf transmission = fresnel ? new DielectricBsdf(ior, 0, fr, fg, fb) : new PerfectRefractionLobe(ior, fr, fg, fb);
+        double[] weights = {kd * scale, ks * scale, kr * scale, kt * scale};
+        // Fixed selection: weight times the lobe's mean tint, floored so a black-tinted but weighted lobe is still reachable.
+        double meanColour = (r + g + b) / 3, meanFilter = (fr + fg + fb) / 3;
+        double[] selection = {
+            weights[0] * Math.max(0.02, meanColour), weights[1], weights[2],
+            weights[3] * Math.max(0.02, fresnel ? Math.max(0.1, meanFilter) : meanFilter)};
+        mixture = new LobeMixture(
+                new Bsdf[] {
+                    new LambertBsdf(r, g, b),
+                    new ConductorBsdf(1, 1, 1, Math.sqrt(glossAlpha)), // alpha = roughness^2
+                    new ConductorBsdf(1, 1, 1, 0),
+                    transmission},
+                weights,
+                (k, x, y, z) -> selection[k]);
+    }
+
+    /**
+     * The BSDF for the Whitted terms at a hit (textures already applied).
+     *
+     * @param r red surface colour
+     * @param g green surface colour
+     * @param b blue surface colour
+     * @param kd diffuse coefficient
+     * @param ks specular (highlight) coefficient
+     * @param shininess Phong exponent, at least 0
+     * @param kr mirror reflection coefficient
+     * @param kt transmission coefficient
+     * @param ior index of refraction inside over outside
+     * @param fr red transmission filter
+     * @param fg green transmission filter
+     * @param fb blue transmission filter
+     * @param fresnel whether the material splits transmission by Fresnel reflectance
+     * @return the equivalent BSDF
+     */
+    public static WhittedMaterialBsdf fromWhittedTerms(double r, double g, double b, double kd, double ks, double shininess,
+            double kr, double kt, double ior, double fr, double fg, double fb, boolean fresnel) {
+        return new WhittedMaterialBsdf(r, g, b, kd, ks, shininess, kr, kt, ior, fr, fg, fb, fresnel);
+    }
+
+    /** {@return the GGX alpha matching Phong exponent n}: sqrt(2 / (n + 2)), 1 for n &lt;= 0. */
+    public static double glossAlpha(double shininess) {
+        return Math.sqrt(2 / (Math.max(0, shininess) + 2));
+    }
+
+    /** {@return the GGX alpha of the glossy lobe} */
+    public double glossyAlpha() { return glossAlpha; }
+
+    /** {@return the factor all four weights were multiplied by: 1, or 1 / (kd + ks + kr + kt) when that sum exceeds 1} */
+    public double weightScale() { return scale; }
+
+    private static double clamp(double v) { return Math.min(1, Math.max(0, v)); }
+
+    @Override
+    public void eval(double wox, double woy, double woz, double wix, double wiy, double wiz, double[] rgbOut) {
+        mixture.eval(wox, woy, woz, wix, wiy, wiz, rgbOut);
+    }
+
+    @Override
+    public double pdf(double wox, double woy, double woz, double wix, double wiy, double wiz) {
+        return mixture.pdf(wox, woy, woz, wix, wiy, wiz);
+    }
+
+    @Override
+    public boolean sample(double wox, double woy, double woz, double uc, double u1, double u2, BsdfSample out) {
+        return mixture.sample(wox, woy, woz, uc, u1, u2, out);
+    }
+
+    @Override
+    public boolean isSpecular() { return mixture.isSpecular(); }
+}
