@@ -9,9 +9,12 @@ package lt.spindulys.shading;
  *
  * <p>Why this form: it is symmetric in wo and wi, so reciprocal; and the normalisation makes its
  * albedo exactly c (1 - F(|cos wo|)), since int (1 - F(cos wi)) cos wi dwi / pi = 1 - F_avg. The
- * coat above reflects at most F(|cos wo|) for a smooth surface, and a rough single-scattering GGX
- * coat reflects less (masking loses energy; PrincipledBsdfTest measures it), so coat plus base
- * never exceed 1 for c &lt;= 1. A tabulated coat albedo would also recover the energy the rough
+ * coat above reflects exactly F(|cos wo|) when smooth, so a smooth coat plus a white base is
+ * exactly 1. A rough single-scattering GGX coat, with an index of at least 1, reflects no more
+ * than that: masking loses energy and the microfacets wo sees are on average less grazing. That
+ * is measured (PrincipledBsdfTest, indices 1.1 to 2.4, roughness up to 1, down to grazing), not
+ * proved; with an index below 1 total internal reflection breaks it, which is why
+ * {@link PrincipledBsdf} gives its coat an index of at least 1. A tabulated coat albedo would also recover the energy the rough
  * coat loses, at the price of a three-dimensional table; the Fresnel form needs none.
  * Sampled with the cosine-weighted hemisphere on wo's side; two-sided.
  */

@@ -1,5 +1,7 @@
 package lt.spindulys.shading;
 
+import lt.spindulys.material.Material;
+
 /**
  * The thesis's Whitted material terms at a hit, read as a BSDF so that every existing scene renders
  * under a path tracer. The rule, per term (colour, kd, ks, shininess, kr, kt, ior, filter):
@@ -75,6 +77,34 @@ public final class WhittedMaterialBsdf implements Bsdf {
     public static WhittedMaterialBsdf fromWhittedTerms(double r, double g, double b, double kd, double ks, double shininess,
             double kr, double kt, double ior, double fr, double fg, double fb, boolean fresnel) {
         return new WhittedMaterialBsdf(r, g, b, kd, ks, shininess, kr, kt, ior, fr, fg, fb, fresnel);
+    }
+
+    /**
+     * The BSDF for a material's terms at a hit whose textures have given the colour and the
+     * ks, kr and kt there ({@link WhittedIntegrator} reads them per hit the same way).
+     *
+     * @param m the material (kd, shininess, ior, filter and the Fresnel switch come from it)
+     * @param r red surface colour at the hit
+     * @param g green surface colour at the hit
+     * @param b blue surface colour at the hit
+     * @param ks specular coefficient at the hit
+     * @param kr mirror coefficient at the hit
+     * @param kt transmission coefficient at the hit
+     * @return the equivalent BSDF
+     */
+    public static WhittedMaterialBsdf fromMaterial(Material m, double r, double g, double b, double ks, double kr, double kt) {
+        return new WhittedMaterialBsdf(r, g, b, m.kd(), ks, m.shininess(), kr, kt, m.ior(),
+                m.filter().r(), m.filter().g(), m.filter().b(), m.fresnel());
+    }
+
+    /**
+     * The BSDF for an untextured material.
+     *
+     * @param m the material
+     * @return the equivalent BSDF
+     */
+    public static WhittedMaterialBsdf fromMaterial(Material m) {
+        return fromMaterial(m, m.color().r(), m.color().g(), m.color().b(), m.ks(), m.kr(), m.kt());
     }
 
     /** {@return the GGX alpha matching Phong exponent n}: sqrt(2 / (n + 2)), 1 for n &lt;= 0. */

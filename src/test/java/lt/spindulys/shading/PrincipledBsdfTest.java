@@ -58,8 +58,8 @@ class PrincipledBsdfTest {
     }
 
     @Test
-    void rejectsTheChosenLobesDensityInPlaceOfTheMixture() {
-        // Plastic: the coat's density alone, weighted by its selection probability, misses the diffuse samples' share.
+    void rejectsAMixturePdfWithWrongSelectionProbabilities() {
+        // Plastic mixed half and half instead of by the per-wo estimates: the test must see the wrong selection probabilities.
         PrincipledBsdf plastic = principled(0, 0.3, 1.5, 0);
         DielectricSpecularLobe coat = new DielectricSpecularLobe(1.5, 0.3);
         double[] wo = BsdfChiSquareTest.wo(0.6);
@@ -134,13 +134,13 @@ class PrincipledBsdfTest {
     void whiteAlbedoIsAtMostOneIncludingGrazing() {
         SplittableRandom rng = new SplittableRandom(22);
         for (double roughness : new double[] {0, 0.2, 0.5, 1}) {
-            for (double ior : new double[] {1.5, 2.4, 0.7}) {
+            for (double ior : new double[] {1.1, 1.5, 2.4, 0.7}) {
                 List<PrincipledBsdf> sets = List.of(new PrincipledBsdf(1, 1, 1, 0, roughness, ior, 0),
                         new PrincipledBsdf(1, 1, 1, 1, roughness, ior, 0), new PrincipledBsdf(1, 1, 1, 0, roughness, ior, 1),
                         new PrincipledBsdf(1, 1, 1, 0.3, roughness, ior, 0.5));
                 for (PrincipledBsdf bsdf : sets) {
                     for (double cos : new double[] {1, 0.7, 0.3, 0.1, 0.02, 1e-3, -0.5}) {
-                        double[] a = albedo(bsdf, cos, 40_000, rng);
+                        double[] a = albedo(bsdf, cos, 20_000, rng);
                         assertTrue(a[0] <= 1 + 4 * a[1] + 1e-9, bsdf + " cos " + cos + ": albedo " + a[0] + " +- " + a[1]);
                     }
                 }

@@ -5,6 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
+import lt.spindulys.material.Material;
+import lt.spindulys.math.Color;
 import java.util.SplittableRandom;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -184,6 +186,24 @@ class WhittedMappingTest {
                     for (double v : s.f) assertTrue(v >= 0 && Double.isFinite(v));
                 }
             }
+        }
+    }
+
+    @Test
+    void materialFactoryReadsTheMaterialsTerms() {
+        Material m = Material.builder().color(new Color(0.8, 0.4, 0.2)).kd(0.6).ks(0.3).shininess(20).build();
+        WhittedMaterialBsdf fromMaterial = WhittedMaterialBsdf.fromMaterial(m);
+        WhittedMaterialBsdf fromTerms = plastic();
+        assertEquals(fromTerms.glossyAlpha(), fromMaterial.glossyAlpha(), 0);
+        double[] a = new double[3], b = new double[3];
+        SplittableRandom rng = new SplittableRandom(36);
+        for (int i = 0; i < 1000; i++) {
+            double[] wo = BsdfChiSquareTest.wo(rng.nextDouble()), wi = BsdfChiSquareTest.wo(rng.nextDouble());
+            fromMaterial.eval(wo[0], wo[1], wo[2], wi[0], wi[1], wi[2], a);
+            fromTerms.eval(wo[0], wo[1], wo[2], wi[0], wi[1], wi[2], b);
+            for (int c = 0; c < 3; c++) assertEquals(b[c], a[c], 0);
+            assertEquals(fromTerms.pdf(wo[0], wo[1], wo[2], wi[0], wi[1], wi[2]),
+                    fromMaterial.pdf(wo[0], wo[1], wo[2], wi[0], wi[1], wi[2]), 0);
         }
     }
 }
