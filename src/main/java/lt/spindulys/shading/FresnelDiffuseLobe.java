@@ -69,16 +69,8 @@ final class FresnelDiffuseLobe implements Bsdf {
 
     @Override
     public boolean sample(double wox, double woy, double woz, double uc, double u1, double u2, BsdfSample out) {
-        out.clear();
-        if (woz == 0) return false;
-        double r = Math.sqrt(u1), phi = 2 * Math.PI * u2;
-        double z = Math.sqrt(Math.max(0, 1 - u1));
-        if (z == 0) return false;
-        out.wix = r * Math.cos(phi);
-        out.wiy = r * Math.sin(phi);
-        out.wiz = woz > 0 ? z : -z;
+        if (!LambertBsdf.sampleCosine(woz, u1, u2, out)) return false;
         eval(wox, woy, woz, out.wix, out.wiy, out.wiz, out.f);
-        out.pdf = z / Math.PI;
         return true;
     }
 }

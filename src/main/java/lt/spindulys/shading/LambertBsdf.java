@@ -45,16 +45,26 @@ public final class LambertBsdf implements Bsdf {
 
     @Override
     public boolean sample(double wox, double woy, double woz, double uc, double u1, double u2, BsdfSample out) {
+        if (!sampleCosine(woz, u1, u2, out)) return false;
+        out.f[0] = fr; out.f[1] = fg; out.f[2] = fb;
+        return true;
+    }
+
+    /**
+     * A cosine-distributed direction on wo's side into out (wi and pdf; f left zero), shared by
+     * the diffuse lobes: a uniform disk point projected up onto the hemisphere (Malley).
+     *
+     * @return false (out cleared) when wo lies in the surface or the point falls on the horizon
+     */
+    static boolean sampleCosine(double woz, double u1, double u2, BsdfSample out) {
         out.clear();
         if (woz == 0) return false;
-        // Project a uniform disk point up onto the hemisphere (Malley), then onto wo's side.
         double r = Math.sqrt(u1), phi = 2 * Math.PI * u2;
         double z = Math.sqrt(Math.max(0, 1 - u1));
         if (z == 0) return false; // zero density on the horizon
         out.wix = r * Math.cos(phi);
         out.wiy = r * Math.sin(phi);
         out.wiz = woz > 0 ? z : -z;
-        out.f[0] = fr; out.f[1] = fg; out.f[2] = fb;
         out.pdf = z / Math.PI;
         return true;
     }

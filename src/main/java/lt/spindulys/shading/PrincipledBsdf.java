@@ -27,7 +27,7 @@ import lt.spindulys.math.Color;
  * {@link LobeMixture} for what the sample then reports. At roughness below about 0.03 the metal,
  * glass and coat lobes are delta lobes; only the diffuse base then has a density.
  */
-public final class PrincipledBsdf implements Bsdf {
+public final class PrincipledBsdf extends MixtureBsdf {
     private static final int METAL = 0, GLASS = 1, COAT = 2, DIFFUSE = 3;
     /** Floor of the metal and glass estimates relative to their weight, so a lobe that can contribute is never starved. */
     private static final double MIN_ESTIMATE = 0.02;
@@ -37,7 +37,6 @@ public final class PrincipledBsdf implements Bsdf {
     private final double meanBase;
     /** The coat's index, at least 1: see the class comment. */
     private final double coatIor;
-    private final LobeMixture mixture;
 
     /**
      * A principled surface.
@@ -119,24 +118,6 @@ public final class PrincipledBsdf implements Bsdf {
                 return 0;
         }
     }
-
-    @Override
-    public void eval(double wox, double woy, double woz, double wix, double wiy, double wiz, double[] rgbOut) {
-        mixture.eval(wox, woy, woz, wix, wiy, wiz, rgbOut);
-    }
-
-    @Override
-    public double pdf(double wox, double woy, double woz, double wix, double wiy, double wiz) {
-        return mixture.pdf(wox, woy, woz, wix, wiy, wiz);
-    }
-
-    @Override
-    public boolean sample(double wox, double woy, double woz, double uc, double u1, double u2, BsdfSample out) {
-        return mixture.sample(wox, woy, woz, uc, u1, u2, out);
-    }
-
-    @Override
-    public boolean isSpecular() { return mixture.isSpecular(); }
 
     @Override
     public String toString() {

@@ -26,8 +26,7 @@ import lt.spindulys.material.Material;
  * filter are clamped to [0,1] for the same reason). Emission is not a BSDF and stays with the
  * caller. Lobes are picked with probability proportional to weight times the lobe's mean tint.
  */
-public final class WhittedMaterialBsdf implements Bsdf {
-    private final LobeMixture mixture;
+public final class WhittedMaterialBsdf extends MixtureBsdf {
     private final double glossAlpha;
     private final double scale;
 
@@ -119,22 +118,4 @@ public final class WhittedMaterialBsdf implements Bsdf {
     public double weightScale() { return scale; }
 
     private static double clamp(double v) { return Math.min(1, Math.max(0, v)); }
-
-    @Override
-    public void eval(double wox, double woy, double woz, double wix, double wiy, double wiz, double[] rgbOut) {
-        mixture.eval(wox, woy, woz, wix, wiy, wiz, rgbOut);
-    }
-
-    @Override
-    public double pdf(double wox, double woy, double woz, double wix, double wiy, double wiz) {
-        return mixture.pdf(wox, woy, woz, wix, wiy, wiz);
-    }
-
-    @Override
-    public boolean sample(double wox, double woy, double woz, double uc, double u1, double u2, BsdfSample out) {
-        return mixture.sample(wox, woy, woz, uc, u1, u2, out);
-    }
-
-    @Override
-    public boolean isSpecular() { return mixture.isSpecular(); }
 }
