@@ -10,9 +10,10 @@ import lt.spindulys.math.Color;
  * normal and reflecting wo about it. Reflection only, on wo's side of the surface.
  */
 public final class ConductorBsdf implements Bsdf {
-    private final double f0r, f0g, f0b;
-    private final MicrofacetDistribution distribution;
-    private final boolean smooth;
+    // Not final only so that SurfaceBsdf can re-parameterise its own instance (set); public users cannot.
+    private double f0r, f0g, f0b;
+    private final MicrofacetDistribution distribution = new MicrofacetDistribution(1);
+    private boolean smooth;
 
     /**
      * A metal.
@@ -23,8 +24,13 @@ public final class ConductorBsdf implements Bsdf {
      * @param roughness perceptual roughness in [0,1] (alpha = roughness squared)
      */
     public ConductorBsdf(double r, double g, double b, double roughness) {
+        set(r, g, b, roughness);
+    }
+
+    /** Re-parameterises in place, exactly as the constructor does. */
+    void set(double r, double g, double b, double roughness) {
         f0r = r; f0g = g; f0b = b;
-        distribution = MicrofacetDistribution.fromRoughness(roughness);
+        distribution.setRoughness(roughness);
         smooth = distribution.isEffectivelySmooth();
     }
 

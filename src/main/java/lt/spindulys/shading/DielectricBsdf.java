@@ -16,11 +16,12 @@ import lt.spindulys.math.Color;
  * transmission only. An index of exactly 1 is an invisible interface: wi = -wo with weight tint.
  */
 public final class DielectricBsdf implements Bsdf {
-    private final double eta;
-    private final double tintR, tintG, tintB;
-    private final MicrofacetDistribution distribution;
-    private final boolean smooth;
-    private final boolean passThrough;
+    // Not final only so that SurfaceBsdf can re-parameterise its own instance (set); public users cannot.
+    private double eta;
+    private double tintR, tintG, tintB;
+    private final MicrofacetDistribution distribution = new MicrofacetDistribution(1);
+    private boolean smooth;
+    private boolean passThrough;
 
     /**
      * A dielectric interface.
@@ -32,12 +33,22 @@ public final class DielectricBsdf implements Bsdf {
      * @param tintB blue factor on transmitted light
      */
     public DielectricBsdf(double ior, double roughness, double tintR, double tintG, double tintB) {
-        if (!(ior > 0) || Double.isInfinite(ior)) throw new IllegalArgumentException("index of refraction must be positive and finite: " + ior);
+        set(ior, roughness, tintR, tintG, tintB);
+    }
+
+    /** Re-parameterises in place, exactly as the constructor does; on a bad index nothing changes. */
+    void set(double ior, double roughness, double tintR, double tintG, double tintB) {
+        checkIor(ior);
         this.eta = ior;
         this.tintR = tintR; this.tintG = tintG; this.tintB = tintB;
-        distribution = MicrofacetDistribution.fromRoughness(roughness);
+        distribution.setRoughness(roughness);
         smooth = distribution.isEffectivelySmooth();
         passThrough = ior == 1;
+    }
+
+    /** Rejects an index of refraction that is not positive and finite (shared by the lobes that refract). */
+    static void checkIor(double ior) {
+        if (!(ior > 0) || Double.isInfinite(ior)) throw new IllegalArgumentException("index of refraction must be positive and finite: " + ior);
     }
 
     /**

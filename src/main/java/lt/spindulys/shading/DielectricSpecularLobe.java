@@ -8,13 +8,19 @@ package lt.spindulys.shading;
  * roughness gives a delta mirror lobe of weight F(|cos wo|).
  */
 final class DielectricSpecularLobe implements Bsdf {
-    private final double ior;
-    private final MicrofacetDistribution distribution;
-    private final boolean smooth;
+    // Not final only so that SurfaceBsdf can re-parameterise its own instance (set).
+    private double ior;
+    private final MicrofacetDistribution distribution = new MicrofacetDistribution(1);
+    private boolean smooth;
 
     DielectricSpecularLobe(double ior, double roughness) {
+        set(ior, roughness);
+    }
+
+    /** Re-parameterises in place, exactly as the constructor does. */
+    void set(double ior, double roughness) {
         this.ior = ior;
-        distribution = MicrofacetDistribution.fromRoughness(roughness);
+        distribution.setRoughness(roughness);
         smooth = distribution.isEffectivelySmooth();
     }
 

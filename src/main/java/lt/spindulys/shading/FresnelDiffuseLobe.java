@@ -19,12 +19,23 @@ package lt.spindulys.shading;
  * Sampled with the cosine-weighted hemisphere on wo's side; two-sided.
  */
 final class FresnelDiffuseLobe implements Bsdf {
-    private final double ior;
-    private final double fr, fg, fb;
+    // Not final only so that SurfaceBsdf can re-parameterise its own instance (set).
+    private double ior;
+    private double fr, fg, fb;
 
     FresnelDiffuseLobe(double r, double g, double b, double ior) {
+        set(r, g, b, ior, averageFresnel(ior));
+    }
+
+    /**
+     * Re-parameterises in place, as the constructor does, with F_avg passed in: it costs 160
+     * Fresnel evaluations, too many per hit, so a reusable caller keeps it from earlier hits.
+     *
+     * @param averageFresnel {@link #averageFresnel}(ior), exactly
+     */
+    void set(double r, double g, double b, double ior, double averageFresnel) {
         this.ior = ior;
-        double transmitted = 1 - averageFresnel(ior);
+        double transmitted = 1 - averageFresnel;
         // When almost nothing crosses the coat there is nothing to scatter: no diffuse at all rather than 0/0.
         double scale = transmitted > 1e-12 ? 1 / (Math.PI * transmitted) : 0;
         fr = r * scale; fg = g * scale; fb = b * scale;

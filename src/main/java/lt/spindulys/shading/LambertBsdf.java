@@ -7,7 +7,8 @@ import lt.spindulys.math.Color;
  * weighted hemisphere there, so every sample's weight f |cos wi| / pdf is exactly the albedo.
  */
 public final class LambertBsdf implements Bsdf {
-    private final double fr, fg, fb;
+    // Not final only so that SurfaceBsdf can re-parameterise its own instance (set); public users cannot.
+    private double fr, fg, fb;
 
     /**
      * A Lambertian reflector.
@@ -17,6 +18,11 @@ public final class LambertBsdf implements Bsdf {
      * @param b blue albedo
      */
     public LambertBsdf(double r, double g, double b) {
+        set(r, g, b);
+    }
+
+    /** Re-parameterises in place, exactly as the constructor does. */
+    void set(double r, double g, double b) {
         fr = r / Math.PI;
         fg = g / Math.PI;
         fb = b / Math.PI;

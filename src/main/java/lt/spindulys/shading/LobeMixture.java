@@ -22,12 +22,24 @@ final class LobeMixture implements Bsdf {
     private final Bsdf[] lobes;
     private final double[] weights;
     private final Estimator estimator;
-    private final boolean specular;
+    // Not final only so that a reusable owner can re-parameterise its lobes in place (set, update).
+    private boolean specular;
 
     LobeMixture(Bsdf[] lobes, double[] weights, Estimator estimator) {
         this.lobes = lobes.clone();
         this.weights = weights.clone();
         this.estimator = estimator;
+        update();
+    }
+
+    /** Puts lobe k in place with weight w; {@link #update} must follow once every slot is set. */
+    void set(int k, Bsdf lobe, double weight) {
+        lobes[k] = lobe;
+        weights[k] = weight;
+    }
+
+    /** Recomputes what is derived from the lobes and weights, after they or the lobes' own parameters changed. */
+    void update() {
         boolean allDelta = true;
         for (int k = 0; k < lobes.length; k++) if (weights[k] > 0 && !lobes[k].isSpecular()) allDelta = false;
         specular = allDelta;

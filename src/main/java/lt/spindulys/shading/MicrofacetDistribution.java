@@ -5,6 +5,9 @@ package lt.spindulys.shading;
  * masking-shadowing term and sampling of the visible normals (Heitz 2018, "Sampling the GGX
  * Distribution of Visible Normals", JCGT 7(4)). Directions are in the local shading frame, unit
  * length; microfacet normals wm have wm.z &gt; 0.
+ *
+ * <p>Immutable to other packages; inside this one a per-thread {@link SurfaceBsdf} resets the
+ * width of its own instances per hit, which is why the fields are not final.
  */
 public final class MicrofacetDistribution {
     /** Smallest alpha kept, so that D and Lambda stay finite and free of 0/0. */
@@ -12,8 +15,8 @@ public final class MicrofacetDistribution {
     /** Below this alpha the surface is treated as a delta (mirror or smooth refraction). */
     public static final double SMOOTH_ALPHA = 1e-3;
 
-    private final double alpha;
-    private final double alpha2;
+    private double alpha;
+    private double alpha2;
 
     /**
      * A distribution of the given width.
@@ -21,8 +24,18 @@ public final class MicrofacetDistribution {
      * @param alpha GGX alpha, clamped to at least {@link #MIN_ALPHA}
      */
     public MicrofacetDistribution(double alpha) {
+        set(alpha);
+    }
+
+    /** Re-parameterises in place, exactly as the constructor does (for the per-thread reusable BSDF). */
+    void set(double alpha) {
         this.alpha = Math.max(MIN_ALPHA, alpha);
         this.alpha2 = this.alpha * this.alpha;
+    }
+
+    /** Re-parameterises in place, exactly as {@link #fromRoughness} does. */
+    void setRoughness(double roughness) {
+        set(roughness * roughness);
     }
 
     /**

@@ -10,11 +10,17 @@ package lt.spindulys.shading;
  * path tracer sees through it what the Whitted tracer does.
  */
 final class PerfectRefractionLobe implements Bsdf {
-    private final double eta;
-    private final double tintR, tintG, tintB;
+    // Not final only so that SurfaceBsdf can re-parameterise its own instance (set).
+    private double eta;
+    private double tintR, tintG, tintB;
 
     PerfectRefractionLobe(double ior, double tintR, double tintG, double tintB) {
-        if (!(ior > 0) || Double.isInfinite(ior)) throw new IllegalArgumentException("index of refraction must be positive and finite: " + ior);
+        set(ior, tintR, tintG, tintB);
+    }
+
+    /** Re-parameterises in place, exactly as the constructor does; on a bad index nothing changes. */
+    void set(double ior, double tintR, double tintG, double tintB) {
+        DielectricBsdf.checkIor(ior);
         eta = ior;
         this.tintR = tintR; this.tintG = tintG; this.tintB = tintB;
     }
