@@ -28,15 +28,8 @@ import lt.spindulys.math.Color;
  * glass and coat lobes are delta lobes; only the diffuse base then has a density.
  */
 public final class PrincipledBsdf extends MixtureBsdf {
-    private static final int METAL = 0, GLASS = 1, COAT = 2, DIFFUSE = 3;
-    /** Floor of the metal and glass estimates relative to their weight, so a lobe that can contribute is never starved. */
-    private static final double MIN_ESTIMATE = 0.02;
-
     private final double baseR, baseG, baseB;
     private final double metallic, roughness, ior, transmission;
-    private final double meanBase;
-    /** The coat's index, at least 1: see the class comment. */
-    private final double coatIor;
 
     /**
      * A principled surface.
@@ -50,23 +43,12 @@ public final class PrincipledBsdf extends MixtureBsdf {
      * @param transmission glass fraction of the non-metal part, in [0,1]
      */
     public PrincipledBsdf(double baseR, double baseG, double baseB, double metallic, double roughness, double ior, double transmission) {
-        if (!(ior > 0) || Double.isInfinite(ior)) throw new IllegalArgumentException("index of refraction must be positive and finite: " + ior);
-        check("metallic", metallic);
-        check("roughness", roughness);
-        check("transmission", transmission);
+        // The same lobe set SurfaceBsdf re-parameterises per hit, set once: one code path for both.
+        PrincipledLobes lobes = new PrincipledLobes();
+        lobes.set(baseR, baseG, baseB, metallic, roughness, ior, transmission);
         this.baseR = baseR; this.baseG = baseG; this.baseB = baseB;
         this.metallic = metallic; this.roughness = roughness; this.ior = ior; this.transmission = transmission;
-        meanBase = (baseR + baseG + baseB) / 3;
-        double rest = (1 - metallic) * (1 - transmission);
-        coatIor = ior >= 1 ? ior : 1 / ior;
-        mixture = new LobeMixture(
-                new Bsdf[] {
-                    new ConductorBsdf(baseR, baseG, baseB, roughness),
-                    new DielectricBsdf(ior, roughness, baseR, baseG, baseB),
-                    new DielectricSpecularLobe(coatIor, roughness),
-                    new FresnelDiffuseLobe(baseR, baseG, baseB, coatIor)},
-                new double[] {metallic, (1 - metallic) * transmission, rest, rest},
-                this::estimate);
+        mixture = lobes.mixture;
     }
 
     /**
@@ -82,10 +64,6 @@ public final class PrincipledBsdf extends MixtureBsdf {
         this(baseColor.r(), baseColor.g(), baseColor.b(), metallic, roughness, ior, transmission);
     }
 
-    private static void check(String name, double v) {
-        if (!(v >= 0 && v <= 1)) throw new IllegalArgumentException(name + " must be in [0,1]: " + v);
-    }
-
     /** {@return the metal fraction} */
     public double metallic() { return metallic; }
     /** {@return the perceptual roughness} */
@@ -94,30 +72,6 @@ public final class PrincipledBsdf extends MixtureBsdf {
     public double ior() { return ior; }
     /** {@return the glass fraction of the non-metal part} */
     public double transmission() { return transmission; }
-
-    /** Lobe selection estimate (unnormalised; {@link LobeMixture} divides by the sum). */
-    private double estimate(int lobe, double wox, double woy, double woz) {
-        double cos = Math.abs(woz);
-        switch (lobe) {
-            case METAL: {
-                if (!(metallic > 0)) return 0;
-                double m = Math.max(0, 1 - cos), s = m * m * m * m * m;
-                return metallic * Math.max(MIN_ESTIMATE, meanBase + (1 - meanBase) * s);
-            }
-            case GLASS: {
-                double w = (1 - metallic) * transmission;
-                if (!(w > 0)) return 0;
-                double r = DielectricBsdf.fresnel(woz, ior); // signed: from inside, total internal reflection counts
-                return w * Math.max(MIN_ESTIMATE, r + (1 - r) * meanBase);
-            }
-            case COAT:
-                return (1 - metallic) * (1 - transmission) * DielectricBsdf.fresnel(cos, coatIor);
-            case DIFFUSE:
-                return (1 - metallic) * (1 - transmission) * meanBase * (1 - DielectricBsdf.fresnel(cos, coatIor));
-            default:
-                return 0;
-        }
-    }
 
     @Override
     public String toString() {

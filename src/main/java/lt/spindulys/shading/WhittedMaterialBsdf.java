@@ -32,27 +32,12 @@ public final class WhittedMaterialBsdf extends MixtureBsdf {
 
     private WhittedMaterialBsdf(double r, double g, double b, double kd, double ks, double shininess,
             double kr, double kt, double ior, double fr, double fg, double fb, boolean fresnel) {
-        kd = Math.max(0, kd); ks = Math.max(0, ks); kr = Math.max(0, kr); kt = Math.max(0, kt);
-        double sum = kd + ks + kr + kt;
-        scale = sum > 1 ? 1 / sum : 1;
-        r = clamp(r); g = clamp(g); b = clamp(b);
-        fr = clamp(fr); fg = clamp(fg); fb = clamp(fb);
-        glossAlpha = glossAlpha(shininess);
-        Bsdf transmission = fresnel ? new DielectricBsdf(ior, 0, fr, fg, fb) : new PerfectRefractionLobe(ior, fr, fg, fb);
-        double[] weights = {kd * scale, ks * scale, kr * scale, kt * scale};
-        // Fixed selection: weight times the lobe's mean tint, floored so a black-tinted but weighted lobe is still reachable.
-        double meanColour = (r + g + b) / 3, meanFilter = (fr + fg + fb) / 3;
-        double[] selection = {
-            weights[0] * Math.max(0.02, meanColour), weights[1], weights[2],
-            weights[3] * Math.max(0.02, fresnel ? Math.max(0.1, meanFilter) : meanFilter)};
-        mixture = new LobeMixture(
-                new Bsdf[] {
-                    new LambertBsdf(r, g, b),
-                    new ConductorBsdf(1, 1, 1, Math.sqrt(glossAlpha)), // alpha = roughness^2
-                    new ConductorBsdf(1, 1, 1, 0),
-                    transmission},
-                weights,
-                (k, x, y, z) -> selection[k]);
+        // The same lobe set SurfaceBsdf re-parameterises per hit, set once: one code path for both.
+        WhittedLobes lobes = new WhittedLobes();
+        lobes.set(r, g, b, kd, ks, shininess, kr, kt, ior, fr, fg, fb, fresnel);
+        glossAlpha = lobes.glossAlpha();
+        scale = lobes.scale();
+        mixture = lobes.mixture;
     }
 
     /**
@@ -116,6 +101,4 @@ public final class WhittedMaterialBsdf extends MixtureBsdf {
 
     /** {@return the factor all four weights were multiplied by: 1, or 1 / (kd + ks + kr + kt) when that sum exceeds 1} */
     public double weightScale() { return scale; }
-
-    private static double clamp(double v) { return Math.min(1, Math.max(0, v)); }
 }
