@@ -6,8 +6,9 @@ package lt.spindulys.shading;
  */
 abstract class MixtureBsdf implements Bsdf {
     /**
-     * The lobes and their weights, set once by the subclass's constructor (not passed up: its
-     * lobe estimates are the subclass's own methods, which cannot be named before super()).
+     * The lobes and their weights, set by the subclass: once in its constructor (not passed up:
+     * its lobe estimates are the subclass's own methods, which cannot be named before super()),
+     * or per hit by {@link SurfaceBsdf}.
      */
     LobeMixture mixture;
 

@@ -16,14 +16,12 @@ import lt.spindulys.material.Material;
  * <p>Confined to one thread: it is neither thread-safe nor meant to be shared or kept. Each render
  * thread owns one, and whatever the last set configured is only valid until the next set.
  */
-public final class SurfaceBsdf implements Bsdf {
+public final class SurfaceBsdf extends MixtureBsdf {
     private final WhittedLobes whitted = new WhittedLobes();
     private final PrincipledLobes principled = new PrincipledLobes();
-    /** The mixture of whichever model was set last. */
-    private LobeMixture current = whitted.mixture;
 
     /** A reusable BSDF that scatters nothing until it is set. */
-    public SurfaceBsdf() {}
+    public SurfaceBsdf() { mixture = whitted.mixture; } // the mixture of whichever model was set last
 
     /**
      * Configures the Whitted material terms at a hit, by the rule of
@@ -35,7 +33,7 @@ public final class SurfaceBsdf implements Bsdf {
     public void setWhitted(double colourR, double colourG, double colourB, double kd, double ks, double shininess,
             double kr, double kt, double ior, double filterR, double filterG, double filterB, boolean fresnel) {
         whitted.set(colourR, colourG, colourB, kd, ks, shininess, kr, kt, ior, filterR, filterG, filterB, fresnel);
-        current = whitted.mixture;
+        mixture = whitted.mixture;
     }
 
     /**
@@ -58,24 +56,6 @@ public final class SurfaceBsdf implements Bsdf {
     public void setPrincipled(double baseR, double baseG, double baseB, double metallic, double roughness,
             double ior, double transmission) {
         principled.set(baseR, baseG, baseB, metallic, roughness, ior, transmission);
-        current = principled.mixture;
+        mixture = principled.mixture;
     }
-
-    @Override
-    public void eval(double wox, double woy, double woz, double wix, double wiy, double wiz, double[] rgbOut) {
-        current.eval(wox, woy, woz, wix, wiy, wiz, rgbOut);
-    }
-
-    @Override
-    public double pdf(double wox, double woy, double woz, double wix, double wiy, double wiz) {
-        return current.pdf(wox, woy, woz, wix, wiy, wiz);
-    }
-
-    @Override
-    public boolean sample(double wox, double woy, double woz, double uc, double u1, double u2, BsdfSample out) {
-        return current.sample(wox, woy, woz, uc, u1, u2, out);
-    }
-
-    @Override
-    public boolean isSpecular() { return current.isSpecular(); }
 }
