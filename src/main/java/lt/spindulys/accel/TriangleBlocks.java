@@ -7,7 +7,7 @@ import lt.spindulys.math.Ray;
  * {@link #LANES} triangles, their corners in float, structure of arrays (a row of eight x of the
  * first corners, then their y, ...), so that one pass of 256-bit vectors tells which of the
  * leaf's triangles the ray certainly misses. Those it may hit are then tested exactly, in double,
- * by {@link WatertightTriangles} on the mesh's own arrays: a hit, its distance and its
+ * by the set's own test ({@link TriangleSet#intersectRange}): a hit, its distance and its
  * barycentrics are bit for bit what the double test gives alone, so every image and every
  * agreement between structures is unchanged, and watertightness is the double test's.
  *
@@ -29,8 +29,10 @@ public final class TriangleBlocks {
     private final int[] first;
     /** The triangle of each leaf slot, or null when slot k holds triangle k. */
     private final int[] perm;
-    private final int[] tri;
-    private final double[] pos;
+    /** The triangles, whose own test confirms each hit the float test keeps. */
+    private final TriangleSet set;
+    /** One triangle's corners, while copying. */
+    private final double[] corner = new double[9];
     /** The largest absolute coordinate of any corner. */
     private final double maxAbs;
     private int count;
@@ -46,11 +48,8 @@ public final class TriangleBlocks {
         this.perm = perm;
         corners = new float[BLOCK * blocks];
         first = new int[blocks];
-        tri = set.corners();
-        pos = set.positions();
-        double m = 0;
-        for (double p : pos) m = Math.max(m, Math.abs(p));
-        maxAbs = m;
+        this.set = set;
+        maxAbs = set.maxAbsCoordinate();
     }
 
     /** Copies leaf slots [from, from + n) into the next block; returns its index. */
@@ -59,11 +58,8 @@ public final class TriangleBlocks {
         first[b] = from;
         int o = BLOCK * b;
         for (int l = 0; l < n; l++) {
-            int i = perm == null ? from + l : perm[from + l];
-            for (int c = 0; c < 3; c++) {
-                int p = 3 * tri[3 * i + c];
-                for (int a = 0; a < 3; a++) corners[o + LANES * (3 * c + a) + l] = (float) pos[p + a];
-            }
+            set.corners(perm == null ? from + l : perm[from + l], corner);
+            for (int k = 0; k < 9; k++) corners[o + LANES * k + l] = (float) corner[k];
         }
         return b;
     }
@@ -93,7 +89,7 @@ public final class TriangleBlocks {
         r[5] = (float) (12 * 0x1p-24 * (maxAbs + o));
     }
 
-    /** The closest hit among block b's n triangles, as {@link WatertightTriangles#test} records it ({@link #prepare} first). */
+    /** The closest hit among block b's n triangles, as the set's own test records it ({@link #prepare} first). */
     boolean intersect(int b, int n, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
         int bits = candidates(b, ctx) & ((1 << n) - 1);
         boolean any = false;
@@ -101,7 +97,7 @@ public final class TriangleBlocks {
         while (bits != 0) {
             int k = f + Integer.numberOfTrailingZeros(bits);
             bits &= bits - 1;
-            if (WatertightTriangles.test(tri, pos, perm, k, k + 1, ray, hit, ctx)) any = true;
+            if (set.intersectRange(perm, k, k + 1, ray, hit, ctx)) any = true;
         }
         return any;
     }
@@ -113,7 +109,7 @@ public final class TriangleBlocks {
         while (bits != 0) {
             int k = f + Integer.numberOfTrailingZeros(bits);
             bits &= bits - 1;
-            if (WatertightTriangles.test(tri, pos, perm, k, k + 1, ray, null, ctx)) return true;
+            if (set.occludedRange(perm, k, k + 1, ray, ctx)) return true;
         }
         return false;
     }

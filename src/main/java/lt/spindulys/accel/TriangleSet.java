@@ -1,15 +1,18 @@
 package lt.spindulys.accel;
 
 /**
- * A {@link PrimitiveSet} whose primitives are indexed triangles tested by
- * {@link WatertightTriangles}: primitive i has the corners {@code positions()[3 t], ...} for
- * t = {@code corners()[3 i .. 3 i + 2]}. A wide tree over such a set may copy the corners into its
- * leaves ({@link TriangleBlocks}) and needs the arrays to confirm a hit exactly.
+ * A {@link PrimitiveSet} whose primitives are triangles tested by {@link WatertightTriangles}
+ * through {@link #intersectRange} and {@link #occludedRange}. A wide tree over such a set copies
+ * the corners into its leaves ({@link TriangleBlocks}) for a float test that only drops
+ * triangles, and has every hit it keeps confirmed by the set's own exact test.
  */
 public interface TriangleSet extends PrimitiveSet {
-    /** Three position indices per triangle; shared, not copied. */
-    int[] corners();
+    /**
+     * Writes the corners of triangle {@code i} to {@code out[0..8]}: x, y, z of the first
+     * corner, then of the second and the third, exactly as the set's ray test sees them.
+     */
+    void corners(int i, double[] out);
 
-    /** Three coordinates per position; shared, not copied. */
-    double[] positions();
+    /** {@return the largest absolute coordinate of any corner} (it bounds the float copies' rounding) */
+    double maxAbsCoordinate();
 }

@@ -526,17 +526,20 @@ public final class TriangleMesh extends GObject implements lt.spindulys.accel.Tr
     @Override
     public void bounds(int i, double[] out) { WatertightTriangles.bounds(tri, pos, i, out); }
 
-    /**
-     * Three position indices per triangle, in the structure's leaf order once it is built: the
-     * array itself, for the structure over the triangles, which copies their corners into its
-     * leaves; not to be changed.
-     */
     @Override
-    public int[] corners() { return tri; }
+    public void corners(int i, double[] out) {
+        for (int c = 0; c < 3; c++) {
+            int p = 3 * tri[3 * i + c];
+            out[3 * c] = pos[p]; out[3 * c + 1] = pos[p + 1]; out[3 * c + 2] = pos[p + 2];
+        }
+    }
 
-    /** Three coordinates per position: the array itself, as {@link #corners()}; not to be changed. */
     @Override
-    public double[] positions() { return pos; }
+    public double maxAbsCoordinate() {
+        double m = 0;
+        for (double p : pos) m = Math.max(m, Math.abs(p));
+        return m;
+    }
 
     /**
      * Puts the triangles in the structure's leaf order and numbers the vertices by first use in

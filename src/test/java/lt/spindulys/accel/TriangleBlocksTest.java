@@ -15,7 +15,6 @@ import org.junit.jupiter.api.Test;
 import lt.spindulys.limits.HeapBudget;
 import lt.spindulys.math.Ray;
 import lt.spindulys.scene.TestMeshes;
-import lt.spindulys.scene.TriangleMesh;
 
 /**
  * The float triangles in the wide tree's leaves: the eight-lane test never drops a triangle the
@@ -31,6 +30,20 @@ class TriangleBlocksTest {
         @Override public void bounds(int i, double[] out) { WatertightTriangles.bounds(corners, positions, i, out); }
         @Override public boolean intersect(int i, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
             return WatertightTriangles.test(corners, positions, null, i, i + 1, ray, hit, ctx);
+        }
+        @Override public boolean intersectRange(int[] prims, int from, int to, Ray ray, PrimitiveHit hit, TraversalScratch ctx) {
+            return WatertightTriangles.test(corners, positions, prims, from, to, ray, hit, ctx);
+        }
+        @Override public boolean occludedRange(int[] prims, int from, int to, Ray ray, TraversalScratch ctx) {
+            return WatertightTriangles.test(corners, positions, prims, from, to, ray, null, ctx);
+        }
+        @Override public void corners(int i, double[] out) {
+            for (int c = 0; c < 3; c++) System.arraycopy(positions, 3 * corners[3 * i + c], out, 3 * c, 3);
+        }
+        @Override public double maxAbsCoordinate() {
+            double m = 0;
+            for (double p : positions) m = Math.max(m, Math.abs(p));
+            return m;
         }
     }
 
@@ -100,8 +113,9 @@ class TriangleBlocksTest {
 
     /** A unit icosphere's triangles, as a set that keeps its numbering (the trees index it through their slot order). */
     private static Soup sphere() {
-        TriangleMesh m = new TriangleMesh(TestMeshes.icosphere(4, 1));
-        return new Soup(m.corners().clone(), m.positions().clone());
+        lt.spindulys.mesh.MeshData d = TestMeshes.icosphere(4, 1);
+        for (int size : d.faceSizes()) assertEquals(3, size, "an icosphere of triangles");
+        return new Soup(d.vertexIndex().clone(), d.positions().clone());
     }
 
     private static void assertSameAnswers(Accelerator expected, Accelerator actual, Soup m, long seed) {
