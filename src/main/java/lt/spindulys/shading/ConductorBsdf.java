@@ -70,17 +70,9 @@ public final class ConductorBsdf implements Bsdf {
 
     @Override
     public double pdf(double wox, double woy, double woz, double wix, double wiy, double wiz) {
-        if (smooth || !(woz * wiz > 0)) return 0;
-        double hx = wox + wix, hy = woy + wiy, hz = woz + wiz;
-        double len2 = hx * hx + hy * hy + hz * hz;
-        if (len2 == 0) return 0;
-        double inv = (hz < 0 ? -1 : 1) / Math.sqrt(len2);
-        hx *= inv; hy *= inv; hz *= inv;
-        double cosOM = Math.abs(wox * hx + woy * hy + woz * hz);
-        if (cosOM == 0) return 0;
-        // Jacobian of the reflection wm -> wi: d wm / d wi = 1 / (4 |wo.wm|).
-        return distribution.visibleNormalPdf(wox, woy, woz, hx, hy, hz) / (4 * cosOM);
+        return smooth ? 0 : distribution.reflectionPdf(wox, woy, woz, wix, wiy, wiz);
     }
+
 
     @Override
     public boolean sample(double wox, double woy, double woz, double uc, double u1, double u2, BsdfSample out) {

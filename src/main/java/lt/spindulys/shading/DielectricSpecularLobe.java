@@ -46,17 +46,11 @@ final class DielectricSpecularLobe implements Bsdf {
 
     @Override
     public double pdf(double wox, double woy, double woz, double wix, double wiy, double wiz) {
-        if (smooth || !(woz * wiz > 0)) return 0;
-        double hx = wox + wix, hy = woy + wiy, hz = woz + wiz;
-        double len2 = hx * hx + hy * hy + hz * hz;
-        if (!(len2 > 0)) return 0;
-        double inv = (hz < 0 ? -1 : 1) / Math.sqrt(len2);
-        hx *= inv; hy *= inv; hz *= inv;
-        double cosOM = Math.abs(wox * hx + woy * hy + woz * hz);
-        if (cosOM == 0) return 0;
-        double pdf = distribution.visibleNormalPdf(wox, woy, woz, hx, hy, hz) / (4 * cosOM);
+        if (smooth) return 0;
+        double pdf = distribution.reflectionPdf(wox, woy, woz, wix, wiy, wiz);
         return pdf > 0 && Double.isFinite(pdf) ? pdf : 0;
     }
+
 
     @Override
     public boolean sample(double wox, double woy, double woz, double uc, double u1, double u2, BsdfSample out) {

@@ -101,6 +101,24 @@ public final class MicrofacetDistribution {
     }
 
     /**
+     * The density of a reflection lobe that draws a visible normal and mirrors wo about it: the
+     * visible-normal density of the half vector of wo and wi times the Jacobian 1 / (4 |wo.wm|)
+     * of the mirroring. 0 unless wo and wi lie on the same side, and where the half vector is
+     * undefined or on the horizon of wo.
+     */
+    public double reflectionPdf(double wox, double woy, double woz, double wix, double wiy, double wiz) {
+        if (!(woz * wiz > 0)) return 0;
+        double hx = wox + wix, hy = woy + wiy, hz = woz + wiz;
+        double len2 = hx * hx + hy * hy + hz * hz;
+        if (!(len2 > 0)) return 0;
+        double inv = (hz < 0 ? -1 : 1) / Math.sqrt(len2);
+        hx *= inv; hy *= inv; hz *= inv;
+        double cosOM = Math.abs(wox * hx + woy * hy + woz * hz);
+        if (cosOM == 0) return 0;
+        return visibleNormalPdf(wox, woy, woz, hx, hy, hz) / (4 * cosOM);
+    }
+
+    /**
      * Draws a microfacet normal visible from w, with density {@link #visibleNormalPdf}. A w below
      * the horizon is treated as its opposite, so the normal is always in the upper hemisphere.
      *

@@ -62,11 +62,7 @@ class BsdfChiSquareTest {
         double[] wo = wo(cosWo);
         SphereChiSquare.Result r = SphereChiSquare.run(sampler(bsdf, wo),
                 (x, y, z) -> bsdf.pdf(wo[0], wo[1], wo[2], x, y, z), ATTEMPTS, 0x5EEDL + Double.hashCode(cosWo));
-        String detail = name + " cos " + cosWo + ": " + r;
-        assertTrue(r.densityIntegral() <= 1 + 1e-3, detail);
-        assertEquals(0, r.unexpectedSamples(), detail);
-        assertTrue(r.dof() > 10, detail);
-        assertTrue(r.pValue() > SphereChiSquare.sidakThreshold(FAMILY_LEVEL, CASE_COUNT), detail);
+        r.assertFits(name + " cos " + cosWo, FAMILY_LEVEL, CASE_COUNT);
     }
 
     @Test

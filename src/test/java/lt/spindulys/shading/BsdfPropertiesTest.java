@@ -18,16 +18,6 @@ class BsdfPropertiesTest {
             new DielectricBsdf(1.5, 0.7, 1, 1, 1),
             new DielectricBsdf(1 / 1.33, 0.5, 1, 1, 1));
 
-    private static double[] uniformDirection(SplittableRandom rng) {
-        double z = 2 * rng.nextDouble() - 1, phi = 2 * Math.PI * rng.nextDouble(), s = Math.sqrt(Math.max(0, 1 - z * z));
-        return new double[] {s * Math.cos(phi), s * Math.sin(phi), z};
-    }
-
-    private static void assertRelative(double expected, double actual, double tolerance, String what) {
-        assertTrue(Math.abs(expected - actual) <= tolerance * Math.max(Math.abs(expected), Math.abs(actual)),
-                what + ": expected " + expected + " but was " + actual);
-    }
-
     @Test
     void sampledFAndPdfEqualEvalAndPdf() {
         SplittableRandom rng = new SplittableRandom(1);
@@ -36,7 +26,7 @@ class BsdfPropertiesTest {
         for (Bsdf bsdf : ROUGH) {
             int produced = 0;
             for (int i = 0; i < 20_000; i++) {
-                double[] wo = uniformDirection(rng);
+                double[] wo = SphereChiSquare.uniformDirection(rng);
                 if (!bsdf.sample(wo[0], wo[1], wo[2], rng.nextDouble(), rng.nextDouble(), rng.nextDouble(), s)) {
                     assertEquals(0, s.pdf, 0);
                     continue;
@@ -45,11 +35,11 @@ class BsdfPropertiesTest {
                 assertFalse(s.specular);
                 assertTrue(s.pdf > 0 && Double.isFinite(s.pdf));
                 assertEquals(1, s.wix * s.wix + s.wiy * s.wiy + s.wiz * s.wiz, 1e-9);
-                assertRelative(bsdf.pdf(wo[0], wo[1], wo[2], s.wix, s.wiy, s.wiz), s.pdf, 1e-9, bsdf + " pdf");
+                SphereChiSquare.assertRelative(bsdf.pdf(wo[0], wo[1], wo[2], s.wix, s.wiy, s.wiz), s.pdf, 1e-9, bsdf + " pdf");
                 bsdf.eval(wo[0], wo[1], wo[2], s.wix, s.wiy, s.wiz, f);
                 for (int c = 0; c < 3; c++) {
                     assertTrue(s.f[c] >= 0 && Double.isFinite(s.f[c]));
-                    assertRelative(f[c], s.f[c], 1e-9, bsdf + " f");
+                    SphereChiSquare.assertRelative(f[c], s.f[c], 1e-9, bsdf + " f");
                 }
                 boolean transmitted = wo[2] * s.wiz < 0;
                 if (transmitted) assertTrue(s.eta != 1 && s.eta > 0);
@@ -91,7 +81,7 @@ class BsdfPropertiesTest {
         SplittableRandom rng = new SplittableRandom(3);
         BsdfSample s = new BsdfSample();
         for (int i = 0; i < 10_000; i++) {
-            double[] wo = uniformDirection(rng);
+            double[] wo = SphereChiSquare.uniformDirection(rng);
             if (!white.sample(wo[0], wo[1], wo[2], rng.nextDouble(), rng.nextDouble(), rng.nextDouble(), s)) continue;
             for (int c = 0; c < 3; c++) assertEquals(1, s.f[c] * Math.abs(s.wiz) / s.pdf, 1e-12);
             assertTrue(wo[2] * s.wiz > 0);
@@ -172,13 +162,13 @@ class BsdfPropertiesTest {
         double[] a = new double[3], b = new double[3];
         for (Bsdf bsdf : ROUGH) {
             for (int i = 0; i < 20_000; i++) {
-                double[] wo = uniformDirection(rng), wi = uniformDirection(rng);
+                double[] wo = SphereChiSquare.uniformDirection(rng), wi = SphereChiSquare.uniformDirection(rng);
                 if (wo[2] * wi[2] < 0) { wi[2] = -wi[2]; }
                 bsdf.eval(wo[0], wo[1], wo[2], wi[0], wi[1], wi[2], a);
                 bsdf.eval(wi[0], wi[1], wi[2], wo[0], wo[1], wo[2], b);
                 for (int c = 0; c < 3; c++) {
                     assertTrue(a[c] >= 0 && Double.isFinite(a[c]));
-                    assertRelative(a[c], b[c], 1e-9, bsdf + " reciprocity");
+                    SphereChiSquare.assertRelative(a[c], b[c], 1e-9, bsdf + " reciprocity");
                 }
             }
         }

@@ -50,11 +50,7 @@ class PrincipledBsdfTest {
         double[] wo = BsdfChiSquareTest.wo(cosWo);
         SphereChiSquare.Result r = SphereChiSquare.run(BsdfChiSquareTest.sampler(bsdf, wo),
                 (x, y, z) -> bsdf.pdf(wo[0], wo[1], wo[2], x, y, z), ATTEMPTS, 0xB5DFL + name.hashCode() + Double.hashCode(cosWo));
-        String detail = name + " cos " + cosWo + ": " + r;
-        assertTrue(r.densityIntegral() <= 1 + 1e-3, detail);
-        assertEquals(0, r.unexpectedSamples(), detail);
-        assertTrue(r.dof() > 10, detail);
-        assertTrue(r.pValue() > SphereChiSquare.sidakThreshold(FAMILY_LEVEL, CASE_COUNT), detail);
+        r.assertFits(name + " cos " + cosWo, FAMILY_LEVEL, CASE_COUNT);
     }
 
     @Test
@@ -75,16 +71,6 @@ class PrincipledBsdfTest {
                 principled(0, 0, 1.5, 0));
     }
 
-    private static double[] uniformDirection(SplittableRandom rng) {
-        double z = 2 * rng.nextDouble() - 1, phi = 2 * Math.PI * rng.nextDouble(), s = Math.sqrt(Math.max(0, 1 - z * z));
-        return new double[] {s * Math.cos(phi), s * Math.sin(phi), z};
-    }
-
-    private static void assertRelative(double expected, double actual, double tolerance, String what) {
-        assertTrue(Math.abs(expected - actual) <= tolerance * Math.max(Math.abs(expected), Math.abs(actual)),
-                what + ": expected " + expected + " but was " + actual);
-    }
-
     @Test
     void nonDeltaSamplesReportTheWholeMixturesFAndPdf() {
         SplittableRandom rng = new SplittableRandom(21);
@@ -93,7 +79,7 @@ class PrincipledBsdfTest {
         for (PrincipledBsdf bsdf : roughSets()) {
             int produced = 0;
             for (int i = 0; i < 20_000; i++) {
-                double[] wo = uniformDirection(rng);
+                double[] wo = SphereChiSquare.uniformDirection(rng);
                 if (!bsdf.sample(wo[0], wo[1], wo[2], rng.nextDouble(), rng.nextDouble(), rng.nextDouble(), s)) {
                     assertEquals(0, s.pdf, 0);
                     continue;
@@ -102,11 +88,11 @@ class PrincipledBsdfTest {
                 assertEquals(1, s.wix * s.wix + s.wiy * s.wiy + s.wiz * s.wiz, 1e-9);
                 if (s.specular) continue;
                 produced++;
-                assertRelative(bsdf.pdf(wo[0], wo[1], wo[2], s.wix, s.wiy, s.wiz), s.pdf, 1e-9, bsdf + " pdf");
+                SphereChiSquare.assertRelative(bsdf.pdf(wo[0], wo[1], wo[2], s.wix, s.wiy, s.wiz), s.pdf, 1e-9, bsdf + " pdf");
                 bsdf.eval(wo[0], wo[1], wo[2], s.wix, s.wiy, s.wiz, f);
                 for (int c = 0; c < 3; c++) {
                     assertTrue(s.f[c] >= 0 && Double.isFinite(s.f[c]));
-                    assertRelative(f[c], s.f[c], 1e-9, bsdf + " f");
+                    SphereChiSquare.assertRelative(f[c], s.f[c], 1e-9, bsdf + " f");
                 }
                 if (wo[2] * s.wiz < 0) assertTrue(s.eta != 1 && s.eta > 0);
                 else assertEquals(1, s.eta, 0);
@@ -178,13 +164,13 @@ class PrincipledBsdfTest {
         double[] a = new double[3], b = new double[3];
         for (PrincipledBsdf bsdf : roughSets()) {
             for (int i = 0; i < 20_000; i++) {
-                double[] wo = uniformDirection(rng), wi = uniformDirection(rng);
+                double[] wo = SphereChiSquare.uniformDirection(rng), wi = SphereChiSquare.uniformDirection(rng);
                 if (wo[2] * wi[2] < 0) wi[2] = -wi[2];
                 bsdf.eval(wo[0], wo[1], wo[2], wi[0], wi[1], wi[2], a);
                 bsdf.eval(wi[0], wi[1], wi[2], wo[0], wo[1], wo[2], b);
                 for (int c = 0; c < 3; c++) {
                     assertTrue(a[c] >= 0 && Double.isFinite(a[c]));
-                    assertRelative(a[c], b[c], 1e-9, bsdf + " reciprocity");
+                    SphereChiSquare.assertRelative(a[c], b[c], 1e-9, bsdf + " reciprocity");
                 }
             }
         }

@@ -28,7 +28,32 @@ final class SphereChiSquare {
      * @param densityIntegral numerical integral of the density over the sphere
      * @param unexpectedSamples samples that fell where the density integrates to 0
      */
-    record Result(double statistic, int dof, double pValue, double densityIntegral, int unexpectedSamples) {}
+    record Result(double statistic, int dof, double pValue, double densityIntegral, int unexpectedSamples) {
+        /**
+         * Asserts that the sampler fits its density: the density integrates to at most 1, no
+         * sample falls where it is 0, enough categories are left, and the p-value passes the
+         * Sidak-corrected threshold of {@code tests} tests at family level {@code familyLevel}.
+         */
+        void assertFits(String what, double familyLevel, int tests) {
+            String detail = what + ": " + this;
+            org.junit.jupiter.api.Assertions.assertTrue(densityIntegral <= 1 + 1e-3, detail);
+            org.junit.jupiter.api.Assertions.assertEquals(0, unexpectedSamples, detail);
+            org.junit.jupiter.api.Assertions.assertTrue(dof > 10, detail);
+            org.junit.jupiter.api.Assertions.assertTrue(pValue > sidakThreshold(familyLevel, tests), detail);
+        }
+    }
+
+    /** A direction drawn uniformly over the sphere. */
+    static double[] uniformDirection(java.util.SplittableRandom rng) {
+        double z = 2 * rng.nextDouble() - 1, phi = 2 * Math.PI * rng.nextDouble(), s = Math.sqrt(Math.max(0, 1 - z * z));
+        return new double[] {s * Math.cos(phi), s * Math.sin(phi), z};
+    }
+
+    /** Asserts that two values agree to {@code tolerance} relative to the larger. */
+    static void assertRelative(double expected, double actual, double tolerance, String what) {
+        org.junit.jupiter.api.Assertions.assertTrue(Math.abs(expected - actual) <= tolerance * Math.max(Math.abs(expected), Math.abs(actual)),
+                what + ": expected " + expected + " but was " + actual);
+    }
 
     static final int THETA_BINS = 40, PHI_BINS = 80;
     private static final int SUB_CELLS = 2; // per cell and dimension
