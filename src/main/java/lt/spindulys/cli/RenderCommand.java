@@ -10,6 +10,7 @@ import java.util.Map;
 import java.util.Set;
 
 import lt.spindulys.scene.AcceleratorKind;
+import lt.spindulys.scene.IntegratorKind;
 import lt.spindulys.scene.InputFile;
 import lt.spindulys.scene.AdaptiveSettings;
 import lt.spindulys.image.Aov;
@@ -46,6 +47,7 @@ final class RenderCommand {
     static final String USAGE = """
             usage: render SCENE.dat [-o OUT] [--width W] [--height H] [--spp N] [--aperture R] [--focus D]
                                     [--threads N] [--seed S] [--accel A] [--aov LIST] [--shutter OPEN,CLOSE] [--timesteps N]
+                                    [--integrator whitted|path] [--maxdepth N] [--clamp C]
                                     [--subdiv-target PX] [--subdiv-memory MIB] [--subdiv-cache MIB]
                                     [--frame N | --frames A-B[:STEP]] [--skip-existing]
                                     [--quality Q] [--region X0,X1,Y0,Y1 | --tile I/N] [--progress openjd|plain]
@@ -66,6 +68,10 @@ final class RenderCommand {
               --threads N        render threads (default: all cores)
               --seed S           global random seed (overrides the scene)
               --accel A          acceleration structure: bvh, bvh-compact, bvh2, octree or bruteforce (overrides the scene)
+              --integrator I     whitted (the thesis's ray tracing) or path (global illumination) (overrides the scene)
+              --maxdepth N       most bounces of a ray or path, 0 to 64 (overrides the scene)
+              --clamp C          path tracing: the largest value a channel of one indirect sample may bring,
+                                 against fireflies; 0 for none (overrides the scene)
               --aov LIST         render passes beside the image, comma-separated: depth, normal, object
                                  (OUT.depth.pfm, OUT.normal.pfm, OUT.object.png; overrides the scene)
               --shutter OPEN,CLOSE  shutter interval of the motion blur, e.g. 0,1 (overrides the scene)
@@ -94,6 +100,9 @@ final class RenderCommand {
     private Long seed;
     private Double aperture, focus;
     private AcceleratorKind accel;
+    private IntegratorKind integrator;
+    private Integer maxDepth;
+    private Double clamp;
     private Set<Aov> aovs;
     private double[] shutter;
     private Integer timeSteps;
@@ -138,6 +147,15 @@ final class RenderCommand {
                     }
                     accel = AcceleratorKind.fromKeyword(v);
                 }
+                case "--integrator" -> {
+                    String v = OptionValues.value(args, ++i, a);
+                    if (!IntegratorKind.keywords().contains(v)) {
+                        throw new UsageException(a + " expects one of " + String.join(", ", IntegratorKind.keywords()) + ", found '" + v + "'");
+                    }
+                    integrator = IntegratorKind.fromKeyword(v);
+                }
+                case "--maxdepth" -> maxDepth = OptionValues.intValue(args, ++i, a, 0, 64);
+                case "--clamp" -> clamp = OptionValues.doubleValue(args, ++i, a, 0, Ranges.MAX_COLOUR);
                 case "--aov" -> {
                     String v = OptionValues.value(args, ++i, a);
                     try {
@@ -384,6 +402,9 @@ final class RenderCommand {
         if (spp != null) o.samplesPerPixel(spp);
         if (seed != null) o.seed(seed);
         if (accel != null) o.accelerator(accel);
+        if (integrator != null) o.integrator(integrator);
+        if (maxDepth != null) o.maxDepth(maxDepth);
+        if (clamp != null) o.clamp(clamp);
         if (aovs != null) o.aovs(aovs);
         if (shutter != null) o.shutter(shutter[0], shutter[1]);
         if (timeSteps != null) o.timeSteps(timeSteps);

@@ -8,6 +8,7 @@ import lt.spindulys.image.Aov;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
 import lt.spindulys.camera.LensPattern;
+import lt.spindulys.scene.IntegratorKind;
 
 /**
  * The statements of the scene language and the keys each block accepts, with their value kinds,
@@ -187,7 +188,9 @@ final class SceneGrammar {
             opt("subdivmemory", Kind.NUMBER),
             opt("subdivcache", Kind.NUMBER),
             choice("subdivpolicy", null, "lru", "last-two"),
-            opt("subdivtarget", Kind.NUMBER)));
+            opt("subdivtarget", Kind.NUMBER),
+            new Key("integrator", Kind.CHOICE, false, false, null, IntegratorKind.keywords()),
+            opt("clamp", Kind.NUMBER)));
 
     // A thin lens when any of the lens keys is given, else a pinhole. 'focus' and 'focuspoint'
     // exclude each other (checked by the parser); without either the look-at point is in focus.

@@ -8,6 +8,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 import lt.spindulys.scene.AcceleratorKind;
+import lt.spindulys.scene.IntegratorKind;
 import lt.spindulys.scene.AdaptiveSettings;
 import lt.spindulys.camera.Camera;
 import lt.spindulys.camera.PinholeCamera;
@@ -120,6 +121,8 @@ final class SceneObjectFactory {
                     case "subdivcache" -> sb.adaptive(adaptive = adaptive.withCache(mebibytes("subdivcache", (Double) v, false)));
                     case "subdivpolicy" -> sb.adaptive(adaptive = adaptive.withLastTwoPatches("last-two".equals(v)));
                     case "subdivtarget" -> sb.adaptive(adaptive = adaptive.withTarget(AdaptiveSettings.checkTarget((Double) v)));
+                    case "integrator" -> sb.integrator(IntegratorKind.fromKeyword((String) v));
+                    case "clamp" -> sb.clamp((Double) v);
                     default -> throw unhandled(pr);
                 }
             } catch (IllegalArgumentException e) {

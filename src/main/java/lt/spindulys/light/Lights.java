@@ -15,10 +15,13 @@ public final class Lights {
     private final Light[] all;
     private final AreaSource[] surfaces;
     private final int stratified;
+    /** Index in {@link #all} of the first area light (the point lights come before them). */
+    private final int firstSurface;
 
-    private Lights(Light[] all, AreaSource[] surfaces) {
+    private Lights(Light[] all, AreaSource[] surfaces, int firstSurface) {
         this.all = all;
         this.surfaces = surfaces;
+        this.firstSurface = firstSurface;
         int n = 0;
         for (Light l : all) if (!l.isDelta()) n++;
         stratified = n;
@@ -55,7 +58,7 @@ public final class Lights {
             all[i++] = surfaces[a];
         }
         if (environment) all[i] = new EnvironmentSource(scene.environmentLight());
-        return new Lights(all, surfaces);
+        return new Lights(all, surfaces, points.length);
     }
 
     /**
@@ -81,26 +84,28 @@ public final class Lights {
 
     /**
      * If {@code ray} reaches an area light before {@code tBound} (and within its own range), writes
-     * the radiance it sees there to out[0..2] (black from a one-sided light's back) and returns
-     * the ray parameter of the crossing; else returns NaN and leaves out alone.
+     * the radiance it sees there to out[0..2] (black from a one-sided light's back) and the ray
+     * parameter of the crossing to out[3], and returns which light it is; else returns -1 and
+     * leaves out alone.
      *
      * @param ray    the ray
      * @param tBound where the nearest surface is along it, or +Infinity
-     * @param out    receives r, g, b
-     * @return the crossing's t, or NaN
+     * @param out    receives r, g, b and t: at least four entries
+     * @return the light's index in {@link #all()}, or -1
      */
-    public double nearestSurface(Ray ray, double tBound, double[] out) {
+    public int nearestSurface(Ray ray, double tBound, double[] out) {
         double best = Math.min(tBound, ray.tMax);
-        AreaSource seen = null;
-        for (AreaSource light : surfaces) {
-            double t = light.intersect(ray, best);
+        int seen = -1;
+        for (int i = 0; i < surfaces.length; i++) {
+            double t = surfaces[i].intersect(ray, best);
             if (t == t) {
                 best = t;
-                seen = light;
+                seen = i;
             }
         }
-        if (seen == null) return Double.NaN;
-        seen.radiance(ray.dx, ray.dy, ray.dz, out);
-        return best;
+        if (seen < 0) return -1;
+        surfaces[seen].radiance(ray.dx, ray.dy, ray.dz, out);
+        out[3] = best;
+        return firstSurface + seen;
     }
 }

@@ -22,7 +22,7 @@ import lt.spindulys.sampling.PixelSampler;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.shading.TracerScratch;
-import lt.spindulys.shading.WhittedIntegrator;
+import lt.spindulys.shading.Integrator;
 
 /**
  * Renders a frozen scene on several threads. The image is cut into square tiles handed out from
@@ -152,7 +152,7 @@ public final class Renderer {
         FrameBuffer fb = new FrameBuffer(rw, rh);
         AovFrame aovs = st.aovs().isEmpty() ? null : new AovFrame(w, h, st.aovs());
         int tilesX = (rw + TILE - 1) / TILE, tilesY = (rh + TILE - 1) / TILE, tiles = tilesX * tilesY;
-        WhittedIntegrator integrator = new WhittedIntegrator(scene);
+        Integrator integrator = Integrator.of(scene);
         int steps = st.timeSteps(); // a multiple of the samples: the scene checked it when built
         long[] sum = new long[COUNTS];
         long start = System.nanoTime();
@@ -231,7 +231,7 @@ public final class Renderer {
     }
 
     /** Renders one pass on {@code threads} threads; returns its ray counts (camera, shadow, reflection, refraction). */
-    private static long[] renderPass(Scene scene, int threads, ProgressListener progress, WhittedIntegrator integrator, FrameBuffer fb,
+    private static long[] renderPass(Scene scene, int threads, ProgressListener progress, Integrator integrator, FrameBuffer fb,
                                      AovFrame aovs, Pass pass, PixelRegion region, int tilesX, int tiles, AtomicBoolean cancelled,
                                      TileListener tileListener)
             throws InterruptedException {
@@ -325,7 +325,7 @@ public final class Renderer {
      * before each pixel and every {@value #STOP_CHECK} samples, so a pixel of millions of shadow
      * rays is not finished for a run that has already failed).
      */
-    private static boolean renderTile(Camera camera, WhittedIntegrator integrator, RenderSettings st, Pass pass, PixelSampler sampler,
+    private static boolean renderTile(Camera camera, Integrator integrator, RenderSettings st, Pass pass, PixelSampler sampler,
                                       TracerScratch scratch, Ray ray, double[] colour, FrameBuffer fb, AovFrame aovs, int ox, int oy,
                                       int fx0, int fy0, int fx1, int fy1, BooleanSupplier stop) {
         int w = st.width(), h = st.height(), n = sampler.samplesPerPixel(), fw = fb.width();

@@ -39,20 +39,27 @@ import lt.spindulys.math.Ranges;
  *                        when the scene is built, see {@link #checkTimeSteps()})
  * @param adaptive        heap budget, cache and target edge length of adaptive subdivision
  *                        (see {@link AdaptiveSettings}); none of them changes the image
+ * @param integrator      how light is gathered: Whitted ray tracing or path tracing
+ * @param clamp           path tracing only: the largest value any channel of one indirect
+ *                        sample may bring to a pixel (light reaching the camera after at least one
+ *                        bounce), against fireflies; 0 for no clamp
  */
 public record RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, double minContribution,
                              Color background, Color ambient, boolean srgb, long seed, AcceleratorKind accelerator,
-                             Set<Aov> aovs, double shutterOpen, double shutterClose, int timeSteps, AdaptiveSettings adaptive) {
+                             Set<Aov> aovs, double shutterOpen, double shutterClose, int timeSteps, AdaptiveSettings adaptive,
+                             IntegratorKind integrator, double clamp) {
     /** Largest accepted image side, so that a typo cannot ask for terabytes. */
     public static final int MAX_SIDE = 32768;
 
     /**
      * The settings of a scene that gives none, and where {@link #builder()} starts: 640x480, 1
      * sample per pixel, depth 8, minimum contribution 0.001, black background, white ambient,
-     * linear encoding, seed 0, the default accelerator, no passes, shutter [0, 1] in one pass.
+     * linear encoding, seed 0, the default accelerator, no passes, shutter [0, 1] in one pass,
+     * Whitted ray tracing, no clamp.
      */
     public static final RenderSettings DEFAULT = new RenderSettings(640, 480, 1, 8, 0.001, Color.BLACK, Color.WHITE, false, 0,
-            AcceleratorKind.DEFAULT, Set.of(), Placement.OPEN, Placement.CLOSE, 1, AdaptiveSettings.DEFAULT);
+            AcceleratorKind.DEFAULT, Set.of(), Placement.OPEN, Placement.CLOSE, 1, AdaptiveSettings.DEFAULT,
+            IntegratorKind.DEFAULT, 0);
 
     /**
      * Checks every value as the {@link Builder}'s methods do, with the same messages; the
@@ -73,6 +80,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      * @param shutterClose    time the shutter closes
      * @param timeSteps       1: one pass; N &gt; 1: N passes each at one time
      * @param adaptive        memory, cache and target of adaptive subdivision
+     * @param integrator      Whitted ray tracing or path tracing
+     * @param clamp           the largest value of an indirect sample's channel (path tracing), 0 for none
      * @throws IllegalArgumentException if a value is out of its range
      * @throws NullPointerException     if accelerator or aovs is null
      */
@@ -89,6 +98,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         Placement.checkShutter(shutterOpen, shutterClose);
         steps(timeSteps);
         Objects.requireNonNull(adaptive, "adaptive");
+        Objects.requireNonNull(integrator, "integrator");
+        clamp(clamp);
     }
 
     /**
@@ -119,6 +130,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         private AcceleratorKind accelerator;
         private Set<Aov> aovs;
         private AdaptiveSettings adaptive;
+        private IntegratorKind integrator;
+        private double clamp;
 
         private Builder(RenderSettings s) {
             width = s.width;
@@ -136,6 +149,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
             shutterClose = s.shutterClose;
             timeSteps = s.timeSteps;
             adaptive = s.adaptive;
+            integrator = s.integrator;
+            clamp = s.clamp;
         }
 
         /**
@@ -323,13 +338,39 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         }
 
         /**
+         * How light is gathered: Whitted ray tracing or path tracing.
+         *
+         * @param kind the integrator
+         * @return this builder
+         * @throws NullPointerException if kind is null
+         */
+        public Builder integrator(IntegratorKind kind) {
+            integrator = Objects.requireNonNull(kind, "integrator");
+            return this;
+        }
+
+        /**
+         * Path tracing's clamp: the largest value any channel of one indirect sample (light that
+         * reached the camera after at least one bounce) may bring, from 0 (no clamp) to
+         * {@link Ranges#MAX_COLOUR}. It removes fireflies at the price of some energy (bias).
+         *
+         * @param max the largest value, or 0 for none
+         * @return this builder
+         * @throws IllegalArgumentException if out of range
+         */
+        public Builder clamp(double max) {
+            clamp = RenderSettings.clamp(max);
+            return this;
+        }
+
+        /**
          * The settings with the values given so far.
          *
          * @return new settings; the builder can go on to make more
          */
         public RenderSettings build() {
             return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed,
-                    accelerator, aovs, shutterOpen, shutterClose, timeSteps, adaptive);
+                    accelerator, aovs, shutterOpen, shutterClose, timeSteps, adaptive, integrator, clamp);
         }
     }
 
@@ -348,6 +389,11 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
     private static int depth(int d) {
         if (d < 0 || d > 64) throw new IllegalArgumentException("maxdepth must be between 0 and 64, found " + d);
         return d;
+    }
+
+    private static double clamp(double c) {
+        if (!(c >= 0 && c <= Ranges.MAX_COLOUR)) throw new IllegalArgumentException("clamp must be 0 (none) or a positive value up to " + (int) Ranges.MAX_COLOUR + ", found " + c);
+        return c;
     }
 
     private static double contribution(double c) {

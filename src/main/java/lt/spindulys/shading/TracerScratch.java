@@ -50,8 +50,22 @@ public final class TracerScratch {
     /** Per sampled light, as lightStrata: the columns of its strata's grid (rows = strata / cols). */
     int[] lightStrataCols = new int[0];
     final lt.spindulys.sampling.Rng lightRng = new lt.spindulys.sampling.Rng();
+    /** What a ray sees of the area light it reaches first, and where: r, g, b, t (Lights#nearestSurface). */
+    final double[] lightSeen = new double[4];
     /** The light sample being shaded (Light#sampleLi writes it). */
     final LightSample lightSample = new LightSample();
+
+    // Path tracing (PathIntegrator): the path's random numbers, its throughput and sum, one
+    // light's or surface's contribution, the BSDF of the current surface with its sample and
+    // value, and the two tangents of its shading frame.
+    final lt.spindulys.sampling.Rng pathRng = new lt.spindulys.sampling.Rng();
+    final double[] throughput = new double[3];
+    final double[] pathSum = new double[3];
+    final double[] contribution = new double[3];
+    final double[] bsdfValue = new double[3];
+    final SurfaceBsdf bsdf = new SurfaceBsdf();
+    final BsdfSample bsdfSample = new BsdfSample();
+    final double[] frame = new double[6];
 
     /**
      * Says which pixel sample the next camera ray is, so that area-light samples are stratified

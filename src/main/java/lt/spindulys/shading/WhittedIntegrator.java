@@ -49,7 +49,7 @@ import lt.spindulys.texture.Channel;
  * <p>A ray that hits nothing sees the scene's {@link Environment} along its direction if it has
  * one (so mirrors and glass show it), else the background colour.
  */
-public final class WhittedIntegrator {
+public final class WhittedIntegrator implements Integrator {
     /** Surfaces a shadow ray may cross before the light counts as blocked. */
     private static final int MAX_SHADOW_CROSSINGS = 64;
 
@@ -63,8 +63,8 @@ public final class WhittedIntegrator {
     /** What rays that hit nothing see, or null for the background colour. */
     private final Environment environment;
     private final boolean transparentShadows;
-    /** Angle between the primary rays of neighbouring pixels at the image centre, radians (texture footprints). */
-    private final double pixelAngle;
+    /** What render passes see, and the footprints of texture lookups. */
+    private final FirstHits firstHits;
 
     public WhittedIntegrator(Scene scene) {
         this.scene = scene;
@@ -74,30 +74,8 @@ public final class WhittedIntegrator {
         this.stratifiedLights = lights.stratified();
         this.environment = scene.environment();
         this.transparentShadows = scene.hasTransparentObjects();
-        this.pixelAngle = pixelAngle(scene);
+        this.firstHits = new FirstHits(scene);
     }
-
-    /**
-     * The camera's angle per pixel, measured between the rays through the two pixels at the
-     * image centre (any camera model); the footprint of a texture lookup is this angle times the
-     * path length. Away from the centre a pinhole's pixels subtend slightly less: the
-     * approximation errs on the blurrier side there.
-     */
-    static double pixelAngle(Scene scene) {
-        if (scene.camera() == null) return 0;
-        int w = scene.settings().width(), h = scene.settings().height();
-        double aspect = (double) w / h;
-        Ray a = new Ray(), b = new Ray();
-        scene.camera().generateRay(0.5, 0.5, aspect, 0, 0, 0, a); // from the lens centre
-        scene.camera().generateRay(0.5 + 1.0 / w, 0.5, aspect, 0, 0, 0, b);
-        double la = Math.sqrt(a.dx * a.dx + a.dy * a.dy + a.dz * a.dz), lb = Math.sqrt(b.dx * b.dx + b.dy * b.dy + b.dz * b.dz);
-        double cos = (a.dx * b.dx + a.dy * b.dy + a.dz * b.dz) / (la * lb);
-        double angle = Math.acos(Math.max(-1, Math.min(1, cos)));
-        return Double.isFinite(angle) ? angle : 0;
-    }
-
-    /** Smallest incidence cosine used to widen a texture footprint on surfaces seen at a grazing angle. */
-    private static final double MIN_FOOTPRINT_COSINE = 1 / lt.spindulys.texture.Mapping.MAX_ANISOTROPY;
 
     /**
      * A scratch sized for this scene's recursion depth and lights, for one thread: its heap
@@ -122,6 +100,7 @@ public final class WhittedIntegrator {
      * @param reservation heap reserved for this scratch among others
      * @return the scratch
      */
+    @Override
     public TracerScratch newScratch(HeapBudget.Reservation reservation) {
         TracerScratch s = new TracerScratch(settings.maxDepth());
         s.lightStrata = new int[stratifiedLights][];
@@ -148,6 +127,7 @@ public final class WhittedIntegrator {
      * @param samplesPerPixel the pixel samples of a pass
      * @return bytes, saturating
      */
+    @Override
     public long scratchBytes(int samplesPerPixel) {
         long bytes = HeapBudget.sum(FIXED_SCRATCH_BYTES, HeapBudget.product(settings.maxDepth() + 2, VERTEX_BYTES));
         for (Light l : lightArray) if (!l.isDelta()) bytes = HeapBudget.sum(bytes, 16, HeapBudget.product(4, samplesPerPixel, l.samples()));
@@ -167,6 +147,7 @@ public final class WhittedIntegrator {
      * @param samplesPerPixel the pixel samples of a pass
      * @return the phrase, or the pixel samples alone when no light is sampled
      */
+    @Override
     public String scratchSizedBy(int samplesPerPixel) {
         String pixel = "samples " + samplesPerPixel + " of the settings";
         if (stratifiedLights == 0) return pixel;
@@ -183,6 +164,7 @@ public final class WhittedIntegrator {
     }
 
     /** Colour seen along a camera ray, written to out[0..2]. */
+    @Override
     public void traceCamera(Ray ray, TracerScratch s, double[] out) {
         s.cameraRays++;
         s.mediaCount = 0;
@@ -190,45 +172,8 @@ public final class WhittedIntegrator {
         trace(ray, 0, 1, s, out);
     }
 
-    /**
-     * What a render pass sees along {@code ray}: its first hit only, with no lights, shadows or
-     * secondary rays. Writes to out[0] the distance along the ray's direction made unit
-     * (+Infinity if nothing is hit) and to out[1..3] the unit world-space shading normal turned to
-     * face the ray, by the same rule as shading uses (0 0 0 if nothing is hit).
-     *
-     * @return the {@link lt.spindulys.scene.GObject#id()} of the object hit, or -1
-     */
-    public int traceFirstHit(Ray ray, TracerScratch s, double[] out) {
-        s.cameraRays++;
-        if (TraversalScratch.COUNTING) s.ctx.rayKind = TraversalScratch.CAMERA;
-        TracerScratch.PathVertex v = s.path[0];
-        Hit hit = v.hit;
-        if (!scene.intersect(ray, hit, s.ctx)) {
-            out[0] = Double.POSITIVE_INFINITY;
-            out[1] = out[2] = out[3] = 0;
-            return -1;
-        }
-        ShadingData sd = v.shading;
-        hit.object.shade(ray, hit, sd);
-        double dlen = Math.sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
-        double dx = ray.dx / dlen, dy = ray.dy / dlen, dz = ray.dz / dlen;
-        // The normal pass shows the bumped normal that shading uses.
-        if (sd.material.texture(Channel.BUMP) != null) TextureShading.evaluate(sd.material, sd, footprint(sd, hit.t * dlen, dx, dy, dz), s, v);
-        // As in trace: flip both normals towards the ray by the geometric one, and fall back to
-        // the geometric normal where the interpolated one still faces away.
-        double sign = sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz < 0 ? 1 : -1;
-        double nx = sign * sd.ns[0], ny = sign * sd.ns[1], nz = sign * sd.ns[2];
-        if (nx * dx + ny * dy + nz * dz >= 0) { nx = sign * sd.ng[0]; ny = sign * sd.ng[1]; nz = sign * sd.ng[2]; }
-        out[0] = hit.t * dlen;
-        out[1] = nx; out[2] = ny; out[3] = nz;
-        return hit.object.id();
-    }
-
-    /** World-space width of the pixel's footprint at a hit a path of this length reaches along unit direction d. */
-    private double footprint(ShadingData sd, double travelled, double dx, double dy, double dz) {
-        double cos = Math.abs(sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz);
-        return travelled * pixelAngle / Math.max(cos, MIN_FOOTPRINT_COSINE);
-    }
+    @Override
+    public int traceFirstHit(Ray ray, TracerScratch s, double[] out) { return firstHits.trace(ray, s, out); }
 
     /** Colour seen along {@code ray}, traced at recursion depth {@code depth}, written to out[0..2]. */
     private void trace(Ray ray, int depth, double weight, TracerScratch s, double[] out) {
@@ -240,9 +185,10 @@ public final class WhittedIntegrator {
         if (TraversalScratch.COUNTING) s.ctx.rayKind = depth == 0 ? TraversalScratch.CAMERA : TraversalScratch.SECONDARY;
         boolean found = scene.intersect(ray, hit, s.ctx);
         if (lights.hasSurfaces()) {
-            double tLight = lights.nearestSurface(ray, found ? hit.t : Double.POSITIVE_INFINITY, out);
-            if (tLight == tLight) { // not NaN: a light is nearer than any surface
-                if (medium != null) attenuate(medium, tLight * dlen, out);
+            double[] seen = s.lightSeen;
+            if (lights.nearestSurface(ray, found ? hit.t : Double.POSITIVE_INFINITY, seen) >= 0) { // a light is nearer than any surface
+                out[0] = seen[0]; out[1] = seen[1]; out[2] = seen[2];
+                if (medium != null) attenuate(medium, seen[3] * dlen, out);
                 return;
             }
         }
@@ -267,7 +213,7 @@ public final class WhittedIntegrator {
         double travelled = v.travelled + hit.t * dlen;
 
         // Textured surface terms (colour, ks, kr, kt, emission) and the bumped shading normal.
-        TextureShading.evaluate(m, sd, m.isTextured() ? footprint(sd, travelled, dx, dy, dz) : 0, s, v);
+        TextureShading.evaluate(m, sd, m.isTextured() ? firstHits.footprint(sd, travelled, dx, dy, dz) : 0, s, v);
 
         // Normals facing the incoming ray: nf geometric, sn shading (kept on nf's side).
         v.entering = sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz < 0;
@@ -559,10 +505,10 @@ public final class WhittedIntegrator {
         }
     }
 
-    private static double ior(Material m) { return m == null ? 1 : m.ior(); }
+    static double ior(Material m) { return m == null ? 1 : m.ior(); }
 
     /** Multiplies rgb by e^(-beta d) of the medium; an infinite distance leaves only channels with beta 0. */
-    private static void attenuate(Material medium, double distance, double[] rgb) {
+    static void attenuate(Material medium, double distance, double[] rgb) {
         if (!medium.attenuates()) return;
         Color beta = medium.beta();
         rgb[0] *= beta.r() == 0 ? 1 : Math.exp(-beta.r() * distance);

@@ -161,18 +161,21 @@ class LightsTest {
         Lights lights = lights(new SceneBuilder()
                 .areaLight(AreaLight.rectangle(new Vec3(0, 3, 0), new Vec3(0, -1, 0), Vec3.X, 2, 2, WARM, 2, true, 1))
                 .areaLight(AreaLight.sphere(new Vec3(0, 6, 0), 1, Color.WHITE, 7, 1)));
-        double[] out = new double[3];
+        double[] out = new double[4];
         Ray up = new Ray().set(0, 0, 0, 0, 2, 0, 0, Double.POSITIVE_INFINITY);
-        assertEquals(1.5, lights.nearestSurface(up, Double.POSITIVE_INFINITY, out), 1e-12, "the rectangle at y = 3, t = 1.5");
+        assertEquals(0, lights.nearestSurface(up, Double.POSITIVE_INFINITY, out), "the rectangle, the first light");
+        assertEquals(1.5, out[3], 1e-12, "the rectangle at y = 3, t = 1.5");
         assertEquals(2, out[0]);
         assertEquals(1, out[1]);
         assertEquals(0.5, out[2]);
-        assertTrue(Double.isNaN(lights.nearestSurface(up, 1, out)), "a surface nearer than the light");
+        assertEquals(-1, lights.nearestSurface(up, 1, out), "a surface nearer than the light");
         Ray down = new Ray().set(0, 10, 0, 0, -1, 0, 0, Double.POSITIVE_INFINITY);
-        assertEquals(3, lights.nearestSurface(down, Double.POSITIVE_INFINITY, out), 1e-12, "the sphere's top");
+        assertEquals(1, lights.nearestSurface(down, Double.POSITIVE_INFINITY, out), "the sphere");
+        assertEquals(3, out[3], 1e-12, "the sphere's top");
         assertEquals(7, out[2]);
         Ray between = new Ray().set(0, 4, 0, 0, -1, 0, 0, Double.POSITIVE_INFINITY);
-        assertEquals(1, lights.nearestSurface(between, Double.POSITIVE_INFINITY, out), 1e-12);
+        assertEquals(0, lights.nearestSurface(between, Double.POSITIVE_INFINITY, out));
+        assertEquals(1, out[3], 1e-12);
         assertEquals(0, out[0], "the rectangle's back is black");
     }
 }

@@ -20,9 +20,11 @@ class RenderSettingsTest {
     @Test
     void defaultsAreTheDocumentedValues() {
         RenderSettings d = RenderSettings.DEFAULT;
-        assertEquals(List.of(640, 480, 1, 8, 0.001, Color.BLACK, Color.WHITE, false, 0L, AcceleratorKind.DEFAULT, Set.of(), 0.0, 1.0, 1),
+        assertEquals(List.of(640, 480, 1, 8, 0.001, Color.BLACK, Color.WHITE, false, 0L, AcceleratorKind.DEFAULT, Set.of(), 0.0, 1.0, 1,
+                        IntegratorKind.WHITTED, 0.0),
                 List.of(d.width(), d.height(), d.samplesPerPixel(), d.maxDepth(), d.minContribution(), d.background(), d.ambient(),
-                        d.srgb(), d.seed(), d.accelerator(), d.aovs(), d.shutterOpen(), d.shutterClose(), d.timeSteps()));
+                        d.srgb(), d.seed(), d.accelerator(), d.aovs(), d.shutterOpen(), d.shutterClose(), d.timeSteps(),
+                        d.integrator(), d.clamp()));
         assertEquals(d, RenderSettings.builder().build());
         assertEquals(d, d.toBuilder().build());
     }
@@ -31,9 +33,9 @@ class RenderSettingsTest {
     void everyValueReachesTheSettings() {
         RenderSettings s = RenderSettings.builder().size(320, 200).samplesPerPixel(16).maxDepth(3).minContribution(0.25)
                 .background(Color.grey(0.5)).ambient(new Color(0.1, 0.2, 0.3)).srgb(true).seed(-9).accelerator(AcceleratorKind.OCTREE)
-                .aovs(EnumSet.of(Aov.OBJECT, Aov.DEPTH)).shutter(0.25, 0.75).timeSteps(4).build();
+                .aovs(EnumSet.of(Aov.OBJECT, Aov.DEPTH)).shutter(0.25, 0.75).timeSteps(4).integrator(IntegratorKind.PATH).clamp(10).build();
         assertEquals(new RenderSettings(320, 200, 16, 3, 0.25, Color.grey(0.5), new Color(0.1, 0.2, 0.3), true, -9, AcceleratorKind.OCTREE,
-                EnumSet.of(Aov.DEPTH, Aov.OBJECT), 0.25, 0.75, 4, AdaptiveSettings.DEFAULT), s);
+                EnumSet.of(Aov.DEPTH, Aov.OBJECT), 0.25, 0.75, 4, AdaptiveSettings.DEFAULT, IntegratorKind.PATH, 10), s);
         assertEquals(s, s.toBuilder().build());
         assertEquals(200, RenderSettings.builder().width(7).height(200).build().height());
         assertEquals(7, RenderSettings.builder().width(7).height(200).build().width());
@@ -82,11 +84,21 @@ class RenderSettingsTest {
         assertThrows(IllegalArgumentException.class, () -> b.shutter(0, Double.POSITIVE_INFINITY));
         assertThrows(NullPointerException.class, () -> b.accelerator(null));
         assertThrows(NullPointerException.class, () -> b.aovs(null));
+        assertThrows(NullPointerException.class, () -> b.integrator(null));
+        refused("clamp must be 0 (none) or a positive value up to 100, found -1.0", () -> b.clamp(-1));
+        refused("clamp must be 0 (none) or a positive value up to 100, found NaN", () -> b.clamp(Double.NaN));
         // A refused value leaves the builder as it was.
         assertEquals(RenderSettings.DEFAULT, b.build());
         // The constructor words a refusal as the builder does.
         refused("width must be between 1 and 32768, found 0", () -> new RenderSettings(0, 1, 1, 0, 0, Color.BLACK, Color.BLACK, false, 0,
-                AcceleratorKind.DEFAULT, Set.of(), 0, 1, 1, AdaptiveSettings.DEFAULT));
+                AcceleratorKind.DEFAULT, Set.of(), 0, 1, 1, AdaptiveSettings.DEFAULT, IntegratorKind.DEFAULT, 0));
+    }
+
+    @Test
+    void integratorsAreNamedByTheirKeywords() {
+        assertEquals(List.of("whitted", "path"), IntegratorKind.keywords());
+        assertEquals(IntegratorKind.PATH, IntegratorKind.fromKeyword("path"));
+        refused("unknown integrator 'photon' (expected one of whitted, path)", () -> IntegratorKind.fromKeyword("photon"));
     }
 
     @Test

@@ -1,0 +1,86 @@
+package lt.spindulys.shading;
+
+import lt.spindulys.accel.TraversalScratch;
+import lt.spindulys.math.Ray;
+import lt.spindulys.scene.Scene;
+import lt.spindulys.texture.Channel;
+import lt.spindulys.trace.Hit;
+import lt.spindulys.trace.ShadingData;
+
+/**
+ * What every integrator shares: the first hit along a ray as the render passes show it, and the
+ * footprint of a texture lookup from the camera's angle per pixel. Immutable.
+ */
+final class FirstHits {
+    private final Scene scene;
+    /** Angle between the primary rays of neighbouring pixels at the image centre, radians (texture footprints). */
+    private final double pixelAngle;
+
+    FirstHits(Scene scene) {
+        this.scene = scene;
+        this.pixelAngle = pixelAngle(scene);
+    }
+
+    /**
+     * The camera's angle per pixel, measured between the rays through the two pixels at the
+     * image centre (any camera model); the footprint of a texture lookup is this angle times the
+     * path length. Away from the centre a pinhole's pixels subtend slightly less: the
+     * approximation errs on the blurrier side there.
+     */
+    static double pixelAngle(Scene scene) {
+        if (scene.camera() == null) return 0;
+        int w = scene.settings().width(), h = scene.settings().height();
+        double aspect = (double) w / h;
+        Ray a = new Ray(), b = new Ray();
+        scene.camera().generateRay(0.5, 0.5, aspect, 0, 0, 0, a); // from the lens centre
+        scene.camera().generateRay(0.5 + 1.0 / w, 0.5, aspect, 0, 0, 0, b);
+        double la = Math.sqrt(a.dx * a.dx + a.dy * a.dy + a.dz * a.dz), lb = Math.sqrt(b.dx * b.dx + b.dy * b.dy + b.dz * b.dz);
+        double cos = (a.dx * b.dx + a.dy * b.dy + a.dz * b.dz) / (la * lb);
+        double angle = Math.acos(Math.max(-1, Math.min(1, cos)));
+        return Double.isFinite(angle) ? angle : 0;
+    }
+
+    /** Smallest incidence cosine used to widen a texture footprint on surfaces seen at a grazing angle. */
+    private static final double MIN_FOOTPRINT_COSINE = 1 / lt.spindulys.texture.Mapping.MAX_ANISOTROPY;
+
+    /**
+     * What a render pass sees along {@code ray}: its first hit only, with no lights, shadows or
+     * secondary rays. Writes to out[0] the distance along the ray's direction made unit
+     * (+Infinity if nothing is hit) and to out[1..3] the unit world-space shading normal turned to
+     * face the ray, by the same rule as shading uses (0 0 0 if nothing is hit).
+     *
+     * @return the {@link lt.spindulys.scene.GObject#id()} of the object hit, or -1
+     */
+    int trace(Ray ray, TracerScratch s, double[] out) {
+        s.cameraRays++;
+        if (TraversalScratch.COUNTING) s.ctx.rayKind = TraversalScratch.CAMERA;
+        TracerScratch.PathVertex v = s.path[0];
+        Hit hit = v.hit;
+        if (!scene.intersect(ray, hit, s.ctx)) {
+            out[0] = Double.POSITIVE_INFINITY;
+            out[1] = out[2] = out[3] = 0;
+            return -1;
+        }
+        ShadingData sd = v.shading;
+        hit.object.shade(ray, hit, sd);
+        double dlen = Math.sqrt(ray.dx * ray.dx + ray.dy * ray.dy + ray.dz * ray.dz);
+        double dx = ray.dx / dlen, dy = ray.dy / dlen, dz = ray.dz / dlen;
+        // The normal pass shows the bumped normal that shading uses.
+        if (sd.material.texture(Channel.BUMP) != null) TextureShading.evaluate(sd.material, sd, footprint(sd, hit.t * dlen, dx, dy, dz), s, v);
+        // As in trace: flip both normals towards the ray by the geometric one, and fall back to
+        // the geometric normal where the interpolated one still faces away.
+        double sign = sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz < 0 ? 1 : -1;
+        double nx = sign * sd.ns[0], ny = sign * sd.ns[1], nz = sign * sd.ns[2];
+        if (nx * dx + ny * dy + nz * dz >= 0) { nx = sign * sd.ng[0]; ny = sign * sd.ng[1]; nz = sign * sd.ng[2]; }
+        out[0] = hit.t * dlen;
+        out[1] = nx; out[2] = ny; out[3] = nz;
+        return hit.object.id();
+    }
+
+    /** World-space width of the pixel's footprint at a hit a path of this length reaches along unit direction d. */
+    double footprint(ShadingData sd, double travelled, double dx, double dy, double dz) {
+        double cos = Math.abs(sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz);
+        return travelled * pixelAngle / Math.max(cos, MIN_FOOTPRINT_COSINE);
+    }
+
+}
