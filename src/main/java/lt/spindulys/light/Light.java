@@ -10,7 +10,7 @@ package lt.spindulys.light;
  * integrator's: a delta light (a point) takes one sample and no random numbers; the others take
  * {@link #samples()} per pixel sample from strata shared by the pixel's samples.
  */
-public abstract sealed class Light permits PointSource, AreaSource, EnvironmentSource {
+public abstract sealed class Light permits PointSource, AreaSource, EnvironmentSource, MeshEmitter {
     private final int samples;
     private final boolean delta;
 
@@ -66,7 +66,8 @@ public abstract sealed class Light permits PointSource, AreaSource, EnvironmentS
 
     /**
      * The scene statement that makes this kind of light, for messages: {@code light},
-     * {@code rectlight}, {@code disclight}, {@code spherelight} or {@code environment}.
+     * {@code rectlight}, {@code disclight}, {@code spherelight}, {@code environment}, or
+     * {@code mesh} for an emissive mesh.
      *
      * @return the statement's keyword
      */

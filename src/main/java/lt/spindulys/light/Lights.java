@@ -1,10 +1,20 @@
 package lt.spindulys.light;
 
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collections;
+import java.util.IdentityHashMap;
+import java.util.List;
+import java.util.Map;
+
 import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.scene.AreaLight;
 import lt.spindulys.scene.PointLight;
 import lt.spindulys.scene.Scene;
+import lt.spindulys.scene.GObject;
+import lt.spindulys.scene.TriangleMesh;
+import lt.spindulys.trace.TracedObject;
 
 /**
  * A frozen scene's lights as the integrator samples them, in the order they are shaded: the point
@@ -18,8 +28,12 @@ public final class Lights {
     /** Index in {@link #all} of the first area light (the point lights come before them). */
     private final int firstSurface;
 
-    private Lights(Light[] all, AreaSource[] surfaces, int firstSurface) {
+    /** The emissive meshes among the lights, by mesh (empty unless made by {@link #withEmissiveMeshes}). */
+    private final Map<TracedObject, MeshEmitter> emitters;
+
+    private Lights(Light[] all, AreaSource[] surfaces, int firstSurface, Map<TracedObject, MeshEmitter> emitters) {
         this.all = all;
+        this.emitters = emitters;
         this.surfaces = surfaces;
         this.firstSurface = firstSurface;
         int n = 0;
@@ -58,8 +72,45 @@ public final class Lights {
             all[i++] = surfaces[a];
         }
         if (environment) all[i] = new EnvironmentSource(scene.environmentLight());
-        return new Lights(all, surfaces, points.length);
+        return new Lights(all, surfaces, points.length, Map.of());
     }
+
+    /**
+     * The lights of {@code scene} as {@link #of} makes them, followed by its emissive meshes
+     * ({@link MeshEmitter}): the lights a path tracer samples. The Whitted tracer lights by
+     * {@link #of} alone, as it always has; emission only adds to the surface that emits there.
+     *
+     * @param scene the scene
+     * @return its lights and emissive meshes
+     * @throws lt.spindulys.limits.InsufficientMemoryException if the heap cannot hold the
+     *         emissive triangles' copies
+     */
+    public static Lights withEmissiveMeshes(Scene scene) {
+        Lights base = of(scene);
+        List<MeshEmitter> found = new ArrayList<>();
+        for (GObject o : scene.objects()) {
+            if (o instanceof TriangleMesh mesh) {
+                MeshEmitter e = MeshEmitter.of(mesh);
+                if (e != null) found.add(e);
+            }
+        }
+        if (found.isEmpty()) return base;
+        Light[] all = Arrays.copyOf(base.all, base.all.length + found.size());
+        Map<TracedObject, MeshEmitter> byMesh = new IdentityHashMap<>();
+        for (int i = 0; i < found.size(); i++) {
+            all[base.all.length + i] = found.get(i);
+            byMesh.put(found.get(i).mesh(), found.get(i));
+        }
+        return new Lights(all, base.surfaces, base.firstSurface, Collections.unmodifiableMap(byMesh));
+    }
+
+    /**
+     * The light made of {@code object}'s emissive triangles, if it is one.
+     *
+     * @param object an object a ray hit
+     * @return its light, or null
+     */
+    public MeshEmitter emitterOf(TracedObject object) { return emitters.isEmpty() ? null : emitters.get(object); }
 
     /**
      * Every light, in shading order; do not modify.

@@ -1,9 +1,11 @@
 package lt.spindulys.shading;
 
 import lt.spindulys.accel.TraversalScratch;
+import lt.spindulys.light.EnvironmentSource;
 import lt.spindulys.light.Light;
 import lt.spindulys.light.LightSample;
 import lt.spindulys.light.Lights;
+import lt.spindulys.light.MeshEmitter;
 import lt.spindulys.limits.HeapBudget;
 import lt.spindulys.material.Material;
 import lt.spindulys.math.Color;
@@ -70,12 +72,12 @@ public final class PathIntegrator implements Integrator {
     public PathIntegrator(Scene scene) {
         this.scene = scene;
         this.settings = scene.settings();
-        this.lights = Lights.of(scene);
+        this.lights = Lights.withEmissiveMeshes(scene);
         this.lightArray = lights.all();
         this.pick = lightArray.length == 0 ? 0 : 1.0 / lightArray.length;
         this.environment = scene.environment();
         Light env = null;
-        for (Light l : lightArray) if ("environment".equals(l.statement())) env = l;
+        for (Light l : lightArray) if (l instanceof EnvironmentSource) env = l;
         this.environmentLight = env;
         this.firstHits = new FirstHits(scene);
         this.maxDepth = settings.maxDepth();
@@ -162,7 +164,14 @@ public final class PathIntegrator implements Integrator {
                 if (beta[0] <= 0 && beta[1] <= 0 && beta[2] <= 0) break;
             }
             if (v.emissionR > 0 || v.emissionG > 0 || v.emissionB > 0) {
-                c[0] = v.emissionR; c[1] = v.emissionG; c[2] = v.emissionB;
+                double w = 1;
+                MeshEmitter emitter = weighed ? lights.emitterOf(hit.object) : null;
+                if (emitter != null) { // a light the vertex left could have sampled
+                    double d = hit.t * dlen, cos = Math.abs(sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz);
+                    double brightness = (v.emissionR + v.emissionG + v.emissionB) / 3;
+                    w = cos > 0 ? powerHeuristic(bsdfPdf, pick * emitter.pdfAt(brightness, d * d, cos)) : 1;
+                }
+                c[0] = v.emissionR * w; c[1] = v.emissionG * w; c[2] = v.emissionB * w;
                 add(beta, c, indirect, sum);
             }
             if (segment > maxDepth) break; // the last segment only looks for light

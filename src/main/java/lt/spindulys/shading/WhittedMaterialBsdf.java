@@ -6,8 +6,11 @@ import lt.spindulys.material.Material;
  * The thesis's Whitted material terms at a hit, read as a BSDF so that every existing scene renders
  * under a path tracer. The rule, per term (colour, kd, ks, shininess, kr, kt, ior, filter):
  * <ul>
- * <li>{@code kd * colour}: a Lambert lobe of that albedo (the Whitted diffuse term is kd colour
- *     times the cosine, exactly Lambert's);</li>
+ * <li>{@code kd * colour}: a Lambert lobe of that albedo, reflecting kd colour / pi times the
+ *     irradiance. The Whitted diffuse term, kd colour times the light times the cosine, has the
+ *     same shape without the 1 / pi: a scene lit for the Whitted tracer shows its diffuse
+ *     surfaces pi times darker under a path tracer, unless its lights are made pi times
+ *     brighter;</li>
  * <li>{@code ks} with Phong exponent n: a GGX glossy reflection of weight ks, untinted and
  *     Fresnel-free (a {@link ConductorBsdf} with F0 = 1), with alpha = sqrt(2 / (n + 2)), the
  *     usual Blinn-Phong to Beckmann/GGX width correspondence (n = 2 / alpha^2 - 2); so n = 0 is
@@ -16,7 +19,8 @@ import lt.spindulys.material.Material;
  *     with n; a path tracer cannot keep an unnormalised lobe without breaking energy;</li>
  * <li>{@code kr}: a perfect mirror of weight kr, untinted (Whitted reflection is);</li>
  * <li>{@code kt}: a perfect refraction of weight kt by Snell's law with the material's ior
- *     (relative to the outside: a path tracer keeps no medium stack), tinted by the filter, with
+ *     (the index entered over the index left, which the path tracer finds from the media it is
+ *     in, as the Whitted tracer does), tinted by the filter, with
  *     no Fresnel reflection and total internal reflection turned into an untinted mirror, as
  *     in {@link WhittedIntegrator}; {@code fresnel} set instead gives a smooth
  *     {@link DielectricBsdf} (exact Fresnel in place of the thesis's Schlick).</li>
