@@ -5,6 +5,7 @@ import java.util.Collection;
 import java.util.List;
 
 import lt.spindulys.image.Aov;
+import lt.spindulys.material.Material;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
 import lt.spindulys.camera.LensPattern;
@@ -253,7 +254,10 @@ final class SceneGrammar {
             opt("light", Kind.BOOLEAN, false),
             opt("samples", Kind.INTEGER)));
 
+    // Which keys apply depends on the model (Material.Model#ownKeys), wherever 'model' stands in
+    // the block: the parser checks them once the block is read.
     static final Block MATERIAL = new Block("material", Category.MATERIAL, false, List.of(
+            new Key("model", Kind.CHOICE, false, false, null, Material.Model.keywords()),
             opt("color", Kind.COLOR),
             opt("ka", Kind.NUMBER),
             opt("kd", Kind.NUMBER),
@@ -261,10 +265,14 @@ final class SceneGrammar {
             opt("shininess", Kind.NUMBER),
             opt("kr", Kind.NUMBER),
             opt("kt", Kind.NUMBER),
+            opt("fresnel", Kind.BOOLEAN),
+            opt("metallic", Kind.NUMBER),
+            opt("roughness", Kind.NUMBER),
+            opt("transmission", Kind.NUMBER),
             opt("ior", Kind.NUMBER),
             opt("beta", Kind.COLOR),
             opt("filter", Kind.COLOR),
-            opt("fresnel", Kind.BOOLEAN),
+            opt("emission", Kind.COLOR),
             repeat("map", Kind.MAP)));
 
     /** Texture kinds of a texture block's 'pattern' key. */

@@ -385,8 +385,8 @@ final class SceneObjectFactory {
         }
     }
 
-    /** A texture bound to a channel by a material's map block. */
-    record Binding(Channel channel, Texture texture, Mapping mapping, Double strength) {}
+    /** A texture bound to a channel by a material's map block; channelAt is where the channel is named (the block's opener if it is not). */
+    record Binding(Channel channel, Token channelAt, Texture texture, Mapping mapping, Double strength) {}
 
     /** The keys of a map block that place a projection; the uv mapping takes none of them. */
     private static final List<String> PROJECTION_KEYS = List.of("center", "axis", "reference");
@@ -394,6 +394,8 @@ final class SceneObjectFactory {
     /** map { texture NAME channel ... mapping ... }, after a material's 'map' key. */
     Binding binding(Props p) {
         Channel channel = Channel.fromKeyword((String) p.get("channel"));
+        Prop channelProp = p.prop("channel");
+        Token channelAt = channelProp != null ? channelProp.valueAt() : p.opener;
         String mapping = (String) p.get("mapping");
         Prop strength = p.prop("strength");
         if (strength != null && channel != Channel.BUMP) throw err.error(strength.at(), "'strength' applies only to channel bump, not " + channel.keyword());
@@ -416,16 +418,32 @@ final class SceneObjectFactory {
         } catch (IllegalArgumentException e) {
             throw err.blame(p, e);
         }
-        return new Binding(channel, (Texture) p.get("texture"), m, strength == null ? null : (Double) strength.value());
+        return new Binding(channel, channelAt, (Texture) p.get("texture"), m, strength == null ? null : (Double) strength.value());
     }
 
-    /** A material from its block's keys, applied through the validating builder in the order written. */
+    /**
+     * A material from its block's keys, applied through the validating builder in the order
+     * written. Which keys and channels the model takes is checked first, once the whole block is
+     * read, so 'model' may stand anywhere in it; a key of the other model is reported at the key.
+     */
     Material material(Props p, String name) {
-        Material.Builder mb = Material.builder();
+        Object modelWord = p.get("model");
+        Material.Model model = modelWord == null ? Material.Model.WHITTED : Material.Model.fromKeyword((String) modelWord);
+        for (Prop pr : p.all) {
+            if (pr.value() instanceof Binding bd) {
+                String refusal = model.refusal(bd.channel);
+                if (refusal != null) throw err.error(bd.channelAt, refusal);
+            } else {
+                String refusal = model.refusal(pr.key().name());
+                if (refusal != null) throw err.error(pr.at(), refusal);
+            }
+        }
+        Material.Builder mb = Material.builder().model(model);
         for (Prop pr : p.all) {
             Object v = pr.value();
             try {
                 switch (pr.key().name()) {
+                    case "model" -> { } // applied above
                     case "color" -> mb.color((Color) v);
                     case "ka" -> mb.ka((Double) v);
                     case "kd" -> mb.kd((Double) v);
@@ -433,10 +451,14 @@ final class SceneObjectFactory {
                     case "shininess" -> mb.shininess((Double) v);
                     case "kr" -> mb.kr((Double) v);
                     case "kt" -> mb.kt((Double) v);
+                    case "fresnel" -> mb.fresnel((Boolean) v);
+                    case "metallic" -> mb.metallic((Double) v);
+                    case "roughness" -> mb.roughness((Double) v);
+                    case "transmission" -> mb.transmission((Double) v);
                     case "ior" -> mb.ior((Double) v);
                     case "beta" -> mb.beta((Color) v);
                     case "filter" -> mb.filter((Color) v);
-                    case "fresnel" -> mb.fresnel((Boolean) v);
+                    case "emission" -> mb.emission((Color) v);
                     case "map" -> {
                         Binding bd = (Binding) v;
                         mb.texture(bd.channel, bd.texture, bd.mapping);
@@ -454,8 +476,12 @@ final class SceneObjectFactory {
         } catch (IllegalArgumentException e) {
             // kr + kt too large: reported at whichever of the two came last.
             Prop kr = p.prop("kr"), kt = p.prop("kt");
-            Prop at = kr == null ? kt : kt == null ? kr : p.all.indexOf(kr) > p.all.indexOf(kt) ? kr : kt;
-            throw at != null ? err.wrap(at.at(), e) : err.wrap(p.opener, e);
+            if (kr != null || kt != null) {
+                Prop at = kr == null ? kt : kt == null ? kr : p.all.indexOf(kr) > p.all.indexOf(kt) ? kr : kt;
+                throw err.wrap(at.at(), e);
+            }
+            // A principled colour above 1: at 'color' (the message names it).
+            throw err.blame(p, e);
         }
     }
 

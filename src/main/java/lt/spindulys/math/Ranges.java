@@ -11,9 +11,10 @@ import java.util.Locale;
  *       transform scales by at most {@link #MAX_SCALE} either way, so coordinates stay below
  *       about 1e30 in world space and 1e46 in any object's space, and the squares and products
  *       of intersection tests (at most about 1e100) stay far below Double.MAX_VALUE (1.8e308).</li>
- *   <li>Light: one shaded point gives at most ka A C T + (kd C T + ks T) E + T_emission, where
- *       colours (C, A, light colours, texture colours T) are at most {@link #MAX_COLOUR}, ka, kd
- *       and ks at most {@link #MAX_COEFFICIENT}, and E, the light arriving, at most
+ *   <li>Light: one shaded point gives at most ka A C T + (kd C T + ks T) E + M + T_emission,
+ *       where colours (C, A, light colours, a material's emission M, texture colours T) are at
+ *       most {@link #MAX_COLOUR}, ka, kd and ks at most {@link #MAX_COEFFICIENT} (a principled
+ *       material's derived terms are held to the same ranges), and E, the light arriving, at most
  *       {@link #MAX_IRRADIANCE} from inverse-square lights (the integrator keeps lights from
  *       getting closer than that allows) plus {@link #MAX_TOTAL_LIGHT} from constant ones:
  *       about 1e32. Reflection and refraction weights at a surface add up to at most 1 (kr + kt

@@ -1,6 +1,7 @@
 package lt.spindulys.shading;
 
 import lt.spindulys.material.Material;
+import lt.spindulys.math.Color;
 import lt.spindulys.trace.ShadingData;
 import lt.spindulys.texture.Channel;
 import lt.spindulys.texture.Mapping;
@@ -26,27 +27,42 @@ final class TextureShading {
 
     /**
      * Fills v's surface terms with those after the material's textures (colour, ks, kr, kt,
-     * emission) and, if a bump texture is bound, tilts sd.ns.
+     * metallic, roughness, transmission, emission) and, if a bump texture is bound, tilts sd.ns.
      *
      * @param worldFootprint footprint width in world units (0: sharpest)
      */
     static void evaluate(Material m, ShadingData sd, double worldFootprint, TracerScratch s, TracerScratch.PathVertex v) {
         v.colourR = m.color().r(); v.colourG = m.color().g(); v.colourB = m.color().b();
         v.ks = m.ks(); v.kr = m.kr(); v.kt = m.kt();
-        v.emissionR = v.emissionG = v.emissionB = 0;
+        v.metallic = m.metallic(); v.roughness = m.roughness(); v.transmission = m.transmission();
+        Color e = m.emission();
+        v.emissionR = e.r(); v.emissionG = e.g(); v.emissionB = e.b();
         if (!m.isTextured()) return;
         double objectFootprint = worldFootprint * objectPerWorld(sd);
         double[] rgb = s.texRgb;
         if (sample(m, Channel.DIFFUSE, sd, sd.pObject, objectFootprint, s, rgb)) {
             v.colourR *= rgb[0]; v.colourG *= rgb[1]; v.colourB *= rgb[2];
+            // A base colour is a reflectance: above 1 the principled BSDF would make light.
+            if (m.model() == Material.Model.PRINCIPLED) {
+                v.colourR = fraction(v.colourR); v.colourG = fraction(v.colourG); v.colourB = fraction(v.colourB);
+            }
         }
         if (sample(m, Channel.SPECULAR, sd, sd.pObject, objectFootprint, s, rgb)) v.ks *= mean(rgb);
         // kr and kt textures are fractions: clamped to [0, 1], so a path never gains (see Ranges).
         if (sample(m, Channel.REFLECTION, sd, sd.pObject, objectFootprint, s, rgb)) v.kr *= fraction(mean(rgb));
-        if (sample(m, Channel.TRANSPARENCY, sd, sd.pObject, objectFootprint, s, rgb)) v.kt *= fraction(mean(rgb));
-        if (sample(m, Channel.EMISSION, sd, sd.pObject, objectFootprint, s, rgb)) {
-            v.emissionR = rgb[0]; v.emissionG = rgb[1]; v.emissionB = rgb[2];
+        if (sample(m, Channel.TRANSPARENCY, sd, sd.pObject, objectFootprint, s, rgb)) {
+            double f = fraction(mean(rgb));
+            v.kt *= f;
+            v.transmission *= f;
         }
+        // Added to the material's own emission (black unless given, and 0 + x is x: textured
+        // emission renders as it did before materials had emission).
+        if (sample(m, Channel.EMISSION, sd, sd.pObject, objectFootprint, s, rgb)) {
+            v.emissionR += rgb[0]; v.emissionG += rgb[1]; v.emissionB += rgb[2];
+        }
+        // No energy is at stake, so the product is clamped (a texture may raise the value), not the factor.
+        if (sample(m, Channel.ROUGHNESS, sd, sd.pObject, objectFootprint, s, rgb)) v.roughness = fraction(v.roughness * mean(rgb));
+        if (sample(m, Channel.METALLIC, sd, sd.pObject, objectFootprint, s, rgb)) v.metallic = fraction(v.metallic * mean(rgb));
         if (m.texture(Channel.BUMP) != null) bump(m, sd, objectFootprint, s);
     }
 

@@ -149,7 +149,12 @@ public final class TracerScratch {
         double colourR, colourG, colourB;
         /** Specular, reflected and transmitted fractions. */
         double ks, kr, kt;
-        /** Light the surface emits. */
+        /**
+         * A principled material's parameters, each in [0, 1] (the path integrator reads them, with
+         * the colour as the base colour); a Whitted material's are set too, to its unused defaults.
+         */
+        double metallic, roughness, transmission;
+        /** Light the surface emits: the material's emission plus an emission texture's colour. */
         double emissionR, emissionG, emissionB;
 
         // The frame at the hit, all in world space.

@@ -393,7 +393,7 @@ public final class BadInputCases {
                         "1:28: unknown texture 't' (a texture must be defined before the materials that use it)"),
                 c("map without a texture", "material m { map { channel bump } }", "1:14: map needs 'texture'"),
                 c("unknown channel", "texture t { pattern wood }\nmaterial m { map { texture t  channel colour } }",
-                        "2:39: expected diffuse, specular, reflection, transparency, emission or bump for 'channel', found 'colour'"),
+                        "2:39: expected diffuse, specular, reflection, transparency, emission, bump, roughness or metallic for 'channel', found 'colour'"),
                 c("misspelt map key", "texture t { pattern wood }\nmaterial m { map { texture t  mapping planar  axsi 0 0 1 } }", "2:47: unknown property 'axsi' in map (did you mean 'axis'?)"),
                 c("channel bound twice", "texture t { pattern wood }\nmaterial m { map { texture t }  map { texture t  channel diffuse } }", "2:33: channel diffuse already has a texture"),
                 c("strength on a colour channel", "texture t { pattern wood }\nmaterial m { map { texture t  strength 2 } }", "2:31: 'strength' applies only to channel bump, not diffuse"),

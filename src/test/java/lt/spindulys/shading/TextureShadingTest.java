@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.List;
+
 import org.junit.jupiter.api.Test;
 
 import lt.spindulys.camera.PinholeCamera;
@@ -229,5 +231,75 @@ class TextureShadingTest {
         assertTrue(m.isTextured());
         assertTrue(m.toBuilder().build().texture(Channel.DIFFUSE) != null);
         assertTrue(!Material.DEFAULT.isTextured());
+    }
+
+    /** The surface TextureShading.evaluate leaves in a vertex for m, at a point of a flat floor (textures here are constant). */
+    private static TracerScratch.PathVertex evaluated(Material m) {
+        TracerScratch scratch = new TracerScratch(2);
+        ShadingData sd = new ShadingData();
+        sd.setNormal(0, 1, 0);
+        sd.setDerivatives(1, 0, 0, 0, 0, -1);
+        TracerScratch.PathVertex v = scratch.path[0];
+        TextureShading.evaluate(m, sd, 0, scratch, v);
+        return v;
+    }
+
+    private static Material.Builder principled() { return Material.builder().model(Material.Model.PRINCIPLED); }
+
+    @Test
+    void untexturedVertexTakesTheMaterialsValues() {
+        TracerScratch.PathVertex v = evaluated(principled().metallic(0.3).roughness(0.2).transmission(0.6).emission(new Color(1, 2, 3)).build());
+        assertRgb(new double[] {0.3, 0.2, 0.6}, new double[] {v.metallic, v.roughness, v.transmission});
+        assertRgb(new double[] {1, 2, 3}, new double[] {v.emissionR, v.emissionG, v.emissionB});
+        // A Whitted material's are set to what it returns: unused, but never stale.
+        v = evaluated(Material.DEFAULT);
+        assertRgb(new double[] {0, 0.5, 0}, new double[] {v.metallic, v.roughness, v.transmission});
+        assertRgb(new double[] {0, 0, 0}, new double[] {v.emissionR, v.emissionG, v.emissionB});
+    }
+
+    @Test
+    void emissionIsTheMaterialsPlusTheTexturesInBothModels() {
+        for (Material.Builder b : new Material.Builder[] {Material.builder(), principled()}) {
+            TracerScratch.PathVertex v = evaluated(b.emission(new Color(1, 2, 3)).texture(Channel.EMISSION, constant(0.25, 0.5, -0.5), new Uv(1, 1)).build());
+            assertRgb(new double[] {1.25, 2.5, 2.5}, new double[] {v.emissionR, v.emissionG, v.emissionB});
+        }
+        // Without a material emission the texture's colour is the emission, bit for bit.
+        TracerScratch.PathVertex v = evaluated(Material.builder().texture(Channel.EMISSION, constant(0.1, 0.2, 0.3), new Uv(1, 1)).build());
+        assertEquals(List.of(0.1, 0.2, 0.3), List.of(v.emissionR, v.emissionG, v.emissionB));
+    }
+
+    @Test
+    void roughnessAndMetallicTexturesScaleByTheMeanAndClamp() {
+        java.util.function.Supplier<Material.Builder> b = () -> principled().roughness(0.5).metallic(0.8);
+        TracerScratch.PathVertex v = evaluated(b.get().texture(Channel.ROUGHNESS, constant(0.2, 0.5, 0.8), new Uv(1, 1))
+                .texture(Channel.METALLIC, constant(0.5, 0.5, 0.5), new Uv(1, 1)).build());
+        assertEquals(0.25, v.roughness, 1e-15);
+        assertEquals(0.4, v.metallic, 1e-15);
+        // The product is clamped to [0, 1]: a texture may raise the value up to 1, never past it or below 0.
+        v = evaluated(b.get().texture(Channel.ROUGHNESS, constant(1.6, 1.6, 1.6), new Uv(1, 1))
+                .texture(Channel.METALLIC, constant(3, 3, 3), new Uv(1, 1)).build());
+        assertEquals(0.8, v.roughness, 1e-15);
+        assertEquals(1, v.metallic);
+        v = evaluated(b.get().texture(Channel.ROUGHNESS, constant(-1, -1, -1), new Uv(1, 1)).build());
+        assertEquals(0, v.roughness);
+    }
+
+    @Test
+    void transparencyTextureScalesTransmissionAndKt() {
+        Material m = principled().metallic(0.5).transmission(0.8).texture(Channel.TRANSPARENCY, constant(0.5, 0.5, 0.5), new Uv(1, 1)).build();
+        TracerScratch.PathVertex v = evaluated(m);
+        assertEquals(0.4, v.transmission, 1e-15);
+        assertEquals(m.kt() * 0.5, v.kt, 1e-15); // the derived kt 0.4, halved
+        // As a fraction: clamped to [0, 1].
+        v = evaluated(principled().transmission(0.8).texture(Channel.TRANSPARENCY, constant(4, 4, 4), new Uv(1, 1)).build());
+        assertEquals(0.8, v.transmission, 1e-15);
+    }
+
+    @Test
+    void aTexturedBaseColourIsClampedToAReflectanceButAWhittedColourIsNot() {
+        TracerScratch.PathVertex v = evaluated(principled().color(new Color(0.8, 0.5, 0.2)).texture(Channel.DIFFUSE, constant(2, 0.5, -1), new Uv(1, 1)).build());
+        assertRgb(new double[] {1, 0.25, 0}, new double[] {v.colourR, v.colourG, v.colourB});
+        v = evaluated(Material.builder().color(new Color(0.8, 0.5, 0.2)).texture(Channel.DIFFUSE, constant(2, 0.5, -1), new Uv(1, 1)).build());
+        assertRgb(new double[] {1.6, 0.25, -0.2}, new double[] {v.colourR, v.colourG, v.colourB});
     }
 }
