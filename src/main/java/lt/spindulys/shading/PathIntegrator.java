@@ -29,10 +29,12 @@ import lt.spindulys.trace.TracedObject;
  * Russian roulette from the third bounce on, with the survival probability the path's throughput
  * (undoing the radiance scaling of refraction, so paths inside glass survive).
  *
- * <p>Materials: Whitted materials scatter by the documented mapping of {@link WhittedMaterialBsdf}
+ * <p>Materials: a principled material scatters by {@link PrincipledBsdf} with its base colour,
+ * metallic, roughness and transmission after textures; Whitted materials by the documented mapping of {@link WhittedMaterialBsdf}
  * (kd and colour a Lambert lobe, ks and shininess a GGX lobe, kr a mirror, kt refraction); the
  * ambient term is not used, since indirect light replaces it. Emission (a material's, or an OBJ
- * {@code Ke}) is found by the paths that hit it. Rays that leave the scene see the environment, or
+ * {@code Ke}) is found by the paths that hit it, and an emissive mesh that holds still is also
+ * sampled as a light ({@link lt.spindulys.light.MeshEmitter}). Rays that leave the scene see the environment, or
  * the background colour, which therefore lights the scene as a uniform sky.
  *
  * <p>Media as in the Whitted tracer: a path that refracts into a solid enters its medium, whose
@@ -232,7 +234,9 @@ public final class PathIntegrator implements Integrator {
                                 double w = ls.delta ? 1 : powerHeuristic(lightPdf, bsdf.pdf(wox, woy, woz, wix, wiy, cosS));
                                 double k = Math.abs(cosS) * w / lightPdf;
                                 c[0] = f[0] * ls.r * k; c[1] = f[1] * ls.g * k; c[2] = f[2] * ls.b * k;
-                                if (medium != null && cosG < 0) WhittedIntegrator.attenuate(medium, ls.distance, c);
+                                // The shadow ray crosses the medium on the light's side: the ray's own, or the one behind the surface.
+                                Material across = cosG > 0 ? medium : entering ? m : leavesInnermost ? s.outer() : medium;
+                                if (across != null) WhittedIntegrator.attenuate(across, ls.distance, c);
                                 add(beta, c, segment >= 1, sum);
                             }
                         }
@@ -284,6 +288,10 @@ public final class PathIntegrator implements Integrator {
 
     /** Sets the thread's BSDF to the surface at vertex v (material m, after textures), eta the index entered over the index left. */
     private static void configure(SurfaceBsdf bsdf, Material m, TracerScratch.PathVertex v, double eta) {
+        if (m.model() == Material.Model.PRINCIPLED) {
+            bsdf.setPrincipled(v.colourR, v.colourG, v.colourB, v.metallic, v.roughness, eta, v.transmission);
+            return;
+        }
         Color filter = m.filter();
         bsdf.setWhitted(v.colourR, v.colourG, v.colourB, m.kd(), v.ks, m.shininess(), v.kr, v.kt, eta,
                 filter.r(), filter.g(), filter.b(), m.fresnel());
