@@ -28,9 +28,11 @@ import lt.spindulys.texture.Uv;
 import lt.spindulys.texture.Wrap;
 
 /**
- * Reads Wavefront material libraries ({@code .mtl}) into named {@link Material}s of this
- * renderer's Whitted model, through the public material builder. The statements read, and how
- * each maps to the model (docs/scene-format.md, "OBJ materials", says the same for users):
+ * Reads Wavefront material libraries ({@code .mtl}) into named {@link Material}s, through the
+ * public material builder: of the Whitted model, or of the principled one when a material gives
+ * any of the physically based extension's {@code Pr}, {@code Pm}, {@code map_Pr} or
+ * {@code map_Pm} (below). The statements read, and how each maps to the Whitted model
+ * (docs/scene-format.md, "OBJ materials", says the same for users):
  * <ul>
  * <li>{@code newmtl NAME} starts a material (the name is the rest of the line);</li>
  * <li>{@code Kd} is the colour C, with kd 1 (default 0.8 0.8 0.8);</li>
@@ -51,6 +53,15 @@ import lt.spindulys.texture.Wrap;
  *     image textures to the diffuse, specular, transparency and bump channels through the mesh's
  *     UVs, with the options {@code -o}, {@code -s}, {@code -clamp} and (bump only) {@code -bm}.</li>
  * </ul>
+ * A physically based material ({@link Material.Model#PRINCIPLED}) takes {@code Kd} as its base
+ * colour (0 to 1), {@code Pr} as roughness and {@code Pm} as metallic (0 to 1; without them 0.5
+ * and 0, or 1 when {@code map_Pr} or {@code map_Pm} binds an image to the roughness or metallic
+ * channel, so that the image gives the value), {@code Ke} as its emission, 1 − d as
+ * transmission (as kt above, {@code map_d} included), {@code Ni} as ior (default 1.5; above 0),
+ * {@code Tf} as filter, and {@code map_Kd} and {@code map_Bump} as above. The Whitted statements
+ * {@code Ka}, {@code Ks}, {@code Ns}, {@code illum} and {@code map_Ks} are read and checked but
+ * not used: exporters write them beside the extension's keys, and the principled parameters
+ * take their place.
  * Keywords are matched without regard to case ({@code map_kd} as {@code map_Kd}). Anything else,
  * an option not listed, a key given twice for one material, or a value out of range is an error
  * naming file:line:column, what was found and what was expected. Texture files are resolved
@@ -109,7 +120,7 @@ public final class MtlReader {
 
     /** The statements read, as the format spells them, in documentation order. */
     static final List<String> KEYS = List.of("newmtl", "Kd", "Ka", "Ks", "Ns", "d", "Tr", "Tf", "Ni", "Ke", "illum",
-            "map_Kd", "map_Ks", "map_d", "map_Bump", "bump");
+            "map_Kd", "map_Ks", "map_d", "map_Bump", "bump", "Pr", "Pm", "map_Pr", "map_Pm");
     /** {@link #KEYS} in lower case, as keywords are matched. */
     private static final List<String> LOWER_KEYS = KEYS.stream().map(k -> k.toLowerCase(Locale.ROOT)).toList();
 
@@ -118,7 +129,7 @@ public final class MtlReader {
         return switch (key) {
             case "map_ka" -> "the diffuse map, map_Kd, also drives the ambient term";
             case "map_ns", "map_ke", "map_tr", "disp", "decal", "refl", "norm", "map_aat", "sharpness" -> "this renderer has no such channel";
-            case "pr", "pm", "ps", "pc", "pcr", "aniso", "anisor", "map_pr", "map_pm", "map_ps" -> "physically based extension keys are not part of the Whitted model";
+            case "ps", "pc", "pcr", "aniso", "anisor", "map_ps" -> "the principled material has no sheen, clearcoat or anisotropy; of the physically based keys Pr, Pm, map_Pr and map_Pm are read";
             default -> null;
         };
     }
@@ -134,9 +145,9 @@ public final class MtlReader {
         final String name;
         final int line;
         Color kd, ka, ks, tf, ke;
-        double ns = Double.NaN, d = Double.NaN, ni = Double.NaN;
+        double ns = Double.NaN, d = Double.NaN, ni = Double.NaN, pr = Double.NaN, pm = Double.NaN;
         int illum = -1;
-        MapSpec map, mapKs, mapD, mapBump;
+        MapSpec map, mapKs, mapD, mapBump, mapPr, mapPm;
         final Map<String, Integer> given = new java.util.HashMap<>();
 
         Spec(String name, int line) {
@@ -243,6 +254,10 @@ public final class MtlReader {
                 case "map_ks" -> spec.mapKs = map(toks, false);
                 case "map_d" -> spec.mapD = map(toks, false);
                 case "map_bump", "bump" -> spec.mapBump = map(toks, true);
+                case "pr" -> spec.pr = single(toks, 0, 1);
+                case "pm" -> spec.pm = single(toks, 0, 1);
+                case "map_pr" -> spec.mapPr = map(toks, false);
+                case "map_pm" -> spec.mapPm = map(toks, false);
                 default -> throw new IllegalStateException("material key without a handler: " + key);
             }
             return spec;
@@ -254,6 +269,10 @@ public final class MtlReader {
 
         /** The material of a complete spec, through the builder; refusals are reported at the newmtl line. */
         private void finish(Spec s) {
+            if (!Double.isNaN(s.pr) || !Double.isNaN(s.pm) || s.mapPr != null || s.mapPm != null) {
+                finishPrincipled(s);
+                return;
+            }
             Material.Builder b = Material.builder().name(s.name);
             Color kd = s.kd != null ? s.kd : Color.grey(0.8);
             int illum = s.illum >= 0 ? s.illum : 2;
@@ -293,6 +312,41 @@ public final class MtlReader {
                 if (s.mapKs != null) b.texture(Channel.SPECULAR, s.mapKs.texture(), s.mapKs.mapping());
                 if (s.mapD != null) b.texture(Channel.TRANSPARENCY, new Dissolve(s.mapD.texture(), opacity), s.mapD.mapping());
                 if (s.mapBump != null) b.texture(Channel.BUMP, s.mapBump.texture(), s.mapBump.mapping()).bumpStrength(s.mapBump.bm());
+                out.materials.put(s.name, b.build());
+                out.lines.put(s.name, s.line);
+            } catch (IllegalArgumentException e) {
+                throw new SceneException(file, s.line, 1, "material " + MessageText.quote(s.name) + ": " + e.getMessage());
+            }
+        }
+
+        /**
+         * The principled material of a spec with physically based keys (see the class comment);
+         * refusals are reported at the statement that gave the value, else at the newmtl line.
+         */
+        private void finishPrincipled(Spec s) {
+            Material.Builder b = Material.builder().name(s.name).model(Material.Model.PRINCIPLED);
+            if (s.kd != null && s.kd.max() > 1) {
+                throw new SceneException(file, s.given.get("kd"), 1, "Kd must be between 0 and 1 for a physically based material (Pr, Pm), found "
+                        + s.kd + ": a base colour is a reflectance");
+            }
+            if (s.given.containsKey("ni") && !(s.ni > 0)) {
+                throw new SceneException(file, s.given.get("ni"), 1, "Ni must be above 0 for a physically based material (Pr, Pm), found " + s.ni);
+            }
+            double opacity = Double.isNaN(s.d) ? 1 : s.d;
+            try {
+                b.color(s.kd != null ? s.kd : Color.grey(0.8));
+                // A map alone gives the value: the channel multiplies the material's by the map.
+                if (!Double.isNaN(s.pr) || s.mapPr != null) b.roughness(Double.isNaN(s.pr) ? 1 : s.pr);
+                if (!Double.isNaN(s.pm) || s.mapPm != null) b.metallic(Double.isNaN(s.pm) ? 1 : s.pm);
+                b.transmission(s.mapD != null ? 1 : 1 - opacity);
+                if (s.given.containsKey("ni")) b.ior(s.ni);
+                if (s.tf != null) b.filter(s.tf);
+                if (s.ke != null) b.emission(s.ke);
+                if (s.map != null) b.texture(Channel.DIFFUSE, s.map.texture(), s.map.mapping());
+                if (s.mapD != null) b.texture(Channel.TRANSPARENCY, new Dissolve(s.mapD.texture(), opacity), s.mapD.mapping());
+                if (s.mapBump != null) b.texture(Channel.BUMP, s.mapBump.texture(), s.mapBump.mapping()).bumpStrength(s.mapBump.bm());
+                if (s.mapPr != null) b.texture(Channel.ROUGHNESS, s.mapPr.texture(), s.mapPr.mapping());
+                if (s.mapPm != null) b.texture(Channel.METALLIC, s.mapPm.texture(), s.mapPm.mapping());
                 out.materials.put(s.name, b.build());
                 out.lines.put(s.name, s.line);
             } catch (IllegalArgumentException e) {

@@ -55,8 +55,8 @@ final class TextureShading {
             v.kt *= f;
             v.transmission *= f;
         }
-        // Added to the material's own emission (black unless given, and 0 + x is x: textured
-        // emission renders as it did before materials had emission).
+        // Added to the material's own emission, black unless given: 0 + x is x, so a texture
+        // alone gives exactly its colour.
         if (sample(m, Channel.EMISSION, sd, sd.pObject, objectFootprint, s, rgb)) {
             v.emissionR += rgb[0]; v.emissionG += rgb[1]; v.emissionB += rgb[2];
         }

@@ -496,7 +496,7 @@ public final class BadInputCases {
                         Map.of("m.obj", TRI_OBJ + "usemtl red\nf 1 2 3\n"), "m.obj"),
                 withFiles(".mtl unknown statement", "mesh { file \"m.obj\" }", "m.obj", TRI_OBJ + "mtllib m.mtl\nusemtl red\nf 1 2 3\n",
                         "m.mtl", "newmtl red\nKd 1 0 0\nKf 1\n",
-                        "3:1: unknown material statement 'Kf' (did you mean 'Kd'?) (supported: newmtl, Kd, Ka, Ks, Ns, d, Tr, Tf, Ni, Ke, illum, map_Kd, map_Ks, map_d, map_Bump, bump)"),
+                        "3:1: unknown material statement 'Kf' (did you mean 'Kd'?) (supported: newmtl, Kd, Ka, Ks, Ns, d, Tr, Tf, Ni, Ke, illum, map_Kd, map_Ks, map_d, map_Bump, bump, Pr, Pm, map_Pr, map_Pm)"),
                 withFiles(".mtl bad number", "mesh { file \"m.obj\" }", "m.obj", TRI_OBJ + "mtllib m.mtl\nusemtl red\nf 1 2 3\n",
                         "m.mtl", "newmtl red\nNs 1e\n", "2:4: expected a number for 'Ns', found '1e'"),
                 withFiles(".mtl texture not found", "mesh { file \"m.obj\" }", "m.obj", TRI_OBJ + "mtllib m.mtl\nusemtl red\nf 1 2 3\n",

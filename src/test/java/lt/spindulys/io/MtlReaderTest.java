@@ -33,7 +33,7 @@ import lt.spindulys.texture.TexturePoint;
 import lt.spindulys.texture.Uniform;
 import lt.spindulys.texture.Wrap;
 
-/** The .mtl parser: every key and how it maps to the Whitted model, and bad input with its location. */
+/** The .mtl parser: every key and how it maps to the Whitted model or, with the physically based keys, the principled one, and bad input with its location. */
 class MtlReaderTest {
     @TempDir Path dir;
     private final TextureCache cache = new TextureCache();
@@ -154,6 +154,51 @@ class MtlReaderTest {
         assertInstanceOf(Uniform.class, m.get("lamp").texture(Channel.EMISSION));
         assertColor(Color.BLACK, m.get("lamp").color());
         assertNull(m.get("dark").texture(Channel.EMISSION), "a black Ke emits nothing");
+        // A Whitted .mtl material keeps Ke as an emission texture, as before, not as the material's emission.
+        assertEquals(Material.Model.WHITTED, m.get("lamp").model());
+        assertColor(Color.BLACK, m.get("lamp").emission());
+        double[] rgb = new double[3];
+        m.get("lamp").texture(Channel.EMISSION).evaluate(new TexturePoint(), rgb);
+        assertEquals(List.of(1.0, 0.5, 0.0), List.of(rgb[0], rgb[1], rgb[2]));
+    }
+
+    @Test
+    void physicallyBasedKeysMakeAPrincipledMaterial() {
+        // As an exporter writes it: the Whitted statements beside the extension's are read but not used.
+        Map<String, Material> m = parse("newmtl gold\nNs 250\nKa 1 1 1\nKd 1 0.78 0.34\nKs 0.5 0.5 0.5\nKe 0.1 0.2 0.3\nNi 1.45\nd 1\nillum 2\n"
+                + "Pr 0.25\nPm 1\nmap_Ks tex.png\n"
+                + "newmtl rough\nPr 0.8\n"
+                + "newmtl metal\nPm 0.5\n"
+                + "newmtl glass\nKd 1 1 1\nPr 0\nd 0.25\nTf 1 0.5 1\n");
+        Material gold = m.get("gold");
+        assertEquals(Material.Model.PRINCIPLED, gold.model());
+        assertColor(new Color(1, 0.78, 0.34), gold.color());
+        assertEquals(List.of(1.0, 0.25, 0.0, 1.45), List.of(gold.metallic(), gold.roughness(), gold.transmission(), gold.ior()));
+        assertColor(new Color(0.1, 0.2, 0.3), gold.emission());
+        assertNull(gold.texture(Channel.EMISSION), "Ke is the principled material's own emission");
+        assertNull(gold.texture(Channel.SPECULAR), "map_Ks is a Whitted channel");
+        Material rough = m.get("rough");
+        assertEquals(List.of(0.0, 0.8, 0.0, 1.5), List.of(rough.metallic(), rough.roughness(), rough.transmission(), rough.ior()));
+        assertColor(Color.grey(0.8), rough.color());
+        assertEquals(List.of(0.5, 0.5), List.of(m.get("metal").metallic(), m.get("metal").roughness()));
+        Material glass = m.get("glass");
+        assertEquals(0.75, glass.transmission(), 1e-12);
+        assertEquals(0.0, glass.roughness());
+        assertColor(new Color(1, 0.5, 1), glass.filter());
+    }
+
+    @Test
+    void physicallyBasedMapsBindTheirChannels() {
+        Map<String, Material> m = parse("newmtl a\nmap_Pr tex.png\nmap_Pm -s 2 tex.png\nmap_d tex.png\nd 0.5\n"
+                + "newmtl b\nPr 0.5\nmap_Pr tex.png\n");
+        Material a = m.get("a");
+        assertEquals(Material.Model.PRINCIPLED, a.model());
+        assertInstanceOf(ImageTexture.class, a.texture(Channel.ROUGHNESS));
+        assertInstanceOf(ImageTexture.class, a.texture(Channel.METALLIC));
+        assertInstanceOf(Dissolve.class, a.texture(Channel.TRANSPARENCY));
+        // A map alone gives the value, the material's is 1; transmission is 1 and the map dissolves it.
+        assertEquals(List.of(1.0, 1.0, 1.0), List.of(a.roughness(), a.metallic(), a.transmission()));
+        assertEquals(0.5, m.get("b").roughness());
     }
 
     @Test
@@ -204,7 +249,7 @@ class MtlReaderTest {
 
     static List<org.junit.jupiter.params.provider.Arguments> badInput() {
         return List.of(
-                org.junit.jupiter.params.provider.Arguments.of("newmtl a\nKx 1\n", "2:1: unknown material statement 'Kx' (did you mean 'Kd'?) (supported: newmtl, Kd, Ka, Ks, Ns, d, Tr, Tf, Ni, Ke, illum, map_Kd, map_Ks, map_d, map_Bump, bump)"),
+                org.junit.jupiter.params.provider.Arguments.of("newmtl a\nKx 1\n", "2:1: unknown material statement 'Kx' (did you mean 'Kd'?) (supported: newmtl, Kd, Ka, Ks, Ns, d, Tr, Tf, Ni, Ke, illum, map_Kd, map_Ks, map_d, map_Bump, bump, Pr, Pm, map_Pr, map_Pm)"),
                 org.junit.jupiter.params.provider.Arguments.of("Kd 1 1 1\n", "1:1: 'Kd' before any 'newmtl' (a material's statements follow its newmtl line)"),
                 org.junit.jupiter.params.provider.Arguments.of("newmtl\n", "1:7: expected a material name after 'newmtl', found end of line"),
                 org.junit.jupiter.params.provider.Arguments.of("newmtl a\nnewmtl b\nnewmtl a\n", "3:8: material 'a' defined twice (first on line 1)"),
@@ -226,14 +271,21 @@ class MtlReaderTest {
                 org.junit.jupiter.params.provider.Arguments.of("newmtl a\nillum 10\n", "2:7: illum 10 (shadows cast onto invisible surfaces) is not supported; expected 0 to 9"),
                 org.junit.jupiter.params.provider.Arguments.of("newmtl a\nNi 0\nillum 7\n", "2:1: Ni must be above 0 for illum 7 (it refracts), found 0.0"),
                 org.junit.jupiter.params.provider.Arguments.of("newmtl a\nillum 0\nKe 1 1 1\n", "3:1: illum 0 (a constant colour, Kd) cannot have Ke: give illum 1 or 2 for a lit surface"),
-                org.junit.jupiter.params.provider.Arguments.of("newmtl a\nmap_Ka tex.png\n", "2:1: 'map_Ka' is not supported (the diffuse map, map_Kd, also drives the ambient term); supported: newmtl, Kd, Ka, Ks, Ns, d, Tr, Tf, Ni, Ke, illum, map_Kd, map_Ks, map_d, map_Bump, bump"),
+                org.junit.jupiter.params.provider.Arguments.of("newmtl a\nmap_Ka tex.png\n", "2:1: 'map_Ka' is not supported (the diffuse map, map_Kd, also drives the ambient term); supported: newmtl, Kd, Ka, Ks, Ns, d, Tr, Tf, Ni, Ke, illum, map_Kd, map_Ks, map_d, map_Bump, bump, Pr, Pm, map_Pr, map_Pm"),
                 org.junit.jupiter.params.provider.Arguments.of("newmtl a\nmap_Kd -blendu off tex.png\n", "2:8: texture option '-blendu' is not supported (supported: -o, -s, -clamp)"),
                 org.junit.jupiter.params.provider.Arguments.of("newmtl a\nmap_Kd -bm 2 tex.png\n", "2:8: '-bm' (the bump multiplier) applies to map_Bump and bump only"),
                 org.junit.jupiter.params.provider.Arguments.of("newmtl a\nmap_Kd -s 0 1 tex.png\n", "2:8: '-s' scales must be above 0, found 0.0 1.0"),
                 org.junit.jupiter.params.provider.Arguments.of("newmtl a\nmap_Kd -clamp maybe tex.png\n", "2:15: expected on or off after '-clamp', found 'maybe'"),
                 org.junit.jupiter.params.provider.Arguments.of("newmtl a\nmap_Kd -o\n", "2:10: expected 1 to 3 numbers (u, v, w) after '-o'"),
                 org.junit.jupiter.params.provider.Arguments.of("newmtl a\nmap_d -o 1 2\n", "2:13: expected a texture file name for 'map_d', found end of line"),
-                org.junit.jupiter.params.provider.Arguments.of("newmtl a\nTf 1 2 1\n", "2:6: 'Tf' must be between 0 and 1, found 2"));
+                org.junit.jupiter.params.provider.Arguments.of("newmtl a\nTf 1 2 1\n", "2:6: 'Tf' must be between 0 and 1, found 2"),
+                org.junit.jupiter.params.provider.Arguments.of("newmtl a\nPr 1.5\n", "2:4: 'Pr' must be between 0 and 1, found 1.5"),
+                org.junit.jupiter.params.provider.Arguments.of("newmtl a\nPm -0\nPm 1\n", "3:1: 'Pm' given twice for material 'a' (first on line 2)"),
+                org.junit.jupiter.params.provider.Arguments.of("newmtl a\nKd 2 1 1\nPm 1\n",
+                        "2:1: Kd must be between 0 and 1 for a physically based material (Pr, Pm), found (2.0, 1.0, 1.0): a base colour is a reflectance"),
+                org.junit.jupiter.params.provider.Arguments.of("newmtl a\nNi 0\nPr 0.2\n", "2:1: Ni must be above 0 for a physically based material (Pr, Pm), found 0.0"),
+                org.junit.jupiter.params.provider.Arguments.of("newmtl a\nPs 0.5\n",
+                        "2:1: 'Ps' is not supported (the principled material has no sheen, clearcoat or anisotropy; of the physically based keys Pr, Pm, map_Pr and map_Pm are read); supported: newmtl, Kd, Ka, Ks, Ns, d, Tr, Tf, Ni, Ke, illum, map_Kd, map_Ks, map_d, map_Bump, bump, Pr, Pm, map_Pr, map_Pm"));
     }
 
     @ParameterizedTest

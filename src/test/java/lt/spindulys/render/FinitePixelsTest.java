@@ -93,6 +93,35 @@ class FinitePixelsTest {
         assertFinite(s.toString(), "light total");
     }
 
+    /**
+     * Principled materials at the ends of their ranges (their derived Whitted terms at theirs: ks
+     * 10, shininess 1e6 or 0), with the largest emission plus the largest emission texture, under
+     * the brightest lights between mirrors.
+     */
+    @Test
+    void principledMaterialsAtTheirExtremes() throws IOException {
+        StringBuilder s = new StringBuilder("""
+                settings { width 25 height 19 maxdepth 64 mincontribution 0 ambient 100 background 100 }
+                camera { eye 0 0 -3 lookat 0 0 0 }
+                texture glow { pattern marble  color1 100 100 100  color2 -100 -100 -100 }
+                material mirror { model principled  color 1  metallic 1  roughness 0  emission 100
+                                  map { texture glow  channel emission }  map { texture glow  channel diffuse } }
+                material glass { model principled  color 1  transmission 1  roughness 0  ior 1e15  emission 100
+                                 map { texture glow  channel emission }  map { texture glow  channel roughness } }
+                material rough { model principled  color 1  metallic 1  roughness 1  ior 1e-15  emission 100
+                                 map { texture glow  channel metallic }  map { texture glow  channel transparency } }
+                plane { normal 0 1 0 offset -1 material mirror }
+                plane { normal 0 -1 0 offset -1 material mirror }
+                sphere { center -0.6 0 0 radius 0.5 material glass }
+                sphere { center 0.6 0 0 radius 0.5 material rough }
+                """);
+        for (String p : new String[] {"0 -1 0", "0 0 -0.5", "0.6 0 -0.5000000000000001"}) {
+            s.append("light { position ").append(p).append("  color 100  intensity 1e15  falloff inverse-square }\n");
+            s.append("light { position ").append(p).append("  color 100  intensity 1e15 }\n");
+        }
+        assertFinite(s.toString(), "principled");
+    }
+
     /** Coordinates, sizes and scales at their largest: a world some 1e30 across. */
     @Test
     void largestCoordinatesAndScales() throws IOException {
