@@ -10,6 +10,7 @@ import lt.spindulys.limits.HeapBudget;
 import lt.spindulys.material.Material;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Ray;
+import lt.spindulys.sampling.PaddedStrata;
 import lt.spindulys.sampling.Rng;
 import lt.spindulys.scene.Environment;
 import lt.spindulys.scene.RenderSettings;
@@ -43,12 +44,20 @@ import lt.spindulys.trace.TracedObject;
  * surface blocks a shadow ray: light through glass is found by the paths that refract.
  *
  * <p>Every random number of a path comes from one generator seeded from the global seed, the
- * pixel and the sample index, so the image is the same for any thread count or tile split.
+ * pixel and the sample index, so the image is the same for any thread count or tile split; the
+ * light samples and scattering at the first two surfaces are stratified over the pixel's samples
+ * ({@link PaddedStrata}).
  * Immutable; all per-path state lives in the thread's {@link TracerScratch}.
  */
 public final class PathIntegrator implements Integrator {
     /** Distinguishes a path's random numbers from the pixel sampler's and the lights' streams. */
     private static final long PATH_STREAM = 0x70617468L;
+    /**
+     * Surfaces of a path (counted from the camera's) whose light sample and scattering take
+     * stratified numbers ({@link PaddedStrata}); deeper ones take independent numbers, where
+     * strata no longer pay: the light there is already averaged over many paths.
+     */
+    private static final int STRATIFIED_SURFACES = 2;
     /** Bounces after which Russian roulette may end a path. */
     private static final int ROULETTE_BOUNCES = 3;
 
@@ -110,6 +119,9 @@ public final class PathIntegrator implements Integrator {
         s.cameraRays++;
         s.mediaCount = 0;
         Rng rng = s.pathRng.seed(s.seed ^ PATH_STREAM, s.pixelX, s.pixelY, s.sample);
+        PaddedStrata strata = s.strata;
+        strata.start(s.seed ^ PATH_STREAM, s.pixelX, s.pixelY, s.sample, s.samplesPerPixel);
+        double[] square = s.square;
         double[] beta = s.throughput, sum = s.pathSum, c = s.contribution, f = s.bsdfValue;
         beta[0] = beta[1] = beta[2] = 1;
         sum[0] = sum[1] = sum[2] = 0;
@@ -205,8 +217,12 @@ public final class PathIntegrator implements Integrator {
 
             // Next-event estimation: one light, picked uniformly.
             if (pick > 0 && !bsdf.isSpecular()) {
-                int li = Math.min((int) (rng.nextDouble() * lightArray.length), lightArray.length - 1);
-                double u1 = rng.nextDouble(), u2 = rng.nextDouble();
+                boolean padded = segment < STRATIFIED_SURFACES;
+                double pickU = padded ? strata.get1D(4 * segment, rng) : rng.nextDouble();
+                int li = Math.min((int) (pickU * lightArray.length), lightArray.length - 1);
+                if (padded) strata.get2D(4 * segment + 1, rng, square);
+                else { square[0] = rng.nextDouble(); square[1] = rng.nextDouble(); }
+                double u1 = square[0], u2 = square[1];
                 Light light = lightArray[li];
                 LightSample ls = s.lightSample;
                 if (light.sampleLi(px, py, pz, u1, u2, ls)) {
@@ -245,7 +261,11 @@ public final class PathIntegrator implements Integrator {
             }
 
             // The next direction, from the BSDF.
-            double uc = rng.nextDouble(), u1 = rng.nextDouble(), u2 = rng.nextDouble();
+            boolean padded = segment < STRATIFIED_SURFACES;
+            double uc = padded ? strata.get1D(4 * segment + 2, rng) : rng.nextDouble();
+            if (padded) strata.get2D(4 * segment + 3, rng, square);
+            else { square[0] = rng.nextDouble(); square[1] = rng.nextDouble(); }
+            double u1 = square[0], u2 = square[1];
             if (!bsdf.sample(wox, woy, woz, uc, u1, u2, bs) || !(bs.pdf > 0)) break;
             double wx = bs.wix * tx + bs.wiy * bx + bs.wiz * snx;
             double wy = bs.wix * ty + bs.wiy * by + bs.wiz * sny;

@@ -66,6 +66,8 @@ public final class TracerScratch {
     final SurfaceBsdf bsdf = new SurfaceBsdf();
     final BsdfSample bsdfSample = new BsdfSample();
     final double[] frame = new double[6];
+    final lt.spindulys.sampling.PaddedStrata strata = new lt.spindulys.sampling.PaddedStrata();
+    final double[] square = new double[2];
 
     /**
      * Says which pixel sample the next camera ray is, so that area-light samples are stratified
