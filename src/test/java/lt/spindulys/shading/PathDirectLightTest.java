@@ -200,4 +200,23 @@ class PathDirectLightTest {
     private static GObject triangle(Vec3 a, Vec3 b, Vec3 c, Material m) {
         return new Triangle(a, b, c).material(m);
     }
+    /**
+     * A one-sided rectangle light facing up, 1 above the plane, shows the plane its black back
+     * and hides a part of a uniform sky of radiance 1. A path that reaches a light ends there
+     * (as a Whitted camera ray does), so the light must hide the sky from the sky's light samples
+     * too: the plane then shows albedo * (1 - F), F the rectangle's form factor, whether the sky
+     * is a light (light samples and BSDF samples, MIS) or only seen (BSDF samples alone). Were
+     * the two strategies to disagree on what is visible, MIS would mix two answers.
+     */
+    @Test
+    void aLightHidesTheSkyFromLightSamplesAsFromPaths() {
+        double a = 1, c = 1; // half-sides over height, for the corner rectangles' form factors
+        double corner = (a / Math.sqrt(1 + a * a) * Math.atan(c / Math.sqrt(1 + a * a)) + c / Math.sqrt(1 + c * c) * Math.atan(a / Math.sqrt(1 + c * c))) / (2 * Math.PI);
+        double expected = ALBEDO * (1 - 4 * corner);
+        for (boolean skyIsLight : new boolean[] {true, false}) {
+            SceneBuilder b = plane(DIFFUSE).environment(new Environment(PathFurnaceTest.uniform(1), 0, 1, skyIsLight, 1))
+                    .areaLight(AreaLight.rectangle(new Vec3(0, 1, 0), Vec3.Y, Vec3.X, 2, 2, Color.WHITE, 1, true, 1));
+            belowTheLight(b, skyIsLight ? 14 : 15).assertMean(expected, "the sky past a one-sided light's back, the sky " + (skyIsLight ? "a light" : "only seen"));
+        }
+    }
 }

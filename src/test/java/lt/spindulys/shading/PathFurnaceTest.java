@@ -40,7 +40,7 @@ class PathFurnaceTest {
     private static final Material WHITE_DIFFUSE = Material.builder().color(Color.WHITE).ka(0).kd(1).build();
     private static final Material SMOOTH_GLASS = Material.builder().color(Color.WHITE).ka(0).kd(0).kt(1).ior(1.5).fresnel(true).build();
 
-    private static TextureImage uniform(double v) {
+    static TextureImage uniform(double v) {
         int w = 8, h = 4;
         double[] rgb = new double[3 * w * h];
         java.util.Arrays.fill(rgb, v);
