@@ -218,6 +218,12 @@ public final class PathIntegrator implements Integrator {
                             s.ctx.shadowReceiver = cosG > 0 && hit.object.flat() ? hit.object : null;
                             boolean blocked = scene.occluded(shadow, s.ctx);
                             s.ctx.shadowReceiver = null;
+                            // A path ends at an area light it reaches, so another light's surface hides this sample
+                            // too: else light samples and BSDF samples would see different scenes and MIS mix them.
+                            if (!blocked && lights.hasSurfaces()) {
+                                int nearer = lights.nearestSurface(shadow, Double.POSITIVE_INFINITY, s.lightSeen);
+                                blocked = nearer >= 0 && nearer != li;
+                            }
                             if (!blocked) {
                                 double lightPdf = pick * ls.pdf;
                                 double w = ls.delta ? 1 : powerHeuristic(lightPdf, bsdf.pdf(wox, woy, woz, wix, wiy, cosS));
