@@ -124,6 +124,17 @@ class PathFurnaceTest {
     }
 
     /**
+     * Half Lambert, half mirror (weights summing to 1, so lossless): the surface takes light
+     * samples, but a path that picked the mirror must give the sky it finds the whole weight, and
+     * the light sample must not count the mirror, or the sphere shows.
+     */
+    @Test
+    void aDiffuseAndMirrorMixtureDisappearsUnderASkyLight() throws InterruptedException {
+        Material half = Material.builder().color(Color.WHITE).ka(0).kd(0.5).kr(0.5).build();
+        assertFlat(furnace(half, true, 6), ONE, "half diffuse, half mirror, sky as a light");
+    }
+
+    /**
      * Smooth glass (exact Fresnel, no absorption) loses nothing: the radiance scaling by 1/eta^2
      * going in is undone coming out, Russian roulette must keep the paths inside, and with 64
      * bounces every sample is again exactly 1. Both with the sky as a light (glass takes no light
