@@ -125,6 +125,9 @@ public final class PathIntegrator implements Integrator {
         double[] beta = s.throughput, sum = s.pathSum, c = s.contribution, f = s.bsdfValue;
         beta[0] = beta[1] = beta[2] = 1;
         sum[0] = sum[1] = sum[2] = 0;
+        // Indirect light is summed apart when clamped, so that the clamp bounds the sample's total of it.
+        double[] late = clamp > 0 ? s.indirectSum : sum;
+        late[0] = late[1] = late[2] = 0;
         double etaScale = 1, travelled = 0, bsdfPdf = 0;
         boolean specular = false;
         // The vertex the current segment left (where light densities are measured from).
@@ -153,7 +156,7 @@ public final class PathIntegrator implements Integrator {
                     double w = weighed ? powerHeuristic(bsdfPdf, pick * lightArray[li].pdfLi(qx, qy, qz, dx, dy, dz)) : 1;
                     c[0] = seen[0] * w; c[1] = seen[1] * w; c[2] = seen[2] * w;
                     if (medium != null) WhittedIntegrator.attenuate(medium, seen[3] * dlen, c);
-                    add(beta, c, indirect, sum);
+                    add(beta, c, indirect ? late : sum);
                     break;
                 }
             }
@@ -165,7 +168,7 @@ public final class PathIntegrator implements Integrator {
                     c[0] *= w; c[1] *= w; c[2] *= w;
                 }
                 if (medium != null) WhittedIntegrator.attenuate(medium, Double.POSITIVE_INFINITY, c);
-                add(beta, c, indirect, sum);
+                add(beta, c, indirect ? late : sum);
                 break;
             }
             if (segment == 0 && hit.object instanceof lt.spindulys.scene.AdaptiveSubdivisionSurface) s.adaptiveCameraHits++;
@@ -186,7 +189,7 @@ public final class PathIntegrator implements Integrator {
                     w = cos > 0 ? powerHeuristic(bsdfPdf, pick * emitter.pdfAt(brightness, d * d, cos)) : 1;
                 }
                 c[0] = v.emissionR * w; c[1] = v.emissionG * w; c[2] = v.emissionB * w;
-                add(beta, c, indirect, sum);
+                add(beta, c, indirect ? late : sum);
             }
             if (segment > maxDepth) break; // the last segment only looks for light
 
@@ -245,6 +248,12 @@ public final class PathIntegrator implements Integrator {
                             s.ctx.shadowReceiver = cosG > 0 && hit.object.flat() ? hit.object : null;
                             boolean blocked = scene.occluded(shadow, s.ctx);
                             s.ctx.shadowReceiver = null;
+                            // A path ends at an area light it reaches, so another light's surface hides this sample
+                            // too: else light samples and BSDF samples would see different scenes and MIS mix them.
+                            if (!blocked && lights.hasSurfaces()) {
+                                int nearer = lights.nearestSurface(shadow, Double.POSITIVE_INFINITY, s.lightSeen);
+                                blocked = nearer >= 0 && nearer != li;
+                            }
                             if (!blocked) {
                                 double lightPdf = pick * ls.pdf;
                                 double w = ls.delta ? 1 : powerHeuristic(lightPdf, bsdf.pdf(wox, woy, woz, wix, wiy, cosS));
@@ -253,7 +262,7 @@ public final class PathIntegrator implements Integrator {
                                 // The shadow ray crosses the medium on the light's side: the ray's own, or the one behind the surface.
                                 Material across = cosG > 0 ? medium : entering ? m : leavesInnermost ? s.outer() : medium;
                                 if (across != null) WhittedIntegrator.attenuate(across, ls.distance, c);
-                                add(beta, c, segment >= 1, sum);
+                                add(beta, c, segment >= 1 ? late : sum);
                             }
                         }
                     }
@@ -300,6 +309,11 @@ public final class PathIntegrator implements Integrator {
                 }
             }
         }
+        if (late != sum) {
+            double max = Math.max(late[0], Math.max(late[1], late[2]));
+            double k = max > clamp ? clamp / max : 1;
+            sum[0] += late[0] * k; sum[1] += late[1] * k; sum[2] += late[2] * k;
+        }
         out[0] = sum[0]; out[1] = sum[1]; out[2] = sum[2];
     }
 
@@ -318,20 +332,14 @@ public final class PathIntegrator implements Integrator {
     }
 
     /**
-     * Adds throughput times c to the path's sum; light that reached the camera off more than one
-     * surface ({@code indirect}) is first scaled down, keeping its hue, so that no channel exceeds
-     * the clamp. A contribution that is not finite (a degenerate sample) is dropped.
+     * Adds throughput times c to {@code sum}: the path's, or with a clamp the sum of its light that
+     * reached the camera off more than one surface, which the end of the path scales down, keeping
+     * its hue, so that no channel of it exceeds the clamp. A contribution that is not finite (a
+     * degenerate sample) is dropped.
      */
-    private void add(double[] beta, double[] c, boolean indirect, double[] sum) {
+    private static void add(double[] beta, double[] c, double[] sum) {
         double r = beta[0] * c[0], g = beta[1] * c[1], b = beta[2] * c[2];
         if (!(Double.isFinite(r) && Double.isFinite(g) && Double.isFinite(b))) return;
-        if (indirect && clamp > 0) {
-            double max = Math.max(r, Math.max(g, b));
-            if (max > clamp) {
-                double k = clamp / max;
-                r *= k; g *= k; b *= k;
-            }
-        }
         sum[0] += r; sum[1] += g; sum[2] += b;
     }
 

@@ -61,6 +61,8 @@ public final class TracerScratch {
     final lt.spindulys.sampling.Rng pathRng = new lt.spindulys.sampling.Rng();
     final double[] throughput = new double[3];
     final double[] pathSum = new double[3];
+    /** A path's indirect light, summed apart from pathSum when it is clamped as a whole. */
+    final double[] indirectSum = new double[3];
     final double[] contribution = new double[3];
     final double[] bsdfValue = new double[3];
     final SurfaceBsdf bsdf = new SurfaceBsdf();
