@@ -41,7 +41,7 @@ final class PathBench {
     /** The noise comparison's view is the row's divided by this in each direction. */
     static final int NOISE_DIVISOR = 4;
     /** Cycles' samples per pixel in the noise comparison, and of its converged reference. */
-    static final int NOISE_CYCLES_SPP = 256, REFERENCE_SPP = 4096;
+    static final int NOISE_CYCLES_SPP = 256, REFERENCE_SPP = 1024;
     private static final long TIMEOUT_MINUTES = 20;
 
     /**
@@ -56,6 +56,7 @@ final class PathBench {
         BenchTable table = new BenchTable("peer", "settings", "pairs", "peer render s", "ours", "peer Msamples/s", "ours", "speed ours/peer",
                 "target", "image |dL|");
         long samples = (long) view.width() * view.height() * spp;
+        String cycles = null; // Blender, once it has run: the noise comparison follows the table
         try {
             FrameBuffer ourImage = ours.render(spp, 0, view.width(), view.height()).image();
             int[] ourRgb = ourImage.toRgb8(true);
@@ -109,9 +110,7 @@ final class PathBench {
                         fmt(samples / median(theirs) / 1e6, 2), fmt(samples / median(mine) / 1e6, 2),
                         fmt(speed, 2) + "x (" + fmt(median(theirs) / median(mine), 2) + "x)", ">= " + fmt(target, 1) + "x " + (met ? "met" : "NOT met"),
                         fmt(diff.meanLuma(), 2));
-                if (p == PeerBench.Peer.CYCLES) {
-                    noise(out, view, maxDepth, pairs, threads, ours, exe.toString(), scratch, missed);
-                }
+                if (p == PeerBench.Peer.CYCLES) cycles = exe.toString();
             }
             out.printf("  %s beside the peers (%dx%d, %d spp, maxdepth %d; %d alternated pairs each; medians):%n", row, view.width(), view.height(),
                     spp, maxDepth, pairs);
@@ -122,6 +121,7 @@ final class PathBench {
             out.println("  difference from ours in 8-bit sRGB steps (both noisy at this sample count). Embree's path length N is N hits,");
             out.println("  each with a light sample: our maxdepth N - 1. Embree traces every path to its length (it stops below a");
             out.println("  throughput of 0.01); we and Cycles end paths by Russian roulette, so the rays per sample differ.");
+            if (cycles != null) noise(out, view, maxDepth, pairs, threads, ours, cycles, scratch, missed);
             out.printf("  %s: %s%n", row, missed.isEmpty() ? "every target met" : "not met: " + String.join(", ", missed));
         } finally {
             deleteTree(scratch);
