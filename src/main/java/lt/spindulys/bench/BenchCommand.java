@@ -49,7 +49,7 @@ public final class BenchCommand {
               --cell-timeout S  stop an adaptive-row cell after S seconds (default 600) and report it as stopped
               --accel A     acceleration structure of the peer-scene rows: bvh (the scenes' default),
                             bvh-compact, bvh2, octree or bruteforce; to compare structures on the same scene
-              --peers LIST  peer renderers run beside the rows torus-250k, torus-1m, knot-1m and torus-1m-close, those of LIST
+              --peers LIST  peer renderers run beside the rows torus-250k, torus-1m, knot-1m, torus-1m-close and path-torus, those of LIST
                             (comma-separated: embree, povray, cycles; default all three) that are on PATH, in --runs
                             alternated pairs each; 'none' runs none
               --list        list the rows and exit
@@ -106,6 +106,12 @@ public final class BenchCommand {
                     String.format(Locale.ROOT, "scenes/bench/soft-shadow-16k.dat: soft-shadow-light16 with the 16k torus (32,768 triangles), %d threads: "
                             + "1 camera ray and 16 shadow rays per pixel on both sides, beside POV-Ray's 4x4 area_light", BenchCommand.THREADS),
                     (b, out) -> b.peerScene(out, BenchMeshes.size("16k"), "soft-shadow-16k", PeerBench.Targets.softShadows())),
+            new Row("path-torus", "Path tracing",
+                    String.format(Locale.ROOT, "scenes/bench/path-torus.dat: the 1k torus on the ground quad path traced, 640x360, 16 spp, "
+                            + "maxdepth 4, %d threads; beside Embree's pathtracer (--max-path-length 5) and Cycles (max_bounces 4) at equal "
+                            + "spp: samples per second (targets: at least 0.8x Embree's, 3x Cycles'); beside Cycles also the mean squared "
+                            + "error at equal time against its converged image (target: no higher)", BenchCommand.THREADS),
+                    (b, out) -> b.pathScene(out, "path-torus")),
             new Row("csg-subdiv", "CSG",
                     "scenes/bench/csg-subdiv.dat: difference of two level-4 subdivision surfaces, 1280x720, 1 spp, 2 threads; "
                             + "beside csg-subdiv-plain.dat, the same two surfaces without CSG (target: at least half its speed)",
@@ -365,6 +371,38 @@ public final class BenchCommand {
                         : "  pixel not equal: we trace " + spp + " at stratified spots, POV-Ray one at the pixel centre (no anti-aliasing).");
             }
         }
+    }
+
+    // ---- path tracing ----
+
+    /**
+     * The path-traced scene scenes/bench/NAME.dat (the 1k torus on the ground quad): our medians
+     * in this JVM, then Embree and Cycles beside it ({@link PathBench}).
+     */
+    private void pathScene(PrintStream out, String name) throws IOException {
+        Path meshes = benchDir.resolve("meshes");
+        BenchMeshes.ensure(meshes, BenchMeshes.size("1k"));
+        Path scene = benchDir.resolve(name + ".dat");
+        if (!Files.isRegularFile(scene)) throw new IOException("bench scene not found: " + scene.toAbsolutePath());
+        for (int i = 0; i < WARMUPS; i++) renderOnce(scene, accel);
+        double[] render = new double[runs];
+        Measured last = null;
+        for (int i = 0; i < runs; i++) {
+            last = renderOnce(scene, accel);
+            render[i] = last.stats.seconds();
+        }
+        SceneBuilder parsed = SceneParser.parse(scene);
+        RenderSettings s = parsed.settings();
+        long samples = (long) s.width() * s.height() * s.samplesPerPixel();
+        RenderStats st = last.stats;
+        out.printf(Locale.ROOT, "  %s: render %.3f s, %.2f Msamples/s, %.2f Mrays/s (per sample: %.2f rays: %.2f camera, %.2f shadow, %.2f bounce)%n",
+                name, median(render), samples / median(render) / 1e6, st.totalRays() / median(render) / 1e6, st.totalRays() / (double) samples,
+                st.cameraRays() / (double) samples, st.shadowRays() / (double) samples, st.reflectionRays() / (double) samples);
+        if (peers.isEmpty()) return;
+        List<Path> files = List.of(meshes.resolve(BenchMeshes.size("1k").file()).toAbsolutePath(), meshes.resolve(BenchMeshes.GROUND_FILE).toAbsolutePath());
+        PeerView view = PeerView.ofPath(parsed, files);
+        PathBench.run(out, name, view, s.samplesPerPixel(), s.maxDepth(), peers, runs, THREADS,
+                (spp, seed, w, h) -> renderOnce(scene, accel, r -> r.toBuilder().samplesPerPixel(spp).seed(seed).size(w, h).build()));
     }
 
     // ---- adaptive subdivision in a warm JVM ----

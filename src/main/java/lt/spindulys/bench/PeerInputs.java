@@ -35,6 +35,16 @@ final class PeerInputs {
      * {@code --benchmark 1 N --legacy} for its render-only frame time.
      */
     static List<String> embree(String exe, PeerView v, int threads, List<String> tail) {
+        return embree(exe, v, threads, 1, 1, tail);
+    }
+
+    /**
+     * Embree's {@code pathtracer} on the view at {@code spp} samples per pixel and paths of at most
+     * {@code pathLength} hits. Its loop traces one ray per hit and samples every light at each
+     * (tutorials/pathtracer/pathtracer_device.cpp, renderPixelFunction), so a path length of N is our
+     * maxdepth N - 1 and Cycles' max_bounces N - 1: 1 is the camera ray and its shadow rays.
+     */
+    static List<String> embree(String exe, PeerView v, int threads, int spp, int pathLength, List<String> tail) {
         List<String> c = new ArrayList<>(List.of(exe));
         for (Path m : v.meshes()) c.addAll(List.of("-i", m.toString()));
         c.add("--vp");
@@ -48,7 +58,8 @@ final class PeerInputs {
         c.add("--pointlight");
         add(c, v.light());
         String i = BenchMeshes.number(v.radiantIntensity());
-        c.addAll(List.of(i, i, i, "--spp", "1", "--max-path-length", "1", "--threads", Integer.toString(threads)));
+        c.addAll(List.of(i, i, i, "--spp", Integer.toString(spp), "--max-path-length", Integer.toString(pathLength),
+                "--threads", Integer.toString(threads)));
         c.addAll(tail);
         return c;
     }
@@ -74,6 +85,19 @@ final class PeerInputs {
         c.addAll(List.of("--vfov", BenchMeshes.number(v.verticalFov()), "--light"));
         add(c, v.light());
         c.addAll(List.of("--watts", BenchMeshes.number(4 * Math.PI * v.radiantIntensity())));
+        return c;
+    }
+
+    /**
+     * {@link #cycles} path tracing: {@code samples} per pixel, {@code bounces} of every kind (our
+     * maxdepth), the settings of {@link #CYCLES_SCRIPT}'s {@code --bounces} (no clamp, caustics on, a
+     * 1-pixel box filter, no denoising or adaptive sampling), seeded; with {@code pfm}, the linear image too.
+     */
+    static List<String> cyclesPath(String exe, Path script, PeerView v, int threads, Path image, int samples, int bounces, int seed,
+            Path pfm) {
+        List<String> c = new ArrayList<>(cycles(exe, script, v, threads, image));
+        c.addAll(List.of("--samples", Integer.toString(samples), "--bounces", Integer.toString(bounces), "--seed", Integer.toString(seed)));
+        if (pfm != null) c.addAll(List.of("--pfm", pfm.toString()));
         return c;
     }
 

@@ -38,11 +38,17 @@ final class PeerLogs {
      * {@code | Time:MM:SS.ss |} fields.
      */
     static double cyclesSamplingSeconds(String log) {
+        return cyclesSamplingSeconds(log, 1);
+    }
+
+    /** As {@link #cyclesSamplingSeconds(String)} for {@code samples} per pixel: {@code Sample 0/N} to {@code Sample N/N}. */
+    static double cyclesSamplingSeconds(String log, int samples) {
+        String first = "| Sample 0/" + samples, last = "| Sample " + samples + "/" + samples;
         double start = Double.NaN;
         for (String line : log.split("[\\r\\n]+")) {
-            if (Double.isNaN(start) && line.endsWith("| Sample 0/1")) {
+            if (Double.isNaN(start) && line.endsWith(first)) {
                 start = statusTime(line);
-            } else if (!Double.isNaN(start) && line.endsWith("| Sample 1/1")) {
+            } else if (!Double.isNaN(start) && line.endsWith(last)) {
                 double end = statusTime(line);
                 return end - start;
             }

@@ -62,6 +62,22 @@ record PeerView(Vec3 eye, Vec3 at, Vec3 up, double verticalFov, int width, int h
     }
 
     /**
+     * The view of a path-traced {@code scene} (one white inverse-square point light, a pinhole
+     * camera): its Lambert BRDF has the 1/pi, so the light's intensity is its radiant intensity.
+     *
+     * @throws IOException if the scene is not of that kind
+     */
+    static PeerView ofPath(SceneBuilder scene, List<Path> meshes) throws IOException {
+        PeerView v = of(scene, meshes);
+        return new PeerView(v.eye, v.at, v.up, v.verticalFov, v.width, v.height, v.light, v.radiantIntensity / Math.PI, v.meshes, null);
+    }
+
+    /** This view at another image size. */
+    PeerView withSize(int w, int h) {
+        return new PeerView(eye, at, up, verticalFov, w, h, light, radiantIntensity, meshes, area);
+    }
+
+    /**
      * The soft-shadow view of {@code scene}: one white rectangle or disc light, no point light, a
      * pinhole camera. Each pixel's shadow rays (pixel samples x light samples) become a grid x
      * grid area_light, so their number must be a square. The radiant intensity is
