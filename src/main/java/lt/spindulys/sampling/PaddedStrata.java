@@ -32,9 +32,9 @@ public final class PaddedStrata {
     public void start(long seed, int px, int py, int sample, int samples) {
         if (samples != this.samples) {
             this.samples = samples;
-            rows = (int) Math.floor(Math.sqrt(samples));
-            while (samples % rows != 0) rows--;
-            cols = samples / rows;
+            int[] grid = PixelSampler.grid(samples);
+            cols = grid[0];
+            rows = grid[1];
         }
         this.sample = sample;
         pixelHash = hash.seed(seed, px, py, 0x73747261).nextLong(); // "stra"
@@ -54,15 +54,16 @@ public final class PaddedStrata {
 
     /**
      * A point of the unit square in this sample's stratum of the pair of dimensions {@code dim},
-     * written to out[0..1]: the square is cut into a grid of samples cells as square as the count
-     * allows.
+     * written to out[0..1]: the square is cut into the pixel sampler's grid for the count
+     * ({@link PixelSampler#grid}), as square as the count allows.
      *
      * @param dim the pair's number, distinct from every other dimension's
      * @param rng the jitter
      * @param out receives u and v in [0, 1)
      */
     public void get2D(int dim, Rng rng, double[] out) {
-        int s = permute(sample, samples, seed(dim));
+        // Distinct samples take distinct cells, also of a padded grid (a few cells left empty).
+        int s = permute(sample, cols * rows, seed(dim));
         int row = s / cols, col = s - row * cols;
         out[0] = Math.min((col + rng.nextDouble()) / cols, Math.nextDown(1.0));
         out[1] = Math.min((row + rng.nextDouble()) / rows, Math.nextDown(1.0));

@@ -24,6 +24,8 @@ final class LobeMixture implements Bsdf {
     private final Estimator estimator;
     // Not final only so that a reusable owner can re-parameterise its lobes in place (set, update).
     private boolean specular;
+    /** The one lobe of positive weight, or -1 when there are several (or none): most surfaces have one, and skip the mixing. */
+    private int single;
 
     LobeMixture(Bsdf[] lobes, double[] weights, Estimator estimator) {
         this.lobes = lobes.clone();
@@ -41,8 +43,15 @@ final class LobeMixture implements Bsdf {
     /** Recomputes what is derived from the lobes and weights, after they or the lobes' own parameters changed. */
     void update() {
         boolean allDelta = true;
-        for (int k = 0; k < lobes.length; k++) if (weights[k] > 0 && !lobes[k].isSpecular()) allDelta = false;
+        int count = 0, only = -1;
+        for (int k = 0; k < lobes.length; k++) {
+            if (!(weights[k] > 0)) continue;
+            count++;
+            only = k;
+            if (!lobes[k].isSpecular()) allDelta = false;
+        }
         specular = allDelta;
+        single = count == 1 ? only : -1;
     }
 
     @Override
@@ -50,6 +59,13 @@ final class LobeMixture implements Bsdf {
 
     @Override
     public void eval(double wox, double woy, double woz, double wix, double wiy, double wiz, double[] rgbOut) {
+        if (single >= 0) { // one lobe: its value times its weight, as the loop below gives it
+            double w = weights[single];
+            if (lobes[single].isSpecular()) { rgbOut[0] = rgbOut[1] = rgbOut[2] = 0; return; }
+            lobes[single].eval(wox, woy, woz, wix, wiy, wiz, rgbOut);
+            rgbOut[0] *= w; rgbOut[1] *= w; rgbOut[2] *= w;
+            return;
+        }
         double r = 0, g = 0, b = 0;
         for (int k = 0; k < lobes.length; k++) {
             double w = weights[k];
@@ -62,6 +78,11 @@ final class LobeMixture implements Bsdf {
 
     @Override
     public double pdf(double wox, double woy, double woz, double wix, double wiy, double wiz) {
+        if (single >= 0) { // one lobe is always the one chosen, where it can be chosen at all
+            Bsdf lobe = lobes[single];
+            if (lobe.isSpecular() || !(estimator.estimate(single, wox, woy, woz) > 0)) return 0;
+            return lobe.pdf(wox, woy, woz, wix, wiy, wiz);
+        }
         double total = totalEstimate(wox, woy, woz);
         if (!(total > 0)) return 0;
         double pdf = 0;
@@ -77,6 +98,7 @@ final class LobeMixture implements Bsdf {
     public boolean sample(double wox, double woy, double woz, double uc, double u1, double u2, BsdfSample out) {
         out.clear();
         if (woz == 0) return false;
+        if (single >= 0) return sampleSingle(wox, woy, woz, uc, u1, u2, out);
         double total = totalEstimate(wox, woy, woz);
         if (!(total > 0)) return false;
         double target = uc * total, below = 0;
@@ -109,6 +131,16 @@ final class LobeMixture implements Bsdf {
         eval(wox, woy, woz, wix, wiy, wiz, out.f);
         out.pdf = pdf;
         out.eta = eta;
+        return true;
+    }
+
+    /** {@link #sample} of a mixture of one lobe: that lobe's sample, its value weighted. */
+    private boolean sampleSingle(double wox, double woy, double woz, double uc, double u1, double u2, BsdfSample out) {
+        if (!(estimator.estimate(single, wox, woy, woz) > 0)) return false;
+        if (!lobes[single].sample(wox, woy, woz, uc, u1, u2, out)) { out.clear(); return false; }
+        if (!(out.pdf > 0) || Double.isInfinite(out.pdf)) { out.clear(); return false; }
+        double w = weights[single];
+        out.f[0] *= w; out.f[1] *= w; out.f[2] *= w;
         return true;
     }
 

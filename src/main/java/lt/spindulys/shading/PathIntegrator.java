@@ -74,6 +74,11 @@ public final class PathIntegrator implements Integrator {
     private final FirstHits firstHits;
     private final int maxDepth;
     private final double clamp;
+    /**
+     * Whether a ray can find light by hitting something: an area light, a glowing surface, an
+     * environment or a background that is not black. Without any, the last bounce is not traced.
+     */
+    private final boolean findable;
 
     /**
      * A path tracer for {@code scene}, reading its settings' {@code maxdepth} and {@code clamp}.
@@ -93,6 +98,16 @@ public final class PathIntegrator implements Integrator {
         this.firstHits = new FirstHits(scene);
         this.maxDepth = settings.maxDepth();
         this.clamp = settings.clamp();
+        this.findable = lights.hasSurfaces() || environment != null || !settings.background().isBlack() || glows(scene);
+    }
+
+    /** Whether some surface of the scene emits light (a material's emission, or an emission texture). */
+    private static boolean glows(Scene scene) {
+        boolean[] any = {false};
+        for (lt.spindulys.scene.GObject o : scene.objects()) {
+            o.forEachMaterial(m -> any[0] |= !m.emission().isBlack() || m.texture(lt.spindulys.texture.Channel.EMISSION) != null);
+        }
+        return any[0];
     }
 
     @Override
@@ -216,7 +231,14 @@ public final class PathIntegrator implements Integrator {
                 n1 = leavesInnermost ? s.innermost().ior() : m.ior();
                 n2 = WhittedIntegrator.ior(leavesInnermost ? s.outer() : s.innermost());
             }
-            configure(bsdf, m, v, n2 / n1);
+            double eta = n2 / n1;
+            // An untextured material seen again with the same indices needs no new set-up (a
+            // path bounces between a few materials): the BSDF is this thread's, set only here.
+            if (m.isTextured() || m != s.configuredMaterial || eta != s.configuredEta) {
+                configure(bsdf, m, v, eta);
+                s.configuredMaterial = m.isTextured() ? null : m;
+                s.configuredEta = eta;
+            }
 
             // Next-event estimation: one light, picked uniformly.
             if (pick > 0 && !bsdf.isSpecular()) {
@@ -269,7 +291,9 @@ public final class PathIntegrator implements Integrator {
                 }
             }
 
-            // The next direction, from the BSDF.
+            // The next direction, from the BSDF; at the last bounce it only looks for light, which
+            // is pointless when nothing a ray can reach gives any (point lights and a black sky).
+            if (segment == maxDepth && !findable) break;
             boolean padded = segment < STRATIFIED_SURFACES;
             double uc = padded ? strata.get1D(4 * segment + 2, rng) : rng.nextDouble();
             if (padded) strata.get2D(4 * segment + 3, rng, square);

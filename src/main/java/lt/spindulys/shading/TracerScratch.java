@@ -66,6 +66,9 @@ public final class TracerScratch {
     final double[] contribution = new double[3];
     final double[] bsdfValue = new double[3];
     final SurfaceBsdf bsdf = new SurfaceBsdf();
+    /** The untextured material and index ratio the BSDF was last set to, or null (PathIntegrator). */
+    Material configuredMaterial;
+    double configuredEta;
     final BsdfSample bsdfSample = new BsdfSample();
     final double[] frame = new double[6];
     final lt.spindulys.sampling.PaddedStrata strata = new lt.spindulys.sampling.PaddedStrata();

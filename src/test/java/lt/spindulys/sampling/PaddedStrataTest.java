@@ -26,11 +26,10 @@ class PaddedStrataTest {
         PaddedStrata strata = new PaddedStrata();
         Rng rng = new Rng();
         double[] uv = new double[2];
-        for (int n : new int[] {1, 7, 16, 24, 64}) {
-            int rows = (int) Math.floor(Math.sqrt(n));
-            while (n % rows != 0) rows--;
-            int cols = n / rows;
-            boolean[] line = new boolean[n], square = new boolean[n];
+        for (int n : new int[] {1, 7, 16, 24, 64, 251}) {
+            int[] grid = PixelSampler.grid(n);
+            int cols = grid[0], rows = grid[1];
+            boolean[] line = new boolean[n], square = new boolean[cols * rows];
             for (int i = 0; i < n; i++) {
                 strata.start(42, 3, 5, i, n);
                 double u = strata.get1D(0, rng.seed(i));

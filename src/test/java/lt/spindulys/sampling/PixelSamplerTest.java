@@ -10,14 +10,13 @@ import org.junit.jupiter.params.provider.ValueSource;
 
 class PixelSamplerTest {
     @ParameterizedTest
-    @ValueSource(ints = {1, 2, 4, 6, 7, 9, 16})
+    @ValueSource(ints = {1, 2, 4, 6, 7, 9, 16, 251})
     void everyFilmStratumGetsExactlyOneSample(int n) {
         PixelSampler s = new PixelSampler(n);
         s.startPixel(42, 10, 20);
-        int cols = 0, rows;
-        for (int c = (int) Math.floor(Math.sqrt(n)); c >= 1; c--) if (n % c == 0) { cols = n / c; break; }
-        rows = n / cols;
-        boolean[] seen = new boolean[n];
+        int[] grid = PixelSampler.grid(n);
+        int cols = grid[0], rows = grid[1];
+        boolean[] seen = new boolean[cols * rows];
         for (int i = 0; i < n; i++) {
             double fx = s.filmX(i) - 10, fy = s.filmY(i) - 20;
             assertTrue(fx >= 0 && fx < 1 && fy >= 0 && fy < 1, "sample inside its pixel");
@@ -30,6 +29,21 @@ class PixelSamplerTest {
         boolean[] timeStrata = new boolean[n];
         for (int i = 0; i < n; i++) timeStrata[(int) (s.time(i) * n)] = true;
         for (boolean b : timeStrata) assertTrue(b, "time samples are stratified");
+    }
+
+    /** Counts that factor into a grid at most twice as wide as tall keep it; others, a nearly square padded grid. */
+    @Test
+    void gridsAreNearlySquare() {
+        assertArrayEquals(new int[] {3, 1}, PixelSampler.grid(3), "small counts as they always were");
+        assertArrayEquals(new int[] {4, 4}, PixelSampler.grid(16));
+        assertArrayEquals(new int[] {4, 2}, PixelSampler.grid(8));
+        assertArrayEquals(new int[] {3, 3}, PixelSampler.grid(7), "7 is prime: 9 cells, 2 of them left empty");
+        assertArrayEquals(new int[] {16, 16}, PixelSampler.grid(251));
+        for (int n = 1; n < 3000; n++) {
+            int[] g = PixelSampler.grid(n);
+            assertTrue((long) g[0] * g[1] >= n && (long) g[0] * g[1] < n + 2L * g[0] + 1, "n " + n);
+            assertTrue(n <= 4 || g[0] <= 2 * g[1], "n " + n + " is cut into strips");
+        }
     }
 
     @ParameterizedTest
