@@ -560,15 +560,7 @@ class GridPatchTest {
                 }
             }
         };
-        work.run(); // warm up: the scratch stack grows once, the JIT compiles
-        work.run();
-        var bean = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
-        long least = Long.MAX_VALUE;
-        for (int attempt = 0; attempt < 3 && least >= 4096; attempt++) { // the least of three: robust to a late compile
-            long before = bean.getCurrentThreadAllocatedBytes();
-            work.run();
-            least = Math.min(least, bean.getCurrentThreadAllocatedBytes() - before);
-        }
+        long least = lt.spindulys.SteadyAllocation.least(work, 3, 4096);
         assertTrue(least < 4096, "45,000 queries allocated " + least + " bytes");
         assertTrue(visits[0] > 0);
         assertEquals(8, ctx.stackTop, "the caller's stack entries are left as they were");

@@ -124,6 +124,26 @@ class CliTest {
         }
     }
 
+    /** The options override the scene: a path traced image differs from the Whitted one, its depth and clamp matter, and --integrator whitted restores the scene's image. */
+    @Test
+    void integratorOptionsOverrideTheScene() throws IOException {
+        Path scene = scene(SMALL.replace("settings { width 24 height 16 }", "settings { width 24 height 16 integrator path maxdepth 3 }"));
+        byte[][] images = new byte[5][];
+        String[][] options = {{}, {"--integrator", "whitted"}, {"--maxdepth", "0"}, {"--clamp", "0.01"}, {"--integrator", "whitted", "--maxdepth", "3"}};
+        for (int k = 0; k < options.length; k++) {
+            Path out = dir.resolve("int-" + k + ".pfm");
+            java.util.List<String> args = new java.util.ArrayList<>(java.util.List.of(scene.toString(), "-o", out.toString(), "--quiet"));
+            args.addAll(java.util.List.of(options[k]));
+            Run r = run(args.toArray(new String[0]));
+            assertEquals(0, r.status(), r.err());
+            images[k] = Files.readAllBytes(out);
+        }
+        assertFalse(java.util.Arrays.equals(images[0], images[1]), "path tracing differs from Whitted");
+        assertFalse(java.util.Arrays.equals(images[0], images[2]), "maxdepth 0 is direct light only");
+        assertFalse(java.util.Arrays.equals(images[0], images[3]), "the clamp takes energy");
+        assertArrayEquals(images[1], images[4], "Whitted at the scene's depth");
+    }
+
     @Test
     void statsPrintRaysAndThroughput() throws IOException {
         Run r = run(scene(SMALL).toString(), "-o", dir.resolve("a.png").toString(), "--stats", "--threads", "1");
@@ -195,6 +215,9 @@ class CliTest {
                 {"render: --shutter expects OPEN,CLOSE (two numbers separated by a comma), found '1'", scene.toString(), "--shutter", "1"},
                 {"render: --shutter must close after it opens, found '1,0'", scene.toString(), "--shutter", "1,0"},
                 {"render: --timesteps must be between 1 and 65536, found 0", scene.toString(), "--timesteps", "0"},
+                {"render: --integrator expects one of whitted, path, found 'photon'", scene.toString(), "--integrator", "photon"},
+                {"render: --maxdepth must be between 0 and 64, found 65", scene.toString(), "--maxdepth", "65"},
+                {"render: --clamp must be between 0 and 100, found -1", scene.toString(), "--clamp", "-1"},
                 {"render: --spp 3 is not a multiple of --timesteps 2 (each time step renders spp / timesteps per pixel)", scene.toString(),
                         "--spp", "3", "--timesteps", "2", "-o", dir.resolve("x.png").toString()},
         };
@@ -241,7 +264,7 @@ class CliTest {
         assertEquals(2, run("bench", "--cell-timeout", "0").status());
         Run unknown = run("bench", "--only", "nope");
         assertEquals(2, unknown.status());
-        assertEquals("render: unknown bench row 'nope' (rows: refine-bishop, refine-loop-bishop, torus-1k, torus-16k, torus-250k, torus-1m, knot-1m, torus-1m-close, soft-shadow, soft-shadow-light16, soft-shadow-16k, csg-subdiv, motion-blur, "
+        assertEquals("render: unknown bench row 'nope' (rows: refine-bishop, refine-loop-bishop, torus-1k, torus-16k, torus-250k, torus-1m, knot-1m, torus-1m-close, soft-shadow, soft-shadow-light16, soft-shadow-16k, path-torus, csg-subdiv, motion-blur, "
                 + "adaptive-close, adaptive-huge, adaptive-lazy, adaptive-cache, torus-1k-lazy, torus-1k-combined, torus-1k-projected, "
                 + "torus-1k-close, adaptive-warm, torus-1k-level2, torus-1k-level2-lazy, viewer; "
                 + "groups: adaptive, viewer)" + System.lineSeparator(), unknown.err());

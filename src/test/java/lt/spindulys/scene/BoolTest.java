@@ -357,12 +357,7 @@ class BoolTest {
                 u.spans(r, out, ctx);
             }
         };
-        work.run(); // warm up: pooled buffers and stacks grow once, the JIT compiles
-        work.run();
-        var bean = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
-        long before = bean.getCurrentThreadAllocatedBytes();
-        work.run();
-        long allocated = bean.getCurrentThreadAllocatedBytes() - before;
+        long allocated = lt.spindulys.SteadyAllocation.least(work, 5, 4096);
         assertTrue(allocated < 4096, "30,000 queries allocated " + allocated + " bytes");
     }
 

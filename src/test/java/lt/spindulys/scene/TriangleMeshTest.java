@@ -443,12 +443,7 @@ class TriangleMeshTest {
                 m.spans(r, out, ctx);
             }
         };
-        work.run(); // warm up: scratch arrays grow once, the JIT compiles
-        work.run();
-        var bean = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
-        long before = bean.getCurrentThreadAllocatedBytes();
-        work.run();
-        long allocated = bean.getCurrentThreadAllocatedBytes() - before;
+        long allocated = lt.spindulys.SteadyAllocation.least(work, 5, 4096);
         assertTrue(allocated < 4096, "60,000 queries allocated " + allocated + " bytes");
     }
 
