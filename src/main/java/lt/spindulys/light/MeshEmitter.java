@@ -35,10 +35,14 @@ public final class MeshEmitter extends Light {
     private final double[] areas;
     /** The sum of area times brightness over the emissive triangles. */
     private final double weight;
+    /** The distinct materials of the emissive triangles: a hit on the mesh with another material was not sampled. */
+    private final Material[] materials;
 
-    private MeshEmitter(TriangleMesh mesh, double[] corners, double[] radiance, double[] normals, double[] areas, double[] cumulative, double weight) {
+    private MeshEmitter(TriangleMesh mesh, double[] corners, double[] radiance, double[] normals, double[] areas, double[] cumulative,
+                        double weight, Material[] materials) {
         super(1, false);
         this.mesh = mesh;
+        this.materials = materials;
         this.corners = corners;
         this.radiance = radiance;
         this.normals = normals;
@@ -74,8 +78,10 @@ public final class MeshEmitter extends Light {
             double[] local = new double[9];
             double sum = 0;
             int k = 0;
+            java.util.Set<Material> sampled = java.util.Collections.newSetFromMap(new java.util.IdentityHashMap<>());
             for (int t = 0; t < n; t++) {
                 if (!uniformEmission(mesh.material(t, 0), point, rgb) || !(brightness(rgb) > 0)) continue;
+                sampled.add(mesh.material(t, 0));
                 mesh.corners(t, local);
                 for (int c = 0; c < 3; c++) {
                     Vec3 w = toWorld.point(new Vec3(local[3 * c], local[3 * c + 1], local[3 * c + 2]));
@@ -97,7 +103,7 @@ public final class MeshEmitter extends Light {
             if (!(sum > 0)) return null; // every emissive triangle degenerate
             for (int i = 0; i < count; i++) cumulative[i] /= sum;
             cumulative[count - 1] = 1;
-            return new MeshEmitter(mesh, corners, radiance, normals, areas, cumulative, sum);
+            return new MeshEmitter(mesh, corners, radiance, normals, areas, cumulative, sum, sampled.toArray(new Material[0]));
         }
     }
 
@@ -119,6 +125,19 @@ public final class MeshEmitter extends Light {
 
     /** The scalar by which triangles are picked and densities are measured: the mean of the channels. */
     static double brightness(double[] rgb) { return (rgb[0] + rgb[1] + rgb[2]) / 3; }
+
+    /**
+     * Whether the triangles of material m are among the ones this light samples: a hit on the
+     * mesh is weighed against the light's density only then (a triangle whose emission a texture
+     * varies is found by paths alone).
+     *
+     * @param m the material at a hit on the mesh
+     * @return true if its triangles are sampled
+     */
+    public boolean samples(Material m) {
+        for (Material x : materials) if (x == m) return true;
+        return false;
+    }
 
     /**
      * The mesh whose triangles these are.

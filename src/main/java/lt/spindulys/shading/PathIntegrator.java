@@ -198,7 +198,7 @@ public final class PathIntegrator implements Integrator {
             if (v.emissionR > 0 || v.emissionG > 0 || v.emissionB > 0) {
                 double w = 1;
                 MeshEmitter emitter = weighed ? lights.emitterOf(hit.object) : null;
-                if (emitter != null) { // a light the vertex left could have sampled
+                if (emitter != null && emitter.samples(m)) { // a light the vertex left could have sampled
                     double d = hit.t * dlen, cos = Math.abs(sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz);
                     double brightness = (v.emissionR + v.emissionG + v.emissionB) / 3;
                     w = cos > 0 ? powerHeuristic(bsdfPdf, pick * emitter.pdfAt(brightness, d * d, cos)) : 1;

@@ -21,6 +21,7 @@ import lt.spindulys.scene.Scene;
 import lt.spindulys.scene.SceneBuilder;
 import lt.spindulys.scene.Sphere;
 import lt.spindulys.scene.Triangle;
+import lt.spindulys.scene.TriangleMesh;
 import lt.spindulys.texture.Channel;
 import lt.spindulys.texture.TextureImage;
 import lt.spindulys.texture.Uniform;
@@ -195,6 +196,31 @@ class PathDirectLightTest {
         SceneBuilder sphereEmitting = plane(GLOSSY);
         sphereEmitting.add(new Sphere(ball, 0.5).material(emitter(radiance)));
         assertAgree(radiance(sphereLit.build(), eye, down, 12), radiance(sphereEmitting.build(), eye, down, 13, 4 * SAMPLES), "sphere light against an emitting sphere");
+    }
+
+    /**
+     * An emitting mesh is a light: a 2 x 1 quad (two triangles of a {@link TriangleMesh}) 2 above
+     * the point gives the rectangle light's irradiance, found by its own light samples and by
+     * BSDF samples weighed against them (MIS), whichever face it shows; and the same quad as two
+     * loose triangles, found by BSDF samples alone, agrees.
+     */
+    @Test
+    void anEmittingMeshLightsLikeTheRectangleItCovers() {
+        double radiance = 2, a = 1 / 2.0, c = 0.5 / 2.0;
+        double f = (a / Math.sqrt(1 + a * a) * Math.atan(c / Math.sqrt(1 + a * a)) + c / Math.sqrt(1 + c * c) * Math.atan(a / Math.sqrt(1 + c * c))) / (2 * Math.PI);
+        double expected = diffuse(radiance * 4 * Math.PI * f);
+        for (boolean facingDown : new boolean[] {true, false}) {
+            double[] corners = {-1, 2, -0.5, 1, 2, -0.5, 1, 2, 0.5, -1, 2, 0.5};
+            int[] quad = facingDown ? new int[] {0, 1, 2, 3} : new int[] {3, 2, 1, 0};
+            TriangleMesh mesh = new TriangleMesh(new lt.spindulys.mesh.MeshData(corners, null, null, new int[] {4}, quad, null, null, "quad"));
+            mesh.material(emitter(radiance));
+            PixelStatistics sampled = belowTheLight(plane(DIFFUSE).add(mesh), facingDown ? 14 : 15);
+            sampled.assertMean(expected, "emitting mesh, facing " + (facingDown ? "down" : "up"));
+        }
+        PixelStatistics hitOnly = belowTheLight(plane(DIFFUSE)
+                .add(triangle(new Vec3(-1, 2, -0.5), new Vec3(1, 2, -0.5), new Vec3(1, 2, 0.5), emitter(radiance)))
+                .add(triangle(new Vec3(-1, 2, -0.5), new Vec3(1, 2, 0.5), new Vec3(-1, 2, 0.5), emitter(radiance))), 16);
+        hitOnly.assertMean(expected, "emitting triangles found by paths alone");
     }
 
     private static GObject triangle(Vec3 a, Vec3 b, Vec3 c, Material m) {
