@@ -40,21 +40,10 @@ class PathDeterminismTest {
         SceneBuilder b = scene(7);
         FrameBuffer whole = RenderJob.of(b).threads(2).run().frame();
         for (PixelRegion r : List.of(new PixelRegion(3, 20, 5, 6), new PixelRegion(28, 29, 18, 19), new PixelRegion(0, 17, 2, 19))) {
-            assertRegionOfWhole(whole, r, RenderJob.of(b).region(r).threads(3).run().frame());
+            RegionRenderTest.assertRegionOfWhole(whole, r, RenderJob.of(b).region(r).threads(3).run().frame());
         }
         for (int i = 1; i <= 3; i++) {
-            assertRegionOfWhole(whole, PixelRegion.band(i, 3, 29, 19), RenderJob.of(b).tile(i, 3).threads(1).run().frame());
-        }
-    }
-
-    private static void assertRegionOfWhole(FrameBuffer whole, PixelRegion r, FrameBuffer part) {
-        assertEquals(r.width() + "x" + r.height(), part.width() + "x" + part.height());
-        for (int y = r.y0(); y < r.y1(); y++) {
-            for (int x = r.x0(); x < r.x1(); x++) {
-                for (int c = 0; c < 3; c++) {
-                    assertEquals(whole.get(x, y, c), part.get(x - r.x0(), y - r.y0(), c), 0.0, "pixel " + x + "," + y + " of region " + r);
-                }
-            }
+            RegionRenderTest.assertRegionOfWhole(whole, PixelRegion.band(i, 3, 29, 19), RenderJob.of(b).tile(i, 3).threads(1).run().frame());
         }
     }
 

@@ -43,7 +43,8 @@ class RegionRenderTest {
         return SceneParser.parse(p);
     }
 
-    private static void assertRegionOfWhole(FrameBuffer whole, PixelRegion r, FrameBuffer part) {
+    /** Asserts that {@code part} holds exactly the pixels of region r of {@code whole}. */
+    static void assertRegionOfWhole(FrameBuffer whole, PixelRegion r, FrameBuffer part) {
         assertEquals(r.width() + "x" + r.height(), part.width() + "x" + part.height());
         for (int y = r.y0(); y < r.y1(); y++) {
             for (int x = r.x0(); x < r.x1(); x++) {
