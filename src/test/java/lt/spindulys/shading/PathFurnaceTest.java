@@ -152,6 +152,25 @@ class PathFurnaceTest {
      * = E / (1 - a) everywhere, which exercises every bounce, the throughput channel by channel
      * and Russian roulette (a path's throughput falls below 1 here, unlike in the furnaces above).
      */
+    /**
+     * Rough glass (principled, transmission 1, roughness 0.3: GGX alpha 0.09) in a furnace. A
+     * single-scattering microfacet model loses the light that would scatter between microfacets,
+     * which at this width is well below the noise here; so it too must read 1.
+     */
+    @Test
+    void roughGlassDisappearsInAFurnace() throws InterruptedException {
+        Material rough = Material.builder().model(Material.Model.PRINCIPLED).color(Color.WHITE).transmission(1).roughness(0.3).ior(1.5).build();
+        assertFlat(furnace(rough, true, 5), ONE, "rough glass, sky as a light");
+        assertFlat(furnace(rough, false, 6), ONE, "rough glass, sky only seen");
+    }
+
+    /** A white principled diffuse surface (roughness 1, no metal, no glass) under its dielectric coat: the coat's Fresnel coupling keeps energy, so it reads 1 too, within the noise. */
+    @Test
+    void whitePrincipledDiffuseDisappearsInAFurnace() throws InterruptedException {
+        Material plastic = Material.builder().model(Material.Model.PRINCIPLED).color(Color.WHITE).roughness(1).build();
+        assertFlat(furnace(plastic, true, 7), ONE, "white principled surface, sky as a light");
+    }
+
     @Test
     void insideAnEmittingSphereRadianceIsEmissionOverOneMinusAlbedo() throws InterruptedException {
         double[] albedo = {0.5, 0.8, 0.2};
