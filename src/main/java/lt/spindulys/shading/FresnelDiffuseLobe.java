@@ -10,18 +10,21 @@ package lt.spindulys.shading;
  * <p>Why this form: it is symmetric in wo and wi, so reciprocal; and the normalisation makes its
  * albedo exactly c (1 - F(|cos wo|)), since int (1 - F(cos wi)) cos wi dwi / pi = 1 - F_avg. The
  * coat above reflects exactly F(|cos wo|) when smooth, so a smooth coat plus a white base is
- * exactly 1. A rough single-scattering GGX coat, with an index of at least 1, reflects no more
- * than that: masking loses energy and the microfacets wo sees are on average less grazing. That
- * is measured (PrincipledBsdfTest, indices 1.1 to 2.4, roughness up to 1, down to grazing), not
- * proved; with an index below 1 total internal reflection breaks it, which is why
- * {@link PrincipledBsdf} gives its coat an index of at least 1. A tabulated coat albedo would also recover the energy the rough
- * coat loses, at the price of a three-dimensional table; the Fresnel form needs none.
+ * exactly 1. A rough single-scattering GGX coat reflects less than F (masking loses energy and
+ * the microfacets wo sees are on average less grazing: 3 % of the light at roughness 1), so
+ * under a rough coat F is replaced by the coat's own tabulated albedo E
+ * ({@link #setUnderRoughCoat}): what the coat does not reflect, the base receives, and a white
+ * principled surface again reflects everything, to the table's accuracy. The coat's index is at
+ * least 1 ({@link PrincipledBsdf}); above the table's 3 it is clamped.
  * Sampled with the cosine-weighted hemisphere on wo's side; two-sided.
  */
 final class FresnelDiffuseLobe implements Bsdf {
     // Not final only so that SurfaceBsdf can re-parameterise its own instance (set).
     private double ior;
     private double fr, fg, fb;
+    /** Whether the coat is rough: then 1 - E of the coat's albedo table replaces 1 - F. */
+    private boolean roughCoat;
+    private double coatAlpha, coatIndexCoord, coatRoughnessCoord;
 
     FresnelDiffuseLobe(double r, double g, double b, double ior) {
         set(r, g, b, ior, averageFresnel(ior));
@@ -35,7 +38,26 @@ final class FresnelDiffuseLobe implements Bsdf {
      */
     void set(double r, double g, double b, double ior, double averageFresnel) {
         this.ior = ior;
-        double transmitted = 1 - averageFresnel;
+        roughCoat = false;
+        scale(r, g, b, 1 - averageFresnel);
+    }
+
+    /**
+     * Re-parameterises under a rough coat of the given GGX alpha: the base takes 1 - E(|cos|)
+     * on either side, E the coat's tabulated albedo ({@link MicrofacetAlbedo}), normalised by
+     * 1 - E_avg, so the coat and a white base add up to 1 whatever the coat loses to single
+     * scattering, and f stays symmetric.
+     */
+    void setUnderRoughCoat(double r, double g, double b, double ior, double alpha) {
+        this.ior = ior;
+        roughCoat = true;
+        coatAlpha = alpha;
+        coatIndexCoord = MicrofacetAlbedo.indexCoordinate(MicrofacetAlbedo.COAT, ior);
+        coatRoughnessCoord = MicrofacetAlbedo.roughnessCoordinate(alpha);
+        scale(r, g, b, 1 - MicrofacetAlbedo.coatAverage(coatIndexCoord, coatRoughnessCoord));
+    }
+
+    private void scale(double r, double g, double b, double transmitted) {
         // When almost nothing crosses the coat there is nothing to scatter: no diffuse at all rather than 0/0.
         double scale = transmitted > 1e-12 ? 1 / (Math.PI * transmitted) : 0;
         fr = r * scale; fg = g * scale; fb = b * scale;
@@ -69,8 +91,15 @@ final class FresnelDiffuseLobe implements Bsdf {
     @Override
     public void eval(double wox, double woy, double woz, double wix, double wiy, double wiz, double[] rgbOut) {
         if (!(woz * wiz > 0)) { rgbOut[0] = 0; rgbOut[1] = 0; rgbOut[2] = 0; return; }
-        double t = (1 - DielectricBsdf.fresnel(Math.abs(woz), ior)) * (1 - DielectricBsdf.fresnel(Math.abs(wiz), ior));
+        double t = transmitted(woz) * transmitted(wiz);
         rgbOut[0] = fr * t; rgbOut[1] = fg * t; rgbOut[2] = fb * t;
+    }
+
+    /** {@return what the coat lets through at cosine cos}: 1 - F, or 1 - E under a rough coat. */
+    private double transmitted(double cos) {
+        if (!roughCoat) return 1 - DielectricBsdf.fresnel(Math.abs(cos), ior);
+        return 1 - MicrofacetAlbedo.lookup(MicrofacetAlbedo.COAT, coatIndexCoord, coatRoughnessCoord,
+                MicrofacetAlbedo.muCoordinate(cos, coatAlpha));
     }
 
     @Override

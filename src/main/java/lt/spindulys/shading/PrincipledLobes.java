@@ -55,7 +55,8 @@ final class PrincipledLobes implements LobeMixture.Estimator {
         metal.set(baseR, baseG, baseB, roughness);
         glass.set(ior, roughness, baseR, baseG, baseB);
         coat.set(coatIor, roughness);
-        diffuse.set(baseR, baseG, baseB, coatIor, averageFresnel(coatIor));
+        if (coat.isSpecular()) diffuse.set(baseR, baseG, baseB, coatIor, averageFresnel(coatIor));
+        else diffuse.setUnderRoughCoat(baseR, baseG, baseB, coatIor, roughness * roughness);
         mixture.set(METAL, metal, metallic);
         mixture.set(GLASS, glass, (1 - metallic) * transmission);
         mixture.set(COAT, coat, rest);

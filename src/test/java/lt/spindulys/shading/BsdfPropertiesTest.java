@@ -70,7 +70,8 @@ class BsdfPropertiesTest {
                     sumSq += w * w;
                 }
                 double mean = sum / n, sigma = Math.sqrt(Math.max(0, sumSq / n - mean * mean) / n);
-                assertTrue(mean <= 1 + 4 * sigma + 1e-9, bsdf + " cos " + cos + ": albedo " + mean + " +- " + sigma);
+                // The rough dielectric is divided by its tabulated albedo: 1 to the table's accuracy.
+                assertTrue(mean <= 1 + 4 * sigma + 3e-3, bsdf + " cos " + cos + ": albedo " + mean + " +- " + sigma);
             }
         }
     }
@@ -156,11 +157,20 @@ class BsdfPropertiesTest {
         assertEquals(0, DielectricBsdf.fresnel(0.5, 1), 0);
     }
 
+    /**
+     * Reflection is reciprocal. The rough dielectric is tested without its energy compensation:
+     * dividing by the albedo of wo's direction, as Cycles does, gives up exact reciprocity
+     * (f(wo, wi) E(wo) = f(wi, wo) E(wi)) for energy conservation.
+     */
     @Test
     void reflectionIsReciprocal() {
         SplittableRandom rng = new SplittableRandom(5);
         double[] a = new double[3], b = new double[3];
-        for (Bsdf bsdf : ROUGH) {
+        List<Bsdf> cores = new java.util.ArrayList<>(ROUGH.subList(0, 3));
+        cores.add(DielectricBsdf.uncompensated(1.5, 0.3));
+        cores.add(DielectricBsdf.uncompensated(1.5, 0.7));
+        cores.add(DielectricBsdf.uncompensated(1 / 1.33, 0.5));
+        for (Bsdf bsdf : cores) {
             for (int i = 0; i < 20_000; i++) {
                 double[] wo = SphereChiSquare.uniformDirection(rng), wi = SphereChiSquare.uniformDirection(rng);
                 if (wo[2] * wi[2] < 0) { wi[2] = -wi[2]; }
@@ -171,6 +181,52 @@ class BsdfPropertiesTest {
                     SphereChiSquare.assertRelative(a[c], b[c], 1e-9, bsdf + " reciprocity");
                 }
             }
+        }
+    }
+
+    /** Stratified estimate of the energy albedo (transmission's 1/eta'^2 undone) for wo at signed cosine cos. */
+    private static double albedo(Bsdf bsdf, double cos) {
+        double[] wo = BsdfChiSquareTest.wo(cos);
+        SplittableRandom rng = new SplittableRandom(Double.doubleToLongBits(cos));
+        int strata = 160;
+        BsdfSample s = new BsdfSample();
+        double sum = 0;
+        for (int i = 0; i < strata; i++) {
+            for (int j = 0; j < strata; j++) {
+                if (!bsdf.sample(wo[0], wo[1], wo[2], rng.nextDouble(), (i + rng.nextDouble()) / strata, (j + rng.nextDouble()) / strata, s)) continue;
+                sum += s.f[1] * Math.abs(s.wiz) / s.pdf * s.eta * s.eta;
+            }
+        }
+        return sum / (strata * strata);
+    }
+
+    /**
+     * The rough dielectric, divided by its single-scattering albedo, keeps all the energy from
+     * either side, down to grazing, where the uncompensated one loses up to a half.
+     */
+    @Test
+    void compensatedRoughDielectricConservesEnergy() {
+        for (double ior : new double[] {1.5, 1.33, 2.4, 1 / 1.5}) {
+            for (double roughness : new double[] {0.1, 0.3, 0.6, 1}) {
+                for (double cos : new double[] {1, 0.5, 0.2, 0.05, -0.05, -0.3, -0.8}) {
+                    DielectricBsdf glass = new DielectricBsdf(ior, roughness, 1, 1, 1);
+                    assertEquals(1, albedo(glass, cos), 3e-3, "ior " + ior + " roughness " + roughness + " cos " + cos
+                            + " (uncompensated " + albedo(DielectricBsdf.uncompensated(ior, roughness), cos) + ")");
+                }
+            }
+        }
+    }
+
+    /** Across the smooth threshold the albedo stays 1: no jump between the delta lobes and the compensated rough ones. */
+    @Test
+    void compensatedDielectricJoinsTheSmoothOne() {
+        double threshold = Math.sqrt(MicrofacetDistribution.SMOOTH_ALPHA);
+        DielectricBsdf rough = new DielectricBsdf(1.5, threshold * 1.0001, 1, 1, 1), smooth = new DielectricBsdf(1.5, threshold * 0.9999, 1, 1, 1);
+        assertFalse(rough.isSpecular());
+        assertTrue(smooth.isSpecular());
+        for (double cos : new double[] {1, 0.4, 0.1, 0.02, -0.9, -0.5}) {
+            assertEquals(1, albedo(smooth, cos), 1e-12, "smooth, cos " + cos);
+            assertEquals(1, albedo(rough, cos), 3e-3, "rough, cos " + cos);
         }
     }
 

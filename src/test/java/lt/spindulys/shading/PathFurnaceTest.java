@@ -147,6 +147,29 @@ class PathFurnaceTest {
     }
 
     /**
+     * Rough glass (principled, transmission 1, roughness 0.3: GGX alpha 0.09) in a furnace. A
+     * single-scattering microfacet model loses the light that would scatter between microfacets
+     * (the whole image read 0.978); divided by its tabulated albedo it keeps it, so it reads 1.
+     */
+    @Test
+    void roughGlassDisappearsInAFurnace() throws InterruptedException {
+        Material rough = Material.builder().model(Material.Model.PRINCIPLED).color(Color.WHITE).transmission(1).roughness(0.3).ior(1.5).build();
+        assertFlat(furnace(rough, true, 5), ONE, "rough glass, sky as a light");
+        assertFlat(furnace(rough, false, 6), ONE, "rough glass, sky only seen");
+    }
+
+    /**
+     * A white principled diffuse surface (roughness 1, no metal, no glass) under its dielectric
+     * coat: the base takes what the rough coat's tabulated albedo leaves, so nothing is lost
+     * (with the smooth Fresnel coupling it read 0.970).
+     */
+    @Test
+    void whitePrincipledDiffuseDisappearsInAFurnace() throws InterruptedException {
+        Material plastic = Material.builder().model(Material.Model.PRINCIPLED).color(Color.WHITE).roughness(1).build();
+        assertFlat(furnace(plastic, true, 7), ONE, "white principled surface, sky as a light");
+    }
+
+    /**
      * The camera at the centre of a closed sphere whose inside emits E (a uniform texture on the
      * emission channel) and reflects diffusely with albedo a: the radiance is E (1 + a + a^2 + ...)
      * = E / (1 - a) everywhere, which exercises every bounce, the throughput channel by channel

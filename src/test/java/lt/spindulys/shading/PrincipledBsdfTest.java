@@ -127,7 +127,10 @@ class PrincipledBsdfTest {
                 for (PrincipledBsdf bsdf : sets) {
                     for (double cos : new double[] {1, 0.7, 0.3, 0.1, 0.02, 1e-3, -0.5}) {
                         double[] a = albedo(bsdf, cos, 20_000, rng);
-                        assertTrue(a[0] <= 1 + 4 * a[1] + 1e-9, bsdf + " cos " + cos + ": albedo " + a[0] + " +- " + a[1]);
+                        // Rough glass and a rough coat's base follow a tabulated albedo: 1 to its accuracy,
+                        // 3e-3, at the very horizon 1e-2 (0.75 % at cosine 1e-3, index 1.1, roughness 1).
+                        double tableError = Math.abs(cos) < 0.01 ? 1e-2 : 3e-3;
+                        assertTrue(a[0] <= 1 + 4 * a[1] + tableError, bsdf + " cos " + cos + ": albedo " + a[0] + " +- " + a[1]);
                     }
                 }
             }
@@ -163,6 +166,8 @@ class PrincipledBsdfTest {
         SplittableRandom rng = new SplittableRandom(25);
         double[] a = new double[3], b = new double[3];
         for (PrincipledBsdf bsdf : roughSets()) {
+            // Rough glass is divided by its albedo from wo, which gives up exact reciprocity (as in Cycles).
+            if (bsdf.transmission() > 0) continue;
             for (int i = 0; i < 20_000; i++) {
                 double[] wo = SphereChiSquare.uniformDirection(rng), wi = SphereChiSquare.uniformDirection(rng);
                 if (wo[2] * wi[2] < 0) wi[2] = -wi[2];
