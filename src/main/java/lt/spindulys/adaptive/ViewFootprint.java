@@ -30,6 +30,10 @@ public final class ViewFootprint {
     /** A flat film (a pinhole's, a thin lens's centre rays): its axes in the image plane and pixels per unit of tangent; null otherwise. */
     private double[] film;
 
+    /** Why adaptive subdivision refuses an orthographic camera. */
+    public static final String ORTHOGRAPHIC_REFUSAL = "adaptive subdivision sizes edges by their angle at the eye, and an orthographic camera has no eye:"
+            + " use method uniform with a level";
+
     private ViewFootprint(double[] eye, double[] axis, double k0, double slack, double minCos, double[] planes) {
         ex = eye[0]; ey = eye[1]; ez = eye[2];
         ax = axis[0]; ay = axis[1]; az = axis[2];
@@ -50,11 +54,13 @@ public final class ViewFootprint {
      * @param width image width in pixels, at least 1
      * @param height image height in pixels, at least 1
      * @return the footprint
-     * @throws IllegalArgumentException if a size is not positive or the corner rays are not in front of the camera
+     * @throws IllegalArgumentException if a size is not positive, the corner rays are not in front of the camera,
+     *         or the camera's rays are parallel (orthographic: there is no eye to measure angles at)
      */
     public static ViewFootprint of(Camera camera, int width, int height) {
         Objects.requireNonNull(camera, "camera");
         if (width < 1 || height < 1) throw new IllegalArgumentException("image size must be at least 1x1, found " + width + "x" + height);
+        if (camera.pixelFootprint(width, height).width() > 0) throw new IllegalArgumentException(ORTHOGRAPHIC_REFUSAL);
         double aspect = (double) width / height;
         Ray r = new Ray();
         camera.generateRay(0.5, 0.5, aspect, 0, 0, 0, r);

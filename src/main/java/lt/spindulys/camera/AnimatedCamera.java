@@ -59,6 +59,9 @@ public final class AnimatedCamera implements Camera {
 
     @Override public boolean moves() { return true; }
 
+    /** {@inheritDoc} The keys neither scale nor bend the rays: the base camera's. */
+    @Override public PixelFootprint pixelFootprint(int width, int height) { return base.pixelFootprint(width, height); }
+
     /**
      * The camera standing still where it is at {@code time}: for what needs one view of the
      * frame, such as choosing adaptive subdivision levels.
@@ -67,6 +70,13 @@ public final class AnimatedCamera implements Camera {
      * @return the camera frozen at that time
      */
     public Camera at(double time) {
-        return (fx, fy, aspect, lensU, lensV, t, out) -> generateRay(fx, fy, aspect, lensU, lensV, time, out);
+        return new Camera() {
+            @Override public void generateRay(double fx, double fy, double aspect, double lensU, double lensV, double t, Ray out) {
+                AnimatedCamera.this.generateRay(fx, fy, aspect, lensU, lensV, time, out);
+            }
+
+            // An orthographic base stays orthographic when frozen.
+            @Override public PixelFootprint pixelFootprint(int width, int height) { return base.pixelFootprint(width, height); }
+        };
     }
 }

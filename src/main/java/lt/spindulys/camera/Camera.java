@@ -43,6 +43,17 @@ public interface Camera {
     default boolean moves() { return false; }
 
     /**
+     * How wide one pixel's footprint is at a distance along this camera's rays, for sizing
+     * texture lookups. The default measures the angle between neighbouring pixels' rays, right
+     * for any camera whose rays leave one point; a camera with parallel rays overrides it.
+     *
+     * @param width  image width in pixels, at least 1
+     * @param height image height in pixels, at least 1
+     * @return the footprint model
+     */
+    default PixelFootprint pixelFootprint(int width, int height) { return PixelFootprint.measuredAngle(this, width, height); }
+
+    /**
      * This camera with another lens (for a lens given on the command line): a pinhole becomes a
      * thin lens focused on its look-at point unless a focus is given, a thin lens keeps what is
      * not given, and a camera carried by keys changes the lens of the camera it carries.
@@ -52,6 +63,7 @@ public interface Camera {
      * @return the camera with that lens
      * @throws IllegalArgumentException if a value is out of its range
      * @throws UnsupportedOperationException if this kind of camera has no lens to change
+     * @throws IllegalArgumentException also if the camera cannot have a lens (an orthographic one)
      */
     default Camera withLens(Double aperture, Double focus) {
         throw new UnsupportedOperationException(getClass().getName() + " has no lens to change");

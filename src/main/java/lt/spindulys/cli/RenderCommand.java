@@ -385,7 +385,12 @@ final class RenderCommand {
         SceneBuilder b = read.copy().settings(settings(read.settings()));
         if (aperture != null || focus != null) {
             // A pinhole becomes a thin lens focused on its look-at point unless --focus says otherwise.
-            b.camera((read.camera() != null ? read.camera() : SceneBuilder.DEFAULT_CAMERA).withLens(aperture, focus));
+            try {
+                b.camera((read.camera() != null ? read.camera() : SceneBuilder.DEFAULT_CAMERA).withLens(aperture, focus));
+            } catch (IllegalArgumentException e) {
+                // An orthographic camera has no lens to give.
+                throw new UsageException((aperture != null ? "--aperture" : "--focus") + ": " + e.getMessage());
+            }
         }
         return b;
     }

@@ -49,6 +49,8 @@ final class SceneAssetCache {
     private final Map<SubdivKey, SubdivisionSurface> surfaces = new HashMap<>();
     /** Adaptive surfaces by control mesh and scheme (level -1): later statements share the first one's refiner. */
     private final Map<SubdivKey, AdaptiveSubdivisionSurface> adaptiveSurfaces = new HashMap<>();
+    /** The first subdiv block's 'method' key that chose an adaptive method, or null: such a surface needs a perspective view. */
+    private Prop firstAdaptiveMethod;
     /** What each OBJ file read says about materials (not the mesh, which is not kept here). */
     private final Map<Path, MaterialRefs> objMaterials = new HashMap<>();
 
@@ -253,6 +255,9 @@ final class SceneAssetCache {
         return all;
     }
 
+    /** {@return the first subdiv block's 'method' key that chose an adaptive method, or null if none did} */
+    Prop firstAdaptiveMethod() { return firstAdaptiveMethod; }
+
     /**
      * A subdivision surface: the control mesh from an OBJ (with its tags) or a Workframe .dat
      * file, an optional .tex unwrap as its UVs, the block's scheme keys (the scheme itself among
@@ -277,6 +282,7 @@ final class SceneAssetCache {
             throw err.error(positionsProp.at(), "'positions' needs method uniform: the adaptive methods (projected, lazy, combined) place the vertices"
                     + " where the refinement puts them");
         }
+        if (!method.equals("uniform") && firstAdaptiveMethod == null) firstAdaptiveMethod = p.prop("method");
         if (method.equals("uniform")) {
             for (Prop adaptiveOnly : new Prop[] {target, levels, maxLevel}) {
                 if (adaptiveOnly != null) {

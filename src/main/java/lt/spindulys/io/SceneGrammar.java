@@ -195,11 +195,14 @@ final class SceneGrammar {
 
     // A thin lens when any of the lens keys is given, else a pinhole. 'focus' and 'focuspoint'
     // exclude each other (checked by the parser); without either the look-at point is in focus.
+    // 'projection orthographic' sees 'width' scene units across and takes neither fov nor lens keys.
     static final Block CAMERA = new Block("camera", Category.CAMERA, false, List.of(
             req("eye", Kind.VECTOR),
             req("lookat", Kind.VECTOR),
             opt("up", Kind.VECTOR, Vec3.Y),
+            choice("projection", "perspective", "perspective", "orthographic"),
             opt("fov", Kind.NUMBER, 45.0),
+            opt("width", Kind.NUMBER),
             opt("aperture", Kind.NUMBER, 0.0),
             opt("focus", Kind.NUMBER),
             opt("focuspoint", Kind.VECTOR),

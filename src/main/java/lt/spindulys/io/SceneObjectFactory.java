@@ -11,6 +11,7 @@ import lt.spindulys.scene.AcceleratorKind;
 import lt.spindulys.scene.IntegratorKind;
 import lt.spindulys.scene.AdaptiveSettings;
 import lt.spindulys.camera.Camera;
+import lt.spindulys.camera.OrthographicCamera;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.camera.ThinLensCamera;
 import lt.spindulys.image.Aov;
@@ -230,6 +231,9 @@ final class SceneObjectFactory {
     }
 
     private Camera restingCamera(Props p) {
+        if ("orthographic".equals(p.get("projection"))) return orthographicCamera(p);
+        Prop width = p.prop("width");
+        if (width != null) throw err.error(width.at(), "'width' sizes an orthographic view: it needs 'projection orthographic' (a perspective camera is sized by 'fov')");
         PinholeCamera view;
         try {
             view = new PinholeCamera(p.vec("eye"), p.vec("lookat"), p.vec("up"), p.num("fov"));
@@ -256,6 +260,24 @@ final class SceneObjectFactory {
         }
         try {
             return new ThinLensCamera(view, p.num("aperture"), distance, LensPattern.fromKeyword((String) p.get("lens")));
+        } catch (IllegalArgumentException e) {
+            throw err.blame(p, e);
+        }
+    }
+
+    /** camera { projection orthographic  width W ... }: parallel rays, no field of view and no lens. */
+    private Camera orthographicCamera(Props p) {
+        Prop width = p.prop("width");
+        if (width == null) throw err.error(p.prop("projection").at(), "an orthographic camera needs 'width': the width of the view in scene units");
+        for (String perspectiveOnly : new String[] {"fov", "aperture", "focus", "focuspoint", "lens"}) {
+            Prop given = p.prop(perspectiveOnly);
+            if (given != null) {
+                throw err.error(given.at(), "'" + perspectiveOnly + "' needs a perspective camera: an orthographic one has "
+                        + (perspectiveOnly.equals("fov") ? "'width' instead" : "no lens, so everything is sharp"));
+            }
+        }
+        try {
+            return new OrthographicCamera(p.vec("eye"), p.vec("lookat"), p.vec("up"), (Double) width.value());
         } catch (IllegalArgumentException e) {
             throw err.blame(p, e);
         }

@@ -51,6 +51,9 @@ public final class SceneParser {
     /** What the scene may read, and what it has read. */
     private final AssetGate gate;
     private Token settingsAt, cameraAt, environmentAt, animationAt;
+    /** The camera block's 'projection orthographic' key, where an orthographic camera was chosen; null otherwise. */
+    private Prop orthographicAt;
+    private final SceneAssetCache assets;
     /** The settings' 'shutter' key, which an animation's shutter angle replaces; null if not given. */
     private Prop shutterAt;
     /** The settings' samples key, and the samples key of the light with the most samples (lightSamplesMax): where sample buffers are reported. */
@@ -69,7 +72,8 @@ public final class SceneParser {
         this.err = new SceneErrors(file);
         this.gate = gate;
         this.in = new SceneBlockReader(lex, err, new Values());
-        this.objects = new SceneObjectFactory(err, new SceneAssetCache(err, baseDir, gate, file), SceneException.location(file, 0, 0));
+        this.assets = new SceneAssetCache(err, baseDir, gate, file);
+        this.objects = new SceneObjectFactory(err, assets, SceneException.location(file, 0, 0));
     }
 
     /**
@@ -150,6 +154,7 @@ public final class SceneParser {
         SceneParser p = new SceneParser(Objects.requireNonNull(text, "text"), fileName, dir, gate);
         p.statements();
         p.checkMotions();
+        p.checkOrthographicSubdivision();
         for (lt.spindulys.scene.InputFile f : gate.read()) p.builder.inputFile(f);
         return p.builder;
     }
@@ -249,7 +254,26 @@ public final class SceneParser {
     private void camera(Token kw) {
         if (cameraAt != null) throw error(kw, "camera is already defined at " + cameraAt.position());
         cameraAt = kw;
-        builder.camera(objects.camera(in.block(SceneGrammar.CAMERA, kw, null)));
+        Props p = in.block(SceneGrammar.CAMERA, kw, null);
+        builder.camera(objects.camera(p));
+        if ("orthographic".equals(p.get("projection"))) orthographicAt = p.prop("projection");
+    }
+
+    /**
+     * Adaptive subdivision measures edges by their angle at the eye, which an orthographic camera
+     * does not have: refused at whichever of the two comes later in the file.
+     */
+    private void checkOrthographicSubdivision() {
+        Prop method = assets.firstAdaptiveMethod();
+        if (orthographicAt == null || method == null) return;
+        boolean cameraLater = orthographicAt.at().line() > method.at().line()
+                || orthographicAt.at().line() == method.at().line() && orthographicAt.at().column() > method.at().column();
+        if (cameraLater) {
+            throw error(orthographicAt.at(), "an orthographic camera does not combine with adaptive subdivision (method " + method.value() + " at "
+                    + method.at().position() + "): adaptive levels are sized by angles at the eye, which parallel rays do not have; use method uniform with a level");
+        }
+        throw error(method.at(), "method " + method.value() + " does not combine with the orthographic camera at " + orthographicAt.at().position()
+                + ": adaptive levels are sized by angles at the eye, which parallel rays do not have; use method uniform with a level");
     }
 
     private void light(Token kw) {

@@ -1,6 +1,7 @@
 package lt.spindulys.shading;
 
 import lt.spindulys.accel.TraversalScratch;
+import lt.spindulys.camera.PixelFootprint;
 import lt.spindulys.math.Ray;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.texture.Channel;
@@ -9,35 +10,25 @@ import lt.spindulys.trace.ShadingData;
 
 /**
  * What every integrator shares: the first hit along a ray as the render passes show it, and the
- * footprint of a texture lookup from the camera's angle per pixel. Immutable.
+ * footprint of a texture lookup from the camera's pixel footprint. Immutable.
  */
 final class FirstHits {
     private final Scene scene;
-    /** Angle between the primary rays of neighbouring pixels at the image centre, radians (texture footprints). */
-    private final double pixelAngle;
+    /** How wide a pixel's footprint is at a distance along the camera's rays (texture footprints). */
+    private final PixelFootprint pixel;
 
     FirstHits(Scene scene) {
         this.scene = scene;
-        this.pixelAngle = pixelAngle(scene);
+        this.pixel = pixelFootprint(scene);
     }
 
     /**
-     * The camera's angle per pixel, measured between the rays through the two pixels at the
-     * image centre (any camera model); the footprint of a texture lookup is this angle times the
-     * path length. Away from the centre a pinhole's pixels subtend slightly less: the
-     * approximation errs on the blurrier side there.
+     * The camera's pixel footprint for this scene's image size (see
+     * {@link lt.spindulys.camera.Camera#pixelFootprint}); none without a camera.
      */
-    static double pixelAngle(Scene scene) {
-        if (scene.camera() == null) return 0;
-        int w = scene.settings().width(), h = scene.settings().height();
-        double aspect = (double) w / h;
-        Ray a = new Ray(), b = new Ray();
-        scene.camera().generateRay(0.5, 0.5, aspect, 0, 0, 0, a); // from the lens centre
-        scene.camera().generateRay(0.5 + 1.0 / w, 0.5, aspect, 0, 0, 0, b);
-        double la = Math.sqrt(a.dx * a.dx + a.dy * a.dy + a.dz * a.dz), lb = Math.sqrt(b.dx * b.dx + b.dy * b.dy + b.dz * b.dz);
-        double cos = (a.dx * b.dx + a.dy * b.dy + a.dz * b.dz) / (la * lb);
-        double angle = Math.acos(Math.max(-1, Math.min(1, cos)));
-        return Double.isFinite(angle) ? angle : 0;
+    static PixelFootprint pixelFootprint(Scene scene) {
+        if (scene.camera() == null) return new PixelFootprint(0, 0);
+        return scene.camera().pixelFootprint(scene.settings().width(), scene.settings().height());
     }
 
     /** Smallest incidence cosine used to widen a texture footprint on surfaces seen at a grazing angle. */
@@ -80,7 +71,7 @@ final class FirstHits {
     /** World-space width of the pixel's footprint at a hit a path of this length reaches along unit direction d. */
     double footprint(ShadingData sd, double travelled, double dx, double dy, double dz) {
         double cos = Math.abs(sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz);
-        return travelled * pixelAngle / Math.max(cos, MIN_FOOTPRINT_COSINE);
+        return pixel.at(travelled) / Math.max(cos, MIN_FOOTPRINT_COSINE);
     }
 
 }
