@@ -255,7 +255,10 @@ final class SceneGrammar {
             opt("rotate", Kind.NUMBER, 0.0),
             opt("intensity", Kind.NUMBER, 1.0),
             opt("light", Kind.BOOLEAN, false),
-            opt("samples", Kind.INTEGER)));
+            opt("samples", Kind.INTEGER),
+            // What camera rays see: the map or the settings' background colour, and at what intensity.
+            opt("background", Kind.BOOLEAN, true),
+            opt("visibleintensity", Kind.NUMBER)));
 
     // Which keys apply depends on the model (Material.Model#ownKeys), wherever 'model' stands in
     // the block: the parser checks them once the block is read.

@@ -298,7 +298,14 @@ final class SceneObjectFactory {
         }
         try {
             Integer samples = (Integer) p.get("samples");
-            return new Environment(map, p.num("rotate"), p.num("intensity"), light, samples == null ? 1 : samples);
+            Environment e = new Environment(map, p.num("rotate"), p.num("intensity"), light, samples == null ? 1 : samples);
+            Prop visible = p.prop("visibleintensity");
+            boolean background = (Boolean) p.get("background");
+            if (!background && visible != null) {
+                throw err.error(visible.at(), "visibleintensity scales what camera rays see of the environment, but 'background false' (at "
+                        + p.prop("background").at().position() + ") hides it from them: give one of them");
+            }
+            return e.withCameraView(background, visible != null ? (Double) visible.value() : e.intensity());
         } catch (IllegalArgumentException e) {
             throw err.blame(p, e);
         }

@@ -27,7 +27,12 @@ import lt.spindulys.texture.TextureImage;
  *
  * <p>{@code rotate} turns the map about the up axis by that many degrees, by the right-hand rule
  * (as an object's {@code rotate y} turns it): what was seen along d is seen along R_y(degrees) d.
- * {@code intensity} scales every value. Lookups are bilinear between texel centres, wrapping
+ * {@code intensity} scales every value.
+ *
+ * <p>What camera rays see can differ from what lights the scene, as Blender's "ray visibility:
+ * camera" does: {@link #withCameraView} hides the map from camera rays (they see the background
+ * colour) or scales what they see by its own visible intensity; reflected and refracted rays and
+ * the light's shadow rays still see the map at {@code intensity}. Lookups are bilinear between texel centres, wrapping
  * across the u = 0 seam and clamped at the poles' rows. Immutable and thread-safe.
  */
 public final class Environment {
@@ -38,6 +43,9 @@ public final class Environment {
     private final double rotateDegrees, intensity;
     private final boolean light;
     private final int samples;
+    /** Whether camera rays see the map (else the settings' background colour), and at what intensity. */
+    private final boolean background;
+    private final double visibleIntensity;
     /** The rotation as a fraction of a turn, added to u. */
     private final double uShift;
     private final int w, h;
@@ -66,6 +74,12 @@ public final class Environment {
      * @throws IllegalArgumentException if a value is out of range
      */
     public Environment(TextureImage map, double rotateDegrees, double intensity, boolean light, int samples) {
+        this(map, rotateDegrees, intensity, light, samples, true, intensity);
+    }
+
+    private Environment(TextureImage map, double rotateDegrees, double intensity, boolean light, int samples, boolean background, double visibleIntensity) {
+        this.background = background;
+        this.visibleIntensity = visibleIntensity;
         if (samples < 1 || samples > AreaLight.MAX_SAMPLES) {
             throw new IllegalArgumentException("environment samples must be 1.." + AreaLight.MAX_SAMPLES + ", found " + samples);
         }
@@ -75,6 +89,10 @@ public final class Environment {
         if (!Double.isFinite(rotateDegrees)) throw new IllegalArgumentException("environment rotate must be a finite number of degrees, found " + rotateDegrees);
         if (!(intensity >= 0 && intensity <= MAX_INTENSITY)) {
             throw new IllegalArgumentException("environment intensity must be between 0 and " + Ranges.show(MAX_INTENSITY) + ", found " + intensity);
+        }
+        // After intensity's check: by default the visible intensity is the intensity, reported as such.
+        if (!(visibleIntensity >= 0 && visibleIntensity <= MAX_INTENSITY)) {
+            throw new IllegalArgumentException("environment visibleintensity must be between 0 and " + Ranges.show(MAX_INTENSITY) + ", found " + visibleIntensity);
         }
         this.rotateDegrees = rotateDegrees;
         this.intensity = intensity;
@@ -107,7 +125,48 @@ public final class Environment {
      * @throws IllegalArgumentException if samples is out of range
      */
     public Environment asLight(int samples) {
-        return samples == 0 ? new Environment(map, rotateDegrees, intensity) : new Environment(map, rotateDegrees, intensity, true, samples);
+        return samples == 0 ? new Environment(map, rotateDegrees, intensity, false, 1, background, visibleIntensity)
+                : new Environment(map, rotateDegrees, intensity, true, samples, background, visibleIntensity);
+    }
+
+    /**
+     * This environment as camera rays see it: hidden from them (they see the settings' background
+     * colour instead) or shown scaled by {@code visibleIntensity} in place of {@link #intensity()}.
+     * Reflections, refractions and the light are not affected.
+     *
+     * @param background       whether camera rays see the map
+     * @param visibleIntensity the scale of what camera rays see, 0 to {@link #MAX_INTENSITY}
+     * @return the environment with that camera view
+     * @throws IllegalArgumentException if the intensity is out of range
+     */
+    public Environment withCameraView(boolean background, double visibleIntensity) {
+        return new Environment(map, rotateDegrees, intensity, light, light ? samples : 1, background, visibleIntensity);
+    }
+
+    /** Whether camera rays see the map (else the settings' background colour). @return true if they do */
+    public boolean isBackground() { return background; }
+
+    /** The scale of what camera rays see. @return the visible intensity, {@link #intensity()} unless set */
+    public double visibleIntensity() { return visibleIntensity; }
+
+    /**
+     * What a camera ray sees along the UNIT direction d, written to out[0..2]: the map scaled by
+     * {@link #visibleIntensity()}, or {@code background} if the map is hidden from camera rays.
+     *
+     * @param dx direction x
+     * @param dy direction y
+     * @param dz direction z
+     * @param background the settings' background colour
+     * @param out receives r, g, b
+     */
+    public void lookupFromCamera(double dx, double dy, double dz, lt.spindulys.math.Color background, double[] out) {
+        if (!this.background) {
+            out[0] = background.r(); out[1] = background.g(); out[2] = background.b();
+            return;
+        }
+        double u = atan2(dx, -dz) * (0.5 / Math.PI) + uShift;
+        double v = atan2(Math.sqrt(dx * dx + dz * dz), dy) * (1 / Math.PI);
+        lookupImage(u, v, out, 0, visibleIntensity);
     }
 
     /** The image. @return the map */
@@ -175,7 +234,9 @@ public final class Environment {
      * The value at image coordinates (u, v) (u wraps; v in [0, 1] from the top), written to
      * out[at..at+2]: the blend that {@link #lookup} makes for the direction there.
      */
-    void lookupImage(double u, double v, double[] out, int at) {
+    void lookupImage(double u, double v, double[] out, int at) { lookupImage(u, v, out, at, intensity); }
+
+    private void lookupImage(double u, double v, double[] out, int at, double scale) {
         double fx = u * w - 0.5, fy = v * h - 0.5;
         double x0f = Math.floor(fx);
         double tx = fx - x0f;
@@ -186,7 +247,7 @@ public final class Environment {
         for (int c = 0; c < 3; c++) {
             double top = map.texel(0, x0, y0, c) * (1 - tx) + map.texel(0, x1, y0, c) * tx;
             double bottom = map.texel(0, x0, y1, c) * (1 - tx) + map.texel(0, x1, y1, c) * tx;
-            out[at + c] = intensity * (top * (1 - ty) + bottom * ty);
+            out[at + c] = scale * (top * (1 - ty) + bottom * ty);
         }
     }
 }

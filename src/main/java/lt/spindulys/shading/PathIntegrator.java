@@ -176,7 +176,9 @@ public final class PathIntegrator implements Integrator {
                 }
             }
             if (!found) {
-                if (environment != null) environment.lookup(dx, dy, dz, c);
+                // Camera rays see the environment as its camera view says; later segments see the map.
+                if (environment != null && segment == 0) environment.lookupFromCamera(dx, dy, dz, settings.background(), c);
+                else if (environment != null) environment.lookup(dx, dy, dz, c);
                 else { Color bg = settings.background(); c[0] = bg.r(); c[1] = bg.g(); c[2] = bg.b(); }
                 if (weighed && environmentLight != null) {
                     double w = powerHeuristic(bsdfPdf, pick * environmentLight.pdfLi(qx, qy, qz, dx, dy, dz));

@@ -47,7 +47,8 @@ import lt.spindulys.texture.Channel;
  * the path length and the camera's pixel angle; shadow rays evaluate transparency textures.
  *
  * <p>A ray that hits nothing sees the scene's {@link Environment} along its direction if it has
- * one (so mirrors and glass show it), else the background colour.
+ * one (so mirrors and glass show it), else the background colour; a camera ray (depth 0) sees the
+ * environment's camera view ({@link Environment#lookupFromCamera}).
  */
 public final class WhittedIntegrator implements Integrator {
     /** Surfaces a shadow ray may cross before the light counts as blocked. */
@@ -194,7 +195,9 @@ public final class WhittedIntegrator implements Integrator {
         }
         if (!found) {
             if (environment != null) {
-                environment.lookup(ray.dx / dlen, ray.dy / dlen, ray.dz / dlen, out);
+                // Camera rays see the environment as its camera view says; reflections and refractions see the map.
+                if (depth == 0) environment.lookupFromCamera(ray.dx / dlen, ray.dy / dlen, ray.dz / dlen, settings.background(), out);
+                else environment.lookup(ray.dx / dlen, ray.dy / dlen, ray.dz / dlen, out);
             } else {
                 Color bg = settings.background();
                 out[0] = bg.r(); out[1] = bg.g(); out[2] = bg.b();

@@ -123,4 +123,22 @@ class SceneParserEnvironmentTest {
         int nl = s.indexOf('\n');
         return nl < 0 ? s : s.substring(0, nl);
     }
+
+    @Test
+    void backgroundAndVisibleIntensitySetWhatCameraRaysSee() {
+        Environment plain = parse("environment { file \"sky.hdr\"  intensity 2 }").environment();
+        assertTrue(plain.isBackground());
+        assertEquals(2, plain.visibleIntensity());
+        Environment hidden = parse("environment { file \"sky.hdr\"  light true  background false }").environment();
+        assertTrue(!hidden.isBackground() && hidden.isLight());
+        assertEquals(0.3, parse("environment { file \"sky.hdr\"  visibleintensity 0.3 }").environment().visibleIntensity());
+    }
+
+    @Test
+    void visibleIntensityIsRefusedWhenTheBackgroundIsHidden() {
+        assertEquals("t.dat:1:49: visibleintensity scales what camera rays see of the environment, but 'background false' (at 1:31)"
+                + " hides it from them: give one of them", error("environment { file \"sky.hdr\"  background false  visibleintensity 0.3 }"));
+        String negative = error("environment { file \"sky.hdr\"  visibleintensity -1 }");
+        assertTrue(negative.startsWith("t.dat:1:31: environment visibleintensity must be between 0 and"), negative);
+    }
 }
