@@ -82,6 +82,18 @@ class CliLensTest {
     }
 
     @Test
+    void anOrthographicCameraRefusesALens() throws IOException {
+        Path scene = dir.resolve("ortho.dat");
+        Files.writeString(scene, SCENE.formatted("projection orthographic  width 3"));
+        for (String option : new String[] {"--aperture", "--focus"}) {
+            CliTest.Run r = CliTest.run(scene.toString(), "-o", dir.resolve("o.png").toString(), option, "0.2");
+            assertEquals(2, r.status(), r.err());
+            assertEquals("render: " + option + ": an orthographic camera has no lens: aperture and focus need a perspective camera"
+                    + System.lineSeparator(), r.err());
+        }
+    }
+
+    @Test
     void helpListsTheLensOptions() {
         String help = CliTest.run("--help").out();
         assertTrue(help.contains("--aperture R") && help.contains("--focus D"), help);
