@@ -12,9 +12,11 @@ public enum ImageFormat {
     /** JPEG (baseline, lossy), through javax.imageio. */
     JPEG,
     /** Portable float map: 32-bit floats, linear, unclamped. */
-    PFM;
+    PFM,
+    /** OpenEXR, scanline, half or float channels, written only ({@link ExrWriter}). */
+    EXR;
 
-    static final String EXPECTED = "(expected .tga, .png, .jpg, .jpeg or .pfm)";
+    static final String EXPECTED = "(expected .tga, .png, .jpg, .jpeg, .pfm or .exr)";
 
     /**
      * The format named by the extension of {@code path}, ignoring case.
@@ -39,6 +41,7 @@ public enum ImageFormat {
             case ".png": return PNG;
             case ".jpg": case ".jpeg": return JPEG;
             case ".pfm": return PFM;
+            case ".exr": return EXR;
             default:
                 throw new IllegalArgumentException("unsupported " + role + " format '" + ext + "' " + EXPECTED);
         }
