@@ -181,7 +181,7 @@ final class RenderCommand {
                     try {
                         exrPrecision = ExrPrecision.fromKeyword(v);
                     } catch (IllegalArgumentException e) {
-                        throw new UsageException(a + " " + e.getMessage());
+                        throw new UsageException(a + ": " + e.getMessage());
                     }
                 }
                 case "--exr-compression" -> {
@@ -189,7 +189,7 @@ final class RenderCommand {
                     try {
                         exrCompression = ExrCompression.fromKeyword(v);
                     } catch (IllegalArgumentException e) {
-                        throw new UsageException(a + " " + e.getMessage());
+                        throw new UsageException(a + ": " + e.getMessage());
                     }
                 }
                 case "--subdiv-target" -> subdivTarget = OptionValues.doubleValue(args, ++i, a, AdaptiveSettings.MIN_TARGET, AdaptiveSettings.MAX_TARGET);

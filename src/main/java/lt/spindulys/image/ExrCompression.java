@@ -33,7 +33,7 @@ public enum ExrCompression {
      */
     public static ExrCompression fromKeyword(String keyword) {
         for (ExrCompression c : values()) if (c.keyword().equals(keyword)) return c;
-        throw new IllegalArgumentException("expected none, zip or zips, found '" + keyword + "'");
+        throw new IllegalArgumentException("unknown OpenEXR compression '" + keyword + "' (expected none, zip or zips)");
     }
 
     /** {@return the name on the command line: none, zips or zip} */

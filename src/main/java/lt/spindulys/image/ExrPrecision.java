@@ -21,7 +21,7 @@ public enum ExrPrecision {
      */
     public static ExrPrecision fromKeyword(String keyword) {
         for (ExrPrecision p : values()) if (p.keyword().equals(keyword)) return p;
-        throw new IllegalArgumentException("expected half or float, found '" + keyword + "'");
+        throw new IllegalArgumentException("unknown OpenEXR precision '" + keyword + "' (expected half or float)");
     }
 
     /** {@return the name on the command line: half or float} */
