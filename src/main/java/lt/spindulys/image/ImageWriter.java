@@ -65,7 +65,7 @@ public final class ImageWriter {
      * @param out the output path
      * @return the format
      * @throws IllegalArgumentException e.g. "unsupported output format '.bmp' (expected .tga,
-     *         .png, .jpg, .jpeg or .pfm)"
+     *         .png, .jpg, .jpeg, .pfm or .exr)"
      */
     public static ImageFormat checkFormat(Path out) {
         return ImageFormat.of(out, "output");
