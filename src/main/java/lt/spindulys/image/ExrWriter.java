@@ -30,8 +30,9 @@ import java.util.zip.Deflater;
 final class ExrWriter {
     private static final int MAGIC = 20000630;
     private static final int PIXEL_TYPE_HALF = 1, PIXEL_TYPE_FLOAT = 2;
-    /** Largest finite half, 65504, as a float's bits and as a half's. */
-    private static final int MAX_HALF_AS_FLOAT_BITS = 0x477FE000, MAX_HALF_BITS = 0x7BFF;
+    /** Largest finite half, and its bits. */
+    private static final double MAX_HALF = 65504;
+    private static final int MAX_HALF_BITS = 0x7BFF;
 
     private ExrWriter() {}
 
@@ -156,14 +157,14 @@ final class ExrWriter {
         for (int y = y0; y < y1; y++) {
             for (Channel c : channels) {
                 for (int p = y * w, end = p + w; p < end; p++) {
-                    float v = (float) c.values().at(p);
+                    double v = c.values().at(p);
                     int bits;
                     if (c.half()) {
                         bits = halfBits(v);
                         raw[i++] = (byte) bits;
                         raw[i++] = (byte) (bits >>> 8);
                     } else {
-                        bits = Float.floatToRawIntBits(v);
+                        bits = Float.floatToRawIntBits((float) v);
                         raw[i++] = (byte) bits;
                         raw[i++] = (byte) (bits >>> 8);
                         raw[i++] = (byte) (bits >>> 16);
@@ -200,36 +201,29 @@ final class ExrWriter {
     }
 
     /**
-     * The bits of the half nearest to {@code f}, ties to even. Finite values beyond the half
-     * range are clamped to +-65504; infinities stay infinite (depth's background) and NaN stays
-     * NaN (a quiet one).
+     * The bits of the half nearest to {@code v}, ties to even, rounded once from the double (a
+     * detour through float could round twice). Finite values beyond the half range are clamped
+     * to +-65504; infinities stay infinite (depth's background) and NaN stays NaN (a quiet one).
      *
-     * @param f the value
+     * @param v the value
      * @return the half's 16 bits, in the low bits of the int
      */
-    static int halfBits(float f) {
-        int bits = Float.floatToRawIntBits(f);
-        int sign = (bits >>> 16) & 0x8000;
-        int abs = bits & 0x7FFFFFFF;
-        if (abs >= 0x7F800000) return sign | 0x7C00 | (abs > 0x7F800000 ? 0x200 : 0);
-        if (abs > MAX_HALF_AS_FLOAT_BITS) return sign | MAX_HALF_BITS;
-        if (abs >= 0x38800000) { // at least 2^-14: a normal half
-            int mantissa = abs & 0x7FFFFF;
-            int half = ((abs >>> 23) - 127 + 15) << 10 | mantissa >>> 13;
-            int rest = mantissa & 0x1FFF;
-            // A carry out of the mantissa correctly steps the exponent up.
-            if (rest > 0x1000 || (rest == 0x1000 && (half & 1) == 1)) half++;
-            return sign | half;
+    static int halfBits(double v) {
+        if (Double.isNaN(v)) return 0x7E00;
+        int sign = (Double.doubleToRawLongBits(v) < 0) ? 0x8000 : 0;
+        double a = Math.abs(v);
+        if (a == Double.POSITIVE_INFINITY) return sign | 0x7C00;
+        if (a >= MAX_HALF) return sign | MAX_HALF_BITS;
+        // Below 2^-14 a half counts units of 2^-24; 1024 units is the smallest normal's encoding.
+        if (a < 0x1p-14) return sign | (int) Math.rint(a * 0x1p24);
+        int exponent = Math.getExponent(a);
+        // rint rounds ties to even; the scaling by a power of two is exact.
+        int significand = (int) Math.rint(Math.scalb(a, 10 - exponent));
+        if (significand == 2048) { // rounded up into the next binade
+            significand = 1024;
+            exponent++;
         }
-        if (abs <= 0x33000000) return sign; // at most 2^-25, half the smallest subnormal: rounds to 0
-        // A subnormal half counts units of 2^-24: the float's significand shifted down.
-        int exponent = abs >>> 23;
-        int significand = (abs & 0x7FFFFF) | 0x800000;
-        int shift = 126 - exponent;
-        int half = significand >>> shift;
-        int rest = significand & ((1 << shift) - 1), halfway = 1 << (shift - 1);
-        if (rest > halfway || (rest == halfway && (half & 1) == 1)) half++;
-        return sign | half;
+        return sign | (exponent + 15) << 10 | (significand - 1024);
     }
 
     /** A little-endian byte buffer for the header. */

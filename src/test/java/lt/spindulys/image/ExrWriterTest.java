@@ -33,6 +33,7 @@ class ExrWriterTest {
         assertEquals(0x0001, ExrWriter.halfBits(0x1p-24f), "smallest subnormal");
         assertEquals(0x8001, ExrWriter.halfBits(-0x1p-24f));
         assertEquals(0x7C00, ExrWriter.halfBits(Float.POSITIVE_INFINITY), "depth's background stays infinite");
+        assertEquals(0x7C00, ExrWriter.halfBits(Double.POSITIVE_INFINITY));
         assertEquals(0xFC00, ExrWriter.halfBits(Float.NEGATIVE_INFINITY));
     }
 
@@ -42,6 +43,9 @@ class ExrWriterTest {
         assertEquals(0x3C00, ExrWriter.halfBits(1 + 0x1p-11f));
         assertEquals(0x3C02, ExrWriter.halfBits(1 + 3 * 0x1p-11f));
         assertEquals(0x3C01, ExrWriter.halfBits(1 + 0x1p-11f + 0x1p-20f));
+        // Just above a tie, closer than a float can tell: rounded once, from the double.
+        assertEquals(0x3C01, ExrWriter.halfBits(1 + 0x1p-11 + 0x1p-40));
+        assertEquals(0x3C00, ExrWriter.halfBits(1 + 0x1p-11 - 0x1p-40));
         // Subnormal ties: half a unit goes to 0, one and a half units to 2.
         assertEquals(0x0000, ExrWriter.halfBits(0x1p-25f));
         assertEquals(0x0001, ExrWriter.halfBits(0x1p-25f + 0x1p-40f));
@@ -54,21 +58,25 @@ class ExrWriterTest {
         assertEquals(0x7BFF, ExrWriter.halfBits(65520f));
         assertEquals(0xFBFF, ExrWriter.halfBits(-1e30f));
         assertEquals(0x7BFF, ExrWriter.halfBits(Float.MAX_VALUE));
+        assertEquals(0x7BFF, ExrWriter.halfBits(Double.MAX_VALUE));
+        assertEquals(0x0000, ExrWriter.halfBits(Double.MIN_VALUE));
     }
 
     @Test
-    void everyFiniteHalfSurvivesAndEveryFloatGoesToItsNearestHalf() {
+    void everyFiniteHalfSurvivesAndEveryValueGoesToItsNearestHalf() {
         for (int h = 0; h < 0x10000; h++) {
             if ((h & 0x7C00) == 0x7C00) continue;
             assertEquals(h, ExrWriter.halfBits(ExrTestDecoder.halfToFloat(h)), Integer.toHexString(h));
         }
         Random random = new Random(7);
         for (int i = 0; i < 200_000; i++) {
-            float f = Float.intBitsToFloat(random.nextInt(0x477FE000)); // positive, up to 65504
+            // Floats up to 65504, and doubles of every half binade with bits no float holds.
+            double f = i % 2 == 0 ? Float.intBitsToFloat(random.nextInt(0x477FE000))
+                    : Math.min(65504, Math.scalb(1 + random.nextDouble(), random.nextInt(42) - 26));
             int h = ExrWriter.halfBits(f);
-            double here = Math.abs(ExrTestDecoder.halfToFloat(h) - (double) f);
-            double below = h > 0 ? Math.abs(ExrTestDecoder.halfToFloat(h - 1) - (double) f) : Double.POSITIVE_INFINITY;
-            double above = h < 0x7BFF ? Math.abs(ExrTestDecoder.halfToFloat(h + 1) - (double) f) : Double.POSITIVE_INFINITY;
+            double here = Math.abs(ExrTestDecoder.halfToFloat(h) - f);
+            double below = h > 0 ? Math.abs(ExrTestDecoder.halfToFloat(h - 1) - f) : Double.POSITIVE_INFINITY;
+            double above = h < 0x7BFF ? Math.abs(ExrTestDecoder.halfToFloat(h + 1) - f) : Double.POSITIVE_INFINITY;
             assertTrue(here <= below && here <= above, f + " became " + Integer.toHexString(h));
             if (here == below || here == above) assertEquals(0, h & 1, "tie of " + f + " not to even");
         }
@@ -127,7 +135,7 @@ class ExrWriterTest {
 
     /** What a value becomes in a channel of the precision. */
     private static float stored(double v, ExrPrecision precision) {
-        return precision == ExrPrecision.FLOAT ? (float) v : ExrTestDecoder.halfToFloat(ExrWriter.halfBits((float) v));
+        return precision == ExrPrecision.FLOAT ? (float) v : ExrTestDecoder.halfToFloat(ExrWriter.halfBits(v));
     }
 
     @Test
