@@ -16,9 +16,9 @@ import java.util.zip.Deflater;
  *
  * <p>Channels, in the alphabetical (byte) order the format requires: {@code A} (always 1: the
  * frame has no coverage), {@code B}, {@code G}, {@code R}; with the normal pass {@code N.X},
- * {@code N.Y}, {@code N.Z} (layer N, as Nuke and Blender split names at the last dot); with the
- * depth pass {@code Z}, which Nuke reads as its depth channel and Blender writes for depth in a
- * single-layer file, +Infinity where nothing was hit; with the object pass {@code objectId}, the
+ * {@code N.Y}, {@code N.Z} (layer N: readers split names at the last dot); with the depth pass
+ * {@code Z}, OpenEXR's own name for depth, which Nuke and OpenImageIO read as depth, +Infinity
+ * where nothing was hit; with the object pass {@code objectId}, the
  * object's id + 1 and 0 for the background, exact as a float. Colour and normal follow
  * {@link ImageOptions#exrPrecision()}; depth and object id are always FLOAT.
  *
