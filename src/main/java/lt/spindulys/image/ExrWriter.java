@@ -5,6 +5,7 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
 import java.util.zip.Deflater;
@@ -119,36 +120,52 @@ final class ExrWriter {
         int blocks = (h + lines - 1) / lines;
         int bytesPerLine = 0;
         for (Channel c : channels) bytesPerLine += w * c.bytes();
-        // The offset table precedes the blocks, so the blocks are encoded before anything is written.
-        byte[][] encoded = new byte[blocks][];
         byte[] raw = new byte[bytesPerLine * Math.min(lines, h)];
-        byte[] reordered = compression == ExrCompression.NONE ? null : new byte[raw.length];
-        Deflater deflater = compression == ExrCompression.NONE ? null : new Deflater();
+        header.writeTo(out);
+        if (compression == ExrCompression.NONE) {
+            // Every block's size is known: the offset table is written first and each block as it is made.
+            Bytes table = new Bytes();
+            long offset = header.size() + 8L * blocks;
+            for (int b = 0; b < blocks; b++) {
+                table.int64(offset);
+                offset += 8 + (long) bytesPerLine * (Math.min(h, (b + 1) * lines) - b * lines);
+            }
+            table.writeTo(out);
+            for (int b = 0; b < blocks; b++) {
+                int y0 = b * lines;
+                writeBlock(out, y0, raw, fillBlock(raw, w, y0, Math.min(h, y0 + lines), channels));
+            }
+            return;
+        }
+        // The offset table precedes the blocks, whose compressed sizes are known only once they are made.
+        byte[][] encoded = new byte[blocks][];
+        byte[] reordered = new byte[raw.length];
+        Deflater deflater = new Deflater();
         try {
             for (int b = 0; b < blocks; b++) {
-                int y0 = b * lines, y1 = Math.min(h, y0 + lines);
-                int size = fillBlock(raw, w, y0, y1, channels);
-                encoded[b] = deflater == null ? java.util.Arrays.copyOf(raw, size) : zip(raw, size, reordered, deflater);
+                int y0 = b * lines;
+                encoded[b] = zip(raw, fillBlock(raw, w, y0, Math.min(h, y0 + lines), channels), reordered, deflater);
             }
         } finally {
-            if (deflater != null) deflater.end();
+            deflater.end();
         }
-        long offset = header.size() + 8L * blocks;
         Bytes table = new Bytes();
+        long offset = header.size() + 8L * blocks;
         for (int b = 0; b < blocks; b++) {
             table.int64(offset);
             offset += 8 + encoded[b].length;
         }
-        header.writeTo(out);
         table.writeTo(out);
-        Bytes prefix = new Bytes();
-        for (int b = 0; b < blocks; b++) {
-            prefix.reset();
-            prefix.int32(b * lines);
-            prefix.int32(encoded[b].length);
-            prefix.writeTo(out);
-            out.write(encoded[b]);
-        }
+        for (int b = 0; b < blocks; b++) writeBlock(out, b * lines, encoded[b], encoded[b].length);
+    }
+
+    /** One line block: its first line, its size and its bytes. */
+    private static void writeBlock(OutputStream out, int firstLine, byte[] data, int size) throws IOException {
+        byte[] prefix = {
+            (byte) firstLine, (byte) (firstLine >>> 8), (byte) (firstLine >>> 16), (byte) (firstLine >>> 24),
+            (byte) size, (byte) (size >>> 8), (byte) (size >>> 16), (byte) (size >>> 24)};
+        out.write(prefix);
+        out.write(data, 0, size);
     }
 
     /** Lays out lines y0 to y1 - 1: per line, each channel's values left to right. Returns the byte count. */
@@ -196,8 +213,8 @@ final class ExrWriter {
         int n = 0;
         while (!deflater.finished() && n < size) n += deflater.deflate(packed, n, size - n);
         // A block stored at its full size is taken by readers as uncompressed.
-        if (!deflater.finished() || n >= size) return java.util.Arrays.copyOf(raw, size);
-        return java.util.Arrays.copyOf(packed, n);
+        if (!deflater.finished() || n >= size) return Arrays.copyOf(raw, size);
+        return Arrays.copyOf(packed, n);
     }
 
     /**
