@@ -64,6 +64,16 @@ class CliExrTest {
     }
 
     @Test
+    void anExistingExrWithItsPassesIsSkipped() throws IOException {
+        Path out = dir.resolve("again.exr");
+        String[] args = {scene().toString(), "-o", out.toString(), "--aov", "depth", "--skip-existing"};
+        assertEquals(0, CliTest.run(args).status());
+        CliTest.Run again = CliTest.run(args);
+        assertEquals(0, again.status(), again.err());
+        assertTrue(again.err().startsWith("skipped " + out + ": it exists"), again.err());
+    }
+
+    @Test
     void precisionAndCompressionOptions() throws IOException {
         Path out = dir.resolve("float.exr");
         CliTest.Run r = CliTest.run(scene().toString(), "-o", out.toString(), "--exr-precision", "float", "--exr-compression", "none", "--quiet");
