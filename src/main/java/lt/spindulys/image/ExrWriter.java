@@ -56,9 +56,13 @@ final class ExrWriter {
      * @param opts the precision and compression
      * @return the body that writes the file into a stream
      * @throws IllegalStateException if an object id does not fit 24 bits
+     * @throws IllegalArgumentException if the passes are not the image's size
      */
     static ImageWriter.IoConsumer<OutputStream> encoder(FrameBuffer fb, AovFrame aovs, ImageOptions opts) {
         int w = fb.width(), h = fb.height();
+        if (aovs != null && (aovs.width() != w || aovs.height() != h)) {
+            throw new IllegalArgumentException("passes of " + aovs.width() + "x" + aovs.height() + " for an image of " + w + "x" + h);
+        }
         boolean half = opts.exrPrecision() == ExrPrecision.HALF;
         double[] rgb = fb.data();
         List<Channel> channels = new ArrayList<>();

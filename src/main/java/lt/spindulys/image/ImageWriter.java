@@ -104,7 +104,7 @@ public final class ImageWriter {
      * it ({@link Aov#filesBeside}), all as one atomic group
      * ({@link AtomicFile#writeAll}): every file is encoded to a temporary file first and only then
      * are they renamed into place, so a failure in any of them leaves none of the new files and
-     * every old one.
+     * every old one. The passes beside an image of another format:
      *
      * <ul>
      *   <li>depth: one-channel PFM ("Pf"), little-endian, bottom row first, 32-bit float
