@@ -99,7 +99,9 @@ final class AssembleCommand {
         } catch (IllegalArgumentException e) {
             throw new UsageException(e.getMessage());
         }
-        if (format == ImageFormat.PFM) throw new UsageException("tiles hold 8-bit pixels: the assembled frame is written as .png, .tga or .jpg, not " + output);
+        if (format == ImageFormat.PFM || format == ImageFormat.EXR) {
+            throw new UsageException("tiles hold 8-bit pixels: the assembled frame is written as .png, .tga or .jpg, not " + output);
+        }
     }
 
     int run(PrintStream err) throws IOException, UsageException {

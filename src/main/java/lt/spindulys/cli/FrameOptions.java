@@ -189,7 +189,7 @@ final class FrameOptions {
     /** True if the image and each pass beside it are regular files. */
     static boolean finished(Path image, Set<Aov> passes) {
         if (!Files.isRegularFile(image)) return false;
-        for (Aov a : passes) if (!Files.isRegularFile(a.fileBeside(image))) return false;
+        for (Path p : Aov.filesBeside(image, passes)) if (!Files.isRegularFile(p)) return false;
         return true;
     }
 }

@@ -14,6 +14,8 @@ import lt.spindulys.scene.IntegratorKind;
 import lt.spindulys.scene.InputFile;
 import lt.spindulys.scene.AdaptiveSettings;
 import lt.spindulys.image.Aov;
+import lt.spindulys.image.ExrCompression;
+import lt.spindulys.image.ExrPrecision;
 import lt.spindulys.image.ImageOptions;
 import lt.spindulys.image.ImageWriter;
 import lt.spindulys.io.AssetRoots;
@@ -50,7 +52,8 @@ final class RenderCommand {
                                     [--integrator whitted|path] [--maxdepth N] [--clamp C]
                                     [--subdiv-target PX] [--subdiv-memory MIB] [--subdiv-cache MIB]
                                     [--frame N | --frames A-B[:STEP]] [--skip-existing]
-                                    [--quality Q] [--region X0,X1,Y0,Y1 | --tile I/N] [--progress openjd|plain]
+                                    [--quality Q] [--exr-precision half|float] [--exr-compression none|zip|zips]
+                                    [--region X0,X1,Y0,Y1 | --tile I/N] [--progress openjd|plain]
                                     [--assets-root DIR]... [--stats] [--quiet] [--debug]
                    render assemble TILE.png... -o OUT [--frame N]                (see render assemble --help)
                    render subdivide MESH.obj|MESH.dat --level N|--scene SCENE.dat -o OUT.obj [...]   (see render subdivide --help)
@@ -58,7 +61,7 @@ final class RenderCommand {
                    render view [MESH.obj|MESH.dat|UNWRAP.tex ...]                  (see render view --help)
                    render --help | --version
 
-              -o, --output OUT   image to write: .png .jpg .jpeg .tga .pfm (default: SCENE.png here)
+              -o, --output OUT   image to write: .png .jpg .jpeg .tga .pfm .exr (default: SCENE.png here)
               --width W          image width in pixels (overrides the scene); alone, the height
                                  follows the scene's aspect ratio (800x450 with --width 400: 400x225)
               --height H         image height in pixels (overrides the scene); alone, likewise the width
@@ -73,7 +76,8 @@ final class RenderCommand {
               --clamp C          path tracing: the largest value a channel of one indirect sample may bring,
                                  against fireflies; 0 for none (overrides the scene)
               --aov LIST         render passes beside the image, comma-separated: depth, normal, object
-                                 (OUT.depth.pfm, OUT.normal.pfm, OUT.object.png; overrides the scene)
+                                 (OUT.depth.pfm, OUT.normal.pfm, OUT.object.png; overrides the scene);
+                                 an .exr holds them as its channels Z, N.X N.Y N.Z and objectId instead
               --shutter OPEN,CLOSE  shutter interval of the motion blur, e.g. 0,1 (overrides the scene)
               --timesteps N      1: one pass, every sample at its own time (default); N > 1: the thesis's
                                  method, N whole-frame passes at fixed times averaged (spp must be a multiple of N)
@@ -83,6 +87,9 @@ final class RenderCommand {
               --subdiv-cache MIB the lazy patches' cache, part of the subdivision memory (default 64; shrunk to it)
             """ + FrameOptions.USAGE + """
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
+              --exr-precision P  .exr colour and normals as half (default) or float; depth and object id
+                                 are always float
+              --exr-compression C  .exr compression: zip (default, 16 lines a block), zips (1 line) or none
             """ + FarmOptions.USAGE + ASSETS_USAGE + """
               --stats            print load, build and render times, rays by kind, Mrays/s, peak heap,
                                  per mesh its triangles and its tree's SAH cost, and per adaptive
@@ -108,6 +115,8 @@ final class RenderCommand {
     private Integer timeSteps;
     private Double subdivTarget, subdivMemory, subdivCache;
     private double quality = ImageOptions.DEFAULT.jpegQuality();
+    private ExrPrecision exrPrecision = ImageOptions.DEFAULT.exrPrecision();
+    private ExrCompression exrCompression = ImageOptions.DEFAULT.exrCompression();
     private boolean stats, quiet;
     private final FarmOptions farm = new FarmOptions();
     private FarmProgress farmProgress;
@@ -167,6 +176,22 @@ final class RenderCommand {
                 case "--shutter" -> shutter = OptionValues.shutterValue(args, ++i, a);
                 case "--timesteps" -> timeSteps = OptionValues.intValue(args, ++i, a, 1, 65536);
                 case "--quality" -> quality = OptionValues.doubleValue(args, ++i, a, 0, 1);
+                case "--exr-precision" -> {
+                    String v = OptionValues.value(args, ++i, a);
+                    try {
+                        exrPrecision = ExrPrecision.fromKeyword(v);
+                    } catch (IllegalArgumentException e) {
+                        throw new UsageException(a + ": " + e.getMessage());
+                    }
+                }
+                case "--exr-compression" -> {
+                    String v = OptionValues.value(args, ++i, a);
+                    try {
+                        exrCompression = ExrCompression.fromKeyword(v);
+                    } catch (IllegalArgumentException e) {
+                        throw new UsageException(a + ": " + e.getMessage());
+                    }
+                }
                 case "--subdiv-target" -> subdivTarget = OptionValues.doubleValue(args, ++i, a, AdaptiveSettings.MIN_TARGET, AdaptiveSettings.MAX_TARGET);
                 case "--subdiv-memory" -> subdivMemory = OptionValues.doubleValue(args, ++i, a, 0, AdaptiveSettings.MAX_BYTES >> 20);
                 case "--subdiv-cache" -> {
@@ -335,7 +360,7 @@ final class RenderCommand {
         // A still's time counts from the start of the read, a frame's from its own start.
         long t0 = item.frame() == null ? readStart : System.nanoTime();
         int n = threads != null ? threads : Runtime.getRuntime().availableProcessors();
-        RenderJob job = RenderJob.of(scene).output(item.output()).jpegQuality(quality).threads(n);
+        RenderJob job = RenderJob.of(scene).output(item.output()).jpegQuality(quality).exr(exrPrecision, exrCompression).threads(n);
         if (item.frame() != null) job.frame(item.frame());
         farm.apply(job);
         // A farm's manager reads lines; the bar redraws one line in place, for a person at a terminal.
@@ -444,7 +469,7 @@ final class RenderCommand {
     static String doneLine(Path output, RenderResult result, double seconds) {
         RenderSettings s = result.settings();
         StringBuilder line = new StringBuilder("wrote ").append(output);
-        for (Aov a : s.aovs()) line.append(", ").append(a.fileBeside(output));
+        for (Path p : Aov.filesBeside(output, s.aovs())) line.append(", ").append(p);
         String part = result.region().map(r -> "region " + r + " of ").orElse("");
         return line.append(String.format(Locale.ROOT, " (%s%dx%d, %d spp) in %.1f s", part, s.width(), s.height(), s.samplesPerPixel(), seconds)).toString();
     }

@@ -8,7 +8,8 @@ import java.util.List;
 import java.util.Set;
 
 /**
- * A render pass (arbitrary output variable) written beside the main image. Each is what one extra
+ * A render pass (arbitrary output variable) written beside the main image, or as channels of it
+ * when it is an OpenEXR file ({@link ExrWriter}). Each is what one extra
  * camera ray through the exact centre of the pixel sees at its first hit (lens centre, time 0),
  * so the values are exact and do not depend on samples per pixel or thread count.
  */
@@ -99,5 +100,20 @@ public enum Aov {
         int dot = name.lastIndexOf('.');
         String base = dot > 0 ? name.substring(0, dot) : name;
         return mainOutput.resolveSibling(base + suffix);
+    }
+
+    /**
+     * The files the passes are written to beside {@code mainOutput} ({@link #fileBeside}), in
+     * {@link Aov} order; none for an OpenEXR output, which holds them as channels.
+     *
+     * @param mainOutput the image's path
+     * @param passes the passes
+     * @return the files, empty if none are written beside the image
+     */
+    public static List<Path> filesBeside(Path mainOutput, Set<Aov> passes) {
+        if (passes.isEmpty() || ImageFormat.of(mainOutput, "output") == ImageFormat.EXR) return List.of();
+        List<Path> files = new ArrayList<>();
+        for (Aov a : passes) files.add(a.fileBeside(mainOutput));
+        return List.copyOf(files);
     }
 }

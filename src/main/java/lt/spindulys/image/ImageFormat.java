@@ -12,9 +12,13 @@ public enum ImageFormat {
     /** JPEG (baseline, lossy), through javax.imageio. */
     JPEG,
     /** Portable float map: 32-bit floats, linear, unclamped. */
-    PFM;
+    PFM,
+    /** OpenEXR, scanline, half or float channels, written only ({@link ExrWriter}). */
+    EXR;
 
-    static final String EXPECTED = "(expected .tga, .png, .jpg, .jpeg or .pfm)";
+    static final String EXPECTED = "(expected .tga, .png, .jpg, .jpeg, .pfm or .exr)";
+    /** What may be read: OpenEXR is written only. */
+    static final String EXPECTED_INPUT = "(expected .tga, .png, .jpg, .jpeg or .pfm)";
 
     /**
      * The format named by the extension of {@code path}, ignoring case.
@@ -26,12 +30,14 @@ public enum ImageFormat {
         Path name = path.getFileName();
         String file = name == null ? "" : name.toString();
         int dot = file.lastIndexOf('.');
-        if (role.equals("output") && lt.spindulys.files.FileNames.isOnlyExtension(path)) {
+        boolean output = role.equals("output");
+        if (output && lt.spindulys.files.FileNames.isOnlyExtension(path)) {
             throw new IllegalArgumentException(lt.spindulys.files.FileNames.onlyExtensionMessage(path));
         }
+        String expected = output ? EXPECTED : EXPECTED_INPUT;
         if (dot < 0) {
             throw new IllegalArgumentException("unsupported " + role + " format: '" + file
-                    + "' has no extension " + EXPECTED);
+                    + "' has no extension " + expected);
         }
         String ext = file.substring(dot);
         switch (ext.toLowerCase(Locale.ROOT)) {
@@ -39,8 +45,12 @@ public enum ImageFormat {
             case ".png": return PNG;
             case ".jpg": case ".jpeg": return JPEG;
             case ".pfm": return PFM;
+            case ".exr":
+                if (output) return EXR;
+                break; // written only: not an input
             default:
-                throw new IllegalArgumentException("unsupported " + role + " format '" + ext + "' " + EXPECTED);
+                break;
         }
+        throw new IllegalArgumentException("unsupported " + role + " format '" + ext + "' " + expected);
     }
 }

@@ -30,7 +30,10 @@ import lt.spindulys.files.AtomicFile;
  *   <li>{@code .jpg}/{@code .jpeg}: baseline JPEG through javax.imageio at
  *       {@link ImageOptions#jpegQuality()};</li>
  *   <li>{@code .pfm}: colour portable float map ("PF"), little-endian (scale -1), rows
- *       bottom-to-top as the format requires, linear 32-bit floats with no clamping.</li>
+ *       bottom-to-top as the format requires, linear 32-bit floats with no clamping;</li>
+ *   <li>{@code .exr}: scanline OpenEXR, linear RGBA in halves or floats, uncompressed or ZIP
+ *       ({@link ImageOptions#exrPrecision()}, {@link ImageOptions#exrCompression()}); render
+ *       passes become channels of the same file ({@link ExrWriter}).</li>
  * </ul>
  * 8-bit formats are clamped and, if {@link ImageOptions#srgb()}, sRGB-encoded
  * ({@link FrameBuffer#toRgb8}).
@@ -62,7 +65,7 @@ public final class ImageWriter {
      * @param out the output path
      * @return the format
      * @throws IllegalArgumentException e.g. "unsupported output format '.bmp' (expected .tga,
-     *         .png, .jpg, .jpeg or .pfm)"
+     *         .png, .jpg, .jpeg, .pfm or .exr)"
      */
     public static ImageFormat checkFormat(Path out) {
         return ImageFormat.of(out, "output");
@@ -97,10 +100,11 @@ public final class ImageWriter {
 
     /**
      * Writes the image as {@link #write(FrameBuffer, Path, ImageOptions)} and, if {@code aovs} is
-     * not null, each of its passes beside it ({@link Aov#fileBeside}), all as one atomic group
+     * not null, its passes: in an OpenEXR output as channels of the same file, else each beside
+     * it ({@link Aov#filesBeside}), all as one atomic group
      * ({@link AtomicFile#writeAll}): every file is encoded to a temporary file first and only then
      * are they renamed into place, so a failure in any of them leaves none of the new files and
-     * every old one.
+     * every old one. The passes beside an image of another format:
      *
      * <ul>
      *   <li>depth: one-channel PFM ("Pf"), little-endian, bottom row first, 32-bit float
@@ -122,8 +126,15 @@ public final class ImageWriter {
     public static void write(FrameBuffer fb, Path out, ImageOptions opts, AovFrame aovs) throws IOException {
         Objects.requireNonNull(fb, "fb");
         Objects.requireNonNull(opts, "opts");
-        IoConsumer<OutputStream> image = encoder(fb, out, opts);
         if (aovs != null && aovs.passes().contains(Aov.NORMAL)) checkFinite(aovs.width(), aovs.normalData(), 3);
+        if (checkFormat(out) == ImageFormat.EXR) {
+            checkFinite(fb.width(), fb.data(), 3);
+            // One file holds the image and its passes as channels: nothing is written beside it.
+            IoConsumer<OutputStream> exr = ExrWriter.encoder(fb, aovs, opts);
+            AtomicFile.write(out, exr::accept);
+            return;
+        }
+        IoConsumer<OutputStream> image = encoder(fb, out, opts);
         List<Path> files = new ArrayList<>();
         List<AtomicFile.Body> bodies = new ArrayList<>();
         files.add(out);
@@ -174,6 +185,7 @@ public final class ImageWriter {
             case PNG -> os -> writeImageIo(fb.width(), fb.height(), fb.toRgb8(opts.srgb()), opts, "png", os);
             case JPEG -> os -> writeImageIo(fb.width(), fb.height(), fb.toRgb8(opts.srgb()), opts, "jpeg", os);
             case PFM -> os -> writePfm(fb, os);
+            case EXR -> ExrWriter.encoder(fb, null, opts);
         };
     }
 
@@ -228,7 +240,7 @@ public final class ImageWriter {
      * @throws IOException if one of the files could not be written
      */
     public static void checkPassOutputs(Path out, Set<Aov> aovs) throws IOException {
-        for (Aov a : aovs) AtomicFile.checkWritable(a.fileBeside(out));
+        for (Path p : Aov.filesBeside(out, aovs)) AtomicFile.checkWritable(p);
     }
 
     /**

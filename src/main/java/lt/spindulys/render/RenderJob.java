@@ -72,7 +72,7 @@ public final class RenderJob {
     private Path output;
     private AssetRoots assetRoots = AssetRoots.ANY;
     private Integer frame;
-    private double jpegQuality = ImageOptions.DEFAULT.jpegQuality();
+    private ImageOptions imageOptions = ImageOptions.DEFAULT;
     private int threads = Runtime.getRuntime().availableProcessors();
     private ProgressListener progress;
     private TileListener tiles;
@@ -216,8 +216,20 @@ public final class RenderJob {
      */
     public RenderJob jpegQuality(double quality) {
         configurable(false);
-        new ImageOptions(true, quality); // validates
-        jpegQuality = quality;
+        imageOptions = imageOptions.withJpegQuality(quality);
+        return this;
+    }
+
+    /**
+     * Sets how an .exr output stores its channels (default: halves, ZIP; other formats ignore it).
+     *
+     * @param precision half or float colour and normals
+     * @param compression the compression of the line blocks
+     * @return this job
+     */
+    public RenderJob exr(lt.spindulys.image.ExrPrecision precision, lt.spindulys.image.ExrCompression compression) {
+        configurable(false);
+        imageOptions = imageOptions.withExr(precision, compression);
         return this;
     }
 
@@ -431,7 +443,7 @@ public final class RenderJob {
         RenderResult result = Renderer.render(built, threads, progress, cancelled, tiles, c.region()).withTimes(c.load(), build).ofFrame(frame);
         if (output != null) {
             enter(Stage.WRITE);
-            result.write(output, jpegQuality);
+            result.write(output, imageOptions);
         }
         stage = Stage.DONE;
         return result;
@@ -455,13 +467,13 @@ public final class RenderJob {
      * from: the output would replace its own input.
      *
      * @param output the image to be written
-     * @param passes the passes to be written beside it ({@link Aov#fileBeside})
+     * @param passes the passes to be written beside it ({@link Aov#filesBeside})
      * @param inputs the files read ({@link SceneBuilder#inputFiles()})
      * @throws InputFile.OutputIsInputException naming the file and the input
      */
     public static void checkNotInput(Path output, java.util.Set<Aov> passes, java.util.List<InputFile> inputs) {
         InputFile.checkOutput(output, inputs);
-        for (Aov a : passes) InputFile.checkOutput(a.fileBeside(output), inputs);
+        for (java.nio.file.Path p : Aov.filesBeside(output, passes)) InputFile.checkOutput(p, inputs);
     }
 
     /** A region chosen by the frame's size. */

@@ -164,8 +164,8 @@ public final class RenderResult {
 
     /**
      * Writes the image to {@code out} in the format its extension names (.png, .jpg/.jpeg, .tga,
-     * .pfm), sRGB-encoded as the scene says, with each render pass beside it
-     * ({@link lt.spindulys.image.Aov#fileBeside}); all files are written atomically as one group,
+     * .pfm, .exr), sRGB-encoded as the scene says, with each render pass beside it
+     * ({@link lt.spindulys.image.Aov#filesBeside}) or, in an .exr, as its channels; all files are written atomically as one group,
      * so a failure leaves none of the new files and every old one. The render of a
      * {@link #region()} is written as a PNG tile that records its place ({@link TileFile}).
      *
@@ -186,7 +186,20 @@ public final class RenderResult {
      * @throws IOException if a file cannot be written
      */
     public void write(Path out, double jpegQuality) throws IOException {
-        ImageOptions opts = new ImageOptions(settings.srgb(), jpegQuality);
+        write(out, new ImageOptions(settings.srgb(), jpegQuality));
+    }
+
+    /**
+     * {@link #write(Path)} with encoding options; the sRGB encoding is the scene's whatever
+     * {@code options} say.
+     *
+     * @param out     the image file
+     * @param options the JPEG quality and the OpenEXR precision and compression
+     * @throws IllegalArgumentException if the extension names no supported format
+     * @throws IOException if a file cannot be written
+     */
+    public void write(Path out, ImageOptions options) throws IOException {
+        ImageOptions opts = options.withSrgb(settings.srgb());
         if (region == null) {
             ImageWriter.write(frame, out, opts, passes);
             return;

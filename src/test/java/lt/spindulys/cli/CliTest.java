@@ -210,7 +210,7 @@ class CliTest {
                 {"render: --spp must be between 1 and 65536, found 0", scene.toString(), "--spp", "0"},
                 {"render: --accel expects one of bvh, bvh-compact, bvh2, octree, bruteforce, found 'kdtree'", scene.toString(), "--accel", "kdtree"},
                 {"render: option -o needs a value", scene.toString(), "-o"},
-                {"render: unsupported output format '.bmp' (expected .tga, .png, .jpg, .jpeg or .pfm)", scene.toString(), "-o", dir.resolve("x.bmp").toString()},
+                {"render: unsupported output format '.bmp' (expected .tga, .png, .jpg, .jpeg, .pfm or .exr)", scene.toString(), "-o", dir.resolve("x.bmp").toString()},
                 {"render: no scene file given (see render --help)", "--quiet"},
                 {"render: --shutter expects OPEN,CLOSE (two numbers separated by a comma), found '1'", scene.toString(), "--shutter", "1"},
                 {"render: --shutter must close after it opens, found '1,0'", scene.toString(), "--shutter", "1,0"},

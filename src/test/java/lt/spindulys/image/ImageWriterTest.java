@@ -223,10 +223,10 @@ class ImageWriterTest {
     void unsupportedExtensionFailsFastWithTheExpectedMessage() throws IOException {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> ImageWriter.checkFormat(Path.of("out.bmp")));
-        assertEquals("unsupported output format '.bmp' (expected .tga, .png, .jpg, .jpeg or .pfm)", e.getMessage());
+        assertEquals("unsupported output format '.bmp' (expected .tga, .png, .jpg, .jpeg, .pfm or .exr)", e.getMessage());
         e = assertThrows(IllegalArgumentException.class,
                 () -> ImageWriter.write(new FrameBuffer(1, 1), dir.resolve("x.bmp"), ImageOptions.DEFAULT));
-        assertEquals("unsupported output format '.bmp' (expected .tga, .png, .jpg, .jpeg or .pfm)", e.getMessage());
+        assertEquals("unsupported output format '.bmp' (expected .tga, .png, .jpg, .jpeg, .pfm or .exr)", e.getMessage());
         e = assertThrows(IllegalArgumentException.class, () -> ImageWriter.checkFormat(Path.of("render")));
         assertTrue(e.getMessage().contains("'render' has no extension"), e.getMessage());
         assertEquals(List.of(), listing());
