@@ -19,6 +19,11 @@ def steps(x, y, c):
     noisier image above, small PIZ tiles come out larger than raw and are stored raw)."""
     return ((x // 3) * 0.25, (y // 2) * 0.5 + 1, ((x + y) // 5) * 0.125)[c]
 
+def wide(x, y, c):
+    """FLOAT values whose low 16-bit words are all different (20000 + pixel index): more than
+    16384 distinct words, which makes PIZ use its 16-bit wavelet."""
+    return struct.unpack("<f", struct.pack("<I", 0x3F800000 | (20000 + y * 128 + x)))[0]
+
 def attr(name, typ, data):
     return name.encode() + b"\0" + typ.encode() + b"\0" + struct.pack("<i", len(data)) + data
 
@@ -114,4 +119,5 @@ if __name__ == "__main__":
     write("steps-zip.exr", "zip", data_window=(0, 0, 63, 31), pixel=steps)
     write("steps-float-zip.exr", "zip", kind="float", data_window=(0, 0, 63, 31), pixel=steps)
     write("steps-luminance-none.exr", "none", channels="Y", data_window=(0, 0, 63, 31), pixel=steps)
+    write("wide-float-none.exr", "none", channels="R", kind="float", data_window=(0, 0, 127, 127), pixel=wide)
     write("window-none.exr", "none", data_window=(2, 1, 2 + W - 1, 1 + H - 1), display_window=(0, 0, W + 3, H + 1))

@@ -118,6 +118,17 @@ class ExrReaderTest {
     }
 
     @Test
+    void pizWithMoreThan16384DistinctWordsUsesTheSixteenBitWaveletCorrectly() throws IOException {
+        HdrReader.Image wide = read("tiled-wide-float-piz");
+        assertEquals(128, wide.width());
+        for (int i = 0; i < 128 * 128; i++) {
+            assertEquals(Float.intBitsToFloat(0x3F800000 | (20000 + i)), wide.rgb()[3 * i], 0f, "pixel " + i);
+            assertEquals(0f, wide.rgb()[3 * i + 1], 0f);
+            assertEquals(0f, wide.rgb()[3 * i + 2], 0f);
+        }
+    }
+
+    @Test
     void scanlinePizMatchesTheSameImageUncompressed() throws IOException {
         HdrReader.Image piz = read("scan-steps-piz");
         assertSame(read("scan-steps-piz-reference"), piz, "scan-steps-piz");
