@@ -18,6 +18,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 import lt.spindulys.math.Ranges;
+import lt.spindulys.scene.Environment;
 
 /**
  * The OpenEXR reader on the small files of {@code src/test/resources/exr} (see the README there
@@ -197,6 +198,7 @@ class ExrReaderTest {
         HdrReader.Image reference = read("scan-none");
         assertEquals(W, t.width());
         assertEquals(reference.rgb()[3 * (7 * W + 30) + 2], t.texel(0, 30, 7, 2), 0.0);
+        assertEquals(W, Environment.load(good, 0, 1).map().width());
         IOException e = assertThrows(IOException.class, () -> cache.load(bad));
         assertEquals(bad + ": DWAB compression is not supported (a lossy codec); re-save it with ZIP or PIZ", e.getMessage());
     }
