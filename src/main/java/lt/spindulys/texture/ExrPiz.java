@@ -27,6 +27,8 @@ final class ExrPiz {
     private final char[] words;
     private final byte[] bitmap = new byte[BITMAP_SIZE];
     private final char[] lut = new char[USHORT_RANGE];
+    /** Entries of {@link #lut} the last block set; the rest are 0. */
+    private int lutFilled;
     /** Per symbol: code length in the low 6 bits, the code above them. */
     private final long[] hcode = new long[ENC_SIZE];
     /** Per 14-bit prefix: the length and symbol of a short code, or the symbols of the long codes starting with it. */
@@ -51,14 +53,14 @@ final class ExrPiz {
         int minNonZero = u16(data, at), maxNonZero = u16(data, at + 2);
         at += 4;
         if (maxNonZero >= BITMAP_SIZE) throw new IOException("bitmap end " + maxNonZero + ", expected below " + BITMAP_SIZE);
-        Arrays.fill(bitmap, (byte) 0);
+        Arrays.fill(bitmap, (byte) 0);  // 8 KiB: cheap
         if (minNonZero <= maxNonZero) {
             int n = maxNonZero - minNonZero + 1;
             if (n > end - at) throw new IOException("the bitmap passes the end of the data");
             System.arraycopy(data, at, bitmap, minNonZero, n);
             at += n;
         }
-        int maxValue = reverseLut();
+        int maxValue = reverseLut(minNonZero <= maxNonZero ? maxNonZero : -1);
         if (end - at < 4) throw new IOException("no room for the Huffman data length");
         int length = ExrReader.int32(data, at);
         at += 4;
@@ -100,14 +102,21 @@ final class ExrPiz {
         return b[at] & 0xFF | (b[at + 1] & 0xFF) << 8;
     }
 
-    /** The table from dense codes back to the values the bitmap marks (0 always); returns the largest code. */
-    private int reverseLut() {
-        int k = 0;
-        for (int i = 0; i < USHORT_RANGE; i++) {
+    /**
+     * The table from dense codes back to the values the bitmap marks (0 always); returns the
+     * largest code. Only the bitmap's used bytes are scanned and only the entries the previous
+     * block filled are cleared, so a file of many small blocks does not pay 65,536 steps for each.
+     */
+    private int reverseLut(int maxNonZero) {
+        int k = 0, end = (maxNonZero + 1) * 8;
+        for (int i = 0; i < end; i++) {
             if (i == 0 || (bitmap[i >> 3] & (1 << (i & 7))) != 0) lut[k++] = (char) i;
         }
+        if (k == 0) lut[k++] = 0;
         int max = k - 1;
-        Arrays.fill(lut, k, USHORT_RANGE, (char) 0);
+        // Codes above max only occur in corrupt data; they must still map to a value.
+        if (lutFilled > k) Arrays.fill(lut, k, lutFilled, (char) 0);
+        lutFilled = k;
         return max;
     }
 
@@ -232,7 +241,9 @@ final class ExrPiz {
 
     /** The code lengths, run-length packed, then made canonical codes. */
     private void unpackCodeTable(int im, int iM) throws IOException {
-        Arrays.fill(hcode, 0);
+        // Only symbols im..iM are ever looked up, so only they are cleared and made canonical.
+        int first = im, last = iM;
+        Arrays.fill(hcode, first, last + 1, 0);
         bits = 0;
         bitCount = 0;
         for (; im <= iM; im++) {
@@ -246,14 +257,14 @@ final class ExrPiz {
             }
         }
         long[] n = new long[59];
-        for (long l : hcode) n[(int) l]++;
+        for (int i = first; i <= last; i++) n[(int) hcode[i]]++;
         long c = 0;
         for (int i = 58; i > 0; i--) {
             long next = (c + n[i]) >> 1;
             n[i] = c;
             c = next;
         }
-        for (int i = 0; i < ENC_SIZE; i++) {
+        for (int i = first; i <= last; i++) {
             int l = (int) hcode[i];
             if (l > 0) hcode[i] = l | n[l]++ << 6;
         }
