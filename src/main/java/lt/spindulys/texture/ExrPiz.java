@@ -274,18 +274,32 @@ final class ExrPiz {
         Arrays.fill(decLength, 0);
         Arrays.fill(decSymbol, 0);
         Arrays.fill(decLong, null);
+        // Long codes are counted per prefix first, so each prefix's list is allocated once.
+        int[] longCount = decSymbol;
+        for (int i = im; i <= iM; i++) {
+            long code = hcode[i] >>> 6;
+            int l = (int) (hcode[i] & 63);
+            if (code >>> l != 0) throw new IOException("a Huffman code longer than its length");
+            if (l > DEC_BITS) longCount[(int) (code >>> (l - DEC_BITS))]++;
+        }
+        for (int e = 0; e < DEC_SIZE; e++) {
+            if (longCount[e] > 0) {
+                decLong[e] = new int[longCount[e]];
+                longCount[e] = 0;  // now the fill position
+            }
+        }
+        for (int i = im; i <= iM; i++) {
+            int l = (int) (hcode[i] & 63);
+            if (l > DEC_BITS) {
+                int e = (int) ((hcode[i] >>> 6) >>> (l - DEC_BITS));
+                decLong[e][longCount[e]++] = i;
+            }
+        }
+        Arrays.fill(decSymbol, 0);
         for (; im <= iM; im++) {
             long code = hcode[im] >>> 6;
             int l = (int) (hcode[im] & 63);
-            if (code >>> l != 0) throw new IOException("a Huffman code longer than its length");
-            if (l > DEC_BITS) {
-                int e = (int) (code >>> (l - DEC_BITS));
-                if (decLength[e] != 0) throw new IOException("a long Huffman code shares a prefix with a short one");
-                int[] list = decLong[e];
-                list = list == null ? new int[1] : Arrays.copyOf(list, list.length + 1);
-                list[list.length - 1] = im;
-                decLong[e] = list;
-            } else if (l > 0) {
+            if (l > 0 && l <= DEC_BITS) {
                 int e = (int) (code << (DEC_BITS - l));
                 for (int i = 0; i < 1 << (DEC_BITS - l); i++, e++) {
                     if (decLength[e] != 0 || decLong[e] != null) throw new IOException("two Huffman codes share a prefix");
