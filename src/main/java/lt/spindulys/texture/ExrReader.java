@@ -92,10 +92,10 @@ final class ExrReader {
             if (count > MAX_ATTRIBUTES) throw new IOException("OpenEXR header has more than " + MAX_ATTRIBUTES + " attributes");
             String name = in.name("attribute name");
             if (name.isEmpty()) break;
-            String type = in.name("attribute type of '" + name + "'");
+            String type = in.name("attribute type of " + shown(name));
             int size = in.int32();
             if (size < 0 || size > in.remaining()) {
-                throw new IOException("truncated OpenEXR header: attribute '" + name + "' says " + size + " bytes, " + in.remaining() + " remain");
+                throw new IOException("truncated OpenEXR header: attribute " + shown(name) + " says " + size + " bytes, " + in.remaining() + " remain");
             }
             int end = in.at + size;
             switch (name) {
@@ -120,7 +120,7 @@ final class ExrReader {
                 }
                 case "type" -> {
                     String t = new String(data, in.at, size, StandardCharsets.ISO_8859_1);
-                    if (t.startsWith("deep")) throw new IOException("deep OpenEXR data are not supported (type '" + t + "'; expected a flat image)");
+                    if (t.startsWith("deep")) throw new IOException("deep OpenEXR data are not supported (type " + shown(t) + "; expected a flat image)");
                 }
                 default -> { }
             }
@@ -249,7 +249,7 @@ final class ExrReader {
         if (pick[0] < 0 && pick[1] < 0 && pick[2] < 0) {
             if (y < 0) {
                 List<String> names = new ArrayList<>();
-                for (ExrChannel c : channels) names.add(c.name);
+                for (ExrChannel c : channels) names.add(shown(c.name));
                 String list = String.join(", ", names.size() > 8 ? names.subList(0, 8) : names) + (names.size() > 8 ? ", ..." : "");
                 throw new IOException("OpenEXR file has no R, G, B or Y channel (it has " + (names.isEmpty() ? "none" : list) + ")");
             }
@@ -295,8 +295,19 @@ final class ExrReader {
         return n;
     }
 
+    /** A name from the file as shown in messages: quoted, printable, at most 40 characters. */
+    private static String shown(String s) {
+        StringBuilder b = new StringBuilder("'");
+        for (int i = 0; i < s.length(); i++) {
+            if (i == 40) return b.append("...'").toString();
+            char c = s.charAt(i);
+            b.append(c >= 32 && c < 127 ? String.valueOf(c) : String.format("\\x%02x", (int) c));
+        }
+        return b.append('\'').toString();
+    }
+
     private static void expectSize(String name, int size, int expected) throws IOException {
-        if (size != expected) throw new IOException("bad OpenEXR attribute '" + name + "': " + size + " bytes, expected " + expected);
+        if (size != expected) throw new IOException("bad OpenEXR attribute " + shown(name) + ": " + size + " bytes, expected " + expected);
     }
 
     private static List<ExrChannel> channels(Bytes in, int end) throws IOException {
@@ -306,13 +317,13 @@ final class ExrReader {
             String name = in.name("channel name");
             if (name.isEmpty()) break;
             if (list.size() >= MAX_CHANNELS) throw new IOException("OpenEXR file has more than " + MAX_CHANNELS + " channels");
-            if (end - in.at < 16) throw new IOException("bad OpenEXR channel list: channel '" + name + "' is cut short");
+            if (end - in.at < 16) throw new IOException("bad OpenEXR channel list: channel " + shown(name) + " is cut short");
             int type = in.int32();
             in.at += 4;  // pLinear and reserved bytes
             int xs = in.int32(), ys = in.int32();
-            if (type < UINT || type > FLOAT) throw new IOException("bad OpenEXR channel '" + name + "': pixel type " + type + " (expected 0 UINT, 1 HALF or 2 FLOAT)");
+            if (type < UINT || type > FLOAT) throw new IOException("bad OpenEXR channel " + shown(name) + ": pixel type " + type + " (expected 0 UINT, 1 HALF or 2 FLOAT)");
             if (xs != 1 || ys != 1) {
-                throw new IOException("OpenEXR channel '" + name + "' is subsampled (" + xs + "x" + ys + "); only channels with a sample at every pixel are read");
+                throw new IOException("OpenEXR channel " + shown(name) + " is subsampled (" + xs + "x" + ys + "); only channels with a sample at every pixel are read");
             }
             list.add(new ExrChannel(name, type));
         }

@@ -216,6 +216,11 @@ class ExrReaderTest {
         deep[5] |= 0x08;
         assertMessage(deep, "deep OpenEXR data are not supported");
         assertMessage(Arrays.copyOf(b, 5), "truncated OpenEXR file: 5 bytes");
+        byte[] name = b.clone();
+        int at = indexOf(name, "pixelAspectRatio".getBytes());
+        name[at] = '\n';
+        writeInt(name, at + "pixelAspectRatio\0float\0".length(), 1 << 30);
+        assertMessage(name, "truncated OpenEXR header: attribute '\\x0aixelAspectRatio' says 1073741824 bytes");
         assertMessage(Arrays.copyOf(b, 100), "truncated OpenEXR header");
     }
 
