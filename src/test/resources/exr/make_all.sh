@@ -13,6 +13,7 @@ exrmaketiled -t 32 16 -z piz scan-none.exr tiled-piz-stored.exr
 # The quantised "steps" images do compress, in full and partial tiles (64 = 24 + 24 + 16).
 exrmaketiled -t 24 12 -z piz steps-none.exr tiled-steps-piz.exr
 exrmaketiled -t 24 12 -z piz steps-float-zip.exr tiled-steps-float-piz.exr
+exrmaketiled -t 24 12 -z piz steps-uint-zip.exr tiled-steps-uint-piz.exr
 exrmaketiled -t 24 12 -z piz steps-luminance-none.exr tiled-steps-luminance-piz.exr
 exrmaketiled -t 128 128 -z piz wide-float-none.exr tiled-wide-float-piz.exr
 # exr2aces writes scanline PIZ (and converts the colours to ACES primaries); its NONE twin is the reference.

@@ -68,7 +68,7 @@ CODECS = {"none": (0, 1), "rle": (1, 1), "zips": (2, 1), "zip": (3, 16)}
 def write(path, codec, channels="BGR", kind="half", data_window=(0, 0, W - 1, H - 1), display_window=None, pixel=value):
     display_window = display_window or data_window
     code, lines = CODECS[codec]
-    ptype, size = {"half": (1, 2), "float": (2, 4)}[kind]
+    ptype, size = {"uint": (0, 4), "half": (1, 2), "float": (2, 4)}[kind]
     chlist = b"".join(c.encode() + b"\0" + struct.pack("<iB3xii", ptype, 0, 1, 1) for c in sorted(channels)) + b"\0"
     head = b"\x76\x2f\x31\x01" + struct.pack("<i", 2)
     head += attr("channels", "chlist", chlist)
@@ -90,7 +90,7 @@ def write(path, codec, channels="BGR", kind="half", data_window=(0, 0, W - 1, H 
                 ci = "RGBY".index(c)
                 for xx in range(w):
                     v = pixel(xx, yy, ci % 3) if c != "Y" else pixel(xx, yy, 1) + 0.5 * pixel(xx, yy, 2)
-                    raw += half(v) if kind == "half" else struct.pack("<f", v)
+                    raw += half(v) if kind == "half" else struct.pack("<I", int(v)) if kind == "uint" else struct.pack("<f", v)
         if codec == "none":
             data = raw
         elif codec == "rle":
@@ -118,6 +118,7 @@ if __name__ == "__main__":
     write("steps-none.exr", "none", data_window=(0, 0, 63, 31), pixel=steps)
     write("steps-zip.exr", "zip", data_window=(0, 0, 63, 31), pixel=steps)
     write("steps-float-zip.exr", "zip", kind="float", data_window=(0, 0, 63, 31), pixel=steps)
+    write("steps-uint-zip.exr", "zip", kind="uint", data_window=(0, 0, 63, 31), pixel=lambda x, y, c: 8 * steps(x, y, c))
     write("steps-luminance-none.exr", "none", channels="Y", data_window=(0, 0, 63, 31), pixel=steps)
     write("wide-float-none.exr", "none", channels="R", kind="float", data_window=(0, 0, 127, 127), pixel=wide)
     write("window-none.exr", "none", data_window=(2, 1, 2 + W - 1, 1 + H - 1), display_window=(0, 0, W + 3, H + 1))

@@ -119,6 +119,19 @@ class ExrReaderTest {
     }
 
     @Test
+    void uintChannelsReadAsTheirIntegers() throws IOException {
+        HdrReader.Image zip = read("steps-uint-zip");
+        for (int y = 0; y < 32; y++) {
+            for (int x = 0; x < 64; x++) {
+                for (int c = 0; c < 3; c++) {
+                    assertEquals(Math.min(8 * steps(x, y, c), Ranges.MAX_COLOUR), zip.rgb()[3 * (y * 64 + x) + c], 0.0, x + "," + y);
+                }
+            }
+        }
+        assertSame(zip, read("tiled-steps-uint-piz"), "tiled-steps-uint-piz");
+    }
+
+    @Test
     void pizWithMoreThan16384DistinctWordsUsesTheSixteenBitWaveletCorrectly() throws IOException {
         HdrReader.Image wide = read("tiled-wide-float-piz");
         assertEquals(128, wide.width());
