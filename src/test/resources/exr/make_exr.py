@@ -32,8 +32,6 @@ def half(v):
 
 def reorder_predict(raw):
     """The byte split and delta predictor that RLE, ZIPS and ZIP apply before compressing."""
-    t = bytearray(len(raw))
-    t[0::1] = b""
     even, odd = raw[0::2], raw[1::2]
     t = bytearray(even + odd)
     p = t[0]
