@@ -103,7 +103,7 @@ public final class Environment {
     }
 
     /**
-     * An environment from an image file: Radiance {@code .hdr} and {@code .pfm} are linear, PNG
+     * An environment from an image file: OpenEXR {@code .exr}, Radiance {@code .hdr} and {@code .pfm} are linear, PNG
      * and JPEG colour images are sRGB-decoded, as textures are ({@link TextureCache}).
      *
      * @param file          the image

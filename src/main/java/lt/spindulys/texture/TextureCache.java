@@ -28,8 +28,8 @@ import lt.spindulys.limits.InputFiles;
  * (and one mip chain).
  *
  * <p>Formats: {@code .tga} files are read by {@link TgaReader}, {@code .hdr} (Radiance RGBE) by
- * {@link HdrReader} and {@code .pfm} by {@link PfmReader} (both high dynamic range, LINEAR, kept
- * as three floats a texel); everything else by javax.imageio, which recognises PNG, JPEG, BMP and
+ * {@link HdrReader}, {@code .pfm} by {@link PfmReader} and {@code .exr} (OpenEXR) by
+ * {@link ExrReader} (all high dynamic range, LINEAR, kept as three floats a texel); everything else by javax.imageio, which recognises PNG, JPEG, BMP and
  * GIF by their contents. Alpha is ignored;
  * 16-bit colour images are reduced to 8 bits per channel (16-bit greyscale keeps its precision).
  *
@@ -177,8 +177,9 @@ public final class TextureCache {
             TgaReader.Image t = TgaReader.read(file);
             return fromRgb8(t.width(), t.height(), t.rgb(), !t.grey());
         }
-        if (name.endsWith(".hdr") || name.endsWith(".pfm")) {
-            HdrReader.Image f = name.endsWith(".hdr") ? HdrReader.read(file) : PfmReader.read(file);
+        if (name.endsWith(".hdr") || name.endsWith(".pfm") || name.endsWith(".exr")) {
+            HdrReader.Image f = name.endsWith(".hdr") ? HdrReader.read(file)
+                    : name.endsWith(".pfm") ? PfmReader.read(file) : ExrReader.read(file);
             return TextureImage.wrap(f.width(), f.height(), f.rgb());
         }
         try (ImageInputStream in = ImageIO.createImageInputStream(file.toFile())) {
