@@ -186,7 +186,7 @@ public final class TextureCache {
             if (in == null) throw new IOException("cannot open the file");
             Iterator<ImageReader> readers = ImageIO.getImageReaders(in);
             if (!readers.hasNext()) {
-                throw new IOException("not a PNG, JPEG, BMP, GIF or TGA image (no decoder recognises its contents)");
+                throw new IOException("not a PNG, JPEG, BMP, GIF or TGA image (no decoder recognises its contents; .hdr, .pfm and .exr files are read by their extension)");
             }
             ImageReader reader = readers.next();
             try {

@@ -101,7 +101,7 @@ public final class BadInputCases {
     private static final String HUGE_TGA_HEADER = "\0\0\u0002\0\0\0\0\0\0\0\0\0\u0000\u0040\u0001\u0010\u0018\u0020";
 
     /** What the texture cache says about a file that is not an image it can decode. */
-    static final String UNREADABLE_IMAGE = "not a PNG, JPEG, BMP, GIF or TGA image (no decoder recognises its contents)";
+    static final String UNREADABLE_IMAGE = "not a PNG, JPEG, BMP, GIF or TGA image (no decoder recognises its contents; .hdr, .pfm and .exr files are read by their extension)";
 
     /** Every case; none of them must produce an image. */
     public static List<Case> scenes() {
