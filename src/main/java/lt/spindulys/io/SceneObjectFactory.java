@@ -8,6 +8,7 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 import lt.spindulys.scene.AcceleratorKind;
+import lt.spindulys.sampling.PixelFilter;
 import lt.spindulys.scene.IntegratorKind;
 import lt.spindulys.scene.AdaptiveSettings;
 import lt.spindulys.camera.Camera;
@@ -123,6 +124,8 @@ final class SceneObjectFactory {
                     case "subdivtarget" -> sb.adaptive(adaptive = adaptive.withTarget(AdaptiveSettings.checkTarget((Double) v)));
                     case "integrator" -> sb.integrator(IntegratorKind.fromKeyword((String) v));
                     case "clamp" -> sb.clamp((Double) v);
+                    case "filter" -> sb.filter(PixelFilter.fromKeyword((String) v));
+                    case "filterwidth" -> sb.filterWidth((Double) v);
                     default -> throw unhandled(pr);
                 }
             } catch (IllegalArgumentException e) {

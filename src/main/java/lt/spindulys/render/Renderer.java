@@ -18,6 +18,7 @@ import lt.spindulys.image.PixelRegion;
 import lt.spindulys.limits.HeapBudget;
 import lt.spindulys.limits.InsufficientMemoryException;
 import lt.spindulys.math.Ray;
+import lt.spindulys.sampling.FilterSampler;
 import lt.spindulys.sampling.PixelSampler;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
@@ -241,6 +242,7 @@ public final class Renderer {
         // patches while it is traced takes them row by row, so that neighbouring tiles reuse the
         // patches in its cache instead of evicting them (the image is the same in any order).
         int stride = scene.refinesWhileTracing() ? 1 : spreadStride(tiles);
+        FilterSampler filter = new FilterSampler(st.filter(), st.pixelFilterWidth()); // one table, shared by the threads
         AtomicInteger nextTile = new AtomicInteger();
         AtomicLong donePixels = new AtomicLong();
         AtomicReference<Throwable> failure = new AtomicReference<>();
@@ -273,7 +275,7 @@ public final class Renderer {
                         own = integrator.newScratch(reservation);
                         // Time samples only where something moves (an object or the camera) and each sample has its own time.
                         PixelSampler ps = new PixelSampler(pass.samples, scene.camera().usesLens() ? scene.camera().lensPattern() : null,
-                                (scene.hasMovingObjects() || scene.camera().moves()) && Double.isNaN(pass.time));
+                                (scene.hasMovingObjects() || scene.camera().moves()) && Double.isNaN(pass.time), filter);
                         reservation.release(sampler);
                         Ray ray = new Ray();
                         double[] colour = new double[4];
@@ -330,6 +332,7 @@ public final class Renderer {
                                       int fx0, int fy0, int fx1, int fy1, BooleanSupplier stop) {
         int w = st.width(), h = st.height(), n = sampler.samplesPerPixel(), fw = fb.width();
         double aspect = st.aspect();
+        boolean weighted = sampler.filter().hasNegativeWeights();
         boolean ownTimes = Double.isNaN(pass.time);
         double[] data = fb.data();
         // The frame buffer's pixel (fx, fy) is the frame's (ox + fx, oy + fy): the pixel the samples are seeded from and traced through.
@@ -338,7 +341,7 @@ public final class Renderer {
             for (int fx = fx0; fx < fx1; fx++) {
                 int x = ox + fx;
                 sampler.startPixel(pass.seed, x, y);
-                double r = 0, g = 0, b = 0;
+                double r = 0, g = 0, b = 0, weights = 0;
                 for (int i = 0; i < n; i++) {
                     if ((i & (STOP_CHECK - 1)) == 0 && stop.getAsBoolean()) return false;
                     double time = ownTimes ? st.shutterTime(sampler.time(i)) : pass.time;
@@ -346,9 +349,21 @@ public final class Renderer {
                             sampler.lensU(i), sampler.lensV(i), time, ray);
                     scratch.setSample(pass.seed, x, y, i, n);
                     integrator.traceCamera(ray, scratch, colour);
-                    r += colour[0]; g += colour[1]; b += colour[2];
+                    if (weighted) {
+                        double wt = sampler.weight(i);
+                        r += wt * colour[0]; g += wt * colour[1]; b += wt * colour[2];
+                        weights += wt;
+                    } else {
+                        r += colour[0]; g += colour[1]; b += colour[2];
+                    }
                 }
-                r /= n; g /= n; b /= n;
+                // Weights of exactly 1 (a non-negative filter sampled exactly): the mean. With
+                // negative lobes, pbrt's weighted average, which keeps a flat colour flat; when the
+                // negative samples outweigh the rest (a few samples, by chance) it would flip or
+                // blow up, so then the plain mean of the weighted samples is taken, whose
+                // expectation is the filtered value too (the weights' mean is 1).
+                double norm = weighted && weights > 0 ? weights : n;
+                r /= norm; g /= norm; b /= norm;
                 if (pass.accumulate) {
                     int o = 3 * (fy * fw + fx);
                     r += data[o]; g += data[o + 1]; b += data[o + 2];
