@@ -341,7 +341,7 @@ public final class Renderer {
             for (int fx = fx0; fx < fx1; fx++) {
                 int x = ox + fx;
                 sampler.startPixel(pass.seed, x, y);
-                double r = 0, g = 0, b = 0, weights = 0;
+                double r = 0, g = 0, b = 0, weights = 0, plainR = 0, plainG = 0, plainB = 0;
                 for (int i = 0; i < n; i++) {
                     if ((i & (STOP_CHECK - 1)) == 0 && stop.getAsBoolean()) return false;
                     double time = ownTimes ? st.shutterTime(sampler.time(i)) : pass.time;
@@ -353,15 +353,19 @@ public final class Renderer {
                         double wt = sampler.weight(i);
                         r += wt * colour[0]; g += wt * colour[1]; b += wt * colour[2];
                         weights += wt;
+                        plainR += colour[0]; plainG += colour[1]; plainB += colour[2];
                     } else {
                         r += colour[0]; g += colour[1]; b += colour[2];
                     }
                 }
                 // Weights of exactly 1 (a non-negative filter sampled exactly): the mean. With
-                // negative lobes, pbrt's weighted average, which keeps a flat colour flat; when the
-                // negative samples outweigh the rest (a few samples, by chance) it would flip or
-                // blow up, so then the plain mean of the weighted samples is taken, whose
-                // expectation is the filtered value too (the weights' mean is 1).
+                // negative lobes, pbrt's weighted average, which keeps a flat colour flat. When the
+                // negative samples weigh as much as the rest (a few samples, by chance) it would
+                // divide by zero or flip sign, so then the samples' plain mean is taken: the
+                // average under |f|, still exact on a flat colour.
+                if (weighted && !(weights > 0)) {
+                    r = plainR; g = plainG; b = plainB;
+                }
                 double norm = weighted && weights > 0 ? weights : n;
                 r /= norm; g /= norm; b /= norm;
                 if (pass.accumulate) {
