@@ -39,6 +39,12 @@ import lt.spindulys.shading.Integrator;
  * thesis did: N whole-frame passes, pass k with every ray at open + (k + 0.5) / N (close - open)
  * and samples / N samples per pixel (seeded per pass and pixel), averaged in pass order, so that
  * too is identical for any thread count.
+ *
+ * <p><b>Pixel filter.</b> The film samples are drawn from the settings' pixel filter
+ * ({@link lt.spindulys.sampling.PixelFilter}), so a filter wider than a pixel needs no samples
+ * from the neighbours: each sample adds to its own pixel only, in sample order, and tiles and
+ * regions assemble bit for bit. A pixel is the mean of its samples, or, for a filter with negative
+ * lobes, their weighted average.
  */
 public final class Renderer {
     /** Tile side in pixels: small enough to balance two cores, large enough to keep counters cheap. */

@@ -101,7 +101,8 @@ public final class FilterSampler {
      */
     public double offset(int bin, double u) {
         if (cdf == null) return width * (u - 0.5);
-        double t = (u - cdf[bin]) / (cdf[bin + 1] - cdf[bin]);
+        double mass = cdf[bin + 1] - cdf[bin];
+        double t = mass > 0 ? (u - cdf[bin]) / mass : 0.5; // an empty bin only if u lies past the last non-empty one
         return -radius + (bin + t) * binWidth;
     }
 
