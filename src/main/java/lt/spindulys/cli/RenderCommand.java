@@ -10,7 +10,7 @@ import java.util.Map;
 import java.util.Set;
 
 import lt.spindulys.scene.AcceleratorKind;
-import lt.spindulys.sampling.PixelFilter;
+import lt.spindulys.camera.PixelFilter;
 import lt.spindulys.scene.IntegratorKind;
 import lt.spindulys.scene.InputFile;
 import lt.spindulys.scene.AdaptiveSettings;

@@ -9,7 +9,7 @@ import lt.spindulys.material.Material;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
 import lt.spindulys.camera.LensPattern;
-import lt.spindulys.sampling.PixelFilter;
+import lt.spindulys.camera.PixelFilter;
 import lt.spindulys.scene.IntegratorKind;
 
 /**

@@ -8,11 +8,11 @@ import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
 import lt.spindulys.scene.AcceleratorKind;
-import lt.spindulys.sampling.PixelFilter;
 import lt.spindulys.scene.IntegratorKind;
 import lt.spindulys.scene.AdaptiveSettings;
 import lt.spindulys.camera.Camera;
 import lt.spindulys.camera.PinholeCamera;
+import lt.spindulys.camera.PixelFilter;
 import lt.spindulys.camera.ThinLensCamera;
 import lt.spindulys.image.Aov;
 import lt.spindulys.io.SceneBlockReader.AxisAngle;

@@ -41,7 +41,7 @@ import lt.spindulys.shading.Integrator;
  * too is identical for any thread count.
  *
  * <p><b>Pixel filter.</b> The film samples are drawn from the settings' pixel filter
- * ({@link lt.spindulys.sampling.PixelFilter}), so a filter wider than a pixel needs no samples
+ * ({@link lt.spindulys.camera.PixelFilter}), so a filter wider than a pixel needs no samples
  * from the neighbours: each sample adds to its own pixel only, in sample order, and tiles and
  * regions assemble bit for bit. A pixel is the mean of its samples, or, for a filter with negative
  * lobes, their weighted average.

@@ -2,6 +2,8 @@ package lt.spindulys.sampling;
 
 import java.util.Objects;
 
+import lt.spindulys.camera.PixelFilter;
+
 /**
  * Draws film offsets from a {@link PixelFilter} of a given width, one axis at a time (the filters
  * are separable), by inverting a tabulated distribution, as pbrt-v4's FilterSampler and Cycles'

@@ -4,6 +4,7 @@ import java.util.Arrays;
 import java.util.Objects;
 
 import lt.spindulys.camera.LensPattern;
+import lt.spindulys.camera.PixelFilter;
 
 /**
  * Stratified samples for one pixel: film position on a grid as square as the sample count

@@ -9,7 +9,7 @@ import lt.spindulys.image.Aov;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Placement;
 import lt.spindulys.math.Ranges;
-import lt.spindulys.sampling.PixelFilter;
+import lt.spindulys.camera.PixelFilter;
 
 /**
  * Image and integrator settings of a scene, immutable. Make them with a {@link Builder}, which

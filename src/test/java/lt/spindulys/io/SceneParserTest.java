@@ -192,12 +192,12 @@ class SceneParserTest {
     @Test
     void filterAndItsWidthAreSettings() {
         RenderSettings s = parse("settings { filter blackman-harris }").settings();
-        assertEquals(lt.spindulys.sampling.PixelFilter.BLACKMAN_HARRIS, s.filter());
+        assertEquals(lt.spindulys.camera.PixelFilter.BLACKMAN_HARRIS, s.filter());
         assertEquals(1.5, s.pixelFilterWidth());
         RenderSettings m = parse("settings { filterwidth 3  filter mitchell }").settings();
-        assertEquals(lt.spindulys.sampling.PixelFilter.MITCHELL, m.filter());
+        assertEquals(lt.spindulys.camera.PixelFilter.MITCHELL, m.filter());
         assertEquals(3, m.pixelFilterWidth());
-        assertEquals(lt.spindulys.sampling.PixelFilter.BOX, parse("settings { width 10 }").settings().filter());
+        assertEquals(lt.spindulys.camera.PixelFilter.BOX, parse("settings { width 10 }").settings().filter());
         SceneException bad = assertThrows(SceneException.class, () -> parse("settings { filter lanczos }"));
         assertTrue(bad.getMessage().contains("expected box, gaussian, blackman-harris or mitchell for 'filter', found 'lanczos'"), bad.getMessage());
         SceneException wide = assertThrows(SceneException.class, () -> parse("settings { filterwidth 40 }"));

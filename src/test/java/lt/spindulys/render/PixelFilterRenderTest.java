@@ -10,7 +10,7 @@ import org.junit.jupiter.params.provider.EnumSource;
 
 import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.io.SceneParser;
-import lt.spindulys.sampling.PixelFilter;
+import lt.spindulys.camera.PixelFilter;
 import lt.spindulys.scene.SceneBuilder;
 
 /**

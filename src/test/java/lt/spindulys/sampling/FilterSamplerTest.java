@@ -7,6 +7,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
 import lt.spindulys.camera.LensPattern;
+import lt.spindulys.camera.PixelFilter;
 
 /**
  * Film offsets drawn by {@link FilterSampler} follow the filter (|f| for Mitchell-Netravali), and

@@ -14,7 +14,7 @@ import org.junit.jupiter.api.function.Executable;
 import lt.spindulys.scene.AcceleratorKind;
 import lt.spindulys.image.Aov;
 import lt.spindulys.math.Color;
-import lt.spindulys.sampling.PixelFilter;
+import lt.spindulys.camera.PixelFilter;
 
 /** The settings' builder: defaults, changed copies, and each value checked where it is given. */
 class RenderSettingsTest {

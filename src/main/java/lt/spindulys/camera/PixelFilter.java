@@ -1,4 +1,4 @@
-package lt.spindulys.sampling;
+package lt.spindulys.camera;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -6,8 +6,8 @@ import java.util.List;
 /**
  * The pixel reconstruction filter: how much a film sample at an offset from a pixel's centre
  * counts towards that pixel. Every filter here is separable, f(x, y) = f(x) f(y), and is applied
- * by importance sampling it ({@link FilterSampler}): the film offsets of a pixel's samples are
- * drawn from the filter, so each sample still belongs to its own pixel only.
+ * by importance sampling it (the sampling package's FilterSampler): the film offsets of a pixel's
+ * samples are drawn from the filter, so each sample still belongs to its own pixel only.
  *
  * <p>The width W, in pixels, is read as Blender's Film &gt; Pixel Filter width for the filters
  * Cycles has (box, Gaussian, Blackman-Harris), so that a value copied from Blender gives the same
