@@ -248,7 +248,6 @@ public final class Renderer {
         // patches while it is traced takes them row by row, so that neighbouring tiles reuse the
         // patches in its cache instead of evicting them (the image is the same in any order).
         int stride = scene.refinesWhileTracing() ? 1 : spreadStride(tiles);
-        FilterSampler filter = new FilterSampler(st.filter(), st.pixelFilterWidth()); // one table, shared by the threads
         AtomicInteger nextTile = new AtomicInteger();
         AtomicLong donePixels = new AtomicLong();
         AtomicReference<Throwable> failure = new AtomicReference<>();
@@ -258,7 +257,8 @@ public final class Renderer {
         // Every thread's scratch is sized by the samples (its light strata, its sampler): checked
         // and reserved for all of them at once, on this thread, before any starts. Checked one
         // by one as each thread started, they would all see the same free heap and all allocate.
-        long scratch = integrator.scratchBytes(st.samplesPerPixel()), sampler = PixelSampler.bytes(pass.samples);
+        FilterSampler filter = new FilterSampler(st.filter(), st.pixelFilterWidth()); // one table, shared by the threads
+        long scratch = integrator.scratchBytes(st.samplesPerPixel()), sampler = PixelSampler.bytes(pass.samples, filter);
         HeapBudget.Reservation reservation;
         try {
             reservation = HeapBudget.reserve(HeapBudget.product(workers.length, HeapBudget.sum(scratch, sampler)),

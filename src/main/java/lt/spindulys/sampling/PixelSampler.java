@@ -1,6 +1,5 @@
 package lt.spindulys.sampling;
 
-import java.util.Arrays;
 import java.util.Objects;
 
 import lt.spindulys.camera.LensPattern;
@@ -28,7 +27,9 @@ public final class PixelSampler {
     private final FilterSampler filter;
     /** The box of width 1: the film samples are the pixel's strata themselves, bit for bit as before filters. */
     private final boolean unitBox;
-    private final double[] filmX, filmY, lensU, lensV, time, weight;
+    private final double[] filmX, filmY, lensU, lensV, time;
+    /** The filter's weight of each sample; null when every weight is 1 (a non-negative filter), which spares its memory. */
+    private final double[] weight;
     private final int[] perm;
     private final boolean times;
     private final Rng rng = new Rng();
@@ -79,8 +80,7 @@ public final class PixelSampler {
         filmX = new double[n]; filmY = new double[n];
         lensU = new double[n]; lensV = new double[n];
         time = new double[n];
-        weight = new double[n];
-        Arrays.fill(weight, 1);
+        weight = filter.hasNegativeWeights() ? new double[n] : null;
         perm = new int[cols * rows];
     }
 
@@ -107,9 +107,9 @@ public final class PixelSampler {
     }
 
     /**
-     * Heap a sampler of {@code samplesPerPixel} samples holds: six doubles and an int a sample
-     * (film, lens and time samples, filter weights, the shuffle), and the object itself; the
-     * filter's table is shared by all threads.
+     * Heap a sampler of {@code samplesPerPixel} samples holds with a non-negative filter: five
+     * doubles and an int a sample (film, lens and time samples, the shuffle), and the object
+     * itself; the filter's table is shared by all threads.
      *
      * @param samplesPerPixel the pixel samples, from the input
      * @return bytes
@@ -117,7 +117,18 @@ public final class PixelSampler {
     public static long bytes(int samplesPerPixel) {
         if (samplesPerPixel < 1) return 256;
         int[] g = grid(samplesPerPixel);
-        return 256 + 52L * samplesPerPixel + 4L * ((long) g[0] * g[1] - samplesPerPixel); // a padded grid's spare cells in the shuffle
+        return 256 + 44L * samplesPerPixel + 4L * ((long) g[0] * g[1] - samplesPerPixel); // a padded grid's spare cells in the shuffle
+    }
+
+    /**
+     * {@link #bytes(int)}, and a double a sample more for a filter with negative weights.
+     *
+     * @param samplesPerPixel the pixel samples, from the input
+     * @param filter          the pixel filter
+     * @return bytes
+     */
+    public static long bytes(int samplesPerPixel, FilterSampler filter) {
+        return bytes(samplesPerPixel) + (filter.hasNegativeWeights() ? 8L * Math.max(0, samplesPerPixel) : 0);
     }
 
     /** The lens pattern, or null when the lens samples are all the centre. */
@@ -154,7 +165,7 @@ public final class PixelSampler {
                 int bx = filter.bin(u), by = filter.bin(v);
                 filmX[i] = px + 0.5 + filter.offset(bx, u);
                 filmY[i] = py + 0.5 + filter.offset(by, v);
-                weight[i] = filter.weight(bx, by);
+                if (weight != null) weight[i] = filter.weight(bx, by);
             }
         }
         if (!times && lens == null) return; // lens samples stay (0, 0), times 0
@@ -228,5 +239,5 @@ public final class PixelSampler {
      * The filter's weight of sample i, f / pdf scaled to a mean of 1: exactly 1 unless the filter
      * has negative lobes.
      */
-    public double weight(int i) { return weight[i]; }
+    public double weight(int i) { return weight != null ? weight[i] : 1; }
 }
