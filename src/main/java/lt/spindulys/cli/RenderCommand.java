@@ -10,6 +10,7 @@ import java.util.Map;
 import java.util.Set;
 
 import lt.spindulys.scene.AcceleratorKind;
+import lt.spindulys.camera.PixelFilter;
 import lt.spindulys.scene.IntegratorKind;
 import lt.spindulys.scene.InputFile;
 import lt.spindulys.scene.AdaptiveSettings;
@@ -49,7 +50,7 @@ final class RenderCommand {
     static final String USAGE = """
             usage: render SCENE.dat [-o OUT] [--width W] [--height H] [--spp N] [--aperture R] [--focus D]
                                     [--threads N] [--seed S] [--accel A] [--aov LIST] [--shutter OPEN,CLOSE] [--timesteps N]
-                                    [--integrator whitted|path] [--maxdepth N] [--clamp C]
+                                    [--integrator whitted|path] [--maxdepth N] [--clamp C] [--filter F[,W]] [--filter-width W]
                                     [--subdiv-target PX] [--subdiv-memory MIB] [--subdiv-cache MIB]
                                     [--frame N | --frames A-B[:STEP]] [--skip-existing]
                                     [--quality Q] [--exr-precision half|float] [--exr-compression none|zip|zips]
@@ -75,6 +76,10 @@ final class RenderCommand {
               --maxdepth N       most bounces of a ray or path, 0 to 64 (overrides the scene)
               --clamp C          path tracing: the largest value a channel of one indirect sample may bring,
                                  against fireflies; 0 for none (overrides the scene)
+              --filter F[,W]     pixel filter: box (default), gaussian, blackman-harris (Blender's default) or
+                                 mitchell, optionally with its width W in pixels; without W the filter's own
+                                 default width (1, 1.5, 1.5, 4) (overrides the scene)
+              --filter-width W   the pixel filter's width in pixels, 0.1 to 16 (overrides the scene and --filter)
               --aov LIST         render passes beside the image, comma-separated: depth, normal, object
                                  (OUT.depth.pfm, OUT.normal.pfm, OUT.object.png; overrides the scene);
                                  an .exr holds them as its channels Z, N.X N.Y N.Z and objectId instead
@@ -110,6 +115,10 @@ final class RenderCommand {
     private IntegratorKind integrator;
     private Integer maxDepth;
     private Double clamp;
+    private PixelFilter filter;
+    /** The filter width given: by --filter-width, or by --filter NAME,W; 0 for the filter's default. */
+    private Double filterWidth;
+    private boolean filterWidthOption;
     private Set<Aov> aovs;
     private double[] shutter;
     private Integer timeSteps;
@@ -165,6 +174,21 @@ final class RenderCommand {
                 }
                 case "--maxdepth" -> maxDepth = OptionValues.intValue(args, ++i, a, 0, 64);
                 case "--clamp" -> clamp = OptionValues.doubleValue(args, ++i, a, 0, Ranges.MAX_COLOUR);
+                case "--filter" -> {
+                    String v = OptionValues.value(args, ++i, a);
+                    int comma = v.indexOf(',');
+                    String name = comma < 0 ? v : v.substring(0, comma);
+                    if (!PixelFilter.keywords().contains(name)) {
+                        throw new UsageException(a + " expects one of " + String.join(", ", PixelFilter.keywords()) + ", found '" + name + "'");
+                    }
+                    filter = PixelFilter.fromKeyword(name);
+                    // A filter named alone takes its own default width, not the scene's width for another filter.
+                    if (!filterWidthOption) filterWidth = comma < 0 ? 0.0 : widthValue(v.substring(comma + 1), a);
+                }
+                case "--filter-width" -> {
+                    filterWidth = widthValue(OptionValues.value(args, ++i, a), a);
+                    filterWidthOption = true;
+                }
                 case "--aov" -> {
                     String v = OptionValues.value(args, ++i, a);
                     try {
@@ -435,6 +459,8 @@ final class RenderCommand {
         if (integrator != null) o.integrator(integrator);
         if (maxDepth != null) o.maxDepth(maxDepth);
         if (clamp != null) o.clamp(clamp);
+        if (filter != null) o.filter(filter);
+        if (filterWidth != null) o.filterWidth(filterWidth);
         if (aovs != null) o.aovs(aovs);
         if (shutter != null) o.shutter(shutter[0], shutter[1]);
         if (timeSteps != null) o.timeSteps(timeSteps);
@@ -481,6 +507,19 @@ final class RenderCommand {
     static boolean isObjMesh(Path file) {
         Path fileName = file.getFileName();
         return fileName != null && fileName.toString().toLowerCase(Locale.ROOT).endsWith(".obj");
+    }
+
+    /** A pixel filter's width, 0.1 to {@link RenderSettings#MAX_FILTER_WIDTH} pixels. */
+    private static double widthValue(String v, String option) throws UsageException {
+        try {
+            double d = Double.parseDouble(v);
+            if (!(d >= 0.1 && d <= RenderSettings.MAX_FILTER_WIDTH)) {
+                throw new UsageException(option + " width must be between 0.1 and " + OptionValues.bound(RenderSettings.MAX_FILTER_WIDTH) + " pixels, found " + v);
+            }
+            return d;
+        } catch (NumberFormatException e) {
+            throw new UsageException(option + " expects a width in pixels, found '" + v + "'");
+        }
     }
 
     /**

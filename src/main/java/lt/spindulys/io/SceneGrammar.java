@@ -9,6 +9,7 @@ import lt.spindulys.material.Material;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Vec3;
 import lt.spindulys.camera.LensPattern;
+import lt.spindulys.camera.PixelFilter;
 import lt.spindulys.scene.IntegratorKind;
 
 /**
@@ -191,7 +192,9 @@ final class SceneGrammar {
             choice("subdivpolicy", null, "lru", "last-two"),
             opt("subdivtarget", Kind.NUMBER),
             new Key("integrator", Kind.CHOICE, false, false, null, IntegratorKind.keywords()),
-            opt("clamp", Kind.NUMBER)));
+            opt("clamp", Kind.NUMBER),
+            new Key("filter", Kind.CHOICE, false, false, null, PixelFilter.keywords()),
+            opt("filterwidth", Kind.NUMBER)));
 
     // A thin lens when any of the lens keys is given, else a pinhole. 'focus' and 'focuspoint'
     // exclude each other (checked by the parser); without either the look-at point is in focus.

@@ -13,6 +13,7 @@ import lt.spindulys.scene.AdaptiveSettings;
 import lt.spindulys.camera.Camera;
 import lt.spindulys.camera.OrthographicCamera;
 import lt.spindulys.camera.PinholeCamera;
+import lt.spindulys.camera.PixelFilter;
 import lt.spindulys.camera.ThinLensCamera;
 import lt.spindulys.image.Aov;
 import lt.spindulys.io.SceneBlockReader.AxisAngle;
@@ -124,6 +125,8 @@ final class SceneObjectFactory {
                     case "subdivtarget" -> sb.adaptive(adaptive = adaptive.withTarget(AdaptiveSettings.checkTarget((Double) v)));
                     case "integrator" -> sb.integrator(IntegratorKind.fromKeyword((String) v));
                     case "clamp" -> sb.clamp((Double) v);
+                    case "filter" -> sb.filter(PixelFilter.fromKeyword((String) v));
+                    case "filterwidth" -> sb.filterWidth((Double) v);
                     default -> throw unhandled(pr);
                 }
             } catch (IllegalArgumentException e) {

@@ -18,6 +18,7 @@ import lt.spindulys.image.PixelRegion;
 import lt.spindulys.limits.HeapBudget;
 import lt.spindulys.limits.InsufficientMemoryException;
 import lt.spindulys.math.Ray;
+import lt.spindulys.sampling.FilterSampler;
 import lt.spindulys.sampling.PixelSampler;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
@@ -38,6 +39,12 @@ import lt.spindulys.shading.Integrator;
  * thesis did: N whole-frame passes, pass k with every ray at open + (k + 0.5) / N (close - open)
  * and samples / N samples per pixel (seeded per pass and pixel), averaged in pass order, so that
  * too is identical for any thread count.
+ *
+ * <p><b>Pixel filter.</b> The film samples are drawn from the settings' pixel filter
+ * ({@link lt.spindulys.camera.PixelFilter}), so a filter wider than a pixel needs no samples
+ * from the neighbours: each sample adds to its own pixel only, in sample order, and tiles and
+ * regions assemble bit for bit. A pixel is the mean of its samples, or, for a filter with negative
+ * lobes, their weighted average.
  */
 public final class Renderer {
     /** Tile side in pixels: small enough to balance two cores, large enough to keep counters cheap. */
@@ -250,7 +257,8 @@ public final class Renderer {
         // Every thread's scratch is sized by the samples (its light strata, its sampler): checked
         // and reserved for all of them at once, on this thread, before any starts. Checked one
         // by one as each thread started, they would all see the same free heap and all allocate.
-        long scratch = integrator.scratchBytes(st.samplesPerPixel()), sampler = PixelSampler.bytes(pass.samples);
+        FilterSampler filter = new FilterSampler(st.filter(), st.pixelFilterWidth()); // one table, shared by the threads
+        long scratch = integrator.scratchBytes(st.samplesPerPixel()), sampler = PixelSampler.bytes(pass.samples, filter);
         HeapBudget.Reservation reservation;
         try {
             reservation = HeapBudget.reserve(HeapBudget.product(workers.length, HeapBudget.sum(scratch, sampler)),
@@ -273,7 +281,7 @@ public final class Renderer {
                         own = integrator.newScratch(reservation);
                         // Time samples only where something moves (an object or the camera) and each sample has its own time.
                         PixelSampler ps = new PixelSampler(pass.samples, scene.camera().usesLens() ? scene.camera().lensPattern() : null,
-                                (scene.hasMovingObjects() || scene.camera().moves()) && Double.isNaN(pass.time));
+                                (scene.hasMovingObjects() || scene.camera().moves()) && Double.isNaN(pass.time), filter);
                         reservation.release(sampler);
                         Ray ray = new Ray();
                         double[] colour = new double[4];
@@ -330,6 +338,7 @@ public final class Renderer {
                                       int fx0, int fy0, int fx1, int fy1, BooleanSupplier stop) {
         int w = st.width(), h = st.height(), n = sampler.samplesPerPixel(), fw = fb.width();
         double aspect = st.aspect();
+        boolean weighted = sampler.filter().hasNegativeWeights();
         boolean ownTimes = Double.isNaN(pass.time);
         double[] data = fb.data();
         // The frame buffer's pixel (fx, fy) is the frame's (ox + fx, oy + fy): the pixel the samples are seeded from and traced through.
@@ -338,7 +347,7 @@ public final class Renderer {
             for (int fx = fx0; fx < fx1; fx++) {
                 int x = ox + fx;
                 sampler.startPixel(pass.seed, x, y);
-                double r = 0, g = 0, b = 0;
+                double r = 0, g = 0, b = 0, weights = 0, plainR = 0, plainG = 0, plainB = 0;
                 for (int i = 0; i < n; i++) {
                     if ((i & (STOP_CHECK - 1)) == 0 && stop.getAsBoolean()) return false;
                     double time = ownTimes ? st.shutterTime(sampler.time(i)) : pass.time;
@@ -346,9 +355,25 @@ public final class Renderer {
                             sampler.lensU(i), sampler.lensV(i), time, ray);
                     scratch.setSample(pass.seed, x, y, i, n);
                     integrator.traceCamera(ray, scratch, colour);
-                    r += colour[0]; g += colour[1]; b += colour[2];
+                    if (weighted) {
+                        double wt = sampler.weight(i);
+                        r += wt * colour[0]; g += wt * colour[1]; b += wt * colour[2];
+                        weights += wt;
+                        plainR += colour[0]; plainG += colour[1]; plainB += colour[2];
+                    } else {
+                        r += colour[0]; g += colour[1]; b += colour[2];
+                    }
                 }
-                r /= n; g /= n; b /= n;
+                // Weights of exactly 1 (a non-negative filter sampled exactly): the mean. With
+                // negative lobes, pbrt's weighted average, which keeps a flat colour flat. When the
+                // negative samples weigh as much as the rest (a few samples, by chance) it would
+                // divide by zero or flip sign, so then the samples' plain mean is taken: the
+                // average under |f|, still exact on a flat colour.
+                if (weighted && !(weights > 0)) {
+                    r = plainR; g = plainG; b = plainB;
+                }
+                double norm = weighted && weights > 0 ? weights : n;
+                r /= norm; g /= norm; b /= norm;
                 if (pass.accumulate) {
                     int o = 3 * (fy * fw + fx);
                     r += data[o]; g += data[o + 1]; b += data[o + 2];

@@ -3,6 +3,7 @@ package lt.spindulys.sampling;
 import java.util.Objects;
 
 import lt.spindulys.camera.LensPattern;
+import lt.spindulys.camera.PixelFilter;
 
 /**
  * Stratified samples for one pixel: film position on a grid as square as the sample count
@@ -12,11 +13,23 @@ import lt.spindulys.camera.LensPattern;
  * lens strata are the same grid mapped onto the disk, or the thesis's ring. Everything is seeded
  * from (global seed, pixel), so the image does not depend on the thread count. One instance per
  * thread; {@link #startPixel} resets it.
+ *
+ * <p><b>Pixel filter.</b> The film samples are drawn from the pixel's reconstruction filter
+ * ({@link FilterSampler}): each stratum's jittered point in the unit square is mapped through the
+ * filter's inverted distribution, per axis, to an offset from the pixel's centre, and the sample
+ * carries the filter's {@link #weight}. With the box of width 1 (the default) the film samples
+ * are exactly the jittered strata of the pixel, as always; with one sample, the box's sample is
+ * the pixel centre, and another filter's is drawn from that filter like any other.
  */
 public final class PixelSampler {
     private final int n, cols, rows;
     private final LensPattern lens;
+    private final FilterSampler filter;
+    /** The box of width 1: the film samples are the pixel's strata themselves, bit for bit as before filters. */
+    private final boolean unitBox;
     private final double[] filmX, filmY, lensU, lensV, time;
+    /** The filter's weight of each sample; null when every weight is 1 (a non-negative filter), which spares its memory. */
+    private final double[] weight;
     private final int[] perm;
     private final boolean times;
     private final Rng rng = new Rng();
@@ -43,6 +56,20 @@ public final class PixelSampler {
      *              first, and any lens samples stay exactly those drawn with times.
      */
     public PixelSampler(int samplesPerPixel, LensPattern lens, boolean times) {
+        this(samplesPerPixel, lens, times, BOX);
+    }
+
+    /** The box filter of width 1: every sample of a pixel weighs the same. */
+    private static final FilterSampler BOX = new FilterSampler(PixelFilter.BOX, 1);
+
+    /**
+     * @param lens   as for {@link #PixelSampler(int, LensPattern)}
+     * @param times  as for {@link #PixelSampler(int, LensPattern, boolean)}
+     * @param filter the pixel filter the film samples are drawn from
+     */
+    public PixelSampler(int samplesPerPixel, LensPattern lens, boolean times, FilterSampler filter) {
+        this.filter = Objects.requireNonNull(filter, "filter");
+        unitBox = filter.filter() == PixelFilter.BOX && filter.width() == 1;
         this.lens = lens;
         this.times = times;
         if (samplesPerPixel < 1) throw new IllegalArgumentException("samples per pixel must be positive, found " + samplesPerPixel);
@@ -53,6 +80,7 @@ public final class PixelSampler {
         filmX = new double[n]; filmY = new double[n];
         lensU = new double[n]; lensV = new double[n];
         time = new double[n];
+        weight = filter.hasNegativeWeights() ? new double[n] : null;
         perm = new int[cols * rows];
     }
 
@@ -79,8 +107,9 @@ public final class PixelSampler {
     }
 
     /**
-     * Heap a sampler of {@code samplesPerPixel} samples holds: five doubles and an int a sample
-     * (film, lens and time samples, the shuffle), and the object itself.
+     * Heap a sampler of {@code samplesPerPixel} samples holds with a non-negative filter: five
+     * doubles and an int a sample (film, lens and time samples, the shuffle), and the object
+     * itself; the filter's table is shared by all threads.
      *
      * @param samplesPerPixel the pixel samples, from the input
      * @return bytes
@@ -91,13 +120,30 @@ public final class PixelSampler {
         return 256 + 44L * samplesPerPixel + 4L * ((long) g[0] * g[1] - samplesPerPixel); // a padded grid's spare cells in the shuffle
     }
 
+    /**
+     * {@link #bytes(int)}, and a double a sample more for a filter with negative weights.
+     *
+     * @param samplesPerPixel the pixel samples, from the input
+     * @param filter          the pixel filter
+     * @return bytes
+     */
+    public static long bytes(int samplesPerPixel, FilterSampler filter) {
+        return bytes(samplesPerPixel) + (filter.hasNegativeWeights() ? 8L * Math.max(0, samplesPerPixel) : 0);
+    }
+
     /** The lens pattern, or null when the lens samples are all the centre. */
     public LensPattern lensPattern() { return lens; }
 
-    /** Draws all samples of pixel (px, py). With one sample the film sample is the pixel centre. */
+    /** The pixel filter the film samples are drawn from. */
+    public FilterSampler filter() { return filter; }
+
+    /**
+     * Draws all samples of pixel (px, py). With one sample and the box filter the film sample is
+     * the pixel centre.
+     */
     public void startPixel(long seed, int px, int py) {
         rng.seed(seed, px, py, 0);
-        if (n == 1) {
+        if (n == 1 && filter.filter() == PixelFilter.BOX) {
             filmX[0] = px + 0.5; filmY[0] = py + 0.5;
             if (!times && lens == null) return;
             double u = rng.nextDouble(), v = rng.nextDouble();
@@ -110,8 +156,17 @@ public final class PixelSampler {
         for (int i = 0; i < n; i++) {
             int cell = padded ? perm[i] : i;
             int cx = cell % cols, cy = cell / cols;
-            filmX[i] = px + (cx + rng.nextDouble()) / cols;
-            filmY[i] = py + (cy + rng.nextDouble()) / rows;
+            double u = (cx + rng.nextDouble()) / cols, v = (cy + rng.nextDouble()) / rows;
+            if (unitBox) {
+                filmX[i] = px + u;
+                filmY[i] = py + v;
+            } else {
+                // The strata, mapped through the filter's inverted distribution, stay strata of the filter.
+                int bx = filter.bin(u), by = filter.bin(v);
+                filmX[i] = px + 0.5 + filter.offset(bx, u);
+                filmY[i] = py + 0.5 + filter.offset(by, v);
+                if (weight != null) weight[i] = filter.weight(bx, by);
+            }
         }
         if (!times && lens == null) return; // lens samples stay (0, 0), times 0
         // Lens: the same grid shape, assigned to film strata in a shuffled order. The ring pattern
@@ -180,4 +235,9 @@ public final class PixelSampler {
     public double lensU(int i) { return lensU[i]; }
     public double lensV(int i) { return lensV[i]; }
     public double time(int i) { return time[i]; }
+    /**
+     * The filter's weight of sample i, f / pdf scaled to a mean of 1: exactly 1 unless the filter
+     * has negative lobes.
+     */
+    public double weight(int i) { return weight != null ? weight[i] : 1; }
 }

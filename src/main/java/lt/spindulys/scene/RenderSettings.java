@@ -9,6 +9,7 @@ import lt.spindulys.image.Aov;
 import lt.spindulys.math.Color;
 import lt.spindulys.math.Placement;
 import lt.spindulys.math.Ranges;
+import lt.spindulys.camera.PixelFilter;
 
 /**
  * Image and integrator settings of a scene, immutable. Make them with a {@link Builder}, which
@@ -43,11 +44,17 @@ import lt.spindulys.math.Ranges;
  * @param clamp           path tracing only: the largest value any channel of one indirect
  *                        sample may bring to a pixel (light reaching the camera after at least one
  *                        bounce), against fireflies; 0 for no clamp
+ * @param filter          the pixel reconstruction filter the film samples are drawn from
+ * @param filterWidth     the filter's width W in pixels (see {@link PixelFilter}), or 0 for the
+ *                        filter's own default ({@link #pixelFilterWidth()} tells the width used)
  */
 public record RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, double minContribution,
                              Color background, Color ambient, boolean srgb, long seed, AcceleratorKind accelerator,
                              Set<Aov> aovs, double shutterOpen, double shutterClose, int timeSteps, AdaptiveSettings adaptive,
-                             IntegratorKind integrator, double clamp) {
+                             IntegratorKind integrator, double clamp, PixelFilter filter, double filterWidth) {
+    /** Widest accepted pixel filter, in pixels: wider only blurs, and costs nothing but sharpness. */
+    public static final double MAX_FILTER_WIDTH = 16;
+
     /** Largest accepted image side, so that a typo cannot ask for terabytes. */
     public static final int MAX_SIDE = 32768;
 
@@ -55,11 +62,11 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      * The settings of a scene that gives none, and where {@link #builder()} starts: 640x480, 1
      * sample per pixel, depth 8, minimum contribution 0.001, black background, white ambient,
      * linear encoding, seed 0, the default accelerator, no passes, shutter [0, 1] in one pass,
-     * Whitted ray tracing, no clamp.
+     * Whitted ray tracing, no clamp, the box filter of width 1.
      */
     public static final RenderSettings DEFAULT = new RenderSettings(640, 480, 1, 8, 0.001, Color.BLACK, Color.WHITE, false, 0,
             AcceleratorKind.DEFAULT, Set.of(), Placement.OPEN, Placement.CLOSE, 1, AdaptiveSettings.DEFAULT,
-            IntegratorKind.DEFAULT, 0);
+            IntegratorKind.DEFAULT, 0, PixelFilter.DEFAULT, 0);
 
     /**
      * Checks every value as the {@link Builder}'s methods do, with the same messages; the
@@ -82,8 +89,10 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      * @param adaptive        memory, cache and target of adaptive subdivision
      * @param integrator      Whitted ray tracing or path tracing
      * @param clamp           the largest value of an indirect sample's channel (path tracing), 0 for none
+     * @param filter          the pixel reconstruction filter
+     * @param filterWidth     its width in pixels, 0 for its default
      * @throws IllegalArgumentException if a value is out of its range
-     * @throws NullPointerException     if accelerator or aovs is null
+     * @throws NullPointerException     if accelerator, aovs or filter is null
      */
     public RenderSettings {
         side("width", width);
@@ -100,7 +109,16 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         Objects.requireNonNull(adaptive, "adaptive");
         Objects.requireNonNull(integrator, "integrator");
         clamp(clamp);
+        Objects.requireNonNull(filter, "filter");
+        filterWidth(filterWidth);
     }
+
+    /**
+     * The pixel filter's width in use: the one given, or the filter's default.
+     *
+     * @return W in pixels
+     */
+    public double pixelFilterWidth() { return filterWidth > 0 ? filterWidth : filter.defaultWidth(); }
 
     /**
      * A builder holding {@link #DEFAULT}'s values.
@@ -132,6 +150,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         private AdaptiveSettings adaptive;
         private IntegratorKind integrator;
         private double clamp;
+        private PixelFilter filter;
+        private double filterWidth;
 
         private Builder(RenderSettings s) {
             width = s.width;
@@ -151,6 +171,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
             adaptive = s.adaptive;
             integrator = s.integrator;
             clamp = s.clamp;
+            filter = s.filter;
+            filterWidth = s.filterWidth;
         }
 
         /**
@@ -364,13 +386,38 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         }
 
         /**
+         * The pixel reconstruction filter; its width stays as given before (0: the filter's default).
+         *
+         * @param f the filter
+         * @return this builder
+         * @throws NullPointerException if f is null
+         */
+        public Builder filter(PixelFilter f) {
+            filter = Objects.requireNonNull(f, "filter");
+            return this;
+        }
+
+        /**
+         * The pixel filter's width W in pixels, from 0.1 to {@link #MAX_FILTER_WIDTH}, or 0 for
+         * the filter's default (see {@link PixelFilter}).
+         *
+         * @param w the width
+         * @return this builder
+         * @throws IllegalArgumentException if out of range
+         */
+        public Builder filterWidth(double w) {
+            filterWidth = RenderSettings.filterWidth(w);
+            return this;
+        }
+
+        /**
          * The settings with the values given so far.
          *
          * @return new settings; the builder can go on to make more
          */
         public RenderSettings build() {
             return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed,
-                    accelerator, aovs, shutterOpen, shutterClose, timeSteps, adaptive, integrator, clamp);
+                    accelerator, aovs, shutterOpen, shutterClose, timeSteps, adaptive, integrator, clamp, filter, filterWidth);
         }
     }
 
@@ -394,6 +441,13 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
     private static double clamp(double c) {
         if (!(c >= 0 && c <= Ranges.MAX_COLOUR)) throw new IllegalArgumentException("clamp must be 0 (none) or a positive value up to " + (int) Ranges.MAX_COLOUR + ", found " + c);
         return c;
+    }
+
+    private static double filterWidth(double w) {
+        if (!(w == 0 || w >= 0.1 && w <= MAX_FILTER_WIDTH)) {
+            throw new IllegalArgumentException("filterwidth must be 0 (the filter's default) or from 0.1 to " + (int) MAX_FILTER_WIDTH + " pixels, found " + w);
+        }
+        return w;
     }
 
     private static double contribution(double c) {

@@ -144,6 +144,31 @@ class CliTest {
         assertArrayEquals(images[1], images[4], "Whitted at the scene's depth");
     }
 
+    /**
+     * --filter overrides the scene's filter, taking the filter's own default width unless it is
+     * given after a comma or by --filter-width; the same filter and width as the scene's give
+     * the scene's image.
+     */
+    @Test
+    void filterOptionsOverrideTheScene() throws IOException {
+        Path scene = scene(SMALL.replace("settings { width 24 height 16 }", "settings { width 24 height 16 samples 4 filter mitchell filterwidth 3 }"));
+        String[][] options = {{}, {"--filter", "box"}, {"--filter", "mitchell"}, {"--filter", "mitchell,3"}, {"--filter-width", "3"},
+                {"--filter", "mitchell", "--filter-width", "3"}, {"--filter-width", "3", "--filter", "mitchell"}, {"--filter", "blackman-harris,1.5"}};
+        byte[][] images = new byte[options.length][];
+        for (int k = 0; k < options.length; k++) {
+            Path out = dir.resolve("filter-" + k + ".pfm");
+            java.util.List<String> args = new java.util.ArrayList<>(java.util.List.of(scene.toString(), "-o", out.toString(), "--quiet"));
+            args.addAll(java.util.List.of(options[k]));
+            Run r = run(args.toArray(new String[0]));
+            assertEquals(0, r.status(), r.err());
+            images[k] = Files.readAllBytes(out);
+        }
+        assertFalse(java.util.Arrays.equals(images[0], images[1]), "the box differs from the scene's Mitchell");
+        assertFalse(java.util.Arrays.equals(images[0], images[2]), "Mitchell named alone is at its default width 4");
+        for (int k = 3; k <= 6; k++) assertArrayEquals(images[0], images[k], "the scene's filter and width: " + String.join(" ", options[k]));
+        assertFalse(java.util.Arrays.equals(images[0], images[7]));
+    }
+
     @Test
     void statsPrintRaysAndThroughput() throws IOException {
         Run r = run(scene(SMALL).toString(), "-o", dir.resolve("a.png").toString(), "--stats", "--threads", "1");
@@ -218,6 +243,9 @@ class CliTest {
                 {"render: --integrator expects one of whitted, path, found 'photon'", scene.toString(), "--integrator", "photon"},
                 {"render: --maxdepth must be between 0 and 64, found 65", scene.toString(), "--maxdepth", "65"},
                 {"render: --clamp must be between 0 and 100, found -1", scene.toString(), "--clamp", "-1"},
+                {"render: --filter expects one of box, gaussian, blackman-harris, mitchell, found 'lanczos'", scene.toString(), "--filter", "lanczos"},
+                {"render: --filter width must be between 0.1 and 16 pixels, found 0", scene.toString(), "--filter", "gaussian,0"},
+                {"render: --filter-width expects a width in pixels, found 'wide'", scene.toString(), "--filter-width", "wide"},
                 {"render: --spp 3 is not a multiple of --timesteps 2 (each time step renders spp / timesteps per pixel)", scene.toString(),
                         "--spp", "3", "--timesteps", "2", "-o", dir.resolve("x.png").toString()},
         };

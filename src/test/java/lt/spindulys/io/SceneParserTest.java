@@ -190,6 +190,21 @@ class SceneParserTest {
     }
 
     @Test
+    void filterAndItsWidthAreSettings() {
+        RenderSettings s = parse("settings { filter blackman-harris }").settings();
+        assertEquals(lt.spindulys.camera.PixelFilter.BLACKMAN_HARRIS, s.filter());
+        assertEquals(1.5, s.pixelFilterWidth());
+        RenderSettings m = parse("settings { filterwidth 3  filter mitchell }").settings();
+        assertEquals(lt.spindulys.camera.PixelFilter.MITCHELL, m.filter());
+        assertEquals(3, m.pixelFilterWidth());
+        assertEquals(lt.spindulys.camera.PixelFilter.BOX, parse("settings { width 10 }").settings().filter());
+        SceneException bad = assertThrows(SceneException.class, () -> parse("settings { filter lanczos }"));
+        assertTrue(bad.getMessage().contains("expected box, gaussian, blackman-harris or mitchell for 'filter', found 'lanczos'"), bad.getMessage());
+        SceneException wide = assertThrows(SceneException.class, () -> parse("settings { filterwidth 40 }"));
+        assertTrue(wide.getMessage().contains("filterwidth must be 0 (the filter's default) or from 0.1 to 16 pixels, found 40.0"), wide.getMessage());
+    }
+
+    @Test
     void aovListEndsAtTheNextKeyOrTheBrace() {
         assertEquals(Set.of(), parse("settings { width 10 }").settings().aovs());
         RenderSettings s = parse("settings { aov object depth  width 10 }").settings();

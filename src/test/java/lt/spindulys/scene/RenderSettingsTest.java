@@ -14,6 +14,7 @@ import org.junit.jupiter.api.function.Executable;
 import lt.spindulys.scene.AcceleratorKind;
 import lt.spindulys.image.Aov;
 import lt.spindulys.math.Color;
+import lt.spindulys.camera.PixelFilter;
 
 /** The settings' builder: defaults, changed copies, and each value checked where it is given. */
 class RenderSettingsTest {
@@ -21,10 +22,10 @@ class RenderSettingsTest {
     void defaultsAreTheDocumentedValues() {
         RenderSettings d = RenderSettings.DEFAULT;
         assertEquals(List.of(640, 480, 1, 8, 0.001, Color.BLACK, Color.WHITE, false, 0L, AcceleratorKind.DEFAULT, Set.of(), 0.0, 1.0, 1,
-                        IntegratorKind.WHITTED, 0.0),
+                        IntegratorKind.WHITTED, 0.0, PixelFilter.BOX, 0.0, 1.0),
                 List.of(d.width(), d.height(), d.samplesPerPixel(), d.maxDepth(), d.minContribution(), d.background(), d.ambient(),
                         d.srgb(), d.seed(), d.accelerator(), d.aovs(), d.shutterOpen(), d.shutterClose(), d.timeSteps(),
-                        d.integrator(), d.clamp()));
+                        d.integrator(), d.clamp(), d.filter(), d.filterWidth(), d.pixelFilterWidth()));
         assertEquals(d, RenderSettings.builder().build());
         assertEquals(d, d.toBuilder().build());
     }
@@ -33,9 +34,10 @@ class RenderSettingsTest {
     void everyValueReachesTheSettings() {
         RenderSettings s = RenderSettings.builder().size(320, 200).samplesPerPixel(16).maxDepth(3).minContribution(0.25)
                 .background(Color.grey(0.5)).ambient(new Color(0.1, 0.2, 0.3)).srgb(true).seed(-9).accelerator(AcceleratorKind.OCTREE)
-                .aovs(EnumSet.of(Aov.OBJECT, Aov.DEPTH)).shutter(0.25, 0.75).timeSteps(4).integrator(IntegratorKind.PATH).clamp(10).build();
+                .aovs(EnumSet.of(Aov.OBJECT, Aov.DEPTH)).shutter(0.25, 0.75).timeSteps(4).integrator(IntegratorKind.PATH).clamp(10)
+                .filter(PixelFilter.MITCHELL).filterWidth(3).build();
         assertEquals(new RenderSettings(320, 200, 16, 3, 0.25, Color.grey(0.5), new Color(0.1, 0.2, 0.3), true, -9, AcceleratorKind.OCTREE,
-                EnumSet.of(Aov.DEPTH, Aov.OBJECT), 0.25, 0.75, 4, AdaptiveSettings.DEFAULT, IntegratorKind.PATH, 10), s);
+                EnumSet.of(Aov.DEPTH, Aov.OBJECT), 0.25, 0.75, 4, AdaptiveSettings.DEFAULT, IntegratorKind.PATH, 10, PixelFilter.MITCHELL, 3), s);
         assertEquals(s, s.toBuilder().build());
         assertEquals(200, RenderSettings.builder().width(7).height(200).build().height());
         assertEquals(7, RenderSettings.builder().width(7).height(200).build().width());
@@ -87,11 +89,15 @@ class RenderSettingsTest {
         assertThrows(NullPointerException.class, () -> b.integrator(null));
         refused("clamp must be 0 (none) or a positive value up to 100, found -1.0", () -> b.clamp(-1));
         refused("clamp must be 0 (none) or a positive value up to 100, found NaN", () -> b.clamp(Double.NaN));
+        assertThrows(NullPointerException.class, () -> b.filter(null));
+        refused("filterwidth must be 0 (the filter's default) or from 0.1 to 16 pixels, found 0.05", () -> b.filterWidth(0.05));
+        refused("filterwidth must be 0 (the filter's default) or from 0.1 to 16 pixels, found NaN", () -> b.filterWidth(Double.NaN));
+        refused("filterwidth must be 0 (the filter's default) or from 0.1 to 16 pixels, found 17.0", () -> b.filterWidth(17));
         // A refused value leaves the builder as it was.
         assertEquals(RenderSettings.DEFAULT, b.build());
         // The constructor words a refusal as the builder does.
         refused("width must be between 1 and 32768, found 0", () -> new RenderSettings(0, 1, 1, 0, 0, Color.BLACK, Color.BLACK, false, 0,
-                AcceleratorKind.DEFAULT, Set.of(), 0, 1, 1, AdaptiveSettings.DEFAULT, IntegratorKind.DEFAULT, 0));
+                AcceleratorKind.DEFAULT, Set.of(), 0, 1, 1, AdaptiveSettings.DEFAULT, IntegratorKind.DEFAULT, 0, PixelFilter.DEFAULT, 0));
     }
 
     @Test
@@ -99,6 +105,18 @@ class RenderSettingsTest {
         assertEquals(List.of("whitted", "path"), IntegratorKind.keywords());
         assertEquals(IntegratorKind.PATH, IntegratorKind.fromKeyword("path"));
         refused("unknown integrator 'photon' (expected one of whitted, path)", () -> IntegratorKind.fromKeyword("photon"));
+    }
+
+    @Test
+    void filtersAreNamedByTheirKeywordsAndWidthsDefaultPerFilter() {
+        assertEquals(List.of("box", "gaussian", "blackman-harris", "mitchell"), PixelFilter.keywords());
+        assertEquals(PixelFilter.BLACKMAN_HARRIS, PixelFilter.fromKeyword("blackman-harris"));
+        refused("unknown filter 'lanczos' (expected one of box, gaussian, blackman-harris, mitchell)", () -> PixelFilter.fromKeyword("lanczos"));
+        RenderSettings b = RenderSettings.builder().filter(PixelFilter.BLACKMAN_HARRIS).build();
+        assertEquals(1.5, b.pixelFilterWidth());
+        assertEquals(4, b.toBuilder().filter(PixelFilter.MITCHELL).build().pixelFilterWidth());
+        assertEquals(2.5, b.toBuilder().filterWidth(2.5).build().pixelFilterWidth());
+        assertEquals(1, RenderSettings.DEFAULT.pixelFilterWidth());
     }
 
     @Test
