@@ -26,16 +26,9 @@ public final class OrthographicCamera implements Camera {
      * @throws IllegalArgumentException if a vector is not finite, the view is degenerate or the width out of range
      */
     public OrthographicCamera(Vec3 eye, Vec3 lookAt, Vec3 up, double viewWidth) {
-        if (!Ranges.isModest(eye) || !Ranges.isModest(lookAt) || !Ranges.isModest(up)) throw new IllegalArgumentException("camera vectors must be finite and at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude");
         if (!(viewWidth > 0 && viewWidth <= Ranges.MAX_NUMBER)) throw new IllegalArgumentException("orthographic width must be positive and at most " + Ranges.show(Ranges.MAX_NUMBER) + ", found " + viewWidth);
-        Vec3 forward = lookAt.minus(eye);
-        if (!(forward.length() > 0)) throw new IllegalArgumentException("camera eye and lookat are the same point " + eye);
-        if (!(up.length() > 0)) throw new IllegalArgumentException("camera up vector has zero length");
-        Vec3 f = forward.normalized();
-        Vec3 r = f.cross(up);
-        if (!(r.length() > 1e-12 * up.length())) throw new IllegalArgumentException("camera up vector " + up + " is parallel to the view direction");
-        r = r.normalized();
-        Vec3 u = r.cross(f);
+        ViewBasis basis = ViewBasis.of(eye, lookAt, up);
+        Vec3 r = basis.right(), u = basis.up(), f = basis.forward();
         this.eye = eye; this.lookAt = lookAt; this.up = up; this.viewWidth = viewWidth;
         rx = r.x(); ry = r.y(); rz = r.z();
         ux = u.x(); uy = u.y(); uz = u.z();

@@ -1,6 +1,5 @@
 package lt.spindulys.camera;
 
-import lt.spindulys.math.Ranges;
 import lt.spindulys.math.Ray;
 import lt.spindulys.math.Vec3;
 
@@ -26,16 +25,9 @@ public final class PinholeCamera implements Camera {
      * @throws IllegalArgumentException if a vector is not finite, the view is degenerate or the angle out of range
      */
     public PinholeCamera(Vec3 eye, Vec3 lookAt, Vec3 up, double fovDegrees) {
-        if (!Ranges.isModest(eye) || !Ranges.isModest(lookAt) || !Ranges.isModest(up)) throw new IllegalArgumentException("camera vectors must be finite and at most " + Ranges.show(Ranges.MAX_NUMBER) + " in magnitude");
         if (!(fovDegrees > 0 && fovDegrees < 180)) throw new IllegalArgumentException("fov must be between 0 and 180 degrees, found " + fovDegrees);
-        Vec3 forward = lookAt.minus(eye);
-        if (!(forward.length() > 0)) throw new IllegalArgumentException("camera eye and lookat are the same point " + eye);
-        if (!(up.length() > 0)) throw new IllegalArgumentException("camera up vector has zero length");
-        Vec3 f = forward.normalized();
-        Vec3 r = f.cross(up);
-        if (!(r.length() > 1e-12 * up.length())) throw new IllegalArgumentException("camera up vector " + up + " is parallel to the view direction");
-        r = r.normalized();
-        Vec3 u = r.cross(f);
+        ViewBasis basis = ViewBasis.of(eye, lookAt, up);
+        Vec3 r = basis.right(), u = basis.up(), f = basis.forward();
         this.eye = eye; this.lookAt = lookAt; this.up = up; this.fovDegrees = fovDegrees;
         rx = r.x(); ry = r.y(); rz = r.z();
         ux = u.x(); uy = u.y(); uz = u.z();

@@ -33,11 +33,14 @@ class CliAovTest {
         return p;
     }
 
-    private Set<String> files() throws IOException {
+    /** The names of the files in {@code dir}. */
+    static Set<String> files(Path dir) throws IOException {
         try (Stream<Path> s = Files.list(dir)) {
             return s.map(p -> p.getFileName().toString()).collect(Collectors.toSet());
         }
     }
+
+    private Set<String> files() throws IOException { return files(dir); }
 
     @Test
     void writesTheThreePassesBesideTheImage() throws IOException {

@@ -7,8 +7,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Set;
-import java.util.stream.Collectors;
-import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -34,11 +32,7 @@ class CliExrTest {
         return p;
     }
 
-    private Set<String> files() throws IOException {
-        try (Stream<Path> s = Files.list(dir)) {
-            return s.map(p -> p.getFileName().toString()).collect(Collectors.toSet());
-        }
-    }
+    private Set<String> files() throws IOException { return CliAovTest.files(dir); }
 
     @Test
     void writesOneFileHoldingTheImageAndItsPasses() throws IOException {
