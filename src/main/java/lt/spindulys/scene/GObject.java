@@ -632,7 +632,15 @@ public abstract class GObject implements TracedObject, Cloneable {
         map.toLocalPoint(sd.p, q);
         double lx = q[0], ly = q[1], lz = q[2];
         sd.pObject[0] = lx; sd.pObject[1] = ly; sd.pObject[2] = lz;
+        sd.lifted = false;
         shadeLocal(lx, ly, lz, hit, sd);
+        // The lift is an object-space offset towards the outward side: a cut that shows the inside has no use for it.
+        if (sd.lifted && hit.flipNormal) sd.lifted = false;
+        if (sd.lifted) {
+            double[] o = sd.shadowOrigin;
+            if (!map.isIdentity()) map.vectorInPlace(o, 0);
+            o[0] += sd.p[0]; o[1] += sd.p[1]; o[2] += sd.p[2];
+        }
         if (sd.needsParameters) {
             System.arraycopy(sd.dpdu, 0, sd.dpduObject, 0, 3);
             System.arraycopy(sd.dpdv, 0, sd.dpdvObject, 0, 3);

@@ -262,6 +262,11 @@ public final class PathIntegrator implements Integrator {
                         if (f[0] > 0 || f[1] > 0 || f[2] > 0) {
                             double side = cosG > 0 ? eps : -eps;
                             double ox = px + nfx * side, oy = py + nfy * side, oz = pz + nfz * side;
+                            // A light on the outward side is tested from the curved surface the
+                            // vertex normals describe, not from the flat facet (ShadingData#shadowOrigin).
+                            if (sd.lifted && entering && cosG > 0) {
+                                ox = sd.shadowOrigin[0] + nfx * side; oy = sd.shadowOrigin[1] + nfy * side; oz = sd.shadowOrigin[2] + nfz * side;
+                            }
                             boolean infinite = ls.distance == Double.POSITIVE_INFINITY;
                             Ray shadow = infinite ? s.shadowRay.set(ox, oy, oz, ux, uy, uz, 0, Double.POSITIVE_INFINITY)
                                     : s.shadowRay.set(ox, oy, oz, ls.x - ox, ls.y - oy, ls.z - oz, 0, ls.shadowTMax);

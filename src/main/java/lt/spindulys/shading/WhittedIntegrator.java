@@ -269,7 +269,12 @@ public final class WhittedIntegrator implements Integrator {
         double px = v.px, py = v.py, pz = v.pz;
         double nfx = v.nfx, nfy = v.nfy, nfz = v.nfz, snx = v.snx, sny = v.sny, snz = v.snz;
         // Shading uses the true point; only the shadow rays start off the surface.
-        double ox = px + nfx * v.eps, oy = py + nfy * v.eps, oz = pz + nfz * v.eps;
+        double ox = px, oy = py, oz = pz;
+        // Lights reach only the side the ray came from: seen from outside, a smooth triangle's
+        // shadow rays start on the curved surface its normals describe (ShadingData#shadowOrigin).
+        ShadingData sd = v.shading;
+        if (v.entering && sd.lifted) { ox = sd.shadowOrigin[0]; oy = sd.shadowOrigin[1]; oz = sd.shadowOrigin[2]; }
+        ox += nfx * v.eps; oy += nfy * v.eps; oz += nfz * v.eps;
         LightSample ls = s.lightSample;
         int slots = 0, stratified = 0;
         for (Light light : lightArray) {
