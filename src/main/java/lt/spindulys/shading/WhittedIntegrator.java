@@ -270,10 +270,11 @@ public final class WhittedIntegrator implements Integrator {
         double nfx = v.nfx, nfy = v.nfy, nfz = v.nfz, snx = v.snx, sny = v.sny, snz = v.snz;
         // Shading uses the true point; only the shadow rays start off the surface.
         double ox = px, oy = py, oz = pz;
-        // Lights reach only the side the ray came from: seen from outside, a smooth triangle's
-        // shadow rays start on the curved surface its normals describe (ShadingData#shadowOrigin).
+        // Seen from outside, a smooth triangle's shadow rays start on the curved surface its
+        // vertex normals describe (ShadingData#shadowOrigin).
         ShadingData sd = v.shading;
-        if (v.entering && sd.lifted) { ox = sd.shadowOrigin[0]; oy = sd.shadowOrigin[1]; oz = sd.shadowOrigin[2]; }
+        boolean lifted = v.entering && sd.lifted;
+        if (lifted) { ox = sd.shadowOrigin[0]; oy = sd.shadowOrigin[1]; oz = sd.shadowOrigin[2]; }
         ox += nfx * v.eps; oy += nfy * v.eps; oz += nfz * v.eps;
         LightSample ls = s.lightSample;
         int slots = 0, stratified = 0;
@@ -302,7 +303,10 @@ public final class WhittedIntegrator implements Integrator {
                 }
                 if (!light.sampleLi(px, py, pz, su, sv, ls)) continue;
                 double ux = ls.wx, uy = ls.wy, uz = ls.wz;
-                if (ux * nfx + uy * nfy + uz * nfz <= 0) continue; // light behind the surface
+                // A light behind the facet is shadowed, unless the shadow ray starts on the curved
+                // surface (and the shading normal faces the light): then the ray decides, as the
+                // curved surface would, and the terminator follows the shading, not the facets.
+                if (ux * nfx + uy * nfy + uz * nfz <= 0 && !lifted) continue;
                 double ndotl = ux * snx + uy * sny + uz * snz;
                 if (ndotl <= 0) continue;
                 boolean infinite = ls.distance == Double.POSITIVE_INFINITY;
