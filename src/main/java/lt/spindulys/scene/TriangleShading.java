@@ -45,10 +45,16 @@ final class TriangleShading {
      * describe a concave or flat one p stays. Leaves the object-space offset p' - p in
      * {@link ShadingData#shadowOrigin} and sets {@link ShadingData#lifted} when it is not zero.
      *
+     * <p>Two guards keep the point out of the solid where the normals are not those of a smooth
+     * surface: a corner whose normal faces away from the triangle's own (at a crease, a corner may
+     * carry the neighbouring face's normal, at right angles) adds nothing, and a lift that would
+     * take the point below the triangle's plane keeps only its part within the plane.
+     *
      * @param sign +1, or -1 where the vertex normals point against the triangle's winding (they
      *             are turned to the geometric normal's side, as the shading normal is)
+     * @param gx the triangle's geometric normal (any length), x; likewise gy, gz
      */
-    static void liftShadowOrigin(double sign, double b0, double b1, double b2, ShadingData sd) {
+    static void liftShadowOrigin(double sign, double gx, double gy, double gz, double b0, double b1, double b2, ShadingData sd) {
         double[] c = sd.corners;
         double px = b0 * c[0] + b1 * c[3] + b2 * c[6];
         double py = b0 * c[1] + b1 * c[4] + b2 * c[7];
@@ -62,11 +68,17 @@ final class TriangleShading {
             // Normals in a mesh file need not be unit; the projection needs them to be.
             double inv = sign / Math.sqrt(len2);
             nx *= inv; ny *= inv; nz *= inv;
+            if (nx * gx + ny * gy + nz * gz <= 0) continue;
             double d = (px - c[q]) * nx + (py - c[q + 1]) * ny + (pz - c[q + 2]) * nz;
             if (d < 0) {
                 double w = (k == 0 ? b0 : k == 1 ? b1 : b2) * d;
                 ox -= w * nx; oy -= w * ny; oz -= w * nz;
             }
+        }
+        double down = ox * gx + oy * gy + oz * gz;
+        if (down < 0) {
+            double k = down / (gx * gx + gy * gy + gz * gz);
+            ox -= k * gx; oy -= k * gy; oz -= k * gz;
         }
         if (ox == 0 && oy == 0 && oz == 0) return;
         sd.shadowOrigin[0] = ox; sd.shadowOrigin[1] = oy; sd.shadowOrigin[2] = oz;
@@ -100,7 +112,7 @@ final class TriangleShading {
                 // Interpolated normals may disagree with the winding; keep them on the outward side.
                 double s = nx * gx + ny * gy + nz * gz < 0 ? -1 : 1;
                 sx = s * nx; sy = s * ny; sz = s * nz;
-                liftShadowOrigin(s, b0, b1, b2, sd);
+                liftShadowOrigin(s, gx, gy, gz, b0, b1, b2, sd);
             }
         }
         sd.ns[0] = sx; sd.ns[1] = sy; sd.ns[2] = sz;

@@ -91,4 +91,19 @@ class ShadowTerminatorOffsetTest {
             if (sd.lifted) assertTrue(norm(sd.shadowOrigin) < 1e-14, "offset " + norm(sd.shadowOrigin));
         }
     }
+
+    @Test
+    void aCreaseCornersNormalNeverTakesThePointBelowTheTriangle() {
+        // A face of a creased cube (z = 0, normal +z) whose corner on the crease carries the side
+        // face's normal, tipped a little into the solid, as a subdivision surface's crease vertex may.
+        double[] a = {1, 0, 0}, b = {0, 1, 0}, c = {0, 0, 0}, up = {0, 0, 1};
+        double[] side = unit(1, 0, -0.06);
+        for (double[] uv : new double[][] {{1 / 3.0, 1 / 3.0}, {0.1, 0.2}, {0.45, 0.5}, {0.05, 0.05}}) {
+            ShadingData sd = shade(a, b, c, side, up, up, uv[0], uv[1]);
+            if (sd.lifted) assertTrue(sd.shadowOrigin[2] >= 0, "below the face by " + sd.shadowOrigin[2]);
+        }
+        // Tipped out of the solid instead, the corner lifts the point: above the face.
+        ShadingData sd = shade(a, b, c, unit(1, 0, 0.5), up, up, 0.2, 0.3);
+        assertTrue(sd.lifted && sd.shadowOrigin[2] > 0);
+    }
 }
