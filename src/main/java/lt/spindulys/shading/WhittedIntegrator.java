@@ -245,7 +245,9 @@ public final class WhittedIntegrator implements Integrator {
         out[0] = ka * ia.r() * v.colourR; out[1] = ka * ia.g() * v.colourG; out[2] = ka * ia.b() * v.colourB;
         if (!(m.kd() > 0 || v.ks > 0)) return;
         // A flat receiver cannot shadow itself: its shadow rays skip it (opaque shadows only).
-        s.ctx.shadowReceiver = v.hit.object.flat() ? v.hit.object : null;
+        // Not from a lifted origin: its shadow rays may test lights behind the plane, which the plane must block.
+        boolean lifted = v.entering && v.shading.lifted;
+        s.ctx.shadowReceiver = v.hit.object.flat() && !lifted ? v.hit.object : null;
         directIllumination(m, v, s, out);
         s.ctx.shadowReceiver = null;
     }
