@@ -354,6 +354,7 @@ final class SceneGrammar {
     static final Block MESH = solid("mesh",
             req("file", Kind.STRING),
             choice("shading", null, "smooth", "flat"),
+            opt("terminator", Kind.BOOLEAN, true),
             repeat("usemtl", Kind.GROUP_MATERIAL));
 
     // No defaults for the scheme options: absent means "as the file's tags say, else OpenSubdiv's default".
@@ -372,6 +373,7 @@ final class SceneGrammar {
             choice("shading", "smooth", "smooth", "flat"),
             opt("uv", Kind.STRING),
             choice("positions", "refined", "refined", "limit"),
+            opt("terminator", Kind.BOOLEAN, true),
             repeat("usemtl", Kind.GROUP_MATERIAL));
 
     // CSG: only the common keys; the operands are the object statements nested in the block.

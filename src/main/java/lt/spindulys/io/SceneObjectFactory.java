@@ -552,6 +552,7 @@ final class SceneObjectFactory {
             switch (pr.key().name()) {
                 case "material" -> o.material((Material) pr.value());
                 case "name" -> o.name((String) pr.value());
+                case "terminator" -> o.shadowTerminator((Boolean) pr.value());
                 case "motion" -> o.motion((Motion) pr.value());
                 case "keys", "turntable" -> o.keys((Keyframes) pr.value());
                 case "translate", "rotate", "scale" -> {

@@ -73,6 +73,8 @@ public abstract class GObject implements TracedObject, Cloneable {
      */
     private Material[] palette;
     private String name;
+    /** Whether shadow rays leave smooth-shaded triangles from the lifted point (TriangleShading#liftShadowOrigin). */
+    private boolean shadowTerminator = true;
     /**
      * Where the object was made, for messages only (see {@link #source(String)}): the whole text,
      * or a file name shared by every object of the file with the line and column apart, so that
@@ -172,6 +174,26 @@ public abstract class GObject implements TracedObject, Cloneable {
         material = m;
         return this;
     }
+
+    /**
+     * Sets whether shadow rays towards lights on the outward side of this object's smooth-shaded
+     * triangles start on the curved surface their vertex normals describe (Hanika's shadow
+     * terminator offset; on by default), rather than on the flat triangle, which at a coarse
+     * tessellation shadows itself in steps near the terminator. Shapes without smooth-shaded
+     * triangles ignore it.
+     *
+     * @param on false to start shadow rays on the triangles themselves
+     * @return this object, for chaining
+     * @throws IllegalStateException if this is a frozen object of a built scene
+     */
+    public GObject shadowTerminator(boolean on) {
+        checkMutable();
+        shadowTerminator = on;
+        return this;
+    }
+
+    /** Whether shadow rays leave smooth-shaded triangles from the lifted point ({@link #shadowTerminator(boolean)}). */
+    public boolean shadowTerminator() { return shadowTerminator; }
 
     /**
      * The material given to this object, or null if it inherits one; on a frozen object, the one
@@ -355,6 +377,7 @@ public abstract class GObject implements TracedObject, Cloneable {
         motion = from.motion;
         keys = from.keys;
         material = from.material;
+        shadowTerminator = from.shadowTerminator;
         groupMaterials = from.groupMaterials;
         name = from.name;
         source = from.source;
@@ -632,7 +655,15 @@ public abstract class GObject implements TracedObject, Cloneable {
         map.toLocalPoint(sd.p, q);
         double lx = q[0], ly = q[1], lz = q[2];
         sd.pObject[0] = lx; sd.pObject[1] = ly; sd.pObject[2] = lz;
+        sd.lifted = false;
         shadeLocal(lx, ly, lz, hit, sd);
+        // The lift is an object-space offset towards the outward side: a cut that shows the inside has no use for it.
+        if (sd.lifted && (hit.flipNormal || !shadowTerminator)) sd.lifted = false;
+        if (sd.lifted) {
+            double[] o = sd.shadowOrigin;
+            if (!map.isIdentity()) map.vectorInPlace(o, 0);
+            o[0] += sd.p[0]; o[1] += sd.p[1]; o[2] += sd.p[2];
+        }
         if (sd.needsParameters) {
             System.arraycopy(sd.dpdu, 0, sd.dpduObject, 0, 3);
             System.arraycopy(sd.dpdv, 0, sd.dpdvObject, 0, 3);

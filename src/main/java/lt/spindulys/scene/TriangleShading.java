@@ -37,6 +37,54 @@ final class TriangleShading {
         shadeCorners(smooth && hasNormals, hasUv, u, v, sd);
     }
 
+    /**
+     * Hanika's shadow-terminator offset ("Hacking the shadow terminator", Ray Tracing Gems II):
+     * the barycentric point p is projected onto each corner's tangent plane, where it lies below
+     * it, and the projections blended by the barycentrics: p' = p - sum b_i min(0, (p - p_i).n_i) n_i.
+     * Where the vertex normals describe a convex surface this lifts p towards it; where they
+     * describe a concave or flat one p stays. Leaves the object-space offset p' - p in
+     * {@link ShadingData#shadowOrigin} and sets {@link ShadingData#lifted} when it is not zero.
+     *
+     * <p>Two guards keep the point out of the solid where the normals are not those of a smooth
+     * surface: a corner whose normal faces away from the triangle's own (at a crease, a corner may
+     * carry the neighbouring face's normal, at right angles) adds nothing, and a lift that would
+     * take the point below the triangle's plane keeps only its part within the plane.
+     *
+     * @param sign +1, or -1 where the vertex normals point against the triangle's winding (they
+     *             are turned to the geometric normal's side, as the shading normal is)
+     * @param gx the triangle's geometric normal (any length), x; likewise gy, gz
+     */
+    static void liftShadowOrigin(double sign, double gx, double gy, double gz, double b0, double b1, double b2, ShadingData sd) {
+        double[] c = sd.corners;
+        double px = b0 * c[0] + b1 * c[3] + b2 * c[6];
+        double py = b0 * c[1] + b1 * c[4] + b2 * c[7];
+        double pz = b0 * c[2] + b1 * c[5] + b2 * c[8];
+        double ox = 0, oy = 0, oz = 0;
+        for (int k = 0; k < 3; k++) {
+            int q = 3 * k, n = NORMALS + q;
+            double nx = c[n], ny = c[n + 1], nz = c[n + 2];
+            double len2 = nx * nx + ny * ny + nz * nz;
+            if (!(len2 > 0) || !Double.isFinite(len2)) return;
+            // Normals in a mesh file need not be unit; the projection needs them to be.
+            double inv = sign / Math.sqrt(len2);
+            nx *= inv; ny *= inv; nz *= inv;
+            if (nx * gx + ny * gy + nz * gz <= 0) continue;
+            double d = (px - c[q]) * nx + (py - c[q + 1]) * ny + (pz - c[q + 2]) * nz;
+            if (d < 0) {
+                double w = (k == 0 ? b0 : k == 1 ? b1 : b2) * d;
+                ox -= w * nx; oy -= w * ny; oz -= w * nz;
+            }
+        }
+        double down = ox * gx + oy * gy + oz * gz;
+        if (down < 0) {
+            double k = down / (gx * gx + gy * gy + gz * gz);
+            ox -= k * gx; oy -= k * gy; oz -= k * gz;
+        }
+        if (ox == 0 && oy == 0 && oz == 0) return;
+        sd.shadowOrigin[0] = ox; sd.shadowOrigin[1] = oy; sd.shadowOrigin[2] = oz;
+        sd.lifted = true;
+    }
+
     /** Where {@link ShadingData#corners} holds the corners' normals (9 values) and uvs (6), after the positions (9). */
     static final int NORMALS = 9, UVS = 18;
 
@@ -64,6 +112,7 @@ final class TriangleShading {
                 // Interpolated normals may disagree with the winding; keep them on the outward side.
                 double s = nx * gx + ny * gy + nz * gz < 0 ? -1 : 1;
                 sx = s * nx; sy = s * ny; sz = s * nz;
+                liftShadowOrigin(s, gx, gy, gz, b0, b1, b2, sd);
             }
         }
         sd.ns[0] = sx; sd.ns[1] = sy; sd.ns[2] = sz;

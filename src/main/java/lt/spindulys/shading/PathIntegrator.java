@@ -255,13 +255,20 @@ public final class PathIntegrator implements Integrator {
                 if (light.sampleLi(px, py, pz, u1, u2, ls)) {
                     double ux = ls.wx, uy = ls.wy, uz = ls.wz;
                     double cosG = ux * nfx + uy * nfy + uz * nfz, cosS = ux * snx + uy * sny + uz * snz;
-                    // Both normals must agree on the side the light is on, or shading normals leak light.
-                    if (cosG * cosS > 0) {
+                    // A smooth triangle's shadow ray starts on the curved surface its vertex normals
+                    // describe when the ray came from outside and the shading normal faces the light
+                    // (ShadingData#shadowOrigin): that ray, not the flat facet's normal, then decides.
+                    boolean lifted = sd.lifted && entering && cosS > 0;
+                    // Otherwise both normals must agree on the side the light is on, or shading normals leak light.
+                    if (cosG * cosS > 0 || lifted) {
                         double wix = ux * tx + uy * ty + uz * tz, wiy = ux * bx + uy * by + uz * bz;
                         bsdf.eval(wox, woy, woz, wix, wiy, cosS, f);
                         if (f[0] > 0 || f[1] > 0 || f[2] > 0) {
-                            double side = cosG > 0 ? eps : -eps;
-                            double ox = px + nfx * side, oy = py + nfy * side, oz = pz + nfz * side;
+                            boolean outside = cosG > 0 || lifted;
+                            double side = outside ? eps : -eps;
+                            double ox = px, oy = py, oz = pz;
+                            if (lifted) { ox = sd.shadowOrigin[0]; oy = sd.shadowOrigin[1]; oz = sd.shadowOrigin[2]; }
+                            ox += nfx * side; oy += nfy * side; oz += nfz * side;
                             boolean infinite = ls.distance == Double.POSITIVE_INFINITY;
                             Ray shadow = infinite ? s.shadowRay.set(ox, oy, oz, ux, uy, uz, 0, Double.POSITIVE_INFINITY)
                                     : s.shadowRay.set(ox, oy, oz, ls.x - ox, ls.y - oy, ls.z - oz, 0, ls.shadowTMax);
@@ -284,7 +291,7 @@ public final class PathIntegrator implements Integrator {
                                 double k = Math.abs(cosS) * w / lightPdf;
                                 c[0] = f[0] * ls.r * k; c[1] = f[1] * ls.g * k; c[2] = f[2] * ls.b * k;
                                 // The shadow ray crosses the medium on the light's side: the ray's own, or the one behind the surface.
-                                Material across = cosG > 0 ? medium : entering ? m : leavesInnermost ? s.outer() : medium;
+                                Material across = outside ? medium : entering ? m : leavesInnermost ? s.outer() : medium;
                                 if (across != null) WhittedIntegrator.attenuate(across, ls.distance, c);
                                 add(beta, c, segment >= 1 ? late : sum);
                             }

@@ -245,7 +245,9 @@ public final class WhittedIntegrator implements Integrator {
         out[0] = ka * ia.r() * v.colourR; out[1] = ka * ia.g() * v.colourG; out[2] = ka * ia.b() * v.colourB;
         if (!(m.kd() > 0 || v.ks > 0)) return;
         // A flat receiver cannot shadow itself: its shadow rays skip it (opaque shadows only).
-        s.ctx.shadowReceiver = v.hit.object.flat() ? v.hit.object : null;
+        // Not from a lifted origin: its shadow rays may test lights behind the plane, which the plane must block.
+        boolean lifted = v.entering && v.shading.lifted;
+        s.ctx.shadowReceiver = v.hit.object.flat() && !lifted ? v.hit.object : null;
         directIllumination(m, v, s, out);
         s.ctx.shadowReceiver = null;
     }
@@ -269,7 +271,13 @@ public final class WhittedIntegrator implements Integrator {
         double px = v.px, py = v.py, pz = v.pz;
         double nfx = v.nfx, nfy = v.nfy, nfz = v.nfz, snx = v.snx, sny = v.sny, snz = v.snz;
         // Shading uses the true point; only the shadow rays start off the surface.
-        double ox = px + nfx * v.eps, oy = py + nfy * v.eps, oz = pz + nfz * v.eps;
+        double ox = px, oy = py, oz = pz;
+        // Seen from outside, a smooth triangle's shadow rays start on the curved surface its
+        // vertex normals describe (ShadingData#shadowOrigin).
+        ShadingData sd = v.shading;
+        boolean lifted = v.entering && sd.lifted;
+        if (lifted) { ox = sd.shadowOrigin[0]; oy = sd.shadowOrigin[1]; oz = sd.shadowOrigin[2]; }
+        ox += nfx * v.eps; oy += nfy * v.eps; oz += nfz * v.eps;
         LightSample ls = s.lightSample;
         int slots = 0, stratified = 0;
         for (Light light : lightArray) {
@@ -297,7 +305,10 @@ public final class WhittedIntegrator implements Integrator {
                 }
                 if (!light.sampleLi(px, py, pz, su, sv, ls)) continue;
                 double ux = ls.wx, uy = ls.wy, uz = ls.wz;
-                if (ux * nfx + uy * nfy + uz * nfz <= 0) continue; // light behind the surface
+                // A light behind the facet is shadowed, unless the shadow ray starts on the curved
+                // surface (and the shading normal faces the light): then the ray decides, as the
+                // curved surface would, and the terminator follows the shading, not the facets.
+                if (ux * nfx + uy * nfy + uz * nfz <= 0 && !lifted) continue;
                 double ndotl = ux * snx + uy * sny + uz * snz;
                 if (ndotl <= 0) continue;
                 boolean infinite = ls.distance == Double.POSITIVE_INFINITY;

@@ -21,6 +21,15 @@ public final class ShadingData {
     public final double[] p = new double[3];
     /** Scratch for a triangle's corners (positions, normals, texture coordinates) while it is shaded. */
     public final double[] corners = new double[24];
+    /**
+     * Where shadow rays towards lights on the outward side start, when {@link #lifted}: the hit
+     * point lifted off a smooth-shaded triangle onto the curved surface its vertex normals
+     * describe, so that the flat facet does not shadow itself where the shading says it is lit.
+     * While a shape is shaded it holds the object-space offset from the point instead.
+     */
+    public final double[] shadowOrigin = new double[3];
+    /** Whether {@link #shadowOrigin} holds a lifted shadow-ray origin (otherwise shadow rays start at {@link #p}). */
+    public boolean lifted;
     /** Geometric normal, outward. */
     public final double[] ng = new double[3];
     /** Shading normal (interpolated or perturbed), outward, on the same side as ng. */
