@@ -53,16 +53,10 @@ public final class ConductorBsdf implements Bsdf {
     @Override
     public void eval(double wox, double woy, double woz, double wix, double wiy, double wiz, double[] rgbOut) {
         rgbOut[0] = 0; rgbOut[1] = 0; rgbOut[2] = 0;
-        if (smooth || !(woz * wiz > 0)) return;
-        double hx = wox + wix, hy = woy + wiy, hz = woz + wiz;
-        double len2 = hx * hx + hy * hy + hz * hz;
-        if (len2 == 0) return;
-        double inv = (hz < 0 ? -1 : 1) / Math.sqrt(len2);
-        hx *= inv; hy *= inv; hz *= inv;
-        double d = distribution.d(hx, hy, hz);
-        if (d == 0) return;
-        double common = d * distribution.g(wox, woy, woz, wix, wiy, wiz) / (4 * Math.abs(woz) * Math.abs(wiz));
-        double schlick = schlickWeight(Math.abs(wox * hx + woy * hy + woz * hz));
+        if (smooth) return;
+        double common = distribution.reflection(wox, woy, woz, wix, wiy, wiz, rgbOut); // |wo . h| in rgbOut[0]
+        if (common == 0) return;
+        double schlick = schlickWeight(rgbOut[0]);
         rgbOut[0] = common * (f0r + (1 - f0r) * schlick);
         rgbOut[1] = common * (f0g + (1 - f0g) * schlick);
         rgbOut[2] = common * (f0b + (1 - f0b) * schlick);

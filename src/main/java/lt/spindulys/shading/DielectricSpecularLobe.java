@@ -30,16 +30,11 @@ final class DielectricSpecularLobe implements Bsdf {
     @Override
     public void eval(double wox, double woy, double woz, double wix, double wiy, double wiz, double[] rgbOut) {
         rgbOut[0] = 0; rgbOut[1] = 0; rgbOut[2] = 0;
-        if (smooth || !(woz * wiz > 0)) return;
-        double hx = wox + wix, hy = woy + wiy, hz = woz + wiz;
-        double len2 = hx * hx + hy * hy + hz * hz;
-        if (!(len2 > 0)) return;
-        double inv = (hz < 0 ? -1 : 1) / Math.sqrt(len2);
-        hx *= inv; hy *= inv; hz *= inv;
-        double d = distribution.d(hx, hy, hz);
-        if (d == 0) return;
-        double fresnel = DielectricBsdf.fresnel(Math.abs(wox * hx + woy * hy + woz * hz), ior);
-        double f = d * distribution.g(wox, woy, woz, wix, wiy, wiz) * fresnel / (4 * Math.abs(woz) * Math.abs(wiz));
+        if (smooth) return;
+        double common = distribution.reflection(wox, woy, woz, wix, wiy, wiz, rgbOut); // |wo . h| in rgbOut[0]
+        if (common == 0) return;
+        double f = common * DielectricBsdf.fresnel(rgbOut[0], ior);
+        rgbOut[0] = 0;
         if (!(f > 0) || Double.isInfinite(f)) return;
         rgbOut[0] = f; rgbOut[1] = f; rgbOut[2] = f;
     }

@@ -101,6 +101,27 @@ public final class MicrofacetDistribution {
     }
 
     /**
+     * The single-scattering GGX reflection term D(h) G(wo, wi) / (4 |cos wo| |cos wi|) for wo and
+     * wi on the same side, h their half vector, without the Fresnel factor, which the caller
+     * applies at |wo . h|, written to {@code cosHalf[0]}.
+     *
+     * @param cosHalf receives |wo . h| in its first entry (left alone when the term is 0)
+     * @return the term, 0 when wo and wi lie on different sides or h is undefined
+     */
+    double reflection(double wox, double woy, double woz, double wix, double wiy, double wiz, double[] cosHalf) {
+        if (!(woz * wiz > 0)) return 0;
+        double hx = wox + wix, hy = woy + wiy, hz = woz + wiz;
+        double len2 = hx * hx + hy * hy + hz * hz;
+        if (!(len2 > 0)) return 0;
+        double inv = (hz < 0 ? -1 : 1) / Math.sqrt(len2);
+        hx *= inv; hy *= inv; hz *= inv;
+        double d = d(hx, hy, hz);
+        if (d == 0) return 0;
+        cosHalf[0] = Math.abs(wox * hx + woy * hy + woz * hz);
+        return d * g(wox, woy, woz, wix, wiy, wiz) / (4 * Math.abs(woz) * Math.abs(wiz));
+    }
+
+    /**
      * The density of a reflection lobe that draws a visible normal and mirrors wo about it: the
      * visible-normal density of the half vector of wo and wi times the Jacobian 1 / (4 |wo.wm|)
      * of the mirroring. 0 unless wo and wi lie on the same side, and where the half vector is
