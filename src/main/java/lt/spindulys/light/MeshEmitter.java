@@ -64,9 +64,13 @@ public final class MeshEmitter extends Light {
      */
     static MeshEmitter of(TriangleMesh mesh) {
         if (mesh.isMoving() || mesh.solid() != mesh) return null;
-        int n = mesh.triangleCount();
         double[] rgb = new double[3];
         TexturePoint point = new TexturePoint();
+        // Most meshes glow nowhere: their few materials say so without a pass over the triangles.
+        boolean[] glows = {false};
+        mesh.forEachMaterial(m -> glows[0] |= uniformEmission(m, point, rgb) && brightness(rgb) > 0);
+        if (!glows[0]) return null;
+        int n = mesh.triangleCount();
         int count = 0;
         for (int t = 0; t < n; t++) if (uniformEmission(mesh.material(t, 0), point, rgb) && brightness(rgb) > 0) count++;
         if (count == 0) return null;
