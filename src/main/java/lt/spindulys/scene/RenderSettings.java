@@ -44,7 +44,9 @@ import lt.spindulys.camera.PixelFilter;
  * @param clamp           path tracing only: the largest value any channel of one indirect
  *                        sample may bring to a pixel (light reaching the camera after at least one
  *                        bounce), against fireflies; 0 for no clamp
- * @param filter          the pixel reconstruction filter the film samples are drawn from
+ * @param filter          the pixel reconstruction filter the film samples are drawn from, or null
+ *                        for the default for the sample count ({@link PixelFilter#defaultFor};
+ *                        {@link #filter()} tells the filter used)
  * @param filterWidth     the filter's width W in pixels (see {@link PixelFilter}), or 0 for the
  *                        filter's own default ({@link #pixelFilterWidth()} tells the width used)
  */
@@ -62,11 +64,11 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      * The settings of a scene that gives none, and where {@link #builder()} starts: 640x480, 1
      * sample per pixel, depth 8, minimum contribution 0.001, black background, white ambient,
      * linear encoding, seed 0, the default accelerator, no passes, shutter [0, 1] in one pass,
-     * Whitted ray tracing, no clamp, the box filter of width 1.
+     * Whitted ray tracing, no clamp, the default pixel filter ({@link PixelFilter#defaultFor}).
      */
     public static final RenderSettings DEFAULT = new RenderSettings(640, 480, 1, 8, 0.001, Color.BLACK, Color.WHITE, false, 0,
             AcceleratorKind.DEFAULT, Set.of(), Placement.OPEN, Placement.CLOSE, 1, AdaptiveSettings.DEFAULT,
-            IntegratorKind.DEFAULT, 0, PixelFilter.DEFAULT, 0);
+            IntegratorKind.DEFAULT, 0, null, 0);
 
     /**
      * Checks every value as the {@link Builder}'s methods do, with the same messages; the
@@ -89,10 +91,10 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      * @param adaptive        memory, cache and target of adaptive subdivision
      * @param integrator      Whitted ray tracing or path tracing
      * @param clamp           the largest value of an indirect sample's channel (path tracing), 0 for none
-     * @param filter          the pixel reconstruction filter
+     * @param filter          the pixel reconstruction filter, null for the default for the sample count
      * @param filterWidth     its width in pixels, 0 for its default
      * @throws IllegalArgumentException if a value is out of its range
-     * @throws NullPointerException     if accelerator, aovs or filter is null
+     * @throws NullPointerException     if accelerator or aovs is null
      */
     public RenderSettings {
         side("width", width);
@@ -109,16 +111,32 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         Objects.requireNonNull(adaptive, "adaptive");
         Objects.requireNonNull(integrator, "integrator");
         clamp(clamp);
-        Objects.requireNonNull(filter, "filter");
         filterWidth(filterWidth);
     }
+
+    /**
+     * The pixel filter in use: the one chosen, or when none was, the default for this sample
+     * count ({@link PixelFilter#defaultFor}), so that changing the samples of a scene that names
+     * no filter (from the command line, say) also changes its default.
+     *
+     * @return the filter
+     */
+    @Override
+    public PixelFilter filter() { return filter != null ? filter : PixelFilter.defaultFor(samplesPerPixel); }
+
+    /**
+     * Whether a filter was chosen, rather than left to {@link PixelFilter#defaultFor}.
+     *
+     * @return true if the settings name a filter
+     */
+    public boolean filterChosen() { return filter != null; }
 
     /**
      * The pixel filter's width in use: the one given, or the filter's default.
      *
      * @return W in pixels
      */
-    public double pixelFilterWidth() { return filterWidth > 0 ? filterWidth : filter.defaultWidth(); }
+    public double pixelFilterWidth() { return filterWidth > 0 ? filterWidth : filter().defaultWidth(); }
 
     /**
      * A builder holding {@link #DEFAULT}'s values.

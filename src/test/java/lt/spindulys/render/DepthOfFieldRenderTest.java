@@ -8,6 +8,7 @@ import org.junit.jupiter.api.Test;
 
 import lt.spindulys.camera.Camera;
 import lt.spindulys.camera.PinholeCamera;
+import lt.spindulys.camera.PixelFilter;
 import lt.spindulys.camera.ThinLensCamera;
 import lt.spindulys.image.Aov;
 import lt.spindulys.image.AovFrame;
@@ -33,7 +34,8 @@ class DepthOfFieldRenderTest {
     /** The edge x = 0 at depth d: the white side x > 0 is the image's left (right is forward x up = -x). */
     private static FrameBuffer render(Camera camera, double d, int spp, int threads) throws InterruptedException {
         SceneBuilder b = new SceneBuilder()
-                .settings(RenderSettings.builder().size(W, H).samplesPerPixel(spp).seed(17).ambient(Color.WHITE).build())
+                .settings(RenderSettings.builder().size(W, H).samplesPerPixel(spp).seed(17).ambient(Color.WHITE)
+                        .filter(PixelFilter.BOX).build()) // the box: edge widths are then the lens's alone
                 .camera(camera);
         b.add(new Triangle(new Vec3(0, -1000, d), new Vec3(0, 1000, d), new Vec3(1000, 0, d))
                 .material(Material.builder().color(Color.WHITE).ka(1).kd(0).build()));

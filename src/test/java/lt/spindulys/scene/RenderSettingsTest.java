@@ -1,8 +1,10 @@
 package lt.spindulys.scene;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.EnumSet;
 import java.util.List;
@@ -97,7 +99,7 @@ class RenderSettingsTest {
         assertEquals(RenderSettings.DEFAULT, b.build());
         // The constructor words a refusal as the builder does.
         refused("width must be between 1 and 32768, found 0", () -> new RenderSettings(0, 1, 1, 0, 0, Color.BLACK, Color.BLACK, false, 0,
-                AcceleratorKind.DEFAULT, Set.of(), 0, 1, 1, AdaptiveSettings.DEFAULT, IntegratorKind.DEFAULT, 0, PixelFilter.DEFAULT, 0));
+                AcceleratorKind.DEFAULT, Set.of(), 0, 1, 1, AdaptiveSettings.DEFAULT, IntegratorKind.DEFAULT, 0, null, 0));
     }
 
     @Test
@@ -117,6 +119,22 @@ class RenderSettingsTest {
         assertEquals(4, b.toBuilder().filter(PixelFilter.MITCHELL).build().pixelFilterWidth());
         assertEquals(2.5, b.toBuilder().filterWidth(2.5).build().pixelFilterWidth());
         assertEquals(1, RenderSettings.DEFAULT.pixelFilterWidth());
+    }
+
+    @Test
+    void theDefaultFilterIsBlackmanHarrisExceptAtOneSampleAndFollowsTheSampleCount() {
+        RenderSettings one = RenderSettings.DEFAULT;
+        assertFalse(one.filterChosen());
+        assertEquals(PixelFilter.BOX, one.filter());
+        RenderSettings many = one.toBuilder().samplesPerPixel(16).build();
+        assertEquals(PixelFilter.BLACKMAN_HARRIS, many.filter());
+        assertEquals(1.5, many.pixelFilterWidth());
+        // Back to one sample, a filter left to the default is the box again; a chosen one stays.
+        assertEquals(PixelFilter.BOX, many.toBuilder().samplesPerPixel(1).build().filter());
+        RenderSettings chosen = many.toBuilder().filter(PixelFilter.GAUSSIAN).samplesPerPixel(1).build();
+        assertTrue(chosen.filterChosen());
+        assertEquals(PixelFilter.GAUSSIAN, chosen.filter());
+        assertEquals(PixelFilter.BOX, one.toBuilder().filter(PixelFilter.BOX).samplesPerPixel(16).build().filter());
     }
 
     @Test
