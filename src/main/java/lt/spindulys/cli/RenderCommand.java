@@ -82,7 +82,7 @@ final class RenderCommand {
               --filter-width W   the pixel filter's width in pixels, 0.1 to 16 (overrides the scene and --filter)
               --aov LIST         render passes beside the image, comma-separated: depth, normal, object
                                  (OUT.depth.pfm, OUT.normal.pfm, OUT.object.png; overrides the scene);
-                                 an .exr holds them as its channels Z, N.X N.Y N.Z and objectId instead
+                                 an .exr holds them as its channels Z, Normal.X/Y/Z and IndexOB.X instead
               --shutter OPEN,CLOSE  shutter interval of the motion blur, e.g. 0,1 (overrides the scene)
               --timesteps N      1: one pass, every sample at its own time (default); N > 1: the thesis's
                                  method, N whole-frame passes at fixed times averaged (spp must be a multiple of N)

@@ -16,12 +16,13 @@ import java.util.zip.Deflater;
  * flags, the required header attributes, the offset table and the line blocks, all little-endian.
  *
  * <p>Channels, in the alphabetical (byte) order the format requires: {@code A} (always 1: the
- * frame has no coverage), {@code B}, {@code G}, {@code R}; with the normal pass {@code N.X},
- * {@code N.Y}, {@code N.Z} (layer N: readers split names at the last dot); with the depth pass
- * {@code Z}, OpenEXR's own name for depth, which Nuke and OpenImageIO read as depth, +Infinity
- * where nothing was hit; with the object pass {@code objectId}, the
- * object's id + 1 and 0 for the background, exact as a float. Colour and normal follow
- * {@link ImageOptions#exrPrecision()}; depth and object id are always FLOAT.
+ * frame has no coverage), {@code B}, {@code G}, {@code R}; with the normal pass {@code Normal.X},
+ * {@code Normal.Y}, {@code Normal.Z}; with the depth pass {@code Z}, OpenEXR's own name for
+ * depth, +Infinity where nothing was hit; with the object pass {@code IndexOB.X}, the object's
+ * id + 1 and 0 for the background, exact as a float. The names are Blender's: its loader shows
+ * the passes as Combined, Depth, Normal and IndexOB (as its own renders name them), and Nuke
+ * and OpenImageIO read {@code Z} as depth and each {@code layer.channel} as a layer. Colour and
+ * normal follow {@link ImageOptions#exrPrecision()}; depth and object id are always FLOAT.
  *
  * <p>With {@link ExrCompression#ZIP} or {@link ExrCompression#ZIPS} each block's bytes are split
  * into the even-indexed and the odd-indexed ones, each byte replaced by its difference from the
@@ -73,9 +74,9 @@ final class ExrWriter {
         if (aovs != null) {
             if (aovs.passes().contains(Aov.NORMAL)) {
                 double[] n = aovs.normalData();
-                channels.add(new Channel("N.X", half, p -> n[3 * p]));
-                channels.add(new Channel("N.Y", half, p -> n[3 * p + 1]));
-                channels.add(new Channel("N.Z", half, p -> n[3 * p + 2]));
+                channels.add(new Channel("Normal.X", half, p -> n[3 * p]));
+                channels.add(new Channel("Normal.Y", half, p -> n[3 * p + 1]));
+                channels.add(new Channel("Normal.Z", half, p -> n[3 * p + 2]));
             }
             if (aovs.passes().contains(Aov.DEPTH)) {
                 double[] d = aovs.depthData();
@@ -83,7 +84,7 @@ final class ExrWriter {
             }
             if (aovs.passes().contains(Aov.OBJECT)) {
                 int[] codes = aovs.objectCodes();
-                channels.add(new Channel("objectId", false, p -> codes[p]));
+                channels.add(new Channel("IndexOB.X", false, p -> codes[p]));
             }
         }
         // Readers rely on the order: OpenEXR keeps channel lists sorted by strcmp.

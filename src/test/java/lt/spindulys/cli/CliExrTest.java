@@ -45,15 +45,15 @@ class CliExrTest {
         assertEquals(24, image.width());
         assertEquals(16, image.height());
         assertEquals(3, image.compression(), "ZIP by default");
-        assertEquals(List.of("A", "B", "G", "N.X", "N.Y", "N.Z", "R", "Z", "objectId"),
+        assertEquals(List.of("A", "B", "G", "IndexOB.X", "Normal.X", "Normal.Y", "Normal.Z", "R", "Z"),
                 image.channels().stream().map(ExrTestDecoder.Channel::name).toList());
         assertEquals(1, image.channel("R").pixelType(), "half by default");
         // Top row: sky; centre: the sphere (id 1) about 3.5 away; bottom: the floor (id 0).
         assertEquals(Float.POSITIVE_INFINITY, image.channel("Z").values()[0]);
-        assertEquals(0f, image.channel("objectId").values()[0]);
+        assertEquals(0f, image.channel("IndexOB.X").values()[0]);
         assertEquals(3.5, image.channel("Z").values()[8 * 24 + 12], 0.1);
-        assertEquals(2f, image.channel("objectId").values()[8 * 24 + 12]);
-        assertEquals(1f, image.channel("objectId").values()[15 * 24]);
+        assertEquals(2f, image.channel("IndexOB.X").values()[8 * 24 + 12]);
+        assertEquals(1f, image.channel("IndexOB.X").values()[15 * 24]);
         assertTrue(image.channel("G").values()[8 * 24 + 12] > 0, "the lit sphere");
     }
 

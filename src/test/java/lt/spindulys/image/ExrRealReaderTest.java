@@ -10,6 +10,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.EnumSet;
+import java.util.List;
 import java.util.concurrent.TimeUnit;
 
 import org.junit.jupiter.api.Test;
@@ -17,7 +18,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Files of the OpenEXR writer read by the OpenEXR library's own tools (Debian package openexr:
- * exrheader, exrinfo, exrmaketiled). Each test is skipped, saying why, where its tool is not on
+ * exrheader, exrinfo, exrmaketiled) and by Blender's loader (Debian package blender). Each test is skipped, saying why, where its tool is not on
  * the PATH.
  */
 class ExrRealReaderTest {
@@ -76,10 +77,10 @@ class ExrRealReaderTest {
                 String out = r.output();
                 assertTrue(out.contains("file format version: 2, flags 0x0"), out);
                 assertTrue(out.contains("    A, " + colour), out);
-                assertTrue(out.contains("    N.Z, " + colour), out);
+                assertTrue(out.contains("    Normal.Z, " + colour), out);
                 assertTrue(out.contains("    R, " + colour), out);
                 assertTrue(out.contains("    Z, 32-bit floating-point"), out);
-                assertTrue(out.contains("    objectId, 32-bit floating-point"), out);
+                assertTrue(out.contains("    IndexOB.X, 32-bit floating-point"), out);
                 assertTrue(out.contains("dataWindow (type box2i): (0 0) - (12 36)"), out);
                 String named = switch (compression) {
                     case NONE -> "none";
@@ -99,7 +100,7 @@ class ExrRealReaderTest {
                 Path file = write(compression.keyword() + "-" + precision.keyword() + ".exr", precision, compression);
                 Result r = run("exrinfo", "-v", "-s", file.toString());
                 assertEquals(0, r.status(), r.output());
-                assertTrue(r.output().contains("objectId"), r.output());
+                assertTrue(r.output().contains("IndexOB.X"), r.output());
             }
         }
     }
@@ -127,10 +128,57 @@ class ExrRealReaderTest {
         }
     }
 
+    /**
+     * Blender's own OpenEXR loader (the peer kit's Blender 3.x, run headless) reads a file with
+     * every pass as a layered image whose passes carry Blender's names (the compositor's Image
+     * node lists the passes it recognised), and a file of colour alone as a plain image holding
+     * our colours.
+     */
+    /** The passes Blender's compositor shows for a file with every pass: its names for ours. */
+    private static final List<String> EXPECTED_BLENDER_PASSES = List.of("Combined", "Alpha", "Depth", "Normal", "IndexOB");
+
+    @Test
+    void blenderNamesEveryPassAndReadsTheColours() throws Exception {
+        assumeTrue(onPath("blender"), "blender is not on the PATH (Debian package blender, as the peer kit installs it)");
+        Path passes = write("passes.exr", ExrPrecision.FLOAT, ExrCompression.ZIP);
+        FrameBuffer fb = new FrameBuffer(W, H);
+        for (int y = 0; y < H; y++) for (int x = 0; x < W; x++) fb.set(x, y, x / (double) W, y / (double) H, x == 7 ? 1e6 : 0.5);
+        Path colour = dir.resolve("colour.exr");
+        ImageWriter.write(fb, colour, ImageOptions.DEFAULT.withExr(ExrPrecision.FLOAT, ExrCompression.ZIPS));
+        Path script = dir.resolve("read.py");
+        Files.writeString(script, """
+                import bpy, sys
+                passes, colour = sys.argv[sys.argv.index('--') + 1:]
+                bpy.context.scene.use_nodes = True
+                node = bpy.context.scene.node_tree.nodes.new('CompositorNodeImage')
+                node.image = bpy.data.images.load(passes)
+                print('PASSES', ','.join(o.name for o in node.outputs))
+                img = bpy.data.images.load(colour)
+                w, h = img.size
+                px = img.pixels[:]
+                # Blender's rows run bottom-up: the file's pixel (x, y) is row h - 1 - y.
+                for x, y in ((0, 0), (7, 3), (12, 36)):
+                    o = 4 * ((h - 1 - y) * w + x)
+                    print('PIXEL', x, y, *(repr(v) for v in px[o:o + 4]))
+                """);
+        Result r = run("blender", "-b", "--factory-startup", "--python", script.toString(), "--", passes.toString(), colour.toString());
+        assertEquals(0, r.status(), r.output());
+        String names = r.output().lines().filter(l -> l.startsWith("PASSES ")).findFirst().orElseThrow(() -> new AssertionError(r.output()));
+        assertEquals(EXPECTED_BLENDER_PASSES, List.of(names.substring(7).split(",")), r.output());
+        List<String> pixels = r.output().lines().filter(l -> l.startsWith("PIXEL ")).toList();
+        assertEquals(3, pixels.size(), r.output());
+        for (String l : pixels) {
+            String[] f = l.split(" ");
+            int x = Integer.parseInt(f[1]), y = Integer.parseInt(f[2]);
+            double[] expected = {x / (double) W, y / (double) H, x == 7 ? 1e6 : 0.5, 1};
+            for (int c = 0; c < 4; c++) assertEquals(expected[c], Double.parseDouble(f[3 + c]), 1e-6 * Math.max(1, expected[c]), l);
+        }
+    }
+
     /** The pixel bytes of an uncompressed scanline file of this test's channels: its blocks without their line and size. */
     private static byte[] pixelBytes(Path none, ExrPrecision precision) throws IOException {
         int colour = precision == ExrPrecision.HALF ? 2 : 4;
-        int line = W * (7 * colour + 2 * 4); // A B G N.X N.Y N.Z R, then Z and objectId as floats
+        int line = W * (7 * colour + 2 * 4); // A B G, IndexOB.X as a float, Normal.X Normal.Y Normal.Z R, then Z as a float
         byte[] all = Files.readAllBytes(none);
         int start = all.length - H * (8 + line);
         byte[] out = new byte[H * line];

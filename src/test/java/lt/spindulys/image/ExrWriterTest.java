@@ -105,7 +105,7 @@ class ExrWriterTest {
             assertEquals(w, image.width());
             assertEquals(h, image.height());
             assertEquals(compression.code(), image.compression());
-            assertEquals(List.of("A", "B", "G", "N.X", "N.Y", "N.Z", "R", "Z", "objectId"),
+            assertEquals(List.of("A", "B", "G", "IndexOB.X", "Normal.X", "Normal.Y", "Normal.Z", "R", "Z"),
                     image.channels().stream().map(ExrTestDecoder.Channel::name).toList());
             assertEquals(List.of("channels", "compression", "dataWindow", "displayWindow", "lineOrder", "pixelAspectRatio",
                     "screenWindowCenter", "screenWindowWidth"), List.copyOf(image.attributes().keySet()));
@@ -114,9 +114,9 @@ class ExrWriterTest {
             assertEquals("v2f", image.attributeTypes().get("screenWindowCenter"));
             int colourType = precision == ExrPrecision.HALF ? 1 : 2;
             assertEquals(colourType, image.channel("R").pixelType());
-            assertEquals(colourType, image.channel("N.X").pixelType());
+            assertEquals(colourType, image.channel("Normal.X").pixelType());
             assertEquals(2, image.channel("Z").pixelType(), "depth is always float");
-            assertEquals(2, image.channel("objectId").pixelType(), "object id is always float");
+            assertEquals(2, image.channel("IndexOB.X").pixelType(), "object id is always float");
             for (int y = 0; y < h; y++) {
                 for (int x = 0; x < w; x++) {
                     int p = y * w + x;
@@ -124,10 +124,10 @@ class ExrWriterTest {
                     assertEquals(1f, image.channel("A").values()[p], at);
                     for (int c = 0; c < 3; c++) {
                         assertEquals(stored(fb.get(x, y, c), precision), image.channel("RGB".substring(c, c + 1)).values()[p], at);
-                        assertEquals(stored(aovs.normal(x, y, c), precision), image.channel("N." + "XYZ".charAt(c)).values()[p], at);
+                        assertEquals(stored(aovs.normal(x, y, c), precision), image.channel("Normal." + "XYZ".charAt(c)).values()[p], at);
                     }
                     assertEquals((float) aovs.depth(x, y), image.channel("Z").values()[p], at);
-                    assertEquals(aovs.objectId(x, y) + 1, image.channel("objectId").values()[p], at);
+                    assertEquals(aovs.objectId(x, y) + 1, image.channel("IndexOB.X").values()[p], at);
                 }
             }
         }
