@@ -33,19 +33,6 @@ public enum PixelFilter {
      */
     MITCHELL("mitchell", 4.0);
 
-    /**
-     * The filter used when none is chosen, for a pixel of {@code samplesPerPixel} samples:
-     * Blackman-Harris of width 1.5, Blender's and Cycles' default, whose smooth 3-pixel window
-     * takes the staircase off hard edges that the box leaves at low sample counts and matches the
-     * renders Spindulys is compared with; but with one sample a pixel the box, whose one sample is
-     * the pixel centre: a single sample drawn from a wider filter would only add noise.
-     *
-     * @param samplesPerPixel the samples of a pixel
-     * @return {@link #BOX} for one sample, else {@link #BLACKMAN_HARRIS}
-     */
-    public static PixelFilter defaultFor(int samplesPerPixel) {
-        return samplesPerPixel <= 1 ? BOX : BLACKMAN_HARRIS;
-    }
 
     /** Mitchell-Netravali's B and C. */
     private static final double B = 1.0 / 3, C = 1.0 / 3;

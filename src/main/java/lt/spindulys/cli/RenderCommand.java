@@ -76,9 +76,10 @@ final class RenderCommand {
               --maxdepth N       most bounces of a ray or path, 0 to 64 (overrides the scene)
               --clamp C          path tracing: the largest value a channel of one indirect sample may bring,
                                  against fireflies; 0 for none (overrides the scene)
-              --filter F[,W]     pixel filter: box, gaussian, blackman-harris (the default, as Blender's; box at
-                                 1 sample) or mitchell, optionally with its width W in pixels; without W the
-                                 filter's own default width (1, 1.5, 1.5, 4) (overrides the scene)
+              --filter F[,W]     pixel filter: box (Whitted's default), gaussian, blackman-harris (the path
+                                 tracer's default, as Blender's) or mitchell, optionally with its width W in
+                                 pixels; without W the filter's own default width (1, 1.5, 1.5, 4)
+                                 (overrides the scene)
               --filter-width W   the pixel filter's width in pixels, 0.1 to 16 (overrides the scene and --filter)
               --aov LIST         render passes beside the image, comma-separated: depth, normal, object
                                  (OUT.depth.pfm, OUT.normal.pfm, OUT.object.png; overrides the scene);

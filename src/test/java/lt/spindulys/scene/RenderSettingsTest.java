@@ -122,19 +122,20 @@ class RenderSettingsTest {
     }
 
     @Test
-    void theDefaultFilterIsBlackmanHarrisExceptAtOneSampleAndFollowsTheSampleCount() {
-        RenderSettings one = RenderSettings.DEFAULT;
-        assertFalse(one.filterChosen());
-        assertEquals(PixelFilter.BOX, one.filter());
-        RenderSettings many = one.toBuilder().samplesPerPixel(16).build();
-        assertEquals(PixelFilter.BLACKMAN_HARRIS, many.filter());
-        assertEquals(1.5, many.pixelFilterWidth());
-        // Back to one sample, a filter left to the default is the box again; a chosen one stays.
-        assertEquals(PixelFilter.BOX, many.toBuilder().samplesPerPixel(1).build().filter());
-        RenderSettings chosen = many.toBuilder().filter(PixelFilter.GAUSSIAN).samplesPerPixel(1).build();
+    void theDefaultFilterFollowsTheIntegratorUnlessOneIsChosen() {
+        RenderSettings whitted = RenderSettings.DEFAULT.toBuilder().samplesPerPixel(16).build();
+        assertFalse(whitted.filterChosen());
+        assertEquals(PixelFilter.BOX, whitted.filter());
+        assertEquals(1, whitted.pixelFilterWidth());
+        RenderSettings path = whitted.toBuilder().integrator(IntegratorKind.PATH).build();
+        assertEquals(PixelFilter.BLACKMAN_HARRIS, path.filter());
+        assertEquals(1.5, path.pixelFilterWidth());
+        // Back to Whitted, a filter left to the default is the box again; a chosen one stays.
+        assertEquals(PixelFilter.BOX, path.toBuilder().integrator(IntegratorKind.WHITTED).build().filter());
+        RenderSettings chosen = path.toBuilder().filter(PixelFilter.GAUSSIAN).integrator(IntegratorKind.WHITTED).build();
         assertTrue(chosen.filterChosen());
         assertEquals(PixelFilter.GAUSSIAN, chosen.filter());
-        assertEquals(PixelFilter.BOX, one.toBuilder().filter(PixelFilter.BOX).samplesPerPixel(16).build().filter());
+        assertEquals(PixelFilter.BOX, path.toBuilder().filter(PixelFilter.BOX).build().filter());
     }
 
     @Test
