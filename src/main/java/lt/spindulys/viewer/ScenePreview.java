@@ -35,6 +35,8 @@ import lt.spindulys.scene.SceneBuilder;
 public final class ScenePreview implements AutoCloseable {
     /** How long the files must be quiet before a burst of changes is read. */
     static final long QUIET_MILLIS = 150;
+    /** The least time between two showings of a pass filling in. */
+    static final long TILES_INTERVAL_NANOS = 250_000_000L;
 
     /** Told what to show; called through the preview's {@code ui} executor, in order. */
     public interface Listener {
@@ -45,6 +47,15 @@ public final class ScenePreview implements AutoCloseable {
          * @param status  what it is, such as "pass 2 of 5: 80x60, 1 sample"
          */
         void picture(BufferedImage picture, String status);
+
+        /**
+         * A pass is under way: show its picture as far as it has come (its finished tiles over the
+         * picture before, enlarged); a pass that takes long is shown so, at most 4 times a second.
+         *
+         * @param partial the pass's picture so far
+         * @param status  what it is, with how much of it is done
+         */
+        void partial(BufferedImage partial, String status);
 
         /**
          * The state changed: reading, rendering pass N, done; and the error, if any.
@@ -196,7 +207,7 @@ public final class ScenePreview implements AutoCloseable {
         } catch (NoSuchFileException e) {
             failed(r, file + ": the scene file is missing");
             return;
-        } catch (IOException | RuntimeException e) {
+        } catch (IOException | RuntimeException | OutOfMemoryError e) {
             failed(r, FailureMessage.of(e));
             return;
         }
@@ -227,7 +238,12 @@ public final class ScenePreview implements AutoCloseable {
 
     private void render(PreviewState.Render r) {
         String what = "pass " + (r.index() + 1) + " of " + r.count() + ": " + r.pass().describe();
-        RenderJob job = RenderJob.of(r.scene()).settings(r.pass()::apply).threads(threads);
+        BufferedImage before;
+        synchronized (this) { before = state.picture(); }
+        RenderJob job = RenderJob.of(r.scene()).settings(r.pass()::apply).threads(threads)
+                .tiles(new TileCanvas(r.pass().width(), r.pass().height(), r.scene().settings().srgb(), before,
+                        (partial, fraction) -> partly(r.generation(), partial, "rendering " + what + ", " + Math.round(fraction * 100) + " %"),
+                        TILES_INTERVAL_NANOS));
         if (r.camera() != null) job.camera(c -> r.camera());
         Integer n = frame != null ? frame : r.scene().animation() != null ? Integer.valueOf(r.scene().animation().first()) : null;
         if (n != null) job.frame(n);
@@ -252,13 +268,21 @@ public final class ScenePreview implements AutoCloseable {
             synchronized (this) { running = null; }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-        } catch (IOException | RuntimeException e) {
+        } catch (IOException | RuntimeException | OutOfMemoryError e) {
             synchronized (this) {
                 running = null;
                 if (!state.renderFailed(r.generation(), FailureMessage.of(e))) return;
             }
             show("the scene does not render; showing the last good picture");
         }
+    }
+
+    /** Shows a pass as far as it has come, unless the pass is already out of date. */
+    private void partly(long generation, BufferedImage partial, String status) {
+        synchronized (this) {
+            if (generation != state.generation()) return;
+        }
+        ui.execute(() -> listener.partial(partial, status));
     }
 
     /** Tells the listener what the preview does, with the current error. */

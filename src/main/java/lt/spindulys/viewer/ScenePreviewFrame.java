@@ -184,6 +184,12 @@ public final class ScenePreviewFrame extends JFrame implements ScenePreview.List
     }
 
     @Override
+    public void partial(BufferedImage image, String text) {
+        picture.show(image);
+        status.setText(text);
+    }
+
+    @Override
     public void status(String text, String errorText) {
         lastStatus = text;
         status.setText(text);

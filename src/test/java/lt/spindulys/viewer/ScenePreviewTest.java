@@ -36,11 +36,16 @@ class ScenePreviewTest {
     static final class Seen implements ScenePreview.Listener {
         final List<BufferedImage> pictures = new ArrayList<>();
         final List<String> statuses = new ArrayList<>();
+        final List<BufferedImage> partials = new ArrayList<>();
         String error;
 
         @Override public synchronized void picture(BufferedImage picture, String status) {
             pictures.add(picture);
             notifyAll();
+        }
+
+        @Override public synchronized void partial(BufferedImage partial, String status) {
+            partials.add(partial);
         }
 
         @Override public synchronized void status(String status, String error) {
