@@ -137,7 +137,8 @@ public final class ScenePreviewFrame extends JFrame implements ScenePreview.List
         }
         StringSelection s = new StringSelection(block);
         Toolkit.getDefaultToolkit().getSystemClipboard().setContents(s, s);
-        status.setText("copied: " + block);
+        lastStatus = "copied: " + block;
+        status.setText(lastStatus);
     }
 
     private void saveCamera() {
@@ -169,6 +170,7 @@ public final class ScenePreviewFrame extends JFrame implements ScenePreview.List
             boolean saved = ok;
             SwingUtilities.invokeLater(() -> {
                 if (saved) {
+                    lastStatus = message;
                     status.setText(message);
                 } else if (isDisplayable()) {
                     JOptionPane.showMessageDialog(this, message, "Save camera", JOptionPane.ERROR_MESSAGE);
