@@ -161,9 +161,8 @@ final class PreviewState {
      */
     void dragged(double dx, double dy) {
         if (scene == null) return;
-        orbit = orbit.dragged(dx, dy, sceneCamera());
         dragging = true;
-        restart();
+        turn(orbit.dragged(dx, dy, sceneCamera()));
     }
 
     /** The drag ended: the passes go on to the full picture, from where the coarse ones stopped. */
@@ -178,14 +177,24 @@ final class PreviewState {
      */
     void dollied(double notches) {
         if (scene == null) return;
-        orbit = orbit.dollied(notches);
-        restart();
+        turn(orbit.dollied(notches));
     }
 
     /** Back to the file's camera. */
     void reset() {
         if (scene == null || orbit.isNone()) return;
         orbit = CameraOrbit.NONE;
+        restart();
+    }
+
+    /** Moves the view, unless the camera it gives is one the camera refuses (an eye beyond the numbers a scene may hold): the view then stays. */
+    private void turn(CameraOrbit next) {
+        try {
+            next.apply(sceneCamera());
+        } catch (IllegalArgumentException e) {
+            return;
+        }
+        orbit = next;
         restart();
     }
 

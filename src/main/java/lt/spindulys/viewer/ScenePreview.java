@@ -188,8 +188,14 @@ public final class ScenePreview implements AutoCloseable {
                     while (!closed && (w = state.next()) == null) wait();
                     if (closed) return;
                 }
-                if (w instanceof PreviewState.Read r) read(r);
-                else render((PreviewState.Render) w);
+                try {
+                    if (w instanceof PreviewState.Read r) read(r);
+                    else render((PreviewState.Render) w);
+                } catch (RuntimeException e) {
+                    // A bug, not bad input (which read and render report): shown, and the preview goes on.
+                    synchronized (this) { state.renderFailed(w.generation(), FailureMessage.of(e)); }
+                    show("failed");
+                }
             }
         } catch (InterruptedException e) {
             // Closed.

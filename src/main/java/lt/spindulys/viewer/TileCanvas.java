@@ -66,7 +66,9 @@ final class TileCanvas implements TileListener {
         rgb = new int[width * height];
         if (before == null) return;
         int bw = before.getWidth(), bh = before.getHeight();
-        int[] b = before.getRGB(0, 0, bw, bh, null, 0, bw);
+        // A pass's picture is TYPE_INT_RGB: read in place rather than copied.
+        int[] b = before.getType() == BufferedImage.TYPE_INT_RGB ? ((DataBufferInt) before.getRaster().getDataBuffer()).getData()
+                : before.getRGB(0, 0, bw, bh, null, 0, bw);
         for (int y = 0; y < height; y++) {
             int by = (int) ((long) y * bh / height);
             for (int x = 0; x < width; x++) rgb[y * width + x] = b[by * bw + (int) ((long) x * bw / width)] & 0xFFFFFF;

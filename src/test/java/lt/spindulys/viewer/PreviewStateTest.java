@@ -164,4 +164,17 @@ class PreviewStateTest {
         assertTrue(state.atFileCamera());
         assertEquals("camera { eye 0 1 -5  lookat 0 0 0  up 0 1 0  fov 45 }", state.cameraBlock());
     }
+
+    @Test
+    void aMoveTheCameraWouldRefuseLeavesTheViewAsItIs() {
+        read("camera { eye 0 0 -1e10  lookat 0 0 0 }\nsphere { radius 1 }\n");
+        state.dollied(100);
+        long g = state.generation();
+        PinholeCamera far = (PinholeCamera) state.camera();
+        assertTrue(Math.abs(far.eye().z()) <= 1e15, far.eye().toString());
+        assertTrue(far.eye().z() < -1e14, far.eye().toString());
+        state.dollied(100);
+        assertEquals(g, state.generation(), "an eye beyond 10^15 is refused: nothing to render again");
+        assertEquals(far.eye(), ((PinholeCamera) state.camera()).eye());
+    }
 }
