@@ -47,6 +47,8 @@ public final class ScenePreviewFrame extends JFrame implements ScenePreview.List
     private final JLabel status = new JLabel("starting");
     private final JLabel error = new JLabel();
     private String lastStatus = "";
+    /** True once the picture area has the scene's aspect. */
+    private boolean shaped;
 
     private ScenePreviewFrame(Path file, Integer frame) {
         super(file.getFileName() + " - Spindulys preview");
@@ -182,7 +184,19 @@ public final class ScenePreviewFrame extends JFrame implements ScenePreview.List
 
     @Override
     public void picture(BufferedImage image, String text) {
+        if (!shaped) shape(image.getWidth(), image.getHeight());
         picture.show(image);
+    }
+
+    /** The largest picture area the window opens with, before the user resizes it. */
+    static final int MAX_OPENING_WIDTH = 960, MAX_OPENING_HEIGHT = 640;
+
+    /** Gives the picture area the scene's aspect once, at its first picture, so it is not letterboxed. */
+    private void shape(int w, int h) {
+        shaped = true;
+        double scale = Math.min((double) MAX_OPENING_WIDTH / w, (double) MAX_OPENING_HEIGHT / h);
+        picture.setPreferredSize(new Dimension(Math.max(160, (int) Math.round(w * scale)), Math.max(120, (int) Math.round(h * scale))));
+        pack();
     }
 
     @Override
