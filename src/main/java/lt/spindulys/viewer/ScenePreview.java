@@ -232,7 +232,7 @@ public final class ScenePreview implements AutoCloseable {
         }
         // The file missing may be one not watched yet: any change in the watched folders may fix it.
         if (watcher != null) watcher.watch(watchedAfterFailure(), true);
-        show("the scene does not read; showing the last good picture");
+        show(keeping("the scene does not read"));
     }
 
     private synchronized List<Path> watchedAfterFailure() {
@@ -279,8 +279,13 @@ public final class ScenePreview implements AutoCloseable {
                 running = null;
                 if (!state.renderFailed(r.generation(), FailureMessage.of(e))) return;
             }
-            show("the scene does not render; showing the last good picture");
+            show(keeping("the scene does not render"));
         }
+    }
+
+    /** The status after a failure: what failed, and whether a picture from before stays shown. */
+    private synchronized String keeping(String failure) {
+        return state.picture() != null ? failure + "; showing the last good picture" : failure;
     }
 
     /** Shows a pass as far as it has come, unless the pass is already out of date. */

@@ -138,6 +138,20 @@ class ScenePreviewTest {
     }
 
     @Test
+    void aSceneThatNeverReadOrAMissingMeshIsRenderedOnceItIsThere() throws Exception {
+        Path scene = write("scene.dat", SCENE.replace("sphere { radius 1  material red }", "mesh { file \"tri.obj\"  material red }"));
+        start(scene);
+        seen.await("the error", s -> s.error != null);
+        assertTrue(seen.error.startsWith(scene + ":6:"), seen.error);
+        assertEquals("the scene does not read", seen.last(), "no picture to keep yet");
+        synchronized (seen) { assertTrue(seen.pictures.isEmpty()); }
+        // The missing mesh appears beside the scene: a file the scene did not read yet, seen all the same.
+        write("tri.obj", "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n");
+        awaitDone(1);
+        assertNull(seen.error);
+    }
+
+    @Test
     void anEditOfAFileTheSceneReadsRendersAgain() throws Exception {
         write("tri.obj", "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\n");
         Path scene = write("scene.dat", SCENE.replace("sphere { radius 1  material red }", "mesh { file \"tri.obj\"  material red }"));
