@@ -50,6 +50,8 @@ final class PreviewState {
     /** The file's camera statement as last read well, or null when it has none. */
     private CameraBlock.Located cameraText;
     private CameraOrbit orbit = CameraOrbit.NONE;
+    /** What the picture depends on besides the camera, as of the last good read (see {@link #read}); null if not known. */
+    private String rest;
     private boolean dragging;
     private List<PreviewPlan.Pass> plan = List.of();
     private int nextPass;
@@ -85,21 +87,31 @@ final class PreviewState {
      * @param g      the generation of the {@link Read}
      * @param read   the scene
      * @param camera the file's camera statement, or null when it has none
+     * @param rest   what the picture depends on besides the camera (the file's text without its
+     *               camera statement, and the other files' sizes and times), or null if not known:
+     *               when it is as it was and the file's camera is the view, as after the view was
+     *               saved into the file, the passes done stay done and the picture stays
      * @return false if the read was of an older generation and was dropped
      */
-    boolean read(long g, SceneBuilder read, CameraBlock.Located camera) {
+    boolean read(long g, SceneBuilder read, CameraBlock.Located camera, String rest) {
         if (g != generation) return false;
+        String view = scene == null ? null : cameraBlock();
+        boolean unchanged = rest != null && rest.equals(this.rest) && view != null
+                && view.equals(CameraBlock.format(cameraOf(read), camera == null ? null : camera.keysText()));
         String before = cameraText == null ? null : cameraText.tokens();
         String now = camera == null ? null : camera.tokens();
         // The first read, or a camera statement that changed: the view follows the file.
         if (scene == null || !java.util.Objects.equals(before, now)) orbit = CameraOrbit.NONE;
         scene = read;
         cameraText = camera;
+        this.rest = rest;
         stale = false;
         error = null;
         readError = false;
-        plan = PreviewPlan.of(read.settings());
-        nextPass = 0;
+        if (!unchanged) {
+            plan = PreviewPlan.of(read.settings());
+            nextPass = 0;
+        }
         return true;
     }
 
@@ -203,9 +215,9 @@ final class PreviewState {
         nextPass = 0;
     }
 
-    private Camera sceneCamera() {
-        return scene.camera() != null ? scene.camera() : SceneBuilder.DEFAULT_CAMERA;
-    }
+    private Camera sceneCamera() { return cameraOf(scene); }
+
+    private static Camera cameraOf(SceneBuilder b) { return b.camera() != null ? b.camera() : SceneBuilder.DEFAULT_CAMERA; }
 
     /** {@return the camera the view shows: the file's, moved by the orbit; null before the first good read} */
     Camera camera() { return scene == null ? null : orbit.apply(sceneCamera()); }

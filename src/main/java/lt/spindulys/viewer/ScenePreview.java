@@ -13,6 +13,7 @@ import java.util.concurrent.CancellationException;
 import java.util.concurrent.Executor;
 
 import lt.spindulys.camera.Camera;
+import lt.spindulys.files.FileNames;
 import lt.spindulys.frontend.FailureMessage;
 import lt.spindulys.io.CameraBlock;
 import lt.spindulys.io.SceneParser;
@@ -206,8 +207,9 @@ public final class ScenePreview implements AutoCloseable {
         show("reading " + file.getFileName());
         SceneBuilder scene;
         CameraBlock.Located camera;
+        String text;
         try {
-            String text = new String(Files.readAllBytes(file), StandardCharsets.UTF_8);
+            text = new String(Files.readAllBytes(file), StandardCharsets.UTF_8);
             scene = SceneParser.parse(file);
             camera = CameraBlock.locate(text, file.toString());
         } catch (NoSuchFileException e) {
@@ -220,10 +222,37 @@ public final class ScenePreview implements AutoCloseable {
         List<Path> inputs = new ArrayList<>();
         inputs.add(file);
         for (InputFile f : scene.inputFiles()) inputs.add(f.path());
+        String rest = rest(text, camera, scene);
+        boolean finished;
+        String shown;
         synchronized (this) {
-            if (!state.read(r.generation(), scene, camera)) return;
+            if (!state.read(r.generation(), scene, camera, rest)) return;
+            finished = state.finished();
+            shown = state.pictureOf() == null ? "" : state.pictureOf().describe();
         }
         watcher.watch(inputs, false);
+        if (finished) show("done: " + shown + " (the file's camera is the view, and nothing else changed)");
+    }
+
+    /**
+     * What the picture depends on besides the camera: the scene file's text without its camera
+     * statement, and the size and time of every other file the scene read (a file that cannot be
+     * looked at makes it unknown, null).
+     */
+    private String rest(String text, CameraBlock.Located camera, SceneBuilder scene) {
+        StringBuilder s = new StringBuilder(camera == null ? text : text.substring(0, camera.start()) + text.substring(camera.end()));
+        for (InputFile f : scene.inputFiles()) {
+            if (FileNames.isSameFile(f.path(), file)) continue;
+            try {
+                // Size and time, not content: a file rewritten to the same size within the file
+                // system's time step would pass for unchanged, a risk taken to read nothing twice.
+                s.append('\0').append(f.path()).append(' ').append(Files.size(f.path())).append(' ')
+                        .append(Files.getLastModifiedTime(f.path()).to(java.util.concurrent.TimeUnit.NANOSECONDS));
+            } catch (IOException e) {
+                return null;
+            }
+        }
+        return s.toString();
     }
 
     private void failed(PreviewState.Read r, String message) {

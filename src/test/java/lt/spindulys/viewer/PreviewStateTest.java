@@ -22,7 +22,9 @@ class PreviewStateTest {
     private void read(String text) {
         PreviewState.Read r = assertInstanceOf(PreviewState.Read.class, state.next());
         SceneBuilder b = SceneParser.parse(text, "s.dat", null);
-        assertTrue(state.read(r.generation(), b, CameraBlock.locate(text, "s.dat")));
+        CameraBlock.Located camera = CameraBlock.locate(text, "s.dat");
+        String rest = camera == null ? text : text.substring(0, camera.start()) + text.substring(camera.end());
+        assertTrue(state.read(r.generation(), b, camera, rest));
     }
 
     private PreviewState.Render render() { return assertInstanceOf(PreviewState.Render.class, state.next()); }
@@ -63,7 +65,7 @@ class PreviewStateTest {
         assertNull(state.picture());
         PreviewState.Read r = assertInstanceOf(PreviewState.Read.class, state.next());
         state.filesChanged();
-        assertFalse(state.read(r.generation(), SceneParser.parse(SCENE, "s.dat", null), null), "so is a read of one");
+        assertFalse(state.read(r.generation(), SceneParser.parse(SCENE, "s.dat", null), null, null), "so is a read of one");
         read(SCENE);
         assertEquals(0, render().index());
     }
@@ -176,5 +178,22 @@ class PreviewStateTest {
         state.dollied(100);
         assertEquals(g, state.generation(), "an eye beyond 10^15 is refused: nothing to render again");
         assertEquals(far.eye(), ((PinholeCamera) state.camera()).eye());
+    }
+
+    @Test
+    void savingTheViewKeepsThePassesDoneAndThePicture() {
+        read(SCENE);
+        state.dragged(-25, 12);
+        state.released();
+        assertEquals(5, renderAll(A));
+        String saved = CameraBlock.replace(SCENE, "s.dat", state.cameraBlock());
+        state.filesChanged();
+        read(saved);
+        assertNull(state.next(), "the file's camera is the view and nothing else changed: nothing to render again");
+        assertSame(A, state.picture());
+        // Anything else changed with it, and the passes run again.
+        state.filesChanged();
+        read(saved.replace("radius 1", "radius 2"));
+        assertEquals(0, render().index());
     }
 }
