@@ -59,7 +59,7 @@ final class RenderCommand {
                    render assemble TILE.png... -o OUT [--frame N]                (see render assemble --help)
                    render subdivide MESH.obj|MESH.dat --level N|--scene SCENE.dat -o OUT.obj [...]   (see render subdivide --help)
                    render bench [--only NAME] [--runs N] [--accel A] [--list]      (see render bench --help)
-                   render view [MESH.obj|MESH.dat|UNWRAP.tex ...]                  (see render view --help)
+                   render view [MESH.obj|MESH.dat|UNWRAP.tex ...] | render view SCENE.dat   (see render view --help)
                    render --help | --version
 
               -o, --output OUT   image to write: .png .jpg .jpeg .tga .pfm .exr (default: SCENE.png here)

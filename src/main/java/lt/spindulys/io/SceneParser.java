@@ -90,6 +90,30 @@ public final class SceneParser {
     }
 
     /**
+     * Tells a scene file from a Workframe mesh, both named {@code .dat}: a mesh's first token is
+     * its point count, a number; a scene's is a statement's word ({@code settings},
+     * {@code camera}, an object). Only the lines up to the first one that is not blank or a
+     * comment are read. A file with nothing else (empty, or only comments) is an empty scene.
+     *
+     * @param file a {@code .dat} file
+     * @return false if its first token starts as a number does (a digit, a sign or a point), else true
+     * @throws IOException if the file cannot be read
+     */
+    public static boolean isSceneFile(Path file) throws IOException {
+        try (java.io.BufferedReader r = new java.io.BufferedReader(new java.io.InputStreamReader(
+                java.nio.file.Files.newInputStream(file), java.nio.charset.StandardCharsets.UTF_8))) {
+            boolean first = true;
+            for (String line; (line = r.readLine()) != null; first = false) {
+                String s = (first && line.startsWith("\uFEFF") ? line.substring(1) : line).strip();
+                if (s.isEmpty() || s.startsWith("#")) continue;
+                char c = s.charAt(0);
+                return !(c >= '0' && c <= '9' || c == '+' || c == '-' || c == '.');
+            }
+            return true;
+        }
+    }
+
+    /**
      * Parses a scene file as {@link #parse(Path)} does, reading only inside {@code roots}: the
      * scene file itself and every file it names (meshes, subdivision meshes, unwraps, material
      * libraries and their texture maps, images) must be inside one of the folders once links are

@@ -1,14 +1,10 @@
 package lt.spindulys.viewer;
 
 import java.awt.BorderLayout;
-import java.awt.Color;
 import java.awt.Dimension;
-import java.awt.Graphics;
-import java.awt.Graphics2D;
 import java.awt.GraphicsConfiguration;
 import java.awt.Insets;
 import java.awt.Rectangle;
-import java.awt.RenderingHints;
 import java.awt.Toolkit;
 import java.awt.Window;
 import java.awt.event.WindowAdapter;
@@ -24,7 +20,6 @@ import java.util.stream.Collectors;
 
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
-import javax.swing.JComponent;
 import javax.swing.JDialog;
 import javax.swing.JLabel;
 import javax.swing.JOptionPane;
@@ -47,7 +42,7 @@ public final class RenderWindow extends JDialog implements PluginRun.Listener {
 
     private final String pluginName;
     private final Path output;
-    private final Picture picture = new Picture();
+    private final FittedPicture picture = new FittedPicture();
     private final JProgressBar bar = new JProgressBar(0, BAR_STEPS);
     private final JLabel stage = new JLabel("starting");
     private final JLabel status = new JLabel(" ");
@@ -131,7 +126,7 @@ public final class RenderWindow extends JDialog implements PluginRun.Listener {
     public String status() { return status.getText(); }
 
     /** @return the picture shown last, or null before the first preview */
-    public BufferedImage picture() { return picture.image; }
+    public BufferedImage picture() { return picture.image(); }
 
     @Override
     public void progress(double fraction, String text) {
@@ -187,33 +182,6 @@ public final class RenderWindow extends JDialog implements PluginRun.Listener {
             run.cancel();
             cancel.setEnabled(false);
             stage.setText("cancelling");
-        }
-    }
-
-    /** The picture, scaled to fit and centred; blocky while a coarse preview is enlarged, smooth when shrunk. */
-    private static final class Picture extends JComponent {
-        private BufferedImage image;
-
-        void show(BufferedImage next) {
-            image = next;
-            repaint();
-        }
-
-        @Override
-        protected void paintComponent(Graphics g) {
-            g.setColor(Color.DARK_GRAY);
-            g.fillRect(0, 0, getWidth(), getHeight());
-            if (image == null) return;
-            Rectangle r = WindowPlacement.fit(image.getWidth(), image.getHeight(), getWidth(), getHeight());
-            Graphics2D g2 = (Graphics2D) g.create();
-            try {
-                boolean enlarged = r.width > image.getWidth();
-                g2.setRenderingHint(RenderingHints.KEY_INTERPOLATION, enlarged
-                        ? RenderingHints.VALUE_INTERPOLATION_NEAREST_NEIGHBOR : RenderingHints.VALUE_INTERPOLATION_BILINEAR);
-                g2.drawImage(image, r.x, r.y, r.width, r.height, null);
-            } finally {
-                g2.dispose();
-            }
         }
     }
 }

@@ -89,4 +89,36 @@ class ViewCommandTest {
         assertEquals(1, status);
         assertEquals("render view: plugin folder no/such/folder is missing\n", err.toString("UTF-8"));
     }
+
+    @Test
+    void aSceneFileIsPreviewedAloneAndItsOptionsAreChecked() throws Exception {
+        UsageException mixed = assertThrows(UsageException.class, () -> new ViewCommand(new String[] {"scenes/models/cube.dat", "scenes/spheres.dat"}, () -> false));
+        assertEquals("scenes/spheres.dat is a scene file: a scene is previewed on its own (render view scenes/spheres.dat), not with other files", mixed.getMessage());
+        UsageException plugins = assertThrows(UsageException.class, () -> new ViewCommand(new String[] {"--plugins", "p", "scenes/spheres.dat"}, () -> false));
+        assertTrue(plugins.getMessage().startsWith("--plugins is for the mesh viewer"), plugins.getMessage());
+        UsageException frame = assertThrows(UsageException.class, () -> new ViewCommand(new String[] {"--frame", "3", "scenes/models/cube.dat"}, () -> false));
+        assertEquals("--frame is for a scene file's animation, and no scene file was given", frame.getMessage());
+        assertThrows(UsageException.class, () -> new ViewCommand(new String[] {"--frame", "x", "scenes/spheres.dat"}, () -> false));
+        assertThrows(UsageException.class, () -> new ViewCommand(new String[] {"--scene"}, () -> false));
+
+        // Not headless: a missing scene file is one line before any window opens.
+        ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
+        int status = new ViewCommand(new String[] {"--scene", "no/such/scene.dat"}, () -> false)
+                .run(new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8));
+        assertEquals(1, status);
+        assertEquals("render view: no/such/scene.dat: no such file\n", err.toString(StandardCharsets.UTF_8));
+
+        // Without a display a scene says so as a mesh does.
+        err.reset();
+        status = new ViewCommand(new String[] {"scenes/spheres.dat"}, () -> true)
+                .run(new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8));
+        assertEquals(1, status);
+        assertTrue(err.toString(StandardCharsets.UTF_8).startsWith("render view: the viewer needs a display"));
+    }
+
+    @Test
+    void theHelpTellsHowASceneFileIsKnown() {
+        assertTrue(ViewCommand.USAGE.contains("render view [--scene] [--frame N] SCENE.dat"), ViewCommand.USAGE);
+        assertTrue(ViewCommand.USAGE.contains("first token is a word"), ViewCommand.USAGE);
+    }
 }
