@@ -85,6 +85,12 @@ final class ExrWriter {
                 int[] codes = aovs.objectCodes();
                 channels.add(new Channel("objectId", false, p -> codes[p]));
             }
+            if (aovs.passes().contains(Aov.NOISE)) {
+                // Float: sample counts above 2048 are not exact in half precision.
+                double[] n = aovs.noiseData();
+                channels.add(new Channel("noise.samples", false, p -> n[2 * p]));
+                channels.add(new Channel("noise.error", false, p -> n[2 * p + 1]));
+            }
         }
         // Readers rely on the order: OpenEXR keeps channel lists sorted by strcmp.
         channels.sort(Comparator.comparing(Channel::name));

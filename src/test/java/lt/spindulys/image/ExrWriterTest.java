@@ -89,7 +89,8 @@ class ExrWriterTest {
             // Odd sizes: a last ZIP block of 5 lines, and odd byte counts in the blocks' halves.
             int w = 7, h = 37;
             FrameBuffer fb = new FrameBuffer(w, h);
-            AovFrame aovs = new AovFrame(w, h, EnumSet.allOf(Aov.class));
+            // The passes of the first hit; the noise pass has its own test.
+            AovFrame aovs = new AovFrame(w, h, EnumSet.complementOf(EnumSet.of(Aov.NOISE)));
             Random random = new Random(11);
             for (int y = 0; y < h; y++) {
                 for (int x = 0; x < w; x++) {
