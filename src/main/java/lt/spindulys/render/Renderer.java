@@ -48,6 +48,13 @@ import lt.spindulys.shading.Integrator;
  * from the neighbours: each sample adds to its own pixel only, in sample order, and tiles and
  * regions assemble bit for bit. A pixel is the mean of its samples, or, for a filter with negative
  * lobes, their weighted average.
+ *
+ * <p><b>Adaptive sampling.</b> With a noise threshold ({@link RenderSettings#noiseThreshold()}) a
+ * pixel takes its samples in rounds ({@link SampleRounds}) and stops after a round once the
+ * {@link NoiseEstimate} of its own samples is below the threshold. Nothing but the pixel's samples
+ * decides, so tiles and regions still assemble bit for bit (Cycles also wakes up the neighbours of
+ * pixels that go on, which would make a pixel depend on others). Without a threshold there is one
+ * round of all the samples: the samples, and the image, are those of a render without rounds.
  */
 public final class Renderer {
     /** Tile side in pixels: small enough to balance two cores, large enough to keep counters cheap. */

@@ -16,7 +16,11 @@ package lt.spindulys.sampling;
  * measures the error of stratified sampling, not the larger spread of single samples.
  *
  * <p>For group means m_g of s_g samples, n in all and I = sum s_g m_g / n, the variance of I is
- * estimated as {@code sum s_g (m_g - I)^2 / ((G - 1) n)}, per channel. The error is the sum of
+ * estimated as {@code sum s_g (m_g - I)^2 / ((G - 1) n)}, per channel: exact in expectation for
+ * groups whose means vary as 1 / s_g. A larger stratified round does better than that where
+ * stratification pays, so with rounds of growing size the estimate errs towards more samples.
+ * With one round (the noise pass without a threshold) the groups are single samples, and the
+ * estimate is that of independent samples, above the true error of a stratified set. The error is the sum of
  * the channels' standard errors divided by the sum of I's channels where that is at least 1, and
  * by its square root below (plus 1e-4), as Cycles divides, so that dark pixels, whose absolute
  * noise is small but relative noise large, are not sampled without end. Only the pixel's own

@@ -134,6 +134,27 @@ class ExrWriterTest {
         }
     }
 
+    @Test
+    void theNoisePassIsTwoFloatChannels() throws IOException {
+        int w = 5, h = 3;
+        FrameBuffer fb = new FrameBuffer(w, h);
+        AovFrame aovs = new AovFrame(w, h, EnumSet.of(Aov.NOISE));
+        for (int y = 0; y < h; y++) for (int x = 0; x < w; x++) aovs.setNoise(x, y, 64 + 4097 * x + y, 0.001 * (x + 10 * y) + 1e-7);
+        Path out = dir.resolve("noise.exr");
+        ImageWriter.write(fb, out, ImageOptions.DEFAULT, aovs); // half colour: the pass stays float
+        ExrTestDecoder.Image image = ExrTestDecoder.read(out);
+        assertEquals(List.of("A", "B", "G", "R", "noise.error", "noise.samples"), image.channels().stream().map(ExrTestDecoder.Channel::name).toList());
+        assertEquals(2, image.channel("noise.samples").pixelType());
+        assertEquals(2, image.channel("noise.error").pixelType());
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                int p = y * w + x;
+                assertEquals(64 + 4097 * x + y, image.channel("noise.samples").values()[p], "sample counts above 2048 stay exact");
+                assertEquals((float) aovs.noiseError(x, y), image.channel("noise.error").values()[p]);
+            }
+        }
+    }
+
     /** What a value becomes in a channel of the precision. */
     private static float stored(double v, ExrPrecision precision) {
         return precision == ExrPrecision.FLOAT ? (float) v : ExrTestDecoder.halfToFloat(ExrWriter.halfBits(v));
