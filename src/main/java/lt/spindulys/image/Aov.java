@@ -65,7 +65,7 @@ public enum Aov {
      *
      * @param keyword the keyword
      * @return the pass
-     * @throws IllegalArgumentException "unknown AOV 'x' (expected depth, normal or object)"
+     * @throws IllegalArgumentException "unknown AOV 'x' (expected depth, normal, object or noise)"
      */
     public static Aov fromKeyword(String keyword) {
         for (Aov a : values()) if (a.keyword.equals(keyword)) return a;
