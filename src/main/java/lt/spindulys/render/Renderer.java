@@ -13,6 +13,7 @@ import java.util.function.BooleanSupplier;
 import lt.spindulys.accel.TraversalScratch;
 import lt.spindulys.camera.Camera;
 import lt.spindulys.camera.LensPattern;
+import lt.spindulys.image.Aov;
 import lt.spindulys.image.AovFrame;
 import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.image.PixelRegion;
@@ -271,7 +272,7 @@ public final class Renderer {
         // and reserved for all of them at once, on this thread, before any starts. Checked one
         // by one as each thread started, they would all see the same free heap and all allocate.
         FilterSampler filter = new FilterSampler(st.filter(), st.pixelFilterWidth()); // one table, shared by the threads
-        // Adaptive sampling takes the samples in rounds, each drawn by a sampler of its size (a full round's, the last's).
+        // Adaptive sampling takes the samples in rounds, each drawn by a sampler of its size: one per size, per thread.
         SampleRounds rounds = st.adaptiveSampling() ? SampleRounds.adaptive(pass.samples, st.adaptiveMinSamples()) : SampleRounds.uniform(pass.samples);
         long samplers = 0;
         for (int k = 0; k < rounds.rounds(); k++) if (firstOfSize(rounds, k)) samplers = HeapBudget.sum(samplers, PixelSampler.bytes(rounds.size(k), filter));
@@ -376,7 +377,7 @@ public final class Renderer {
         int last = rounds.rounds() - 1;
         // The noise is estimated from the rounds' means when there are rounds, else (for the
         // noise pass only) from the single samples; without either nothing is spent on it.
-        boolean byRound = last > 0, bySample = last == 0 && aovs != null;
+        boolean byRound = last > 0, bySample = last == 0 && aovs != null && aovs.passes().contains(Aov.NOISE);
         double[] data = fb.data();
         // The frame buffer's pixel (fx, fy) is the frame's (ox + fx, oy + fy): the pixel the samples are seeded from and traced through.
         for (int fy = fy0; fy < fy1; fy++) {

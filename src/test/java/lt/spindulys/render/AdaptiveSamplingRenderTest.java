@@ -64,7 +64,12 @@ class AdaptiveSamplingRenderTest {
 
     @Test
     void theImageAndItsNoisePassAreTheSameForAnyThreadCount() throws Exception {
-        String s = "samples 96  noisethreshold 0.02  minsamples 16  aov noise  filter mitchell";
+        for (String integrator : new String[] {"whitted", "path  maxdepth 3"}) {
+            sameForAnyThreadCount("samples 96  noisethreshold 0.02  minsamples 16  aov noise  filter mitchell  integrator " + integrator);
+        }
+    }
+
+    private static void sameForAnyThreadCount(String s) throws Exception {
         RenderResult one = render(s, 1), three = render(s, 3);
         assertArrayEquals(one.frame().data(), three.frame().data(), 0.0);
         for (int y = 0; y < H; y++) {
@@ -74,7 +79,7 @@ class AdaptiveSamplingRenderTest {
             }
         }
         assertEquals(one.stats().meanSamples(), three.stats().meanSamples());
-        assertTrue(one.stats().meanSamples() > 16 && one.stats().meanSamples() < 96, "some pixels stop early: " + one.stats().meanSamples());
+        assertTrue(one.stats().meanSamples() > 16 && one.stats().meanSamples() < 96, s + ": some pixels stop early, " + one.stats().meanSamples());
     }
 
     @Test
