@@ -9,8 +9,7 @@ package lt.spindulys.sampling;
  *
  * <p>Cycles compares the mean I of all samples with the mean A of every other sample: |I - A| is
  * of the order of I's standard error, but it is one random number (one degree of freedom), and a
- * pixel checked again and again stops early whenever it happens to be small: measured on a soft
- * shadow, that lost against uniform sampling at equal sample counts. The scatter of G group means
+ * pixel checked again and again stops early whenever it happens to be small. The scatter of G group means
  * has G - 1 degrees of freedom (3 at the first check of the default schedule, more at each
  * further check). Each group is a stratified set of its own, so the scatter of the group means
  * measures the error of stratified sampling, not the larger spread of single samples.

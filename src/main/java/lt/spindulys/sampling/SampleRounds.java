@@ -16,8 +16,8 @@ import java.util.Arrays;
  * come at 64, 96, 144, 208, ... samples with the default minimum of 64. Rounds that grow keep
  * their number small: a mean of R independently stratified rounds has about sqrt(R) times the
  * error of one stratified set of as many samples where stratification pays (smooth light, soft
- * shadows), and on a rectangle light's soft shadow fixed rounds of 16 lost a third of the gain
- * to that. The last round takes the remainder too, so that no round has a single sample (which
+ * shadows): on the soft shadow of AdaptiveSamplingRenderTest (at 256 samples, threshold 0.01)
+ * fixed rounds of 16 lost about a fifth of the gain over uniform sampling that these rounds keep. The last round takes the remainder too, so that no round has a single sample (which
  * {@link PixelSampler} puts at the pixel's centre).
  *
  * <p>Without adaptive sampling there is one round of all the samples, seeded with the pass's seed
