@@ -51,6 +51,7 @@ final class RenderCommand {
             usage: render SCENE.dat [-o OUT] [--width W] [--height H] [--spp N] [--aperture R] [--focus D]
                                     [--threads N] [--seed S] [--accel A] [--aov LIST] [--shutter OPEN,CLOSE] [--timesteps N]
                                     [--integrator whitted|path] [--maxdepth N] [--clamp C] [--filter F[,W]] [--filter-width W]
+                                    [--noise-threshold T] [--min-samples M]
                                     [--subdiv-target PX] [--subdiv-memory MIB] [--subdiv-cache MIB]
                                     [--frame N | --frames A-B[:STEP]] [--skip-existing]
                                     [--quality Q] [--exr-precision half|float] [--exr-compression none|zip|zips]
@@ -81,9 +82,15 @@ final class RenderCommand {
                                  pixels; without W the filter's own default width (1, 1.5, 1.5, 4)
                                  (overrides the scene)
               --filter-width W   the pixel filter's width in pixels, 0.1 to 16 (overrides the scene and --filter)
-              --aov LIST         render passes beside the image, comma-separated: depth, normal, object
-                                 (OUT.depth.pfm, OUT.normal.pfm, OUT.object.png; overrides the scene);
-                                 an .exr holds them as its channels Z, Normal.X/Y/Z and IndexOB.X instead
+              --noise-threshold T  adaptive sampling: a pixel stops taking samples once its estimated relative
+                                 error is below T (Cycles' default is 0.01); at most --spp samples;
+                                 0 for none, every pixel takes them all (default) (overrides the scene)
+              --min-samples M    adaptive sampling: samples every pixel takes before its error is first
+                                 checked; 0 for max(4, 16 / T^0.3) (64 at 0.01) (overrides the scene)
+              --aov LIST         render passes beside the image, comma-separated: depth, normal, object, noise
+                                 (OUT.depth.pfm, OUT.normal.pfm, OUT.object.png, OUT.noise.pfm; overrides the
+                                 scene); an .exr holds them as its channels Z, Normal.X/Y/Z, IndexOB.X,
+                                 Samples.X and Noise.X instead
               --shutter OPEN,CLOSE  shutter interval of the motion blur, e.g. 0,1 (overrides the scene)
               --timesteps N      1: one pass, every sample at its own time (default); N > 1: the thesis's
                                  method, N whole-frame passes at fixed times averaged (spp must be a multiple of N)
@@ -120,6 +127,8 @@ final class RenderCommand {
     /** The filter width given: by --filter-width, or by --filter NAME,W; 0 for the filter's default. */
     private Double filterWidth;
     private boolean filterWidthOption;
+    private Double noiseThreshold;
+    private Integer minSamples;
     private Set<Aov> aovs;
     private double[] shutter;
     private Integer timeSteps;
@@ -186,6 +195,8 @@ final class RenderCommand {
                     // A filter named alone takes its own default width, not the scene's width for another filter.
                     if (!filterWidthOption) filterWidth = comma < 0 ? 0.0 : widthValue(v.substring(comma + 1), a);
                 }
+                case "--noise-threshold" -> noiseThreshold = OptionValues.doubleValue(args, ++i, a, 0, RenderSettings.MAX_NOISE_THRESHOLD);
+                case "--min-samples" -> minSamples = OptionValues.intValue(args, ++i, a, 0, 65536);
                 case "--filter-width" -> {
                     filterWidth = widthValue(OptionValues.value(args, ++i, a), a);
                     filterWidthOption = true;
@@ -462,6 +473,8 @@ final class RenderCommand {
         if (clamp != null) o.clamp(clamp);
         if (filter != null) o.filter(filter);
         if (filterWidth != null) o.filterWidth(filterWidth);
+        if (noiseThreshold != null) o.noiseThreshold(noiseThreshold);
+        if (minSamples != null) o.minSamples(minSamples);
         if (aovs != null) o.aovs(aovs);
         if (shutter != null) o.shutter(shutter[0], shutter[1]);
         if (timeSteps != null) o.timeSteps(timeSteps);
@@ -486,6 +499,15 @@ final class RenderCommand {
                         + (timeSteps != null ? "--timesteps " : "the scene's timesteps ") + s.timeSteps() + " (each time step renders spp / timesteps per pixel)");
             }
         }
+        try {
+            s.checkNoiseControl();
+        } catch (IllegalArgumentException e) {
+            // Refused only by what the command line changed: the scene's own settings were checked when read.
+            String options = (spp != null ? " --spp " + spp : "") + (noiseThreshold != null ? " --noise-threshold " + noiseThreshold : "")
+                    + (minSamples != null ? " --min-samples " + minSamples : "") + (timeSteps != null ? " --timesteps " + timeSteps : "")
+                    + (aovs != null ? " --aov " + aovs.stream().map(Aov::keyword).collect(java.util.stream.Collectors.joining(",")) : "");
+            throw new UsageException((options.isEmpty() ? "" : options.substring(1) + ": ") + e.getMessage());
+        }
         return s;
     }
 
@@ -498,7 +520,10 @@ final class RenderCommand {
         StringBuilder line = new StringBuilder("wrote ").append(output);
         for (Path p : Aov.filesBeside(output, s.aovs())) line.append(", ").append(p);
         String part = result.region().map(r -> "region " + r + " of ").orElse("");
-        return line.append(String.format(Locale.ROOT, " (%s%dx%d, %d spp) in %.1f s", part, s.width(), s.height(), s.samplesPerPixel(), seconds)).toString();
+        // Adaptive sampling: the samples a pixel took on average, of at most the samples per pixel.
+        String spp = s.adaptiveSampling() ? String.format(Locale.ROOT, "%.1f of %d spp adaptive", result.stats().meanSamples(), s.samplesPerPixel())
+                : s.samplesPerPixel() + " spp";
+        return line.append(String.format(Locale.ROOT, " (%s%dx%d, %s) in %.1f s", part, s.width(), s.height(), spp, seconds)).toString();
     }
 
     /**
@@ -564,6 +589,7 @@ final class RenderCommand {
         out.printf(Locale.ROOT, "rays:    %d camera, %d shadow, %d reflection, %d refraction%n",
                 r.cameraRays(), r.shadowRays(), r.reflectionRays(), r.refractionRays());
         out.printf(Locale.ROOT, "speed:   %s Mrays/s%n", threeFigures(r.mraysPerSecond()));
+        if (r.meanSamples() > 0) out.printf(Locale.ROOT, "samples: %.2f per pixel taken%n", r.meanSamples());
         if (r.traversal() != null) {
             // Per ray of each kind; secondary rays are the reflected and refracted ones together.
             String[] kinds = {"camera", "shadow", "secondary"};

@@ -11,7 +11,8 @@ import java.util.Set;
  * A render pass (arbitrary output variable) written beside the main image, or as channels of it
  * when it is an OpenEXR file ({@link ExrWriter}). Each is what one extra
  * camera ray through the exact centre of the pixel sees at its first hit (lens centre, time 0),
- * so the values are exact and do not depend on samples per pixel or thread count.
+ * so the values are exact and do not depend on samples per pixel or thread count; except
+ * {@link #NOISE}, which records the pixel's own samples.
  */
 public enum Aov {
     /** Distance along the unit camera ray to the first hit, +Infinity for the background: one-channel PFM ("Pf"). */
@@ -19,7 +20,14 @@ public enum Aov {
     /** World-space unit shading normal, turned to face the camera ray, 0 0 0 for the background: PFM ("PF"). */
     NORMAL("normal", ".normal.pfm"),
     /** Object id + 1 as a 24-bit integer in 8-bit RGB (R = high byte), 0 for the background: PNG, never sRGB-encoded. */
-    OBJECT("object", ".object.png");
+    OBJECT("object", ".object.png"),
+    /**
+     * Adaptive sampling: the samples the pixel took and the estimated relative error of its value
+     * when it stopped (0 where one sample leaves nothing to compare): PFM ("PF", R = samples,
+     * G = error, B = 0); in OpenEXR the channels {@code Samples.X} and {@code Noise.X}
+     * (Blender shows them as the passes Samples and Noise).
+     */
+    NOISE("noise", ".noise.pfm");
 
     private final String keyword, suffix;
 
@@ -58,7 +66,7 @@ public enum Aov {
      *
      * @param keyword the keyword
      * @return the pass
-     * @throws IllegalArgumentException "unknown AOV 'x' (expected depth, normal or object)"
+     * @throws IllegalArgumentException "unknown AOV 'x' (expected depth, normal, object or noise)"
      */
     public static Aov fromKeyword(String keyword) {
         for (Aov a : values()) if (a.keyword.equals(keyword)) return a;

@@ -7,8 +7,9 @@ import java.util.Objects;
 import java.util.Set;
 
 /**
- * The render passes of one frame: per pixel the depth, the normal and the object id that
- * {@link Aov} describes, stored only for the passes requested. Row-major, y = 0 the top row, like
+ * The render passes of one frame: per pixel the depth, the normal, the object id and the
+ * noise (samples taken, estimated error) that {@link Aov} describes, stored only for the passes
+ * requested. Row-major, y = 0 the top row, like
  * {@link FrameBuffer}. Render threads may write disjoint pixels concurrently; no locking.
  */
 public final class AovFrame {
@@ -19,6 +20,10 @@ public final class AovFrame {
     private final Set<Aov> passes;
     private final double[] depth, normal;
     private final int[] object;
+    /** The noise pass: per pixel the samples taken and the estimated error, interleaved; null unless requested. */
+    private final double[] noise;
+    /** Whether a pass needs the extra ray through the pixel centre (every pass but the noise, which comes from the samples). */
+    private final boolean centreRay;
 
     /**
      * A frame with every pixel at the background values (infinite depth, zero normal, no object).
@@ -43,6 +48,8 @@ public final class AovFrame {
         depth = passes.contains(Aov.DEPTH) ? new double[n] : null;
         normal = passes.contains(Aov.NORMAL) ? new double[3 * n] : null;
         object = passes.contains(Aov.OBJECT) ? new int[n] : null;
+        noise = passes.contains(Aov.NOISE) ? new double[2 * n] : null;
+        centreRay = passes.stream().anyMatch(a -> a != Aov.NOISE);
         if (depth != null) Arrays.fill(depth, Double.POSITIVE_INFINITY);
         if (object != null) Arrays.fill(object, -1);
     }
@@ -59,6 +66,61 @@ public final class AovFrame {
      * @return the passes
      */
     public Set<Aov> passes() { return passes; }
+
+    /**
+     * Whether any pass held comes from the extra camera ray through the pixel centre
+     * ({@link #setHit}, {@link #setBackground}); the noise pass alone does not.
+     *
+     * @return true unless the noise pass is the only one
+     */
+    public boolean needsCentreRay() { return centreRay; }
+
+    /**
+     * Records the noise of pixel (x, y); nothing unless the noise pass was requested.
+     *
+     * @param x column, 0 at the left
+     * @param y row, 0 at the top
+     * @param samples the samples the pixel took
+     * @param error the estimated relative error of its value
+     */
+    public void setNoise(int x, int y, int samples, double error) {
+        if (noise == null) return;
+        int p = index(x, y);
+        noise[2 * p] = samples;
+        noise[2 * p + 1] = error;
+    }
+
+    /**
+     * The samples pixel (x, y) took.
+     *
+     * @param x column, 0 at the left
+     * @param y row, 0 at the top
+     * @return the samples
+     */
+    public int noiseSamples(int x, int y) { return (int) require(noise, Aov.NOISE)[2 * index(x, y)]; }
+
+    /**
+     * The estimated relative error of pixel (x, y) when it stopped.
+     *
+     * @param x column, 0 at the left
+     * @param y row, 0 at the top
+     * @return the error, at least 0
+     */
+    public double noiseError(int x, int y) { return require(noise, Aov.NOISE)[2 * index(x, y) + 1]; }
+
+    /** The noise pass, samples and error interleaved per pixel, row-major, top row first (the backing array, not a copy). */
+    double[] noiseData() { return require(noise, Aov.NOISE); }
+
+    /** The noise pass as an image: samples in r, error in g, 0 in b. */
+    FrameBuffer noiseImage() {
+        FrameBuffer fb = new FrameBuffer(width, height);
+        double[] d = fb.data(), n = require(noise, Aov.NOISE);
+        for (int p = 0; p < width * height; p++) {
+            d[3 * p] = n[2 * p];
+            d[3 * p + 1] = n[2 * p + 1];
+        }
+        return fb;
+    }
 
     /**
      * Records a hit at pixel (x, y): distance, unit normal, object id (GObject.id()).

@@ -19,7 +19,8 @@ import java.util.zip.Deflater;
  * frame has no coverage), {@code B}, {@code G}, {@code R}; with the normal pass {@code Normal.X},
  * {@code Normal.Y}, {@code Normal.Z}; with the depth pass {@code Z}, OpenEXR's own name for
  * depth, +Infinity where nothing was hit; with the object pass {@code IndexOB.X}, the object's
- * id + 1 and 0 for the background, exact as a float. The names are Blender's: its loader shows
+ * id + 1 and 0 for the background, exact as a float; with the noise pass {@code Samples.X} (the
+ * samples a pixel took) and {@code Noise.X} (its estimated relative error). The names are Blender's: its loader shows
  * the passes as Combined, Depth, Normal and IndexOB (as its own renders name them), and Nuke
  * and OpenImageIO read {@code Z} as depth and each {@code layer.channel} as a layer. Colour and
  * normal follow {@link ImageOptions#exrPrecision()}; depth and object id are always FLOAT.
@@ -85,6 +86,12 @@ final class ExrWriter {
             if (aovs.passes().contains(Aov.OBJECT)) {
                 int[] codes = aovs.objectCodes();
                 channels.add(new Channel("IndexOB.X", false, p -> codes[p]));
+            }
+            if (aovs.passes().contains(Aov.NOISE)) {
+                // Float: sample counts above 2048 are not exact in half precision.
+                double[] n = aovs.noiseData();
+                channels.add(new Channel("Samples.X", false, p -> n[2 * p]));
+                channels.add(new Channel("Noise.X", false, p -> n[2 * p + 1]));
             }
         }
         // Readers rely on the order: OpenEXR keeps channel lists sorted by strcmp.

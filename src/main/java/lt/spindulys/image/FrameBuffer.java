@@ -48,7 +48,8 @@ public final class FrameBuffer {
      * Heap a render of a {@code width x height} frame needs for its images, per pixel: the frame
      * (three doubles), the 8-bit copy and the encoder's image made when it is written, and for
      * each pass asked: depth (a double), normal (three doubles, and a frame's worth again when it
-     * is written), object (an int, and the codes and the encoder's image when written).
+     * is written), object (an int, and the codes and the encoder's image when written), noise
+     * (two doubles, and a frame's worth when it is written).
      *
      * @param width pixels across
      * @param height pixels down
@@ -60,6 +61,7 @@ public final class FrameBuffer {
         if (aovs.contains(Aov.DEPTH)) perPixel += 8;
         if (aovs.contains(Aov.NORMAL)) perPixel += 3 * 8 + 3 * 8;
         if (aovs.contains(Aov.OBJECT)) perPixel += 4 + 4 + 8;
+        if (aovs.contains(Aov.NOISE)) perPixel += 2 * 8 + 3 * 8;
         return HeapBudget.product(Math.max(0, width), Math.max(0, height), perPixel);
     }
 

@@ -150,6 +150,7 @@ public final class ImageWriter {
                         bodies.add(os -> writeImageIo(aovs.width(), aovs.height(), codes, opts, "png", os));
                         break;
                     }
+                    case NOISE: bodies.add(os -> writePfm(aovs.noiseImage(), os)); break;
                     default: throw new AssertionError(a);
                 }
             }

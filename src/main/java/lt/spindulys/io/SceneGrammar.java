@@ -194,7 +194,9 @@ final class SceneGrammar {
             new Key("integrator", Kind.CHOICE, false, false, null, IntegratorKind.keywords()),
             opt("clamp", Kind.NUMBER),
             new Key("filter", Kind.CHOICE, false, false, null, PixelFilter.keywords()),
-            opt("filterwidth", Kind.NUMBER)));
+            opt("filterwidth", Kind.NUMBER),
+            opt("noisethreshold", Kind.NUMBER),
+            opt("minsamples", Kind.INTEGER)));
 
     // A thin lens when any of the lens keys is given, else a pinhole. 'focus' and 'focuspoint'
     // exclude each other (checked by the parser); without either the look-at point is in focus.

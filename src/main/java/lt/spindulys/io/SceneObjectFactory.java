@@ -127,6 +127,8 @@ final class SceneObjectFactory {
                     case "clamp" -> sb.clamp((Double) v);
                     case "filter" -> sb.filter(PixelFilter.fromKeyword((String) v));
                     case "filterwidth" -> sb.filterWidth((Double) v);
+                    case "noisethreshold" -> sb.noiseThreshold((Double) v);
+                    case "minsamples" -> sb.minSamples((Integer) v);
                     default -> throw unhandled(pr);
                 }
             } catch (IllegalArgumentException e) {
@@ -140,6 +142,16 @@ final class SceneObjectFactory {
                 s.checkTimeSteps();
             } catch (IllegalArgumentException e) {
                 throw err.wrap(steps.at(), e);
+            }
+        }
+        // Adaptive sampling against the other keys: reported at the key that asked for it.
+        Prop noise = p.prop("minsamples") != null ? p.prop("minsamples") : p.prop("noisethreshold");
+        if (noise == null && s.aovs().contains(Aov.NOISE)) noise = p.prop("aov");
+        if (noise != null) {
+            try {
+                s.checkNoiseControl();
+            } catch (IllegalArgumentException e) {
+                throw err.wrap(noise.at(), e);
             }
         }
         return s;

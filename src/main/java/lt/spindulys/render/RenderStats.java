@@ -10,12 +10,20 @@ package lt.spindulys.render;
  * @param seconds        wall-clock seconds spent tracing (camera rays to finished frame)
  * @param traversal      nodes, leaves and triangle tests by ray kind, summed over the threads, or
  *                       null unless the counters are on ({@link lt.spindulys.accel.TraversalScratch#COUNTING})
+ * @param meanSamples    the pixel samples taken per pixel rendered, summed over the time steps:
+ *                       the samples per pixel, or fewer where adaptive sampling stopped pixels early;
+ *                       0 when not counted
  */
 public record RenderStats(long cameraRays, long shadowRays, long reflectionRays, long refractionRays, double seconds,
-                          TraversalCounts traversal) {
-    /** Stats without traversal counts. */
+                          TraversalCounts traversal, double meanSamples) {
+    /** Stats without traversal counts or samples. */
     public RenderStats(long cameraRays, long shadowRays, long reflectionRays, long refractionRays, double seconds) {
-        this(cameraRays, shadowRays, reflectionRays, refractionRays, seconds, null);
+        this(cameraRays, shadowRays, reflectionRays, refractionRays, seconds, null, 0);
+    }
+
+    /** Stats without samples. */
+    public RenderStats(long cameraRays, long shadowRays, long reflectionRays, long refractionRays, double seconds, TraversalCounts traversal) {
+        this(cameraRays, shadowRays, reflectionRays, refractionRays, seconds, traversal, 0);
     }
 
     /**

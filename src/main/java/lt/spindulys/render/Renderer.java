@@ -12,6 +12,8 @@ import java.util.function.BooleanSupplier;
 
 import lt.spindulys.accel.TraversalScratch;
 import lt.spindulys.camera.Camera;
+import lt.spindulys.camera.LensPattern;
+import lt.spindulys.image.Aov;
 import lt.spindulys.image.AovFrame;
 import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.image.PixelRegion;
@@ -19,7 +21,9 @@ import lt.spindulys.limits.HeapBudget;
 import lt.spindulys.limits.InsufficientMemoryException;
 import lt.spindulys.math.Ray;
 import lt.spindulys.sampling.FilterSampler;
+import lt.spindulys.sampling.NoiseEstimate;
 import lt.spindulys.sampling.PixelSampler;
+import lt.spindulys.sampling.SampleRounds;
 import lt.spindulys.scene.RenderSettings;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.shading.TracerScratch;
@@ -45,12 +49,21 @@ import lt.spindulys.shading.Integrator;
  * from the neighbours: each sample adds to its own pixel only, in sample order, and tiles and
  * regions assemble bit for bit. A pixel is the mean of its samples, or, for a filter with negative
  * lobes, their weighted average.
+ *
+ * <p><b>Adaptive sampling.</b> With a noise threshold ({@link RenderSettings#noiseThreshold()}) a
+ * pixel takes its samples in rounds ({@link SampleRounds}) and stops after a round once the
+ * {@link NoiseEstimate} of its own samples is below the threshold. Nothing but the pixel's samples
+ * decides, so tiles and regions still assemble bit for bit (Cycles also wakes up the neighbours of
+ * pixels that go on, which would make a pixel depend on others). Without a threshold there is one
+ * round of all the samples: the samples, and the image, are those of a render without rounds.
  */
 public final class Renderer {
     /** Tile side in pixels: small enough to balance two cores, large enough to keep counters cheap. */
     static final int TILE = 16;
-    /** Per-thread counts summed after a pass: the four ray kinds, adaptive camera hits, then the traversal counts ({@link TraversalCounts#SIZE}). */
-    private static final int COUNTS = 5 + TraversalCounts.SIZE;
+    /** Per-thread counts summed after a pass: the four ray kinds, adaptive camera hits, the traversal counts ({@link TraversalCounts#SIZE}), then the pixel samples taken. */
+    private static final int COUNTS = 6 + TraversalCounts.SIZE;
+    /** Where the pixel samples taken are in the counts. */
+    private static final int PIXEL_SAMPLES = COUNTS - 1;
 
     /**
      * The tile (row-major index) handed out {@code k}-th: {@code k * stride mod tiles}, with the
@@ -182,8 +195,9 @@ public final class Renderer {
             adaptive.add(String.format(Locale.ROOT, "adaptive subdivision: %,d triangles, %s covered pixels, %s triangles per covered pixel",
                     triangles, String.format(Locale.ROOT, "%,.0f", covered), covered > 0 ? String.format(Locale.ROOT, "%.2f", triangles / covered) : "no"));
         }
+        double meanSamples = (double) sum[PIXEL_SAMPLES] / ((long) rw * rh);
         return new RenderResult(st, fb, aovs, new RenderStats(sum[0], sum[1], sum[2], sum[3], seconds,
-                TraversalScratch.COUNTING ? TraversalCounts.of(sum, 5) : null), adaptive, scene.structureStatistics())
+                TraversalScratch.COUNTING ? TraversalCounts.of(sum, 5) : null, meanSamples), adaptive, scene.structureStatistics())
                 .inRegion(region);
     }
 
@@ -258,7 +272,11 @@ public final class Renderer {
         // and reserved for all of them at once, on this thread, before any starts. Checked one
         // by one as each thread started, they would all see the same free heap and all allocate.
         FilterSampler filter = new FilterSampler(st.filter(), st.pixelFilterWidth()); // one table, shared by the threads
-        long scratch = integrator.scratchBytes(st.samplesPerPixel()), sampler = PixelSampler.bytes(pass.samples, filter);
+        // Adaptive sampling takes the samples in rounds, each drawn by a sampler of its size: one per size, per thread.
+        SampleRounds rounds = st.adaptiveSampling() ? SampleRounds.adaptive(pass.samples, st.adaptiveMinSamples()) : SampleRounds.uniform(pass.samples);
+        long samplers = 0;
+        for (int k = 0; k < rounds.rounds(); k++) if (firstOfSize(rounds, k)) samplers = HeapBudget.sum(samplers, PixelSampler.bytes(rounds.size(k), filter));
+        long sampler = samplers, scratch = integrator.scratchBytes(st.samplesPerPixel());
         HeapBudget.Reservation reservation;
         try {
             reservation = HeapBudget.reserve(HeapBudget.product(workers.length, HeapBudget.sum(scratch, sampler)),
@@ -275,23 +293,30 @@ public final class Renderer {
                 int index = k;
                 workers[k] = new Thread(null, () -> {
                     TracerScratch own = null;
+                    long[] taken = new long[1]; // the pixel samples this thread took
                     // Everything a worker does is caught, OutOfMemoryError included: a thread that died
                     // unseen would leave its tiles black and the run reported as a success.
                     try {
                         own = integrator.newScratch(reservation);
                         // Time samples only where something moves (an object or the camera) and each sample has its own time.
-                        PixelSampler ps = new PixelSampler(pass.samples, scene.camera().usesLens() ? scene.camera().lensPattern() : null,
-                                (scene.hasMovingObjects() || scene.camera().moves()) && Double.isNaN(pass.time), filter);
+                        LensPattern lens = scene.camera().usesLens() ? scene.camera().lensPattern() : null;
+                        boolean times = (scene.hasMovingObjects() || scene.camera().moves()) && Double.isNaN(pass.time);
+                        // One sampler per round size, shared by the rounds of that size.
+                        PixelSampler[] ps = new PixelSampler[rounds.rounds()];
+                        for (int r = 0; r < ps.length; r++) {
+                            ps[r] = firstOfSize(rounds, r) ? new PixelSampler(rounds.size(r), lens, times, filter) : ps[sameSize(rounds, r)];
+                        }
                         reservation.release(sampler);
                         Ray ray = new Ray();
                         double[] colour = new double[4];
+                        NoiseEstimate noise = new NoiseEstimate();
                         for (int next; !stop.getAsBoolean() && (next = nextTile.getAndIncrement()) < tiles; ) {
                             int t = tileAt(next, tiles, stride);
                             // In the frame buffer's coordinates (the region's), then traced at the frame's.
                             int x0 = (t % tilesX) * TILE, y0 = (t / tilesX) * TILE;
                             int x1 = Math.min(x0 + TILE, region.width()), y1 = Math.min(y0 + TILE, region.height());
-                            if (!renderTile(scene.camera(), integrator, st, pass, ps, own, ray, colour, fb, aovs, region.x0(), region.y0(),
-                                    x0, y0, x1, y1, stop)) return;
+                            if (!renderTile(scene.camera(), integrator, st, pass, rounds, ps, noise, own, ray, colour, fb, aovs, region.x0(), region.y0(),
+                                    x0, y0, x1, y1, stop, taken)) return;
                             if (tileListener != null) tileListener.tileDone(fb, x0, y0, x1, y1);
                             progress.progress(donePixels.addAndGet((long) (x1 - x0) * (y1 - y0)), pixels);
                         }
@@ -306,6 +331,7 @@ public final class Renderer {
                             c[0] = own.cameraRays; c[1] = own.shadowRays; c[2] = own.reflectionRays; c[3] = own.refractionRays;
                             c[4] = own.adaptiveCameraHits;
                             TraversalCounts.copy(own.ctx, c, 5);
+                            c[PIXEL_SAMPLES] = taken[0];
                         }
                     }
                 }, "spindulys-render-" + k, WORKER_STACK_BYTES);
@@ -331,39 +357,70 @@ public final class Renderer {
     /**
      * Renders one tile; returns false, leaving it unfinished, once {@code stop} says so (checked
      * before each pixel and every {@value #STOP_CHECK} samples, so a pixel of millions of shadow
-     * rays is not finished for a run that has already failed).
+     * rays is not finished for a run that has already failed). Each pixel takes its samples in
+     * the rounds of {@code rounds} (one round of all of them unless the sampling is adaptive) and
+     * stops after a checked round once its {@link NoiseEstimate} is below the threshold; the
+     * samples it took are added to {@code taken[0]}.
+     *
+     * @param samplers the sampler of each round (rounds of a size share one)
+     * @param noise    the thread's noise estimate
      */
-    private static boolean renderTile(Camera camera, Integrator integrator, RenderSettings st, Pass pass, PixelSampler sampler,
-                                      TracerScratch scratch, Ray ray, double[] colour, FrameBuffer fb, AovFrame aovs, int ox, int oy,
-                                      int fx0, int fy0, int fx1, int fy1, BooleanSupplier stop) {
-        int w = st.width(), h = st.height(), n = sampler.samplesPerPixel(), fw = fb.width();
-        double aspect = st.aspect();
-        boolean weighted = sampler.filter().hasNegativeWeights();
+    private static boolean renderTile(Camera camera, Integrator integrator, RenderSettings st, Pass pass, SampleRounds rounds,
+                                      PixelSampler[] samplers, NoiseEstimate noise, TracerScratch scratch, Ray ray, double[] colour,
+                                      FrameBuffer fb, AovFrame aovs, int ox, int oy, int fx0, int fy0, int fx1, int fy1,
+                                      BooleanSupplier stop, long[] taken) {
+        int w = st.width(), h = st.height(), fw = fb.width();
+        double aspect = st.aspect(), threshold = st.noiseThreshold();
+        boolean weighted = samplers[0].filter().hasNegativeWeights();
         boolean ownTimes = Double.isNaN(pass.time);
+        boolean centreRay = aovs != null && aovs.needsCentreRay();
+        int last = rounds.rounds() - 1;
+        // The noise is estimated from the rounds' means when there are rounds, else (for the
+        // noise pass only) from the single samples; without either nothing is spent on it.
+        boolean byRound = last > 0, bySample = last == 0 && aovs != null && aovs.passes().contains(Aov.NOISE);
         double[] data = fb.data();
         // The frame buffer's pixel (fx, fy) is the frame's (ox + fx, oy + fy): the pixel the samples are seeded from and traced through.
         for (int fy = fy0; fy < fy1; fy++) {
             int y = oy + fy;
             for (int fx = fx0; fx < fx1; fx++) {
                 int x = ox + fx;
-                sampler.startPixel(pass.seed, x, y);
                 double r = 0, g = 0, b = 0, weights = 0, plainR = 0, plainG = 0, plainB = 0;
-                for (int i = 0; i < n; i++) {
-                    if ((i & (STOP_CHECK - 1)) == 0 && stop.getAsBoolean()) return false;
-                    double time = ownTimes ? st.shutterTime(sampler.time(i)) : pass.time;
-                    camera.generateRay(sampler.filmX(i) / w, sampler.filmY(i) / h, aspect,
-                            sampler.lensU(i), sampler.lensV(i), time, ray);
-                    scratch.setSample(pass.seed, x, y, i, n);
-                    integrator.traceCamera(ray, scratch, colour);
-                    if (weighted) {
-                        double wt = sampler.weight(i);
-                        r += wt * colour[0]; g += wt * colour[1]; b += wt * colour[2];
-                        weights += wt;
-                        plainR += colour[0]; plainG += colour[1]; plainB += colour[2];
-                    } else {
-                        r += colour[0]; g += colour[1]; b += colour[2];
+                int n = 0;
+                noise.reset();
+                for (int k = 0; k <= last; k++) {
+                    int size = rounds.size(k);
+                    PixelSampler sampler = samplers[k];
+                    long seed = SampleRounds.seed(pass.seed, k);
+                    // The round's own sums, for its mean.
+                    double kr = r, kg = g, kb = b, kw = weights, kpr = plainR, kpg = plainG, kpb = plainB;
+                    sampler.startPixel(seed, x, y);
+                    for (int i = 0; i < size; i++, n++) {
+                        if ((n & (STOP_CHECK - 1)) == 0 && stop.getAsBoolean()) return false;
+                        double time = ownTimes ? st.shutterTime(sampler.time(i)) : pass.time;
+                        camera.generateRay(sampler.filmX(i) / w, sampler.filmY(i) / h, aspect,
+                                sampler.lensU(i), sampler.lensV(i), time, ray);
+                        scratch.setSample(seed, x, y, i, size);
+                        integrator.traceCamera(ray, scratch, colour);
+                        if (weighted) {
+                            double wt = sampler.weight(i);
+                            r += wt * colour[0]; g += wt * colour[1]; b += wt * colour[2];
+                            weights += wt;
+                            plainR += colour[0]; plainG += colour[1]; plainB += colour[2];
+                        } else {
+                            r += colour[0]; g += colour[1]; b += colour[2];
+                        }
+                        if (bySample) noise.add(1, colour[0], colour[1], colour[2]);
+                    }
+                    if (byRound) {
+                        // The round's mean, as the pixel's own value is made (below).
+                        kr = r - kr; kg = g - kg; kb = b - kb; kw = weights - kw;
+                        if (weighted && !(kw > 0)) { kr = plainR - kpr; kg = plainG - kpg; kb = plainB - kpb; }
+                        double kn = weighted && kw > 0 ? kw : size;
+                        noise.add(size, kr / kn, kg / kn, kb / kn);
+                        if (rounds.checkAfter(k) && noise.error() < threshold) break;
                     }
                 }
+                taken[0] += n;
                 // Weights of exactly 1 (a non-negative filter sampled exactly): the mean. With
                 // negative lobes, pbrt's weighted average, which keeps a flat colour flat. When the
                 // negative samples weigh as much as the rest (a few samples, by chance) it would
@@ -380,7 +437,8 @@ public final class Renderer {
                 }
                 if (pass.divide != 1) { r /= pass.divide; g /= pass.divide; b /= pass.divide; }
                 fb.set(fx, fy, r, g, b);
-                if (aovs != null) {
+                if (aovs != null) aovs.setNoise(x, y, n, noise.error());
+                if (centreRay) {
                     // One more ray, through the exact pixel centre from the lens centre when the
                     // shutter opens, so the passes do not depend on the sample pattern.
                     camera.generateRay((x + 0.5) / w, (y + 0.5) / h, aspect, 0, 0, st.shutterOpen(), ray);
@@ -391,6 +449,16 @@ public final class Renderer {
             }
         }
         return true;
+    }
+
+    /** Whether round k is the first of its size (and has a sampler made for it). */
+    private static boolean firstOfSize(SampleRounds rounds, int k) { return sameSize(rounds, k) == k; }
+
+    /** The first round of round k's size. */
+    private static int sameSize(SampleRounds rounds, int k) {
+        int j = 0;
+        while (rounds.size(j) != rounds.size(k)) j++;
+        return j;
     }
 
     /** Samples of a pixel between two looks at whether the render must stop: a power of two. */

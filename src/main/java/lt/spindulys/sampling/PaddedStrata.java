@@ -32,9 +32,9 @@ public final class PaddedStrata {
     public void start(long seed, int px, int py, int sample, int samples) {
         if (samples != this.samples) {
             this.samples = samples;
-            int[] grid = PixelSampler.grid(samples);
-            cols = grid[0];
-            rows = grid[1];
+            // Adaptive sampling changes the count with each round of a pixel: nothing is allocated for it.
+            cols = PixelSampler.gridColumns(samples);
+            rows = (samples + cols - 1) / cols;
         }
         this.sample = sample;
         pixelHash = hash.seed(seed, px, py, 0x73747261).nextLong(); // "stra"

@@ -98,12 +98,23 @@ public final class PixelSampler {
      * @return columns and rows; their product is n, or a little more
      */
     public static int[] grid(int n) {
+        int cols = gridColumns(n);
+        return new int[] {cols, (n + cols - 1) / cols};
+    }
+
+    /**
+     * The columns of {@link #grid}{@code (n)}, without allocating: its rows are
+     * {@code ceil(n / columns)}.
+     *
+     * @param n the samples, at least 1
+     * @return the columns
+     */
+    public static int gridColumns(int n) {
         int rows = (int) Math.floor(Math.sqrt(n));
         while (n % rows != 0) rows--;
         int cols = n / rows;
-        if (n <= 4 || cols <= 2 * rows) return new int[] {cols, rows};
-        cols = (int) Math.ceil(Math.sqrt(n));
-        return new int[] {cols, (n + cols - 1) / cols};
+        if (n <= 4 || cols <= 2 * rows) return cols; // cols x rows = n: n / cols rows
+        return (int) Math.ceil(Math.sqrt(n));
     }
 
     /**

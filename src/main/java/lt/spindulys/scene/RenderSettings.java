@@ -49,11 +49,17 @@ import lt.spindulys.camera.PixelFilter;
  *                        tells the filter used)
  * @param filterWidth     the filter's width W in pixels (see {@link PixelFilter}), or 0 for the
  *                        filter's own default ({@link #pixelFilterWidth()} tells the width used)
+ * @param noiseThreshold  adaptive sampling: a pixel stops taking samples once its estimated
+ *                        relative error falls below this ({@link lt.spindulys.sampling.SampleRounds});
+ *                        0 (the default) for none, every pixel takes samplesPerPixel samples
+ * @param minSamples      adaptive sampling: the samples every pixel takes before its error is
+ *                        first checked, or 0 for Cycles' default ({@link #adaptiveMinSamples()})
  */
 public record RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, double minContribution,
                              Color background, Color ambient, boolean srgb, long seed, AcceleratorKind accelerator,
                              Set<Aov> aovs, double shutterOpen, double shutterClose, int timeSteps, AdaptiveSettings adaptive,
-                             IntegratorKind integrator, double clamp, PixelFilter filter, double filterWidth) {
+                             IntegratorKind integrator, double clamp, PixelFilter filter, double filterWidth,
+                             double noiseThreshold, int minSamples) {
     /** Widest accepted pixel filter, in pixels: wider only blurs, and costs nothing but sharpness. */
     public static final double MAX_FILTER_WIDTH = 16;
 
@@ -64,11 +70,12 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      * The settings of a scene that gives none, and where {@link #builder()} starts: 640x480, 1
      * sample per pixel, depth 8, minimum contribution 0.001, black background, white ambient,
      * linear encoding, seed 0, the default accelerator, no passes, shutter [0, 1] in one pass,
-     * Whitted ray tracing, no clamp, the integrator's default pixel filter ({@link #defaultFilter}).
+     * Whitted ray tracing, no clamp, the integrator's default pixel filter ({@link #defaultFilter}),
+     * no adaptive sampling.
      */
     public static final RenderSettings DEFAULT = new RenderSettings(640, 480, 1, 8, 0.001, Color.BLACK, Color.WHITE, false, 0,
             AcceleratorKind.DEFAULT, Set.of(), Placement.OPEN, Placement.CLOSE, 1, AdaptiveSettings.DEFAULT,
-            IntegratorKind.DEFAULT, 0, null, 0);
+            IntegratorKind.DEFAULT, 0, null, 0, 0, 0);
 
     /**
      * Checks every value as the {@link Builder}'s methods do, with the same messages; the
@@ -93,6 +100,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      * @param clamp           the largest value of an indirect sample's channel (path tracing), 0 for none
      * @param filter          the pixel reconstruction filter, null for the integrator's default
      * @param filterWidth     its width in pixels, 0 for its default
+     * @param noiseThreshold  adaptive sampling's noise threshold, 0 for none
+     * @param minSamples      adaptive sampling's minimum samples, 0 for the default
      * @throws IllegalArgumentException if a value is out of its range
      * @throws NullPointerException     if accelerator or aovs is null
      */
@@ -112,6 +121,31 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         Objects.requireNonNull(integrator, "integrator");
         clamp(clamp);
         filterWidth(filterWidth);
+        noiseThreshold(noiseThreshold);
+        minSamples(minSamples);
+    }
+
+    /** Largest accepted noise threshold: a relative error of 100 % would stop every pixel at its minimum. */
+    public static final double MAX_NOISE_THRESHOLD = 1;
+
+    /**
+     * Whether pixels stop taking samples once their noise is low enough.
+     *
+     * @return true when the noise threshold is above 0
+     */
+    public boolean adaptiveSampling() { return noiseThreshold > 0; }
+
+    /**
+     * The samples every pixel takes before its error is first checked: the one given, or
+     * Cycles' default {@code max(4, ceil(16 / threshold^0.3))} (64 at 0.01, 32 at 0.1), at most
+     * samplesPerPixel. Without adaptive sampling, samplesPerPixel.
+     *
+     * @return the minimum samples per pixel, 1 to samplesPerPixel
+     */
+    public int adaptiveMinSamples() {
+        if (!adaptiveSampling()) return samplesPerPixel;
+        int m = minSamples > 0 ? minSamples : Math.max(4, (int) Math.ceil(16 / Math.pow(noiseThreshold, 0.3)));
+        return Math.min(m, samplesPerPixel);
     }
 
     /**
@@ -187,6 +221,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         private double clamp;
         private PixelFilter filter;
         private double filterWidth;
+        private double noiseThreshold;
+        private int minSamples;
 
         private Builder(RenderSettings s) {
             width = s.width;
@@ -208,6 +244,8 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
             clamp = s.clamp;
             filter = s.filter;
             filterWidth = s.filterWidth;
+            noiseThreshold = s.noiseThreshold;
+            minSamples = s.minSamples;
         }
 
         /**
@@ -446,13 +484,41 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         }
 
         /**
+         * Adaptive sampling's noise threshold, from 0 (none: every pixel takes all its samples)
+         * to {@link #MAX_NOISE_THRESHOLD}: the estimated relative error at which a pixel stops.
+         *
+         * @param t the threshold, or 0
+         * @return this builder
+         * @throws IllegalArgumentException if out of range
+         */
+        public Builder noiseThreshold(double t) {
+            noiseThreshold = RenderSettings.noiseThreshold(t);
+            return this;
+        }
+
+        /**
+         * Adaptive sampling's minimum samples per pixel, from 1 to 65536, or 0 for the default
+         * ({@link RenderSettings#adaptiveMinSamples()}); at most the samples per pixel
+         * ({@link RenderSettings#checkNoiseControl()}).
+         *
+         * @param m the minimum, or 0
+         * @return this builder
+         * @throws IllegalArgumentException if out of range
+         */
+        public Builder minSamples(int m) {
+            minSamples = RenderSettings.minSamples(m);
+            return this;
+        }
+
+        /**
          * The settings with the values given so far.
          *
          * @return new settings; the builder can go on to make more
          */
         public RenderSettings build() {
             return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed,
-                    accelerator, aovs, shutterOpen, shutterClose, timeSteps, adaptive, integrator, clamp, filter, filterWidth);
+                    accelerator, aovs, shutterOpen, shutterClose, timeSteps, adaptive, integrator, clamp, filter, filterWidth,
+                    noiseThreshold, minSamples);
         }
     }
 
@@ -485,6 +551,18 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         return w;
     }
 
+    private static double noiseThreshold(double t) {
+        if (!(t >= 0 && t <= MAX_NOISE_THRESHOLD)) {
+            throw new IllegalArgumentException("noisethreshold must be 0 (no adaptive sampling) or a relative error up to " + (int) MAX_NOISE_THRESHOLD + ", found " + t);
+        }
+        return t;
+    }
+
+    private static int minSamples(int m) {
+        if (m < 0 || m > 65536) throw new IllegalArgumentException("minsamples must be 0 (the default) or between 1 and 65536, found " + m);
+        return m;
+    }
+
     private static double contribution(double c) {
         if (!(c >= 0 && c < 1)) throw new IllegalArgumentException("mincontribution must be in [0, 1), found " + c);
         return c;
@@ -511,6 +589,29 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         if (samplesPerPixel % timeSteps != 0) {
             throw new IllegalArgumentException("samples " + samplesPerPixel + " is not a multiple of timesteps " + timeSteps
                     + " (each time step renders samples / timesteps per pixel)");
+        }
+        return this;
+    }
+
+    /**
+     * Refuses what adaptive sampling cannot do with the other settings: a minimum above the
+     * samples per pixel, and time steps (each step would stop on a part of the pixel's samples
+     * only); the noise pass, which records the samples a pixel took, likewise needs one time step.
+     *
+     * @return these settings
+     * @throws IllegalArgumentException "minsamples 64 is more than samples 16"
+     */
+    public RenderSettings checkNoiseControl() {
+        if (adaptiveSampling() && minSamples > samplesPerPixel) {
+            throw new IllegalArgumentException("minsamples " + minSamples + " is more than samples " + samplesPerPixel
+                    + " (expected at most the samples per pixel)");
+        }
+        if (timeSteps > 1 && adaptiveSampling()) {
+            throw new IllegalArgumentException("noisethreshold " + noiseThreshold + " needs timesteps 1, found " + timeSteps
+                    + " (adaptive sampling stops a pixel on all its samples at once)");
+        }
+        if (timeSteps > 1 && aovs.contains(Aov.NOISE)) {
+            throw new IllegalArgumentException("the noise pass needs timesteps 1, found " + timeSteps);
         }
         return this;
     }

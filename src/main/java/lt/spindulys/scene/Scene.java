@@ -45,7 +45,7 @@ public final class Scene {
      *         naming it) or the copies would not fit in the heap
      */
     Scene(RenderSettings settings, Camera camera, List<PointLight> lights, List<AreaLight> areaLights, List<GObject> given, Environment environment) {
-        this.settings = settings.checkTimeSteps();
+        this.settings = settings.checkTimeSteps().checkNoiseControl();
         this.environment = environment;
         EnvironmentLight el = environment != null && environment.isLight() ? EnvironmentLight.of(environment) : null;
         this.environmentLight = el == null || el.isBlack() ? null : el;

@@ -344,8 +344,9 @@ public final class WhittedIntegrator implements Integrator {
     }
 
     /**
-     * The order in which the pixel's samples take stratified light li's n strata: a shuffle seeded
-     * from the pass seed, pixel and light, drawn once per pixel and thread.
+     * The order in which the pixel's samples take stratified light li's n strata (the first n
+     * entries): a shuffle seeded from the pass seed, pixel and light, drawn once per pixel (or
+     * round of its samples) and thread.
      */
     private int[] strata(int li, int n, TracerScratch s) {
         if (s.lightStrata.length < stratifiedLights) { // a scratch not made by newScratch
@@ -354,11 +355,11 @@ public final class WhittedIntegrator implements Integrator {
             s.lightStrataCols = new int[stratifiedLights];
         }
         int[] p = s.lightStrata[li];
-        if (p != null && p.length == n && s.lightStrataGeneration[li] == s.pixelGeneration) return p;
-        if (p == null || p.length != n) {
-            p = s.lightStrata[li] = new int[n];
-            s.lightStrataCols[li] = strataCols(n);
-        }
+        // The generation changes with the pixel's sample count, so it fixes n for this light.
+        if (p != null && p.length >= n && s.lightStrataGeneration[li] == s.pixelGeneration) return p;
+        // Sized for the settings' samples per pixel: adaptive sampling's rounds (fewer samples) reuse it.
+        if (p == null || p.length < n) p = s.lightStrata[li] = new int[n];
+        s.lightStrataCols[li] = strataCols(n);
         for (int i = 0; i < n; i++) p[i] = i;
         Rng rng = s.lightRng.seed(s.seed ^ STRATA_STREAM * (li + 1), s.pixelX, s.pixelY, li);
         for (int i = n - 1; i > 0; i--) {

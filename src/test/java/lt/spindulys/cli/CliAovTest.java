@@ -73,7 +73,7 @@ class CliAovTest {
         Path scene = scene(SCENE);
         CliTest.Run r = CliTest.run(scene.toString(), "-o", dir.resolve("out.png").toString(), "--aov", "depth,albedo");
         assertEquals(2, r.status());
-        assertEquals("render: --aov: unknown AOV 'albedo' (expected depth, normal or object)" + System.lineSeparator(), r.err());
+        assertEquals("render: --aov: unknown AOV 'albedo' (expected depth, normal, object or noise)" + System.lineSeparator(), r.err());
         CliTest.Run twice = CliTest.run(scene.toString(), "--aov", "depth,depth");
         assertEquals(2, twice.status());
         assertEquals("render: --aov: AOV 'depth' listed twice" + System.lineSeparator(), twice.err());

@@ -227,6 +227,19 @@ class CliTest {
     }
 
     @Test
+    void adaptiveSamplingSaysTheMeanSamplesAndWritesTheNoisePass() throws IOException {
+        Path out = dir.resolve("adaptive.png");
+        Run r = run(scene(SMALL).toString(), "-o", out.toString(), "--spp", "32", "--noise-threshold", "0.05", "--min-samples", "8", "--aov", "noise", "--threads", "2");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.err().matches("wrote \\Q" + out + ", " + dir.resolve("adaptive.noise.pfm")
+                + "\\E \\(24x16, \\d+\\.\\d of 32 spp adaptive\\) in \\d+\\.\\d s" + System.lineSeparator()), r.err());
+        lt.spindulys.image.FrameBuffer noise = lt.spindulys.image.Images.read(dir.resolve("adaptive.noise.pfm"));
+        double min = Double.POSITIVE_INFINITY, max = 0;
+        for (int y = 0; y < 16; y++) for (int x = 0; x < 24; x++) { min = Math.min(min, noise.get(x, y, 0)); max = Math.max(max, noise.get(x, y, 0)); }
+        assertTrue(min >= 8 && max <= 32 && min < max, "samples from " + min + " to " + max);
+    }
+
+    @Test
     void badUsageIsOneLineAndExitsTwo() throws IOException {
         Path scene = scene(SMALL);
         String[][] cases = {
@@ -248,6 +261,12 @@ class CliTest {
                 {"render: --filter-width expects a width in pixels, found 'wide'", scene.toString(), "--filter-width", "wide"},
                 {"render: --spp 3 is not a multiple of --timesteps 2 (each time step renders spp / timesteps per pixel)", scene.toString(),
                         "--spp", "3", "--timesteps", "2", "-o", dir.resolve("x.png").toString()},
+                {"render: --noise-threshold must be between 0 and 1, found 2", scene.toString(), "--noise-threshold", "2"},
+                {"render: --min-samples must be between 0 and 65536, found -1", scene.toString(), "--min-samples", "-1"},
+                {"render: --spp 16 --noise-threshold 0.01 --min-samples 32: minsamples 32 is more than samples 16 (expected at most the samples per pixel)",
+                        scene.toString(), "--spp", "16", "--noise-threshold", "0.01", "--min-samples", "32", "-o", dir.resolve("x.png").toString()},
+                {"render: --spp 4 --noise-threshold 0.01 --timesteps 2: noisethreshold 0.01 needs timesteps 1, found 2 (adaptive sampling stops a pixel on all its samples at once)",
+                        scene.toString(), "--spp", "4", "--noise-threshold", "0.01", "--timesteps", "2", "-o", dir.resolve("x.png").toString()},
         };
         for (String[] c : cases) {
             String[] args = java.util.Arrays.copyOfRange(c, 1, c.length);

@@ -65,6 +65,19 @@ class AovEncodingTest {
     }
 
     @Test
+    void noiseIsThreeChannelPfmOfSamplesErrorAndZero() throws IOException {
+        AovFrame f = new AovFrame(2, 2, EnumSet.of(Aov.NOISE));
+        f.setNoise(0, 0, 64, 0.5);
+        f.setNoise(1, 0, 80, 0.25);
+        f.setNoise(0, 1, 256, 0.125);
+        f.setNoise(1, 1, 4097, 0);
+        ImageWriter.write(new FrameBuffer(2, 2), dir.resolve("out.png"), ImageOptions.DEFAULT, f);
+        float[] n = pfm(dir.resolve("out.noise.pfm"), "PF", 2, 2);
+        // Bottom row first.
+        assertArrayEquals(new float[] {256, 0.125f, 0, 4097, 0, 0, 64, 0.5f, 0, 80, 0.25f, 0}, n);
+    }
+
+    @Test
     void objectIsIdPlusOneIn24BitRgbNeverSrgbEncoded() throws IOException {
         // sRGB requested for the main image: the ids must still be written as they are.
         ImageWriter.write(new FrameBuffer(3, 2), dir.resolve("out.jpg"), ImageOptions.DEFAULT.withSrgb(true), frame());

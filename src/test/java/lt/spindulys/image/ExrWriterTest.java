@@ -89,7 +89,8 @@ class ExrWriterTest {
             // Odd sizes: a last ZIP block of 5 lines, and odd byte counts in the blocks' halves.
             int w = 7, h = 37;
             FrameBuffer fb = new FrameBuffer(w, h);
-            AovFrame aovs = new AovFrame(w, h, EnumSet.allOf(Aov.class));
+            // The passes of the first hit; the noise pass has its own test.
+            AovFrame aovs = new AovFrame(w, h, EnumSet.complementOf(EnumSet.of(Aov.NOISE)));
             Random random = new Random(11);
             for (int y = 0; y < h; y++) {
                 for (int x = 0; x < w; x++) {
@@ -129,6 +130,27 @@ class ExrWriterTest {
                     assertEquals((float) aovs.depth(x, y), image.channel("Z").values()[p], at);
                     assertEquals(aovs.objectId(x, y) + 1, image.channel("IndexOB.X").values()[p], at);
                 }
+            }
+        }
+    }
+
+    @Test
+    void theNoisePassIsTwoFloatChannels() throws IOException {
+        int w = 5, h = 3;
+        FrameBuffer fb = new FrameBuffer(w, h);
+        AovFrame aovs = new AovFrame(w, h, EnumSet.of(Aov.NOISE));
+        for (int y = 0; y < h; y++) for (int x = 0; x < w; x++) aovs.setNoise(x, y, 64 + 4097 * x + y, 0.001 * (x + 10 * y) + 1e-7);
+        Path out = dir.resolve("noise.exr");
+        ImageWriter.write(fb, out, ImageOptions.DEFAULT, aovs); // half colour: the pass stays float
+        ExrTestDecoder.Image image = ExrTestDecoder.read(out);
+        assertEquals(List.of("A", "B", "G", "Noise.X", "R", "Samples.X"), image.channels().stream().map(ExrTestDecoder.Channel::name).toList());
+        assertEquals(2, image.channel("Samples.X").pixelType());
+        assertEquals(2, image.channel("Noise.X").pixelType());
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                int p = y * w + x;
+                assertEquals(64 + 4097 * x + y, image.channel("Samples.X").values()[p], "sample counts above 2048 stay exact");
+                assertEquals((float) aovs.noiseError(x, y), image.channel("Noise.X").values()[p]);
             }
         }
     }

@@ -205,12 +205,37 @@ class SceneParserTest {
     }
 
     @Test
+    void adaptiveSamplingSettingsAndTheirOneLineErrors() {
+        RenderSettings s = parse("settings { samples 256  noisethreshold 0.01 }").settings();
+        assertEquals(0.01, s.noiseThreshold());
+        assertTrue(s.adaptiveSampling());
+        assertEquals(64, s.adaptiveMinSamples(), "Cycles' default: max(4, ceil(16 / 0.01^0.3))");
+        assertEquals(32, parse("settings { samples 256  noisethreshold 0.1 }").settings().adaptiveMinSamples());
+        assertEquals(16, parse("settings { samples 16  noisethreshold 0.01 }").settings().adaptiveMinSamples(), "at most the samples");
+        assertEquals(8, parse("settings { samples 16  noisethreshold 0.01  minsamples 8 }").settings().adaptiveMinSamples());
+        assertFalse(parse("settings { samples 16 }").settings().adaptiveSampling());
+        assertEquals(EnumSet.of(Aov.NOISE), parse("settings { aov noise }").settings().aovs());
+        String[][] cases = {
+                {"settings { noisethreshold -0.5 }", "test.dat:1:12: noisethreshold must be 0 (no adaptive sampling) or a relative error up to 1, found -0.5"},
+                {"settings { minsamples 70000 }", "test.dat:1:12: minsamples must be 0 (the default) or between 1 and 65536, found 70000"},
+                {"settings { samples 16\n  noisethreshold 0.01  minsamples 32 }", "test.dat:2:24: minsamples 32 is more than samples 16 (expected at most the samples per pixel)"},
+                {"settings { samples 16  timesteps 2  noisethreshold 0.01 }",
+                        "test.dat:1:37: noisethreshold 0.01 needs timesteps 1, found 2 (adaptive sampling stops a pixel on all its samples at once)"},
+                {"settings { samples 16  timesteps 2  aov noise }", "test.dat:1:37: the noise pass needs timesteps 1, found 2"},
+        };
+        for (String[] c : cases) {
+            SceneException e = assertThrows(SceneException.class, () -> parse(c[0]), c[0]);
+            assertEquals(c[1], e.getMessage(), c[0]);
+        }
+    }
+
+    @Test
     void aovListEndsAtTheNextKeyOrTheBrace() {
         assertEquals(Set.of(), parse("settings { width 10 }").settings().aovs());
         RenderSettings s = parse("settings { aov object depth  width 10 }").settings();
         assertEquals(EnumSet.of(Aov.DEPTH, Aov.OBJECT), s.aovs());
         assertEquals(10, s.width());
-        assertEquals(EnumSet.allOf(Aov.class), parse("settings { width 10 aov normal depth object}").settings().aovs());
+        assertEquals(EnumSet.of(Aov.NORMAL, Aov.DEPTH, Aov.OBJECT), parse("settings { width 10 aov normal depth object}").settings().aovs());
         assertEquals(RenderSettings.builder().aovs(EnumSet.of(Aov.NORMAL)).build(), parse("settings { aov normal }").settings());
     }
 

@@ -21,7 +21,7 @@ import lt.spindulys.scene.SceneBuilder;
  * A region of a frame ({@link RenderJob#region}, {@link RenderJob#tile}) holds exactly the linear
  * values a whole render has there, for every way samples are drawn: pixel, lens, time and light
  * samples in one pass, the thesis's time steps, pixel filters wider than a pixel, and a surface
- * refined lazily while it is traced.
+ * refined lazily while it is traced, and adaptive sampling.
  */
 class RegionRenderTest {
     @TempDir Path dir;
@@ -40,7 +40,7 @@ class RegionRenderTest {
         Files.createDirectories(dir.resolve("models"));
         Files.copy(models, dir.resolve("models/cube.dat"), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
         Path p = dir.resolve("scene.dat");
-        Files.writeString(p, SCENE.replace("samples 4 }", "samples 4 " + extra + " }"));
+        Files.writeString(p, SCENE.replace("samples 4 }", (extra.startsWith("samples") ? "" : "samples 4 ") + extra + " }"));
         return SceneParser.parse(p);
     }
 
@@ -59,7 +59,9 @@ class RegionRenderTest {
     @Test
     void regionsAndTilesHoldTheWholeFramesValues() throws Exception {
         // Filters wider than a pixel draw samples beyond it, but each still adds to its own pixel only: no apron is needed.
-        for (String extra : new String[] {"", "timesteps 2", "filter blackman-harris", "filter mitchell", "filter gaussian filterwidth 2 timesteps 2"}) {
+        // Adaptive sampling stops each pixel on its own samples only: its rounds are as a whole render's.
+        for (String extra : new String[] {"", "timesteps 2", "filter blackman-harris", "filter mitchell", "filter gaussian filterwidth 2 timesteps 2",
+                "samples 24 noisethreshold 0.05 minsamples 8", "samples 24 noisethreshold 0.05 minsamples 8 filter mitchell"}) {
             SceneBuilder b = scene(extra);
             FrameBuffer whole = RenderJob.of(b).threads(2).run().frame();
             List<PixelRegion> regions = new ArrayList<>(List.of(new PixelRegion(0, 29, 0, 19), new PixelRegion(3, 20, 5, 6),
