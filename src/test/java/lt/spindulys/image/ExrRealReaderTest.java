@@ -178,7 +178,7 @@ class ExrRealReaderTest {
     /** The pixel bytes of an uncompressed scanline file of this test's channels: its blocks without their line and size. */
     private static byte[] pixelBytes(Path none, ExrPrecision precision) throws IOException {
         int colour = precision == ExrPrecision.HALF ? 2 : 4;
-        int line = W * (7 * colour + 2 * 4); // A B G, IndexOB.X as a float, Normal.X Normal.Y Normal.Z R, then Z as a float
+        int line = W * (7 * colour + 4 * 4); // A B G Normal.X Normal.Y Normal.Z R, and IndexOB.X Noise.X Samples.X Z as floats
         byte[] all = Files.readAllBytes(none);
         int start = all.length - H * (8 + line);
         byte[] out = new byte[H * line];
