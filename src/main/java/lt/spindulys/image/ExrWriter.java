@@ -20,7 +20,8 @@ import java.util.zip.Deflater;
  * {@code N.Y}, {@code N.Z} (layer N: readers split names at the last dot); with the depth pass
  * {@code Z}, OpenEXR's own name for depth, which Nuke and OpenImageIO read as depth, +Infinity
  * where nothing was hit; with the object pass {@code objectId}, the
- * object's id + 1 and 0 for the background, exact as a float. Colour and normal follow
+ * object's id + 1 and 0 for the background, exact as a float; with the albedo pass
+ * {@code albedo.B}, {@code albedo.G}, {@code albedo.R}. Colour, normal and albedo follow
  * {@link ImageOptions#exrPrecision()}; depth and object id are always FLOAT.
  *
  * <p>With {@link ExrCompression#ZIP} or {@link ExrCompression#ZIPS} each block's bytes are split
@@ -80,6 +81,12 @@ final class ExrWriter {
             if (aovs.passes().contains(Aov.DEPTH)) {
                 double[] d = aovs.depthData();
                 channels.add(new Channel("Z", false, p -> d[p]));
+            }
+            if (aovs.passes().contains(Aov.ALBEDO)) {
+                double[] a = aovs.albedoData();
+                channels.add(new Channel("albedo.R", half, p -> a[3 * p]));
+                channels.add(new Channel("albedo.G", half, p -> a[3 * p + 1]));
+                channels.add(new Channel("albedo.B", half, p -> a[3 * p + 2]));
             }
             if (aovs.passes().contains(Aov.OBJECT)) {
                 int[] codes = aovs.objectCodes();
