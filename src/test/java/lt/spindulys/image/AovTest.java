@@ -11,11 +11,12 @@ import org.junit.jupiter.api.Test;
 class AovTest {
     @Test
     void keywordsAndSuffixes() {
-        assertEquals(List.of("depth", "normal", "object"), Aov.keywords());
+        assertEquals(List.of("depth", "normal", "object", "albedo"), Aov.keywords());
         for (Aov a : Aov.values()) assertSame(a, Aov.fromKeyword(a.keyword()));
         assertEquals(".depth.pfm", Aov.DEPTH.suffix());
         assertEquals(".normal.pfm", Aov.NORMAL.suffix());
         assertEquals(".object.png", Aov.OBJECT.suffix());
+        assertEquals(".albedo.pfm", Aov.ALBEDO.suffix());
     }
 
     @Test
@@ -32,7 +33,7 @@ class AovTest {
 
     @Test
     void parsesCommaSeparatedListsInPassOrder() {
-        assertEquals(EnumSet.allOf(Aov.class), Aov.parseList("object,depth,normal"));
+        assertEquals(EnumSet.allOf(Aov.class), Aov.parseList("object,albedo,depth,normal"));
         assertEquals(EnumSet.of(Aov.NORMAL), Aov.parseList("normal"));
         assertEquals(EnumSet.of(Aov.DEPTH, Aov.OBJECT), Aov.parseList("depth, object"));
         assertEquals(List.of(Aov.DEPTH, Aov.OBJECT), List.copyOf(Aov.parseList("object,depth")));
@@ -40,11 +41,11 @@ class AovTest {
 
     @Test
     void refusesUnknownRepeatedAndEmptyNames() {
-        assertEquals("unknown AOV 'albedo' (expected depth, normal or object)",
-                assertThrows(IllegalArgumentException.class, () -> Aov.parseList("depth,albedo")).getMessage());
+        assertEquals("unknown AOV 'shadow' (expected depth, normal, object or albedo)",
+                assertThrows(IllegalArgumentException.class, () -> Aov.parseList("depth,shadow")).getMessage());
         assertEquals("AOV 'depth' listed twice",
                 assertThrows(IllegalArgumentException.class, () -> Aov.parseList("depth,normal,depth")).getMessage());
-        assertEquals("empty AOV name in 'depth,' (expected depth, normal or object)",
+        assertEquals("empty AOV name in 'depth,' (expected depth, normal, object or albedo)",
                 assertThrows(IllegalArgumentException.class, () -> Aov.parseList("depth,")).getMessage());
         assertThrows(IllegalArgumentException.class, () -> Aov.parseList(""));
         assertThrows(IllegalArgumentException.class, () -> Aov.fromKeyword("Depth"));

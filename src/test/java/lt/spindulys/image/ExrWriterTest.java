@@ -105,7 +105,7 @@ class ExrWriterTest {
             assertEquals(w, image.width());
             assertEquals(h, image.height());
             assertEquals(compression.code(), image.compression());
-            assertEquals(List.of("A", "B", "G", "N.X", "N.Y", "N.Z", "R", "Z", "objectId"),
+            assertEquals(List.of("A", "B", "G", "N.X", "N.Y", "N.Z", "R", "Z", "albedo.B", "albedo.G", "albedo.R", "objectId"),
                     image.channels().stream().map(ExrTestDecoder.Channel::name).toList());
             assertEquals(List.of("channels", "compression", "dataWindow", "displayWindow", "lineOrder", "pixelAspectRatio",
                     "screenWindowCenter", "screenWindowWidth"), List.copyOf(image.attributes().keySet()));

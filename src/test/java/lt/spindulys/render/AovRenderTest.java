@@ -135,7 +135,8 @@ class AovRenderTest {
         for (Aov a : Aov.values()) {
             byte[] base = Files.readAllBytes(a.fileBeside(one));
             assertArrayEquals(base, Files.readAllBytes(a.fileBeside(three)), a + ": 1 vs 3 threads");
-            assertArrayEquals(base, Files.readAllBytes(a.fileBeside(many)), a + ": 1 vs 9 samples per pixel");
+            // The albedo is the samples' average, antialiased like the image: it changes with them.
+            if (a != Aov.ALBEDO) assertArrayEquals(base, Files.readAllBytes(a.fileBeside(many)), a + ": 1 vs 9 samples per pixel");
         }
     }
 
