@@ -48,7 +48,7 @@ public final class Denoiser {
     /** Default half-width of the patches compared, pixels. */
     public static final int DEFAULT_PATCH = 2;
     /** Default bandwidth of the colour weights, in units of the noise's standard deviation. */
-    public static final double DEFAULT_K = 0.5;
+    public static final double DEFAULT_K = 0.35;
 
     /**
      * A denoiser with its own window, patch and bandwidth.
