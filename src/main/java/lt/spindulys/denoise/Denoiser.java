@@ -70,14 +70,14 @@ public final class Denoiser {
 
     /**
      * Heap {@link #denoise} allocates for a frame of this size: the output, the smoothed
-     * variance and the features it regresses on.
+     * variance and the features it regresses on, before and after their prefilter.
      *
      * @param width pixels across
      * @param height pixels down
      * @return bytes, saturating
      */
     public static long bytes(int width, int height) {
-        return HeapBudget.product(Math.max(0, width), Math.max(0, height), 8L * (3 + 3 + FEATURES));
+        return HeapBudget.product(Math.max(0, width), Math.max(0, height), 8L * (3 + 3 + 2 * FEATURES));
     }
 
     /**
@@ -101,18 +101,36 @@ public final class Denoiser {
         int workers = Math.min(threads, (h + BAND - 1) / BAND);
         HeapBudget.require(HeapBudget.sum(bytes(w, h), HeapBudget.product(workers, Band.bytes(w, patch))), "denoising the " + w + "x" + h + " frame");
         FrameBuffer out = new FrameBuffer(w, h);
-        double[] c = colour.data(), f = features.data(), variance = smoothedVariance(f, w, h), x = regressionFeatures(f, w, h);
-        double[] o = out.data();
-        AtomicInteger nextBand = new AtomicInteger();
-        AtomicReference<Throwable> failure = new AtomicReference<>();
-        Thread[] pool = new Thread[workers];
+        double[] c = colour.data(), f = features.data(), variance = smoothedVariance(f, w, h), raw = regressionFeatures(f, w, h);
+        double[] x = new double[raw.length], o = out.data();
+        double depthScale = depthScale(f, w, h);
         int bands = (h + BAND - 1) / BAND;
+        inParallel(bands, workers, () -> null, (b, unused) -> prefilterFeatures(b * BAND, Math.min(h, (b + 1) * BAND), w, h, raw, f, depthScale, x));
+        inParallel(bands, workers, () -> new Band(w, patch), (b, band) -> band(b * BAND, Math.min(h, (b + 1) * BAND), w, h, c, variance, x, o, band));
+        return out;
+    }
+
+    /** One piece of work of {@link #inParallel}, with its thread's scratch. */
+    @FunctionalInterface
+    private interface Piece<S> {
+        void run(int index, S scratch);
+    }
+
+    /**
+     * Runs pieces 0 to count - 1 on {@code threads} threads, each with a scratch of its own;
+     * every piece writes its own part of the output, so the order does not matter.
+     */
+    private static <S> void inParallel(int count, int threads, java.util.function.Supplier<S> scratch, Piece<S> piece)
+            throws InterruptedException {
+        AtomicInteger next = new AtomicInteger();
+        AtomicReference<Throwable> failure = new AtomicReference<>();
+        Thread[] pool = new Thread[Math.max(1, Math.min(threads, count))];
         for (int t = 0; t < pool.length; t++) {
             pool[t] = new Thread(() -> {
                 try {
-                    Band band = new Band(w, patch);
-                    for (int b; failure.get() == null && !Thread.currentThread().isInterrupted() && (b = nextBand.getAndIncrement()) < bands; ) {
-                        band(b * BAND, Math.min(h, (b + 1) * BAND), w, h, c, variance, x, o, band);
+                    S own = scratch.get();
+                    for (int i; failure.get() == null && !Thread.currentThread().isInterrupted() && (i = next.getAndIncrement()) < count; ) {
+                        piece.run(i, own);
                     }
                 } catch (Throwable e) {
                     failure.compareAndSet(null, e);
@@ -131,7 +149,67 @@ public final class Denoiser {
         if (e instanceof Error err) throw err;
         if (e != null) throw new IllegalStateException(e);
         if (Thread.currentThread().isInterrupted()) throw new InterruptedException("denoising interrupted");
-        return out;
+    }
+
+    /** Half-width of the window of the features' own prefilter, and of its patches, pixels. */
+    private static final int FEATURE_RADIUS = 3, FEATURE_PATCH = 1;
+    /** The features' feature groups: albedo, normal, inverse depth (first feature, count). */
+    private static final int[][] GROUPS = {{0, 3}, {3, 3}, {6, 1}};
+
+    /**
+     * Rows y0 to y1 of the features, each group (albedo, normal, inverse depth) averaged over a
+     * small window by non-local means on that group itself, with its own variance (NFOR's
+     * feature prefilter): a pixel on an edge has features that carry the chance of its samples'
+     * coverage, and the colour regressed on them would keep that noise as if it were detail;
+     * where the features have no noise they are unchanged.
+     */
+    private static void prefilterFeatures(int y0, int y1, int w, int h, double[] x, double[] f, double depthScale, double[] out) {
+        for (int py = y0; py < y1; py++) {
+            for (int px = 0; px < w; px++) {
+                int p = py * w + px;
+                for (int g = 0; g < GROUPS.length; g++) {
+                    int first = GROUPS[g][0], n = GROUPS[g][1];
+                    double scale = g == 2 ? depthScale * depthScale : 1;
+                    double total = 0;
+                    double s0 = 0, s1 = 0, s2 = 0;
+                    for (int qy = Math.max(0, py - FEATURE_RADIUS); qy <= Math.min(h - 1, py + FEATURE_RADIUS); qy++) {
+                        for (int qx = Math.max(0, px - FEATURE_RADIUS); qx <= Math.min(w - 1, px + FEATURE_RADIUS); qx++) {
+                            double sum = 0;
+                            int count = 0;
+                            for (int oy = -FEATURE_PATCH; oy <= FEATURE_PATCH; oy++) {
+                                int ay = py + oy, by = qy + oy;
+                                if (ay < 0 || by < 0 || ay >= h || by >= h) continue;
+                                for (int ox = -FEATURE_PATCH; ox <= FEATURE_PATCH; ox++) {
+                                    int ax = px + ox, bx = qx + ox;
+                                    if (ax < 0 || bx < 0 || ax >= w || bx >= w) continue;
+                                    int a = ay * w + ax, b = by * w + bx;
+                                    double va = scale * f[FeatureFrame.VALUES * a + FeatureFrame.FEATURE_VARIANCE + g];
+                                    double vb = scale * f[FeatureFrame.VALUES * b + FeatureFrame.FEATURE_VARIANCE + g];
+                                    for (int i = first; i < first + n; i++) {
+                                        double d = x[FEATURES * a + i] - x[FEATURES * b + i];
+                                        sum += (d * d - (va + Math.min(va, vb))) / (1e-10 + va + vb);
+                                    }
+                                    count += n;
+                                }
+                            }
+                            double weight = Math.exp(-Math.max(0, sum / count));
+                            int q = qy * w + qx;
+                            total += weight;
+                            s0 += weight * x[FEATURES * q + first];
+                            if (n == 3) {
+                                s1 += weight * x[FEATURES * q + first + 1];
+                                s2 += weight * x[FEATURES * q + first + 2];
+                            }
+                        }
+                    }
+                    out[FEATURES * p + first] = s0 / total;
+                    if (n == 3) {
+                        out[FEATURES * p + first + 1] = s1 / total;
+                        out[FEATURES * p + first + 2] = s2 / total;
+                    }
+                }
+            }
+        }
     }
 
     /** Rows a thread denoises at a time: the regression sums of a band are held at once. */
@@ -265,6 +343,9 @@ public final class Denoiser {
         }
     }
 
+    /** Half-width of the neighbourhood a pixel's variance is averaged over (wider measured no better). */
+    private static final int VARIANCE_RADIUS = 1;
+
     /** The variance of each pixel's mean, averaged over its 3x3 neighbourhood: an estimate from few samples is itself noisy. */
     private static double[] smoothedVariance(double[] f, int w, int h) {
         double[] out = new double[3 * w * h];
@@ -272,8 +353,8 @@ public final class Denoiser {
             for (int x = 0; x < w; x++) {
                 double r = 0, g = 0, b = 0;
                 int n = 0;
-                for (int yy = Math.max(0, y - 1); yy <= Math.min(h - 1, y + 1); yy++) {
-                    for (int xx = Math.max(0, x - 1); xx <= Math.min(w - 1, x + 1); xx++) {
+                for (int yy = Math.max(0, y - VARIANCE_RADIUS); yy <= Math.min(h - 1, y + VARIANCE_RADIUS); yy++) {
+                    for (int xx = Math.max(0, x - VARIANCE_RADIUS); xx <= Math.min(w - 1, x + VARIANCE_RADIUS); xx++) {
                         int o = FeatureFrame.VALUES * (yy * w + xx) + FeatureFrame.VARIANCE;
                         r += f[o]; g += f[o + 1]; b += f[o + 2];
                         n++;
@@ -286,12 +367,17 @@ public final class Denoiser {
         return out;
     }
 
+    /** What scales the inverse depth to [0, 1]: one over the frame's largest (0 for a frame of sky). */
+    private static double depthScale(double[] f, int w, int h) {
+        double maxInverse = 0;
+        for (int p = 0; p < w * h; p++) maxInverse = Math.max(maxInverse, f[FeatureFrame.VALUES * p + FeatureFrame.INVERSE_DEPTH]);
+        return maxInverse > 0 ? 1 / maxInverse : 0;
+    }
+
     /** The regression's features per pixel: albedo, normal, and inverse depth scaled to [0, 1] by the frame's largest. */
     private static double[] regressionFeatures(double[] f, int w, int h) {
         int n = w * h;
-        double maxInverse = 0;
-        for (int p = 0; p < n; p++) maxInverse = Math.max(maxInverse, f[FeatureFrame.VALUES * p + FeatureFrame.INVERSE_DEPTH]);
-        double scale = maxInverse > 0 ? 1 / maxInverse : 0;
+        double scale = depthScale(f, w, h);
         double[] x = new double[FEATURES * n];
         for (int p = 0; p < n; p++) {
             int i = FeatureFrame.VALUES * p;

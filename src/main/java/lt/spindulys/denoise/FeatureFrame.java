@@ -9,15 +9,16 @@ import lt.spindulys.limits.HeapBudget;
  * pixel's samples with the same weights as its colour (so edges, depth of field and motion blur
  * match the image): the albedo of the first surface a camera sample hit (r, g, b), its shading
  * normal facing the camera (x, y, z; not renormalised, so a pixel across an edge has a shorter
- * mean), the inverse of its distance (0 for samples that hit nothing), and the variance of the
- * pixel's mean colour per channel (the samples' variance over their count). Row-major, y = 0 the
- * top row. Render threads may write disjoint pixels concurrently; no locking.
+ * mean), the inverse of its distance (0 for samples that hit nothing), the variance of the
+ * pixel's mean colour per channel (the samples' variance over their count), and the variance of
+ * the means of the albedo, the normal (each the mean over its channels) and the inverse depth.
+ * Row-major, y = 0 the top row. Render threads may write disjoint pixels concurrently; no locking.
  */
 public final class FeatureFrame {
-    /** Values kept per pixel: albedo 3, normal 3, inverse depth 1, variance 3. */
-    public static final int VALUES = 10;
+    /** Values kept per pixel: albedo 3, normal 3, inverse depth 1, colour variance 3, feature variance 3. */
+    public static final int VALUES = 13;
     /** Offsets of each kind of value within a pixel's {@link #VALUES}. */
-    public static final int ALBEDO = 0, NORMAL = 3, INVERSE_DEPTH = 6, VARIANCE = 7;
+    public static final int ALBEDO = 0, NORMAL = 3, INVERSE_DEPTH = 6, VARIANCE = 7, FEATURE_VARIANCE = 10;
 
     private final int width, height;
     private final double[] data;
@@ -63,7 +64,7 @@ public final class FeatureFrame {
      *
      * @param x column, 0 at the left
      * @param y row, 0 at the top
-     * @param values albedo, normal, inverse depth, variance of the mean, in the order of the offsets above
+     * @param values albedo, normal, inverse depth, variance of the mean colour, variances of the mean features, in the order of the offsets above
      * @param accumulate add instead of replacing
      * @param divide at least 1
      */
@@ -71,7 +72,7 @@ public final class FeatureFrame {
         int o = VALUES * index(x, y);
         for (int i = 0; i < VALUES; i++) {
             double v = accumulate ? data[o + i] + values[i] : values[i];
-            if (divide != 1) v /= i < VARIANCE ? divide : (double) divide * divide;
+            if (divide != 1) v /= i < VARIANCE ? divide : (double) divide * divide; // the variances: of a mean of divide passes
             data[o + i] = v;
         }
     }

@@ -445,10 +445,11 @@ public final class Renderer {
 
     /**
      * Slots of a thread's feature sums ({@link #gather}): the weighted sums of the seven
-     * features, their plain sums, the plain sums of the colour's squares and of the colour, then
-     * the weights' sum; the first {@link FeatureFrame#VALUES} are reused for the means.
+     * features, their plain sums, the plain sums of the colour's squares and of the colour, the
+     * weights' sum, then the plain sums of the features' squares; the first
+     * {@link FeatureFrame#VALUES} are reused for the means.
      */
-    static final int FEATURE_SUMS = 7 + 7 + 3 + 3 + 1;
+    static final int FEATURE_SUMS = 7 + 7 + 3 + 3 + 1 + 7;
 
     /** Adds one sample's features (the integrator's record of its first hit) and colour to a pixel's sums. */
     private static void gather(double[] f, double[] colour, double weight, double[] sum) {
@@ -460,25 +461,36 @@ public final class Renderer {
             sum[14 + c] += colour[c] * colour[c];
             sum[17 + c] += colour[c];
         }
+        for (int i = 0; i < 7; i++) sum[21 + i] += f[i] * f[i];
         sum[20] += weight;
     }
 
     /**
      * The pixel's feature means from its sums, weighted as its colour is (with the same fall-back
      * to the plain mean when negative weights cancel the rest), and the variance of its mean
-     * colour from the plain sums (for one sample, its square: nothing is known of its noise).
+     * colour from the plain sums (for one sample, its square: nothing is known of its noise),
+     * and of the features' means, per group (albedo, normal: the mean of their channels').
      * Written over the front of {@code sum}.
      */
     private static double[] featureMeans(double[] sum, int n, boolean weighted) {
         double weights = sum[20];
         boolean byWeight = weighted && weights > 0;
         double norm = byWeight ? weights : n;
+        double albedo = 0, normal = 0, depth = 0;
+        for (int i = 0; i < 7; i++) {
+            double s = sum[7 + i], sq = sum[21 + i];
+            double variance = n > 1 ? Math.max(0, sq - s * s / n) / ((double) n * (n - 1)) : 0;
+            if (i < 3) albedo += variance / 3; else if (i < 6) normal += variance / 3; else depth = variance;
+        }
         for (int i = 0; i < 7; i++) sum[i] = (byWeight || !weighted ? sum[i] : sum[7 + i]) / norm;
         for (int c = 0; c < 3; c++) {
             double s = sum[17 + c], sq = sum[14 + c];
             double variance = n > 1 ? Math.max(0, sq - s * s / n) / ((double) n * (n - 1)) : sq;
             sum[FeatureFrame.VARIANCE + c] = variance; // over the plain sums, used above
         }
+        sum[FeatureFrame.FEATURE_VARIANCE] = albedo;
+        sum[FeatureFrame.FEATURE_VARIANCE + 1] = normal;
+        sum[FeatureFrame.FEATURE_VARIANCE + 2] = depth;
         return sum;
     }
 
