@@ -147,6 +147,16 @@ class DenoiserTest {
     }
 
     @Test
+    void aFrameTheHeapCannotDenoiseIsRefusedBeforeAnythingIsAllocated() {
+        Synthetic s = synthetic((x, y) -> 0, new double[] {0.5}, (x, y) -> 0, new double[] {1}, SIGMA, 7);
+        try (lt.spindulys.limits.HeapBudget.Scope cap = lt.spindulys.limits.HeapBudget.cap(Denoiser.bytes(W, H) / 2)) {
+            lt.spindulys.limits.InsufficientMemoryException e = assertThrows(lt.spindulys.limits.InsufficientMemoryException.class,
+                    () -> new Denoiser().denoise(s.noisy(), s.features(), 1));
+            assertTrue(e.getMessage().startsWith("denoising the 48x40 frame needs "), e.getMessage());
+        }
+    }
+
+    @Test
     void featureFramesAverageTimeStepsAndKeepTheVarianceOfTheMean() {
         FeatureFrame f = new FeatureFrame(2, 1);
         double[] v = new double[FeatureFrame.VALUES];
