@@ -229,7 +229,8 @@ public final class Renderer {
     /**
      * {@link #checkFrame(RenderSettings, PixelRegion)} of a render that gathers the denoiser's
      * features when {@code features} is true: a region is then refused ({@link #DENOISE_OF_REGION}),
-     * and the heap must hold the features too.
+     * and the heap must hold the features and the denoiser's buffers too (the albedo pass alone
+     * needs the features only).
      */
     static PixelRegion checkFrame(RenderSettings st, PixelRegion region, boolean features) {
         PixelRegion r = region != null ? region : PixelRegion.whole(st.width(), st.height());
@@ -240,8 +241,12 @@ public final class Renderer {
         try {
             FrameBuffer.checkHeap(r.width(), r.height(), st.aovs());
             if (gathered) {
+                // With --denoise, the denoiser's buffers too: they are taken after the render, and
+                // a frame that cannot be denoised is better refused before hours of rendering.
+                long denoiser = features ? lt.spindulys.denoise.Denoiser.bytes(r.width(), r.height()) : 0;
                 HeapBudget.require(HeapBudget.sum(FrameBuffer.bytesToRender(r.width(), r.height(), st.aovs()),
-                        FeatureFrame.bytes(r.width(), r.height())), "the " + r.width() + "x" + r.height() + " frame with its denoising features");
+                        FeatureFrame.bytes(r.width(), r.height()), denoiser),
+                        "the " + r.width() + "x" + r.height() + " frame with its denoising features" + (features ? " and the denoiser's buffers" : ""));
             }
         } catch (InsufficientMemoryException e) {
             throw e.sizedBy(FRAME_KEY);

@@ -82,6 +82,22 @@ class CliDenoiseTest {
     }
 
     @Test
+    void aFrameThatCannotBeDenoisedIsRefusedBeforeRendering() throws IOException {
+        // 512x512: the frame alone needs 9 MiB (36 bytes a pixel), with the features (104) and the denoiser's buffers (160) 75 MiB.
+        Path scene = dir.resolve("big.dat");
+        Files.writeString(scene, SCENE.replace("settings { width 24 height 16 samples 4 }", "settings { width 512 height 512 }"));
+        CliTest.Run r;
+        try (lt.spindulys.limits.HeapBudget.Scope s = lt.spindulys.limits.HeapBudget.cap(CliHeapLimitsTest.CAP)) {
+            r = CliTest.run(scene.toString(), "-o", dir.resolve("out.png").toString(), "--denoise", "--quiet");
+        }
+        assertEquals(2, r.status(), r.err());
+        assertTrue(r.err().contains("the 512x512 frame with its denoising features and the denoiser's buffers needs 75 MiB of heap, but only 64 MiB"),
+                r.err());
+        assertEquals(1, r.err().lines().count(), r.err());
+        assertEquals(Set.of("big.dat"), CliAovTest.files(dir));
+    }
+
+    @Test
     void oneLineErrors() throws IOException {
         Path scene = scene();
         CliTest.Run noisy = CliTest.run(scene.toString(), "-o", dir.resolve("out.png").toString(), "--keep-noisy");
