@@ -12,8 +12,11 @@ import lt.spindulys.limits.HeapBudget;
  * colours of a window around it on their features (albedo, normal, inverse depth), each
  * neighbour weighted by how alike the colours of the patches around the two pixels are, as far
  * as their noise tells (non-local means with the variance-cancelling distance of Rousselle et
- * al. 2012). This is Bitterli et al.'s NFOR (EGSR 2016) simplified: one bandwidth, no half
- * buffers and no second pass, features not prefiltered.
+ * al. 2012). The features are first smoothed themselves, each by non-local means on its own
+ * variance, so that the chance coverage of an edge by a pixel's samples is not taken for detail.
+ * This is Bitterli et al.'s NFOR (EGSR 2016) simplified: one bandwidth, the noise estimated from
+ * the samples' spread instead of half buffers (measured better here: docs/performance.md), no
+ * second pass.
  *
  * <p>What it keeps: edges and textures that the features show (an albedo edge, a checker, the
  * faces of a box), since the regression follows the features inside the window; detail that
@@ -35,8 +38,14 @@ public final class Denoiser {
     /** Weights below this are not worth a neighbour's work. */
     private static final double MIN_WEIGHT = 1e-4;
 
+    /**
+     * Ridge on the slopes, as a share of the weights' sum, so that a feature that barely varies
+     * in the window (a flat wall's normal) gets no slope fitted to noise.
+     */
+    private static final double RIDGE = 1e-3;
+
     private final int radius, patch;
-    private final double k, ridge;
+    private final double k;
 
     /** The denoiser with the window, patch and bandwidth measured best in docs/performance.md. */
     public Denoiser() {
@@ -65,7 +74,6 @@ public final class Denoiser {
         this.radius = radius;
         this.patch = patch;
         this.k = k;
-        this.ridge = 1e-3;
     }
 
     /**
@@ -282,9 +290,7 @@ public final class Denoiser {
                 int at = SUMS * ((py - y0) * w + px);
                 for (int i = 0; i < UNKNOWNS; i++) for (int j = i; j < UNKNOWNS; j++) a[i * UNKNOWNS + j] = sums[at++];
                 for (int i = 0; i < 3 * UNKNOWNS; i++) b[i] = sums[at++];
-                // Ridge on the slopes, relative to the weights' sum, so a feature that barely varies in
-                // the window (a flat wall's normal) gets no slope fitted to noise.
-                double lambda = ridge * a[0];
+                double lambda = RIDGE * a[0];
                 for (int i = 1; i < UNKNOWNS; i++) a[i * UNKNOWNS + i] += lambda;
                 double r, g, bl;
                 double a0 = a[0];

@@ -210,7 +210,7 @@ class SceneParserTest {
         RenderSettings s = parse("settings { aov object depth  width 10 }").settings();
         assertEquals(EnumSet.of(Aov.DEPTH, Aov.OBJECT), s.aovs());
         assertEquals(10, s.width());
-        assertEquals(EnumSet.allOf(Aov.class), parse("settings { width 10 aov normal depth object}").settings().aovs());
+        assertEquals(EnumSet.allOf(Aov.class), parse("settings { width 10 aov normal depth object albedo}").settings().aovs());
         assertEquals(RenderSettings.builder().aovs(EnumSet.of(Aov.NORMAL)).build(), parse("settings { aov normal }").settings());
     }
 
