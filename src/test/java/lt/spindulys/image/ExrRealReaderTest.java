@@ -130,7 +130,7 @@ class ExrRealReaderTest {
     /** The pixel bytes of an uncompressed scanline file of this test's channels: its blocks without their line and size. */
     private static byte[] pixelBytes(Path none, ExrPrecision precision) throws IOException {
         int colour = precision == ExrPrecision.HALF ? 2 : 4;
-        int line = W * (7 * colour + 2 * 4); // A B G N.X N.Y N.Z R, then Z and objectId as floats
+        int line = W * (10 * colour + 2 * 4); // A B G N.X N.Y N.Z R albedo.B albedo.G albedo.R, and Z and objectId as floats
         byte[] all = Files.readAllBytes(none);
         int start = all.length - H * (8 + line);
         byte[] out = new byte[H * line];
