@@ -19,6 +19,7 @@ module lt.spindulys {
     requires static jdk.incubator.vector;
 
     exports lt.spindulys.camera;
+    exports lt.spindulys.denoise;
     exports lt.spindulys.image;
     exports lt.spindulys.io;
     exports lt.spindulys.material;

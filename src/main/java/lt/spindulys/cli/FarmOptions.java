@@ -99,6 +99,11 @@ final class FarmOptions {
         return false;
     }
 
+    /** Refuses denoising a part of the frame (the option that asked for it named), once all options are read. */
+    void checkDenoise(boolean denoise) throws UsageException {
+        if (denoise && regionOption != null) throw new UsageException(regionOption + ": " + lt.spindulys.render.Renderer.DENOISE_OF_REGION);
+    }
+
     /** Refuses an output a tile cannot be written to, once the output is known. */
     void checkOutput(Path output) throws UsageException {
         if (regionOption == null) return;

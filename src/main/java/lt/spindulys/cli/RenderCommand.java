@@ -55,7 +55,7 @@ final class RenderCommand {
                                     [--subdiv-target PX] [--subdiv-memory MIB] [--subdiv-cache MIB]
                                     [--frame N | --frames A-B[:STEP]] [--skip-existing]
                                     [--quality Q] [--exr-precision half|float] [--exr-compression none|zip|zips]
-                                    [--region X0,X1,Y0,Y1 | --tile I/N] [--progress openjd|plain]
+                                    [--denoise [--keep-noisy]] [--region X0,X1,Y0,Y1 | --tile I/N] [--progress openjd|plain]
                                     [--assets-root DIR]... [--stats] [--quiet] [--debug]
                    render assemble TILE.png... -o OUT [--frame N]                (see render assemble --help)
                    render subdivide MESH.obj|MESH.dat --level N|--scene SCENE.dat -o OUT.obj [...]   (see render subdivide --help)
@@ -87,10 +87,10 @@ final class RenderCommand {
                                  0 for none, every pixel takes them all (default) (overrides the scene)
               --min-samples M    adaptive sampling: samples every pixel takes before its error is first
                                  checked; 0 for max(4, 16 / T^0.3) (64 at 0.01) (overrides the scene)
-              --aov LIST         render passes beside the image, comma-separated: depth, normal, object, noise
-                                 (OUT.depth.pfm, OUT.normal.pfm, OUT.object.png, OUT.noise.pfm; overrides the
-                                 scene); an .exr holds them as its channels Z, Normal.X/Y/Z, IndexOB.X,
-                                 Samples.X and Noise.X instead
+              --aov LIST         render passes beside the image, comma-separated: depth, normal, object, albedo,
+                                 noise (OUT.depth.pfm, OUT.normal.pfm, OUT.object.png, OUT.albedo.pfm,
+                                 OUT.noise.pfm; overrides the scene); an .exr holds them as its channels Z,
+                                 Normal.X/Y/Z, IndexOB.X, Albedo.R/G/B, Samples.X and Noise.X instead
               --shutter OPEN,CLOSE  shutter interval of the motion blur, e.g. 0,1 (overrides the scene)
               --timesteps N      1: one pass, every sample at its own time (default); N > 1: the thesis's
                                  method, N whole-frame passes at fixed times averaged (spp must be a multiple of N)
@@ -99,6 +99,9 @@ final class RenderCommand {
                                  more than the heap can give is capped by it)
               --subdiv-cache MIB the lazy patches' cache, part of the subdivision memory (default 64; shrunk to it)
             """ + FrameOptions.USAGE + """
+              --denoise          denoise the image, guided by the albedo, normal and depth the samples saw
+                                 (whole frames only: not with --region or --tile)
+              --keep-noisy       with --denoise, also write the image as rendered, as OUT.noisy.EXT
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
               --exr-precision P  .exr colour and normals as half (default) or float; depth and object id
                                  are always float
@@ -136,7 +139,7 @@ final class RenderCommand {
     private double quality = ImageOptions.DEFAULT.jpegQuality();
     private ExrPrecision exrPrecision = ImageOptions.DEFAULT.exrPrecision();
     private ExrCompression exrCompression = ImageOptions.DEFAULT.exrCompression();
-    private boolean stats, quiet;
+    private boolean stats, quiet, denoise, keepNoisy;
     private final FarmOptions farm = new FarmOptions();
     private FarmProgress farmProgress;
     /** The job now running, whose step the farm progress reports (several frames: one job each). */
@@ -236,6 +239,8 @@ final class RenderCommand {
                 }
                 case "--frame", "--frames", "--skip-existing" -> i = frames.option(args, i);
                 case "--assets-root" -> assetFolders.add(pathValue(args, ++i, a));
+                case "--denoise" -> denoise = true;
+                case "--keep-noisy" -> keepNoisy = true;
                 case "--stats" -> stats = true;
                 case "--quiet", "-q" -> quiet = true;
                 default -> {
@@ -263,6 +268,8 @@ final class RenderCommand {
             throw new UsageException(e.getMessage());
         }
         farm.checkOutput(output);
+        farm.checkDenoise(denoise);
+        if (keepNoisy && !denoise) throw new UsageException("--keep-noisy keeps the noisy image of a denoised one: give --denoise too");
         assetRoots = assetRoots(assetFolders, env);
     }
 
@@ -398,6 +405,7 @@ final class RenderCommand {
         int n = threads != null ? threads : Runtime.getRuntime().availableProcessors();
         RenderJob job = RenderJob.of(scene).output(item.output()).jpegQuality(quality).exr(exrPrecision, exrCompression).threads(n);
         if (item.frame() != null) job.frame(item.frame());
+        job.denoise(denoise).keepNoisy(keepNoisy);
         farm.apply(job);
         // A farm's manager reads lines; the bar redraws one line in place, for a person at a terminal.
         TerminalProgress bar = farmProgress == null && !quiet && System.console() != null ? new TerminalProgress(err) : null;
@@ -432,6 +440,7 @@ final class RenderCommand {
         if (!quiet) err.println(done);
         if (stats) {
             printStats(out, readSeconds + result.loadSeconds(), warmupSeconds, result.buildSeconds(), result.settings().accelerator(), result.stats(), n);
+            if (result.noisy().isPresent()) out.println(String.format(Locale.ROOT, "denoise: %.2f s", result.denoiseSeconds()));
             for (String line : result.structureStatistics()) out.println(MessageText.escape(line));
             for (String line : result.subdivisionStatistics()) out.println(MessageText.escape(line));
         }
@@ -519,6 +528,7 @@ final class RenderCommand {
         RenderSettings s = result.settings();
         StringBuilder line = new StringBuilder("wrote ").append(output);
         for (Path p : Aov.filesBeside(output, s.aovs())) line.append(", ").append(p);
+        if (result.noisy().isPresent() && result.writesNoisy()) line.append(", ").append(RenderResult.noisyFileBeside(output));
         String part = result.region().map(r -> "region " + r + " of ").orElse("");
         // Adaptive sampling: the samples a pixel took on average, of at most the samples per pixel.
         String spp = s.adaptiveSampling() ? String.format(Locale.ROOT, "%.1f of %d spp adaptive", result.stats().meanSamples(), s.samplesPerPixel())

@@ -9,7 +9,7 @@ import java.util.Set;
 
 /**
  * A render pass (arbitrary output variable) written beside the main image, or as channels of it
- * when it is an OpenEXR file ({@link ExrWriter}). Each is what one extra
+ * when it is an OpenEXR file ({@link ExrWriter}). Each but {@link #ALBEDO} is what one extra
  * camera ray through the exact centre of the pixel sees at its first hit (lens centre, time 0),
  * so the values are exact and do not depend on samples per pixel or thread count; except
  * {@link #NOISE}, which records the pixel's own samples.
@@ -21,6 +21,13 @@ public enum Aov {
     NORMAL("normal", ".normal.pfm"),
     /** Object id + 1 as a 24-bit integer in 8-bit RGB (R = high byte), 0 for the background: PNG, never sRGB-encoded. */
     OBJECT("object", ".object.png"),
+    /**
+     * Albedo of the first surface each camera sample hits (its reflectance, textures included,
+     * 0 0 0 for the background), averaged over the pixel's samples with the same weights as the
+     * colour, so unlike the other passes it is antialiased and shows depth of field and motion
+     * blur as the image does: what a denoiser is guided by. PFM ("PF"); in OpenEXR the channels {@code Albedo.R}, {@code Albedo.G} and {@code Albedo.B}.
+     */
+    ALBEDO("albedo", ".albedo.pfm"),
     /**
      * Adaptive sampling: the samples the pixel took and the estimated relative error of its value
      * when it stopped (0 where one sample leaves nothing to compare): PFM ("PF", R = samples,
@@ -66,7 +73,7 @@ public enum Aov {
      *
      * @param keyword the keyword
      * @return the pass
-     * @throws IllegalArgumentException "unknown AOV 'x' (expected depth, normal, object or noise)"
+     * @throws IllegalArgumentException "unknown AOV 'x' (expected depth, normal, object, albedo or noise)"
      */
     public static Aov fromKeyword(String keyword) {
         for (Aov a : values()) if (a.keyword.equals(keyword)) return a;

@@ -7,8 +7,8 @@ import java.util.Objects;
 import java.util.Set;
 
 /**
- * The render passes of one frame: per pixel the depth, the normal, the object id and the
- * noise (samples taken, estimated error) that {@link Aov} describes, stored only for the passes
+ * The render passes of one frame: per pixel the depth, the normal, the object id, the albedo and
+ * the noise (samples taken, estimated error) that {@link Aov} describes, stored only for the passes
  * requested. Row-major, y = 0 the top row, like
  * {@link FrameBuffer}. Render threads may write disjoint pixels concurrently; no locking.
  */
@@ -18,7 +18,7 @@ public final class AovFrame {
 
     private final int width, height;
     private final Set<Aov> passes;
-    private final double[] depth, normal;
+    private final double[] depth, normal, albedo;
     private final int[] object;
     /** The noise pass: per pixel the samples taken and the estimated error, interleaved; null unless requested. */
     private final double[] noise;
@@ -48,8 +48,9 @@ public final class AovFrame {
         depth = passes.contains(Aov.DEPTH) ? new double[n] : null;
         normal = passes.contains(Aov.NORMAL) ? new double[3 * n] : null;
         object = passes.contains(Aov.OBJECT) ? new int[n] : null;
+        albedo = passes.contains(Aov.ALBEDO) ? new double[3 * n] : null;
         noise = passes.contains(Aov.NOISE) ? new double[2 * n] : null;
-        centreRay = passes.stream().anyMatch(a -> a != Aov.NOISE);
+        centreRay = passes.stream().anyMatch(a -> a != Aov.NOISE && a != Aov.ALBEDO);
         if (depth != null) Arrays.fill(depth, Double.POSITIVE_INFINITY);
         if (object != null) Arrays.fill(object, -1);
     }
@@ -69,9 +70,10 @@ public final class AovFrame {
 
     /**
      * Whether any pass held comes from the extra camera ray through the pixel centre
-     * ({@link #setHit}, {@link #setBackground}); the noise pass alone does not.
+     * ({@link #setHit}, {@link #setBackground}); the noise and albedo passes, which come from the
+     * pixel's samples, do not.
      *
-     * @return true unless the noise pass is the only one
+     * @return true if depth, normal or object is held
      */
     public boolean needsCentreRay() { return centreRay; }
 
@@ -155,6 +157,44 @@ public final class AovFrame {
         if (depth != null) depth[p] = Double.POSITIVE_INFINITY;
         if (normal != null) normal[3 * p] = normal[3 * p + 1] = normal[3 * p + 2] = 0;
         if (object != null) object[p] = -1;
+    }
+
+    /**
+     * Stores the albedo of pixel (x, y), averaged over its samples (see {@link Aov#ALBEDO}).
+     *
+     * @param x column, 0 at the left
+     * @param y row, 0 at the top
+     * @param r red
+     * @param g green
+     * @param b blue
+     */
+    public void setAlbedo(int x, int y, double r, double g, double b) {
+        int p = 3 * index(x, y);
+        double[] a = require(albedo, Aov.ALBEDO);
+        a[p] = r; a[p + 1] = g; a[p + 2] = b;
+    }
+
+    /**
+     * One channel (0 = r, 1 = g, 2 = b) of the albedo pass.
+     *
+     * @param x column, 0 at the left
+     * @param y row, 0 at the top
+     * @param channel 0, 1 or 2
+     * @return the albedo, 0 0 0 for the background
+     */
+    public double albedo(int x, int y, int channel) {
+        Objects.checkIndex(channel, 3);
+        return require(albedo, Aov.ALBEDO)[3 * index(x, y) + channel];
+    }
+
+    /** The albedo pass, three per pixel, row-major, top row first (the backing array, not a copy). */
+    double[] albedoData() { return require(albedo, Aov.ALBEDO); }
+
+    /** The albedo pass as an image. */
+    FrameBuffer albedoImage() {
+        FrameBuffer fb = new FrameBuffer(width, height);
+        System.arraycopy(require(albedo, Aov.ALBEDO), 0, fb.data(), 0, albedo.length);
+        return fb;
     }
 
     /**

@@ -19,11 +19,13 @@ import java.util.zip.Deflater;
  * frame has no coverage), {@code B}, {@code G}, {@code R}; with the normal pass {@code Normal.X},
  * {@code Normal.Y}, {@code Normal.Z}; with the depth pass {@code Z}, OpenEXR's own name for
  * depth, +Infinity where nothing was hit; with the object pass {@code IndexOB.X}, the object's
- * id + 1 and 0 for the background, exact as a float; with the noise pass {@code Samples.X} (the
- * samples a pixel took) and {@code Noise.X} (its estimated relative error). The names are Blender's: its loader shows
+ * id + 1 and 0 for the background, exact as a float; with the albedo pass {@code Albedo.B},
+ * {@code Albedo.G}, {@code Albedo.R}; with the noise pass {@code Samples.X} (the samples a
+ * pixel took) and {@code Noise.X} (its estimated relative error). The names are Blender's: its loader shows
  * the passes as Combined, Depth, Normal and IndexOB (as its own renders name them), and Nuke
- * and OpenImageIO read {@code Z} as depth and each {@code layer.channel} as a layer. Colour and
- * normal follow {@link ImageOptions#exrPrecision()}; depth and object id are always FLOAT.
+ * and OpenImageIO read {@code Z} as depth and each {@code layer.channel} as a layer. Colour,
+ * normal and albedo follow {@link ImageOptions#exrPrecision()}; depth, object id and noise are
+ * always FLOAT.
  *
  * <p>With {@link ExrCompression#ZIP} or {@link ExrCompression#ZIPS} each block's bytes are split
  * into the even-indexed and the odd-indexed ones, each byte replaced by its difference from the
@@ -82,6 +84,12 @@ final class ExrWriter {
             if (aovs.passes().contains(Aov.DEPTH)) {
                 double[] d = aovs.depthData();
                 channels.add(new Channel("Z", false, p -> d[p]));
+            }
+            if (aovs.passes().contains(Aov.ALBEDO)) {
+                double[] a = aovs.albedoData();
+                channels.add(new Channel("Albedo.R", half, p -> a[3 * p]));
+                channels.add(new Channel("Albedo.G", half, p -> a[3 * p + 1]));
+                channels.add(new Channel("Albedo.B", half, p -> a[3 * p + 2]));
             }
             if (aovs.passes().contains(Aov.OBJECT)) {
                 int[] codes = aovs.objectCodes();

@@ -62,6 +62,7 @@ public final class FrameBuffer {
         if (aovs.contains(Aov.NORMAL)) perPixel += 3 * 8 + 3 * 8;
         if (aovs.contains(Aov.OBJECT)) perPixel += 4 + 4 + 8;
         if (aovs.contains(Aov.NOISE)) perPixel += 2 * 8 + 3 * 8;
+        if (aovs.contains(Aov.ALBEDO)) perPixel += 3 * 8 + 3 * 8;
         return HeapBudget.product(Math.max(0, width), Math.max(0, height), perPixel);
     }
 

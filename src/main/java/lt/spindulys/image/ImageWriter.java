@@ -110,6 +110,7 @@ public final class ImageWriter {
      *   <li>depth: one-channel PFM ("Pf"), little-endian, bottom row first, 32-bit float
      *       distances, +Infinity where no object was hit;</li>
      *   <li>normal: three-channel PFM ("PF"), the x, y, z of the unit normal, 0 0 0 for the background;</li>
+     *   <li>albedo: three-channel PFM ("PF"), r, g, b;</li>
      *   <li>object: 8-bit RGB PNG of id + 1 as a 24-bit integer, R the high byte, 0 0 0 for the
      *       background; never sRGB-encoded, whatever {@code opts} says.</li>
      * </ul>
@@ -124,27 +125,55 @@ public final class ImageWriter {
      *         infinite as a float (an internal error: nothing is written)
      */
     public static void write(FrameBuffer fb, Path out, ImageOptions opts, AovFrame aovs) throws IOException {
+        write(fb, out, opts, aovs, java.util.Map.of());
+    }
+
+    /**
+     * {@link #write(FrameBuffer, Path, ImageOptions, AovFrame)} with more images of the same
+     * format in the same atomic group, such as the noisy frame beside a denoised one; each is
+     * encoded as {@link #encoder} encodes it, without passes.
+     *
+     * @param fb the image
+     * @param out the output path; its extension names the format
+     * @param opts the encoding options
+     * @param aovs the passes, or null
+     * @param beside more images, by the path each is written to
+     * @throws IOException if writing fails; no file is then changed
+     */
+    public static void write(FrameBuffer fb, Path out, ImageOptions opts, AovFrame aovs, java.util.Map<Path, FrameBuffer> beside) throws IOException {
         Objects.requireNonNull(fb, "fb");
         Objects.requireNonNull(opts, "opts");
         if (aovs != null && aovs.passes().contains(Aov.NORMAL)) checkFinite(aovs.width(), aovs.normalData(), 3);
+        List<Path> files = new ArrayList<>();
+        List<AtomicFile.Body> bodies = new ArrayList<>();
+        for (java.util.Map.Entry<Path, FrameBuffer> e : beside.entrySet()) {
+            IoConsumer<OutputStream> more = encoder(e.getValue(), e.getKey(), opts);
+            files.add(e.getKey());
+            bodies.add(more::accept);
+        }
         if (checkFormat(out) == ImageFormat.EXR) {
             checkFinite(fb.width(), fb.data(), 3);
             // One file holds the image and its passes as channels: nothing is written beside it.
             IoConsumer<OutputStream> exr = ExrWriter.encoder(fb, aovs, opts);
-            AtomicFile.write(out, exr::accept);
+            if (files.isEmpty()) {
+                AtomicFile.write(out, exr::accept);
+            } else {
+                files.add(0, out);
+                bodies.add(0, exr::accept);
+                AtomicFile.writeAll(files, bodies);
+            }
             return;
         }
         IoConsumer<OutputStream> image = encoder(fb, out, opts);
-        List<Path> files = new ArrayList<>();
-        List<AtomicFile.Body> bodies = new ArrayList<>();
-        files.add(out);
-        bodies.add(image::accept);
+        files.add(0, out);
+        bodies.add(0, image::accept);
         if (aovs != null) {
             for (Aov a : aovs.passes()) {
                 files.add(a.fileBeside(out));
                 switch (a) {
                     case DEPTH: bodies.add(os -> writeGreyPfm(aovs.width(), aovs.height(), aovs.depthData(), os)); break;
                     case NORMAL: bodies.add(os -> writePfm(aovs.normalImage(), os)); break;
+                    case ALBEDO: bodies.add(os -> writePfm(aovs.albedoImage(), os)); break;
                     case OBJECT: {
                         int[] codes = aovs.objectCodes(); // checked before anything is written
                         bodies.add(os -> writeImageIo(aovs.width(), aovs.height(), codes, opts, "png", os));

@@ -11,6 +11,8 @@ import java.util.function.Consumer;
 import java.util.function.UnaryOperator;
 
 import lt.spindulys.camera.Camera;
+import lt.spindulys.denoise.Denoiser;
+import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.image.ImageOptions;
 import lt.spindulys.image.ImageWriter;
 import lt.spindulys.image.PixelRegion;
@@ -76,6 +78,8 @@ public final class RenderJob {
     private int threads = Runtime.getRuntime().availableProcessors();
     private ProgressListener progress;
     private TileListener tiles;
+    /** Whether the frame is denoised ({@link #denoise}), and the noisy one written beside it ({@link #keepNoisy}). */
+    private boolean denoise, keepNoisy;
     /** The region to render for a frame's width and height; null: the whole frame. */
     private RegionOf regionOf;
     private final AtomicBoolean cancelled = new AtomicBoolean();
@@ -303,6 +307,36 @@ public final class RenderJob {
         return this;
     }
 
+    /**
+     * Denoises the frame before it is written: the render gathers albedo, normal, depth and
+     * the variance of each pixel beside the colour, and {@link lt.spindulys.denoise.Denoiser}
+     * filters the colour with them (on as many threads as the render). For whole frames only:
+     * a region or tile is refused ({@link Renderer#DENOISE_OF_REGION}). The result's
+     * {@link RenderResult#noisy()} keeps the frame as rendered.
+     *
+     * @param on true to denoise
+     * @return this job
+     */
+    public RenderJob denoise(boolean on) {
+        configurable(false);
+        denoise = on;
+        return this;
+    }
+
+    /**
+     * With {@link #denoise}, also writes the frame as rendered beside the denoised one, as
+     * {@link RenderResult#noisyFileBeside} names it ({@code out.png} gives {@code out.noisy.png}),
+     * in the same atomic group. Without denoising it has no effect.
+     *
+     * @param on true to write the noisy frame too
+     * @return this job
+     */
+    public RenderJob keepNoisy(boolean on) {
+        configurable(false);
+        keepNoisy = on;
+        return this;
+    }
+
     /** Asks the job to stop: a running render stops between tiles, and the run throws {@link CancellationException}. */
     public void cancel() { cancelled.set(true); }
 
@@ -400,8 +434,8 @@ public final class RenderJob {
             enter(Stage.SETTINGS);
             RenderSettings s = scene.settings();
             PixelRegion region = regionOf == null ? null : regionOf.of(s.width(), s.height());
-            Renderer.checkFrame(s, region);
-            if (output != null) ImageWriter.checkPassOutputs(output, s.aovs()); // the image itself was checked first
+            Renderer.checkFrame(s, region, denoise);
+            if (output != null) checkPassOutputs(s);
             return new Checked(scene, null, s, null, region, 0);
         }
         long t0 = System.nanoTime();
@@ -417,15 +451,24 @@ public final class RenderJob {
         }
         PixelRegion region = regionOf == null ? null : regionOf.of(s.width(), s.height());
         // The frame is asked for by input: checked before anything is built for it.
-        Renderer.checkFrame(s, region);
+        Renderer.checkFrame(s, region, denoise);
         if (output != null) {
-            ImageWriter.checkPassOutputs(output, s.aovs()); // the image itself was checked first
+            checkPassOutputs(s);
             checkNotInput(output, s.aovs(), b.inputFiles());
+            if (writesNoisy()) InputFile.checkOutput(RenderResult.noisyFileBeside(output), b.inputFiles());
         }
         Camera c = cameraOverride == null ? b.camera()
                 : cameraOverride.apply(b.camera() != null ? b.camera() : SceneBuilder.DEFAULT_CAMERA);
         return new Checked(null, b, s, c, region, load);
     }
+
+    /** The passes' files and the noisy image's can be written (the image itself was checked first). */
+    private void checkPassOutputs(RenderSettings s) throws IOException {
+        ImageWriter.checkPassOutputs(output, s.aovs());
+        if (writesNoisy()) lt.spindulys.files.AtomicFile.checkWritable(RenderResult.noisyFileBeside(output));
+    }
+
+    private boolean writesNoisy() { return denoise && keepNoisy && output != null; }
 
     private RenderResult runStarted() throws IOException, InterruptedException {
         Checked c = checked != null ? checked : prepare();
@@ -440,7 +483,13 @@ public final class RenderJob {
             build = (System.nanoTime() - t1) / 1e9;
         }
         enter(Stage.RENDER);
-        RenderResult result = Renderer.render(built, threads, progress, cancelled, tiles, c.region()).withTimes(c.load(), build).ofFrame(frame);
+        RenderResult result = Renderer.render(built, threads, progress, cancelled, tiles, c.region(), denoise).withTimes(c.load(), build).ofFrame(frame);
+        if (denoise) {
+            enter(Stage.RENDER);
+            long t2 = System.nanoTime();
+            FrameBuffer clean = new Denoiser().denoise(result.frame(), result.features().orElseThrow(), threads);
+            result = result.denoised(clean, keepNoisy, (System.nanoTime() - t2) / 1e9);
+        }
         if (output != null) {
             enter(Stage.WRITE);
             result.write(output, imageOptions);

@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.Objects;
 import java.util.Optional;
 
+import lt.spindulys.denoise.FeatureFrame;
 import lt.spindulys.image.AovFrame;
 import lt.spindulys.image.FrameBuffer;
 import lt.spindulys.image.ImageOptions;
@@ -31,6 +32,11 @@ public final class RenderResult {
     /** The animation frame rendered, or null for a still: recorded in a tile's placement. */
     private final Integer animationFrame;
     private final java.util.List<String> subdivision, structures;
+    /** The denoiser's features (null: not gathered), the frame before denoising (null: not denoised). */
+    private final FeatureFrame features;
+    private final FrameBuffer noisy;
+    private final boolean writeNoisy;
+    private final double denoiseSeconds;
 
     RenderResult(RenderSettings settings, FrameBuffer frame, AovFrame passes, RenderStats stats, java.util.List<String> subdivision,
                  java.util.List<String> structures) {
@@ -39,12 +45,16 @@ public final class RenderResult {
 
     private RenderResult(RenderSettings settings, FrameBuffer frame, AovFrame passes, RenderStats stats, java.util.List<String> subdivision,
                          java.util.List<String> structures, double loadSeconds, double buildSeconds) {
-        this(settings, frame, passes, stats, subdivision, structures, loadSeconds, buildSeconds, null, null);
+        this(settings, frame, passes, stats, subdivision, structures, loadSeconds, buildSeconds, null, null, null, null, false, 0);
     }
 
     private RenderResult(RenderSettings settings, FrameBuffer frame, AovFrame passes, RenderStats stats, java.util.List<String> subdivision,
                          java.util.List<String> structures, double loadSeconds, double buildSeconds, PixelRegion region,
-                         Integer animationFrame) {
+                         Integer animationFrame, FeatureFrame features, FrameBuffer noisy, boolean writeNoisy, double denoiseSeconds) {
+        this.features = features;
+        this.noisy = noisy;
+        this.writeNoisy = writeNoisy;
+        this.denoiseSeconds = denoiseSeconds;
         this.region = region;
         this.animationFrame = animationFrame;
         this.subdivision = java.util.List.copyOf(subdivision);
@@ -59,17 +69,76 @@ public final class RenderResult {
 
     /** This result with the times a job spent before rendering. */
     RenderResult withTimes(double load, double build) {
-        return new RenderResult(settings, frame, passes, stats, subdivision, structures, load, build, region, animationFrame);
+        return new RenderResult(settings, frame, passes, stats, subdivision, structures, load, build, region, animationFrame,
+                features, noisy, writeNoisy, denoiseSeconds);
     }
 
     /** This result as the render of {@code part} of the frame its settings describe (null: a render of the frame, not of a region). */
     RenderResult inRegion(PixelRegion part) {
-        return new RenderResult(settings, frame, passes, stats, subdivision, structures, loadSeconds, buildSeconds, part, animationFrame);
+        return new RenderResult(settings, frame, passes, stats, subdivision, structures, loadSeconds, buildSeconds, part, animationFrame,
+                features, noisy, writeNoisy, denoiseSeconds);
     }
 
     /** This result as the render of animation frame {@code n} (null: a still). */
     RenderResult ofFrame(Integer n) {
-        return new RenderResult(settings, frame, passes, stats, subdivision, structures, loadSeconds, buildSeconds, region, n);
+        return new RenderResult(settings, frame, passes, stats, subdivision, structures, loadSeconds, buildSeconds, region, n,
+                features, noisy, writeNoisy, denoiseSeconds);
+    }
+
+    /** This result with the denoiser's features gathered beside the frame (null: none). */
+    RenderResult withFeatures(FeatureFrame f) {
+        return new RenderResult(settings, frame, passes, stats, subdivision, structures, loadSeconds, buildSeconds, region, animationFrame,
+                f, noisy, writeNoisy, denoiseSeconds);
+    }
+
+    /**
+     * This result with {@code denoised} as its frame and the frame as it was kept as the noisy
+     * one, written beside the image ({@link #noisyFileBeside}) when {@code writeNoisy}.
+     */
+    RenderResult denoised(FrameBuffer denoised, boolean writeNoisy, double seconds) {
+        return new RenderResult(settings, denoised, passes, stats, subdivision, structures, loadSeconds, buildSeconds, region, animationFrame,
+                features, frame, writeNoisy, seconds);
+    }
+
+    /**
+     * The denoiser's features, when the render gathered them ({@link RenderJob#denoise}).
+     *
+     * @return the features, or empty
+     */
+    public Optional<FeatureFrame> features() { return Optional.ofNullable(features); }
+
+    /**
+     * The frame as rendered, before denoising, when it was denoised; {@link #frame()} is then the denoised one.
+     *
+     * @return the noisy frame, or empty when the frame was not denoised
+     */
+    public Optional<FrameBuffer> noisy() { return Optional.ofNullable(noisy); }
+
+    /**
+     * Whether {@link #write(Path)} writes the noisy frame beside the denoised one.
+     *
+     * @return true for a denoised render whose noisy frame was kept
+     */
+    public boolean writesNoisy() { return writeNoisy && noisy != null; }
+
+    /**
+     * Seconds the denoiser took (0 when the frame was not denoised).
+     *
+     * @return seconds, at least 0
+     */
+    public double denoiseSeconds() { return denoiseSeconds; }
+
+    /**
+     * The file the noisy frame is written to beside {@code out}: {@code .noisy} before its
+     * extension, so {@code out.png} gives {@code out.noisy.png} (same format, no passes).
+     *
+     * @param out the image's path
+     * @return the noisy image's path
+     */
+    public static Path noisyFileBeside(Path out) {
+        String name = out.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        return out.resolveSibling(dot > 0 ? name.substring(0, dot) + ".noisy" + name.substring(dot) : name + ".noisy");
     }
 
     /**
@@ -165,7 +234,8 @@ public final class RenderResult {
     /**
      * Writes the image to {@code out} in the format its extension names (.png, .jpg/.jpeg, .tga,
      * .pfm, .exr), sRGB-encoded as the scene says, with each render pass beside it
-     * ({@link lt.spindulys.image.Aov#filesBeside}) or, in an .exr, as its channels; all files are written atomically as one group,
+     * ({@link lt.spindulys.image.Aov#filesBeside}) or, in an .exr, as its channels, and the noisy
+     * frame of a denoised render when it was kept ({@link #noisyFileBeside}); all files are written atomically as one group,
      * so a failure leaves none of the new files and every old one. The render of a
      * {@link #region()} is written as a PNG tile that records its place ({@link TileFile}).
      *
@@ -201,7 +271,7 @@ public final class RenderResult {
     public void write(Path out, ImageOptions options) throws IOException {
         ImageOptions opts = options.withSrgb(settings.srgb());
         if (region == null) {
-            ImageWriter.write(frame, out, opts, passes);
+            ImageWriter.write(frame, out, opts, passes, writeNoisy && noisy != null ? java.util.Map.of(noisyFileBeside(out), noisy) : java.util.Map.of());
             return;
         }
         checkTileOutput(out);

@@ -13,6 +13,7 @@ import java.util.function.BooleanSupplier;
 import lt.spindulys.accel.TraversalScratch;
 import lt.spindulys.camera.Camera;
 import lt.spindulys.camera.LensPattern;
+import lt.spindulys.denoise.FeatureFrame;
 import lt.spindulys.image.Aov;
 import lt.spindulys.image.AovFrame;
 import lt.spindulys.image.FrameBuffer;
@@ -163,14 +164,26 @@ public final class Renderer {
      */
     static RenderResult render(Scene scene, int threads, ProgressListener listener, AtomicBoolean cancelled, TileListener tileListener,
                                PixelRegion region) throws InterruptedException {
+        return render(scene, threads, listener, cancelled, tileListener, region, false);
+    }
+
+    /**
+     * {@link #render(Scene, int, ProgressListener, AtomicBoolean, TileListener, PixelRegion)},
+     * gathering the denoiser's {@link FeatureFrame} beside the colour when {@code features} is
+     * true (whole frames only: the render of a region refuses it). The albedo pass is gathered
+     * so whether asked or not.
+     */
+    static RenderResult render(Scene scene, int threads, ProgressListener listener, AtomicBoolean cancelled, TileListener tileListener,
+                               PixelRegion region, boolean gatherFeatures) throws InterruptedException {
         ProgressListener progress = listener != null ? listener : ProgressListener.NONE;
         if (threads < 1) throw new IllegalArgumentException("threads must be at least 1, found " + threads);
         RenderSettings st = scene.settings();
         int w = st.width(), h = st.height();
-        PixelRegion r = checkFrame(st, region); // the frame is asked for by input: checked before it is allocated
+        PixelRegion r = checkFrame(st, region, gatherFeatures); // the frame is asked for by input: checked before it is allocated
         int rw = r.width(), rh = r.height();
         FrameBuffer fb = new FrameBuffer(rw, rh);
         AovFrame aovs = st.aovs().isEmpty() ? null : new AovFrame(w, h, st.aovs());
+        FeatureFrame features = gatherFeatures || st.aovs().contains(Aov.ALBEDO) ? new FeatureFrame(w, h) : null;
         int tilesX = (rw + TILE - 1) / TILE, tilesY = (rh + TILE - 1) / TILE, tiles = tilesX * tilesY;
         Integrator integrator = Integrator.of(scene);
         int steps = st.timeSteps(); // a multiple of the samples: the scene checked it when built
@@ -182,11 +195,19 @@ public final class Renderer {
                     : new Pass(st.samplesPerPixel() / steps, passSeed(st.seed(), k), st.shutterTime((k + 0.5) / steps), k > 0, k == steps - 1 ? steps : 1);
             long done = (long) k * rw * rh, total = (long) steps * rw * rh;
             ProgressListener p = (pixels, all) -> progress.progress(done + pixels, total);
-            long[] c = renderPass(scene, threads, p, integrator, fb, k == 0 ? aovs : null, pass, r, tilesX, tiles, cancelled,
+            long[] c = renderPass(scene, threads, p, integrator, fb, k == 0 ? aovs : null, features, pass, r, tilesX, tiles, cancelled,
                     k == steps - 1 ? tileListener : null);
             for (int i = 0; i < COUNTS; i++) sum[i] += c[i];
         }
         double seconds = (System.nanoTime() - start) / 1e9;
+        if (aovs != null && aovs.passes().contains(Aov.ALBEDO)) {
+            for (int y = 0; y < h; y++) {
+                for (int x = 0; x < w; x++) {
+                    aovs.setAlbedo(x, y, features.get(x, y, FeatureFrame.ALBEDO), features.get(x, y, FeatureFrame.ALBEDO + 1),
+                            features.get(x, y, FeatureFrame.ALBEDO + 2));
+                }
+            }
+        }
         List<String> adaptive = new ArrayList<>(scene.adaptiveStatistics());
         long triangles = scene.adaptiveTriangleCount();
         if (triangles > 0) {
@@ -198,7 +219,7 @@ public final class Renderer {
         double meanSamples = (double) sum[PIXEL_SAMPLES] / ((long) rw * rh);
         return new RenderResult(st, fb, aovs, new RenderStats(sum[0], sum[1], sum[2], sum[3], seconds,
                 TraversalScratch.COUNTING ? TraversalCounts.of(sum, 5) : null, meanSamples), adaptive, scene.structureStatistics())
-                .inRegion(region);
+                .inRegion(region).withFeatures(gatherFeatures ? features : null);
     }
 
     /**
@@ -215,16 +236,44 @@ public final class Renderer {
      *         if the heap cannot hold the frame and its passes
      */
     static PixelRegion checkFrame(RenderSettings st, PixelRegion region) {
+        return checkFrame(st, region, false);
+    }
+
+    /**
+     * {@link #checkFrame(RenderSettings, PixelRegion)} of a render that gathers the denoiser's
+     * features when {@code features} is true: a region is then refused ({@link #DENOISE_OF_REGION}),
+     * and the heap must hold the features and the denoiser's buffers too (the albedo pass alone
+     * needs the features only).
+     */
+    static PixelRegion checkFrame(RenderSettings st, PixelRegion region, boolean features) {
         PixelRegion r = region != null ? region : PixelRegion.whole(st.width(), st.height());
         r.checkInside(st.width(), st.height());
         if (region != null && !st.aovs().isEmpty()) throw new IllegalArgumentException(PASSES_OF_REGION);
+        if (region != null && features) throw new IllegalArgumentException(DENOISE_OF_REGION);
+        boolean gathered = features || st.aovs().contains(Aov.ALBEDO);
         try {
             FrameBuffer.checkHeap(r.width(), r.height(), st.aovs());
+            if (gathered) {
+                // With --denoise, the denoiser's buffers too: they are taken after the render, and
+                // a frame that cannot be denoised is better refused before hours of rendering.
+                long denoiser = features ? lt.spindulys.denoise.Denoiser.bytes(r.width(), r.height()) : 0;
+                HeapBudget.require(HeapBudget.sum(FrameBuffer.bytesToRender(r.width(), r.height(), st.aovs()),
+                        FeatureFrame.bytes(r.width(), r.height()), denoiser),
+                        "the " + r.width() + "x" + r.height() + " frame with its denoising features" + (features ? " and the denoiser's buffers" : ""));
+            }
         } catch (InsufficientMemoryException e) {
             throw e.sizedBy(FRAME_KEY);
         }
         return r;
     }
+
+    /**
+     * Why denoising a region is refused: the denoiser reads a window of pixels around each, so
+     * a region's border pixels would differ from the whole frame's and the tiles would not
+     * assemble into the denoised frame.
+     */
+    public static final String DENOISE_OF_REGION = "--denoise needs the whole frame (a denoised pixel depends on its neighbours,"
+            + " so denoised tiles would not assemble into the denoised frame): render the tiles without it";
 
     /** The {@link InsufficientMemoryException#key() key} of a frame the heap cannot hold. */
     public static final String FRAME_KEY = "frame";
@@ -253,7 +302,7 @@ public final class Renderer {
 
     /** Renders one pass on {@code threads} threads; returns its ray counts (camera, shadow, reflection, refraction). */
     private static long[] renderPass(Scene scene, int threads, ProgressListener progress, Integrator integrator, FrameBuffer fb,
-                                     AovFrame aovs, Pass pass, PixelRegion region, int tilesX, int tiles, AtomicBoolean cancelled,
+                                     AovFrame aovs, FeatureFrame features, Pass pass, PixelRegion region, int tilesX, int tiles, AtomicBoolean cancelled,
                                      TileListener tileListener)
             throws InterruptedException {
         RenderSettings st = scene.settings();
@@ -310,12 +359,14 @@ public final class Renderer {
                         Ray ray = new Ray();
                         double[] colour = new double[4];
                         NoiseEstimate noise = new NoiseEstimate();
+                        double[] fsum = features != null ? new double[FEATURE_SUMS] : null;
+                        own.recordFeatures = features != null;
                         for (int next; !stop.getAsBoolean() && (next = nextTile.getAndIncrement()) < tiles; ) {
                             int t = tileAt(next, tiles, stride);
                             // In the frame buffer's coordinates (the region's), then traced at the frame's.
                             int x0 = (t % tilesX) * TILE, y0 = (t / tilesX) * TILE;
                             int x1 = Math.min(x0 + TILE, region.width()), y1 = Math.min(y0 + TILE, region.height());
-                            if (!renderTile(scene.camera(), integrator, st, pass, rounds, ps, noise, own, ray, colour, fb, aovs, region.x0(), region.y0(),
+                            if (!renderTile(scene.camera(), integrator, st, pass, rounds, ps, noise, own, ray, colour, fb, aovs, features, fsum, region.x0(), region.y0(),
                                     x0, y0, x1, y1, stop, taken)) return;
                             if (tileListener != null) tileListener.tileDone(fb, x0, y0, x1, y1);
                             progress.progress(donePixels.addAndGet((long) (x1 - x0) * (y1 - y0)), pixels);
@@ -367,7 +418,7 @@ public final class Renderer {
      */
     private static boolean renderTile(Camera camera, Integrator integrator, RenderSettings st, Pass pass, SampleRounds rounds,
                                       PixelSampler[] samplers, NoiseEstimate noise, TracerScratch scratch, Ray ray, double[] colour,
-                                      FrameBuffer fb, AovFrame aovs, int ox, int oy, int fx0, int fy0, int fx1, int fy1,
+                                      FrameBuffer fb, AovFrame aovs, FeatureFrame features, double[] fsum, int ox, int oy, int fx0, int fy0, int fx1, int fy1,
                                       BooleanSupplier stop, long[] taken) {
         int w = st.width(), h = st.height(), fw = fb.width();
         double aspect = st.aspect(), threshold = st.noiseThreshold();
@@ -387,6 +438,7 @@ public final class Renderer {
                 double r = 0, g = 0, b = 0, weights = 0, plainR = 0, plainG = 0, plainB = 0;
                 int n = 0;
                 noise.reset();
+                if (features != null) java.util.Arrays.fill(fsum, 0);
                 for (int k = 0; k <= last; k++) {
                     int size = rounds.size(k);
                     PixelSampler sampler = samplers[k];
@@ -401,6 +453,7 @@ public final class Renderer {
                                 sampler.lensU(i), sampler.lensV(i), time, ray);
                         scratch.setSample(seed, x, y, i, size);
                         integrator.traceCamera(ray, scratch, colour);
+                        if (features != null) gather(scratch.features, colour, weighted ? sampler.weight(i) : 1, fsum);
                         if (weighted) {
                             double wt = sampler.weight(i);
                             r += wt * colour[0]; g += wt * colour[1]; b += wt * colour[2];
@@ -437,6 +490,7 @@ public final class Renderer {
                 }
                 if (pass.divide != 1) { r /= pass.divide; g /= pass.divide; b /= pass.divide; }
                 fb.set(fx, fy, r, g, b);
+                if (features != null) features.put(x, y, featureMeans(fsum, n, weighted), pass.accumulate, pass.divide);
                 if (aovs != null) aovs.setNoise(x, y, n, noise.error());
                 if (centreRay) {
                     // One more ray, through the exact pixel centre from the lens centre when the
@@ -459,6 +513,57 @@ public final class Renderer {
         int j = 0;
         while (rounds.size(j) != rounds.size(k)) j++;
         return j;
+    }
+
+    /**
+     * Slots of a thread's feature sums ({@link #gather}): the weighted sums of the seven
+     * features, their plain sums, the plain sums of the colour's squares and of the colour, the
+     * weights' sum, then the plain sums of the features' squares; the first
+     * {@link FeatureFrame#VALUES} are reused for the means.
+     */
+    static final int FEATURE_SUMS = 7 + 7 + 3 + 3 + 1 + 7;
+
+    /** Adds one sample's features (the integrator's record of its first hit) and colour to a pixel's sums. */
+    private static void gather(double[] f, double[] colour, double weight, double[] sum) {
+        for (int i = 0; i < 7; i++) {
+            sum[i] += weight * f[i];
+            sum[7 + i] += f[i];
+        }
+        for (int c = 0; c < 3; c++) {
+            sum[14 + c] += colour[c] * colour[c];
+            sum[17 + c] += colour[c];
+        }
+        for (int i = 0; i < 7; i++) sum[21 + i] += f[i] * f[i];
+        sum[20] += weight;
+    }
+
+    /**
+     * The pixel's feature means from its sums, weighted as its colour is (with the same fall-back
+     * to the plain mean when negative weights cancel the rest), and the variance of its mean
+     * colour from the plain sums (for one sample, its square: nothing is known of its noise),
+     * and of the features' means, per group (albedo, normal: the mean of their channels').
+     * Written over the front of {@code sum}.
+     */
+    private static double[] featureMeans(double[] sum, int n, boolean weighted) {
+        double weights = sum[20];
+        boolean byWeight = weighted && weights > 0;
+        double norm = byWeight ? weights : n;
+        double albedo = 0, normal = 0, depth = 0;
+        for (int i = 0; i < 7; i++) {
+            double s = sum[7 + i], sq = sum[21 + i];
+            double variance = n > 1 ? Math.max(0, sq - s * s / n) / ((double) n * (n - 1)) : 0;
+            if (i < 3) albedo += variance / 3; else if (i < 6) normal += variance / 3; else depth = variance;
+        }
+        for (int i = 0; i < 7; i++) sum[i] = (byWeight || !weighted ? sum[i] : sum[7 + i]) / norm;
+        for (int c = 0; c < 3; c++) {
+            double s = sum[17 + c], sq = sum[14 + c];
+            double variance = n > 1 ? Math.max(0, sq - s * s / n) / ((double) n * (n - 1)) : sq;
+            sum[FeatureFrame.VARIANCE + c] = variance; // over the plain sums, used above
+        }
+        sum[FeatureFrame.FEATURE_VARIANCE] = albedo;
+        sum[FeatureFrame.FEATURE_VARIANCE + 1] = normal;
+        sum[FeatureFrame.FEATURE_VARIANCE + 2] = depth;
+        return sum;
     }
 
     /** Samples of a pixel between two looks at whether the render must stop: a power of two. */

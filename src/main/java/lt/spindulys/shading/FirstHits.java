@@ -2,6 +2,7 @@ package lt.spindulys.shading;
 
 import lt.spindulys.accel.TraversalScratch;
 import lt.spindulys.camera.PixelFootprint;
+import lt.spindulys.material.Material;
 import lt.spindulys.math.Ray;
 import lt.spindulys.scene.Scene;
 import lt.spindulys.texture.Channel;
@@ -66,6 +67,46 @@ final class FirstHits {
         out[0] = hit.t * dlen;
         out[1] = nx; out[2] = ny; out[3] = nz;
         return hit.object.id();
+    }
+
+    /**
+     * Records the first hit of a camera ray in {@link TracerScratch#features} when asked to:
+     * the albedo (a principled material's base colour; a Whitted one's kd colour + kr + kt
+     * filter, each channel clamped to 1: the tint of what it reflects and transmits, so a mirror
+     * or glass has an albedo too, its specular tint, instead of OIDN's following the path to
+     * the next rough surface), the shading normal n (facing the ray) and 1 / distance.
+     * The vertex's textured terms must be evaluated.
+     */
+    static void record(TracerScratch s, Material m, TracerScratch.PathVertex v, double nx, double ny, double nz, double distance) {
+        double[] f = s.features;
+        if (m.model() == Material.Model.PRINCIPLED) {
+            f[0] = v.colourR; f[1] = v.colourG; f[2] = v.colourB;
+        } else {
+            double kd = m.kd(), kr = v.kr, kt = v.kt;
+            lt.spindulys.math.Color filter = m.filter();
+            f[0] = Math.min(1, kd * v.colourR + kr + kt * filter.r());
+            f[1] = Math.min(1, kd * v.colourG + kr + kt * filter.g());
+            f[2] = Math.min(1, kd * v.colourB + kr + kt * filter.b());
+        }
+        f[3] = nx; f[4] = ny; f[5] = nz;
+        f[6] = distance > 0 ? 1 / distance : 0;
+    }
+
+    /**
+     * {@link #record} for a camera ray along unit direction d that hit {@code sd} at {@code distance},
+     * when asked to: the normal turned towards the ray by the rule shading uses.
+     */
+    static void recordHit(TracerScratch s, TracerScratch.PathVertex v, ShadingData sd, double dx, double dy, double dz, double distance) {
+        if (!s.recordFeatures) return;
+        double sign = sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz < 0 ? 1 : -1;
+        double nx = sign * sd.ns[0], ny = sign * sd.ns[1], nz = sign * sd.ns[2];
+        if (nx * dx + ny * dy + nz * dz >= 0) { nx = sign * sd.ng[0]; ny = sign * sd.ng[1]; nz = sign * sd.ng[2]; }
+        record(s, sd.material, v, nx, ny, nz, distance);
+    }
+
+    /** Records, when asked, that a camera ray saw no surface (the sky, the background or a light's surface). */
+    static void recordNothing(TracerScratch s) {
+        if (s.recordFeatures) java.util.Arrays.fill(s.features, 0);
     }
 
     /** World-space width of the pixel's footprint at a hit a path of this length reaches along unit direction d. */

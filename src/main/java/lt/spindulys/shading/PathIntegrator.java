@@ -172,10 +172,12 @@ public final class PathIntegrator implements Integrator {
                     c[0] = seen[0] * w; c[1] = seen[1] * w; c[2] = seen[2] * w;
                     if (medium != null) WhittedIntegrator.attenuate(medium, seen[3] * dlen, c);
                     add(beta, c, indirect ? late : sum);
+                    if (segment == 0) FirstHits.recordNothing(s);
                     break;
                 }
             }
             if (!found) {
+                if (segment == 0) FirstHits.recordNothing(s);
                 // Camera rays see the environment as its camera view says; later segments see the map.
                 if (environment != null && segment == 0) environment.lookupFromCamera(dx, dy, dz, settings.background(), c);
                 else if (environment != null) environment.lookup(dx, dy, dz, c);
@@ -193,6 +195,7 @@ public final class PathIntegrator implements Integrator {
             Material m = sd.material;
             travelled += hit.t * dlen;
             TextureShading.evaluate(m, sd, m.isTextured() ? firstHits.footprint(sd, travelled, dx, dy, dz) : 0, s, v);
+            if (segment == 0) FirstHits.recordHit(s, v, sd, dx, dy, dz, travelled);
             if (medium != null && medium.attenuates()) {
                 WhittedIntegrator.attenuate(medium, hit.t * dlen, beta);
                 if (beta[0] <= 0 && beta[1] <= 0 && beta[2] <= 0) break;

@@ -96,6 +96,18 @@ public final class TracerScratch {
         this.sample = sample;
     }
 
+    /**
+     * Whether the camera ray's first hit is recorded in {@link #features}, for a denoiser or the
+     * albedo pass; off, the integrators skip it.
+     */
+    public boolean recordFeatures;
+    /**
+     * What the last camera ray saw first ({@link #recordFeatures}): albedo r, g, b, the unit
+     * shading normal facing the ray x, y, z, and the inverse of the distance; all 0 when it
+     * hit nothing (or reached a light's surface). See {@link FirstHits#record}.
+     */
+    public final double[] features = new double[7];
+
     /** Rays traced, by kind (counted per thread and summed by the renderer). */
     public long cameraRays, shadowRays, reflectionRays, refractionRays;
     /** Camera samples whose first hit is an adaptive subdivision surface (its covered pixels, for --stats). */

@@ -190,10 +190,12 @@ public final class WhittedIntegrator implements Integrator {
             if (lights.nearestSurface(ray, found ? hit.t : Double.POSITIVE_INFINITY, seen) >= 0) { // a light is nearer than any surface
                 out[0] = seen[0]; out[1] = seen[1]; out[2] = seen[2];
                 if (medium != null) attenuate(medium, seen[3] * dlen, out);
+                if (depth == 0) FirstHits.recordNothing(s);
                 return;
             }
         }
         if (!found) {
+            if (depth == 0) FirstHits.recordNothing(s);
             if (environment != null) {
                 // Camera rays see the environment as its camera view says; reflections and refractions see the map.
                 if (depth == 0) environment.lookupFromCamera(ray.dx / dlen, ray.dy / dlen, ray.dz / dlen, settings.background(), out);
@@ -217,6 +219,7 @@ public final class WhittedIntegrator implements Integrator {
 
         // Textured surface terms (colour, ks, kr, kt, emission) and the bumped shading normal.
         TextureShading.evaluate(m, sd, m.isTextured() ? firstHits.footprint(sd, travelled, dx, dy, dz) : 0, s, v);
+        if (depth == 0) FirstHits.recordHit(s, v, sd, dx, dy, dz, travelled);
 
         // Normals facing the incoming ray: nf geometric, sn shading (kept on nf's side).
         v.entering = sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz < 0;

@@ -71,9 +71,9 @@ class CliAovTest {
     @Test
     void unknownPassIsAUsageError() throws IOException {
         Path scene = scene(SCENE);
-        CliTest.Run r = CliTest.run(scene.toString(), "-o", dir.resolve("out.png").toString(), "--aov", "depth,albedo");
+        CliTest.Run r = CliTest.run(scene.toString(), "-o", dir.resolve("out.png").toString(), "--aov", "depth,shadow");
         assertEquals(2, r.status());
-        assertEquals("render: --aov: unknown AOV 'albedo' (expected depth, normal, object or noise)" + System.lineSeparator(), r.err());
+        assertEquals("render: --aov: unknown AOV 'shadow' (expected depth, normal, object, albedo or noise)" + System.lineSeparator(), r.err());
         CliTest.Run twice = CliTest.run(scene.toString(), "--aov", "depth,depth");
         assertEquals(2, twice.status());
         assertEquals("render: --aov: AOV 'depth' listed twice" + System.lineSeparator(), twice.err());

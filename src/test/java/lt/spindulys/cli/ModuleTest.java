@@ -40,7 +40,7 @@ class ModuleTest {
      * lights, rendering, image output and mesh IO (with the mesh and control-mesh types it reads
      * and writes). The rest (per-ray machinery, acceleration structures, the CLI) stays inside.
      */
-    private static final Set<String> API = Set.of("lt.spindulys.camera", "lt.spindulys.image", "lt.spindulys.io",
+    private static final Set<String> API = Set.of("lt.spindulys.camera", "lt.spindulys.denoise", "lt.spindulys.image", "lt.spindulys.io",
             "lt.spindulys.material", "lt.spindulys.math", "lt.spindulys.mesh", "lt.spindulys.plugin", "lt.spindulys.render", "lt.spindulys.scene",
             "lt.spindulys.subdiv", "lt.spindulys.texture");
 

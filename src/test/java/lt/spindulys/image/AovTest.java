@@ -11,12 +11,13 @@ import org.junit.jupiter.api.Test;
 class AovTest {
     @Test
     void keywordsAndSuffixes() {
-        assertEquals(List.of("depth", "normal", "object", "noise"), Aov.keywords());
+        assertEquals(List.of("depth", "normal", "object", "albedo", "noise"), Aov.keywords());
         for (Aov a : Aov.values()) assertSame(a, Aov.fromKeyword(a.keyword()));
         assertEquals(".depth.pfm", Aov.DEPTH.suffix());
         assertEquals(".normal.pfm", Aov.NORMAL.suffix());
         assertEquals(".object.png", Aov.OBJECT.suffix());
         assertEquals(".noise.pfm", Aov.NOISE.suffix());
+        assertEquals(".albedo.pfm", Aov.ALBEDO.suffix());
     }
 
     @Test
@@ -33,7 +34,7 @@ class AovTest {
 
     @Test
     void parsesCommaSeparatedListsInPassOrder() {
-        assertEquals(EnumSet.allOf(Aov.class), Aov.parseList("object,noise,depth,normal"));
+        assertEquals(EnumSet.allOf(Aov.class), Aov.parseList("object,noise,albedo,depth,normal"));
         assertEquals(EnumSet.of(Aov.NORMAL), Aov.parseList("normal"));
         assertEquals(EnumSet.of(Aov.DEPTH, Aov.OBJECT), Aov.parseList("depth, object"));
         assertEquals(List.of(Aov.DEPTH, Aov.OBJECT), List.copyOf(Aov.parseList("object,depth")));
@@ -41,11 +42,11 @@ class AovTest {
 
     @Test
     void refusesUnknownRepeatedAndEmptyNames() {
-        assertEquals("unknown AOV 'albedo' (expected depth, normal, object or noise)",
-                assertThrows(IllegalArgumentException.class, () -> Aov.parseList("depth,albedo")).getMessage());
+        assertEquals("unknown AOV 'shadow' (expected depth, normal, object, albedo or noise)",
+                assertThrows(IllegalArgumentException.class, () -> Aov.parseList("depth,shadow")).getMessage());
         assertEquals("AOV 'depth' listed twice",
                 assertThrows(IllegalArgumentException.class, () -> Aov.parseList("depth,normal,depth")).getMessage());
-        assertEquals("empty AOV name in 'depth,' (expected depth, normal, object or noise)",
+        assertEquals("empty AOV name in 'depth,' (expected depth, normal, object, albedo or noise)",
                 assertThrows(IllegalArgumentException.class, () -> Aov.parseList("depth,")).getMessage());
         assertThrows(IllegalArgumentException.class, () -> Aov.parseList(""));
         assertThrows(IllegalArgumentException.class, () -> Aov.fromKeyword("Depth"));

@@ -135,7 +135,7 @@ class ExrRealReaderTest {
      * our colours.
      */
     /** The passes Blender's compositor shows for a file with every pass (its names for ours), sorted. */
-    private static final List<String> EXPECTED_BLENDER_PASSES = List.of("Alpha", "Combined", "Depth", "IndexOB", "Noise", "Normal", "Samples");
+    private static final List<String> EXPECTED_BLENDER_PASSES = List.of("Albedo", "Alpha", "Combined", "Depth", "IndexOB", "Noise", "Normal", "Samples");
 
     @Test
     void blenderNamesEveryPassAndReadsTheColours() throws Exception {
@@ -178,7 +178,7 @@ class ExrRealReaderTest {
     /** The pixel bytes of an uncompressed scanline file of this test's channels: its blocks without their line and size. */
     private static byte[] pixelBytes(Path none, ExrPrecision precision) throws IOException {
         int colour = precision == ExrPrecision.HALF ? 2 : 4;
-        int line = W * (7 * colour + 4 * 4); // A B G Normal.X Normal.Y Normal.Z R, and IndexOB.X Noise.X Samples.X Z as floats
+        int line = W * (10 * colour + 4 * 4); // A Albedo.B Albedo.G Albedo.R B G Normal.X Normal.Y Normal.Z R, and IndexOB.X Noise.X Samples.X Z as floats
         byte[] all = Files.readAllBytes(none);
         int start = all.length - H * (8 + line);
         byte[] out = new byte[H * line];

@@ -106,7 +106,7 @@ class ExrWriterTest {
             assertEquals(w, image.width());
             assertEquals(h, image.height());
             assertEquals(compression.code(), image.compression());
-            assertEquals(List.of("A", "B", "G", "IndexOB.X", "Normal.X", "Normal.Y", "Normal.Z", "R", "Z"),
+            assertEquals(List.of("A", "Albedo.B", "Albedo.G", "Albedo.R", "B", "G", "IndexOB.X", "Normal.X", "Normal.Y", "Normal.Z", "R", "Z"),
                     image.channels().stream().map(ExrTestDecoder.Channel::name).toList());
             assertEquals(List.of("channels", "compression", "dataWindow", "displayWindow", "lineOrder", "pixelAspectRatio",
                     "screenWindowCenter", "screenWindowWidth"), List.copyOf(image.attributes().keySet()));

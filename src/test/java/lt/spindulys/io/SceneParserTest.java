@@ -236,6 +236,7 @@ class SceneParserTest {
         assertEquals(EnumSet.of(Aov.DEPTH, Aov.OBJECT), s.aovs());
         assertEquals(10, s.width());
         assertEquals(EnumSet.of(Aov.NORMAL, Aov.DEPTH, Aov.OBJECT), parse("settings { width 10 aov normal depth object}").settings().aovs());
+        assertEquals(EnumSet.complementOf(EnumSet.of(Aov.NOISE)), parse("settings { width 10 aov normal depth object albedo}").settings().aovs());
         assertEquals(RenderSettings.builder().aovs(EnumSet.of(Aov.NORMAL)).build(), parse("settings { aov normal }").settings());
     }
 
