@@ -33,8 +33,13 @@ final class Driver {
 
     final Robot robot;
 
-    Driver() throws AWTException {
-        robot = new Robot();
+    /** A driver of the display the tests run on (the AWT's refusal, which a display test never meets, unchecked). */
+    Driver() {
+        try {
+            robot = new Robot();
+        } catch (AWTException e) {
+            throw new IllegalStateException(e);
+        }
         robot.setAutoDelay(10);
     }
 

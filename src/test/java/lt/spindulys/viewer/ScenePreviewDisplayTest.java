@@ -26,15 +26,7 @@ import org.junit.jupiter.api.io.TempDir;
 class ScenePreviewDisplayTest {
     @TempDir Path dir;
 
-    private final Driver driver = newDriver();
-
-    private static Driver newDriver() {
-        try {
-            return new Driver();
-        } catch (java.awt.AWTException e) {
-            throw new IllegalStateException(e);
-        }
-    }
+    private final Driver driver = new Driver();
 
     @AfterEach
     void closeAll() {

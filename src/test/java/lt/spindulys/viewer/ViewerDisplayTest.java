@@ -56,17 +56,9 @@ class ViewerDisplayTest {
 
     @TempDir Path dir;
 
-    private final Driver driver = newDriver();
+    private final Driver driver = new Driver();
     private ViewerFrame frame;
     private ViewportPanel viewport;
-
-    private static Driver newDriver() {
-        try {
-            return new Driver();
-        } catch (java.awt.AWTException e) {
-            throw new IllegalStateException(e);
-        }
-    }
 
     @AfterEach
     void closeAll() {
