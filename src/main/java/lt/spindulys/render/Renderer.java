@@ -52,7 +52,8 @@ import lt.spindulys.shading.Integrator;
  * lobes, their weighted average.
  *
  * <p><b>Adaptive sampling.</b> With a noise threshold ({@link RenderSettings#noiseThreshold()}) a
- * pixel takes its samples in rounds ({@link SampleRounds}) and stops after a round once the
+ * pixel takes its samples in rounds ({@link SampleRounds}), blocks of its progressive sequences
+ * ({@link lt.spindulys.sampling.ProgressiveSequence}), and stops after a round once the
  * {@link NoiseEstimate} of its own samples is below the threshold. Nothing but the pixel's samples
  * decides, so tiles and regions still assemble bit for bit (Cycles also wakes up the neighbours of
  * pixels that go on, which would make a pixel depend on others). Without a threshold there is one
