@@ -41,7 +41,7 @@ public final class PaddedStrata {
     public void start(long seed, int px, int py, int sample, int samples) {
         if (samples != this.samples) {
             this.samples = samples;
-            // Adaptive sampling changes the count with each round of a pixel: nothing is allocated for it.
+            // A count that changes (another pass, a pixel of one adaptive round) allocates nothing.
             cols = PixelSampler.gridColumns(samples);
             rows = (samples + cols - 1) / cols;
         }

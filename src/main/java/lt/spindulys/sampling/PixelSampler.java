@@ -20,6 +20,10 @@ import lt.spindulys.camera.PixelFilter;
  * carries the filter's {@link #weight}. With the box of width 1 (the default) the film samples
  * are exactly the jittered strata of the pixel, as always; with one sample, the box's sample is
  * the pixel centre, and another filter's is drawn from that filter like any other.
+ *
+ * <p><b>Progressive.</b> A pixel whose count is open (adaptive sampling) takes its samples by
+ * {@link #startProgressive} instead: film, lens and time from {@link ProgressiveSequence}s at the
+ * samples' indices in the pixel, so that those taken are stratified wherever the pixel stops.
  */
 public final class PixelSampler {
     private final int n, cols, rows;

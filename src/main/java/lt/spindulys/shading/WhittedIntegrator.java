@@ -38,7 +38,9 @@ import lt.spindulys.texture.Channel;
  * its own samples ({@link Light#sampleLi}) into the scratch's {@link LightSample}. A point light
  * takes one; every other light takes {@link Light#samples()} per pixel sample at points of the
  * unit square drawn from strata of the light shared by the pixel's samples (seeded from the pass
- * seed, pixel, sample and light, as set by {@link TracerScratch#setSample}). Each sample's shadow
+ * seed, pixel, sample and light, as set by {@link TracerScratch#setSample}), or, for a pixel
+ * whose count is open (adaptive sampling), from the light's progressive sequence over the pixel's
+ * samples ({@link TracerScratch#setProgressiveSample}). Each sample's shadow
  * ray goes through the same transmission walk, to the sampled point or, for the environment, to
  * infinity, and brings the sample's weighted radiance. Rays that reach an area light before any
  * surface see its radiance.
@@ -366,8 +368,8 @@ public final class WhittedIntegrator implements Integrator {
 
     /**
      * The order in which the pixel's samples take stratified light li's n strata (the first n
-     * entries): a shuffle seeded from the pass seed, pixel and light, drawn once per pixel (or
-     * round of its samples) and thread.
+     * entries): a shuffle seeded from the pass seed, pixel and light, drawn once per pixel and
+     * thread.
      */
     private int[] strata(int li, int n, TracerScratch s) {
         if (s.lightStrata.length < stratifiedLights) { // a scratch not made by newScratch
@@ -378,7 +380,7 @@ public final class WhittedIntegrator implements Integrator {
         int[] p = s.lightStrata[li];
         // The generation changes with the pixel's sample count, so it fixes n for this light.
         if (p != null && p.length >= n && s.lightStrataGeneration[li] == s.pixelGeneration) return p;
-        // Sized for the settings' samples per pixel: adaptive sampling's rounds (fewer samples) reuse it.
+        // Sized for the settings' samples per pixel; a pass of fewer reuses it.
         if (p == null || p.length < n) p = s.lightStrata[li] = new int[n];
         s.lightStrataCols[li] = strataCols(n);
         for (int i = 0; i < n; i++) p[i] = i;
