@@ -26,8 +26,8 @@ public final class PaddedStrata {
     private int samples = 1, sample, cols = 1, rows = 1;
     /** Drawing from the progressive sequences ({@link #startProgressive}) rather than from strata. */
     private boolean progressive;
-    private long pixelSeed;
-    private int pixelX, pixelY;
+    /** The pixel's hash for its sequences' keys ({@link ProgressiveSequence#pixel}). */
+    private long pixelKey;
 
     /**
      * Starts a pixel sample.
@@ -62,9 +62,7 @@ public final class PaddedStrata {
      */
     public void startProgressive(long seed, int px, int py, int sample) {
         progressive = true;
-        pixelSeed = seed;
-        pixelX = px;
-        pixelY = py;
+        pixelKey = ProgressiveSequence.pixel(seed, px, py);
         this.sample = sample;
     }
 
@@ -76,7 +74,7 @@ public final class PaddedStrata {
      * @return the number
      */
     public double get1D(int dim, Rng rng) {
-        if (progressive) return ProgressiveSequence.get1D(sample, ProgressiveSequence.key(pixelSeed, pixelX, pixelY, dim));
+        if (progressive) return ProgressiveSequence.get1D(sample, ProgressiveSequence.key(pixelKey, dim));
         int s = permute(sample, samples, seed(dim));
         return Math.min((s + rng.nextDouble()) / samples, Math.nextDown(1.0));
     }
@@ -92,7 +90,7 @@ public final class PaddedStrata {
      */
     public void get2D(int dim, Rng rng, double[] out) {
         if (progressive) {
-            ProgressiveSequence.get2D(sample, ProgressiveSequence.key(pixelSeed, pixelX, pixelY, dim), out);
+            ProgressiveSequence.get2D(sample, ProgressiveSequence.key(pixelKey, dim), out);
             return;
         }
         // Distinct samples take distinct cells, also of a padded grid (a few cells left empty).

@@ -30,10 +30,33 @@ public final class ProgressiveSequence {
      * @return the key
      */
     public static long key(long seed, int px, int py, int dim) {
+        return key(pixel(seed, px, py), dim);
+    }
+
+    /**
+     * The hash of a pixel that {@link #key(long, int)} makes its dimensions' keys from: computed
+     * once for all the dimensions of a sample.
+     *
+     * @param seed the pass's seed
+     * @param px   pixel column
+     * @param py   pixel row
+     * @return the pixel's hash
+     */
+    public static long pixel(long seed, int px, int py) {
         long h = mix(seed ^ 0x70726f67L); // "prog"
         h = mix(h ^ px * 0xC2B2AE3D27D4EB4FL);
-        h = mix(h ^ py * 0x165667B19E3779F9L);
-        return mix(h ^ (dim + 1) * 0xD6E8FEB86659FD93L);
+        return mix(h ^ py * 0x165667B19E3779F9L);
+    }
+
+    /**
+     * The key of a dimension (or pair) of a pixel's samples.
+     *
+     * @param pixel from {@link #pixel}
+     * @param dim   the dimension's number, distinct from every other's of the pixel
+     * @return the key, as {@link #key(long, int, int, int)}
+     */
+    public static long key(long pixel, int dim) {
+        return mix(pixel ^ (dim + 1) * 0xD6E8FEB86659FD93L);
     }
 
     /**
