@@ -52,7 +52,8 @@ import lt.spindulys.shading.Integrator;
  * lobes, their weighted average.
  *
  * <p><b>Adaptive sampling.</b> With a noise threshold ({@link RenderSettings#noiseThreshold()}) a
- * pixel takes its samples in rounds ({@link SampleRounds}) and stops after a round once the
+ * pixel takes its samples in rounds ({@link SampleRounds}), blocks of its progressive sequences
+ * ({@link lt.spindulys.sampling.ProgressiveSequence}), and stops after a round once the
  * {@link NoiseEstimate} of its own samples is below the threshold. Nothing but the pixel's samples
  * decides, so tiles and regions still assemble bit for bit (Cycles also wakes up the neighbours of
  * pixels that go on, which would make a pixel depend on others). Without a threshold there is one
@@ -323,9 +324,9 @@ public final class Renderer {
         FilterSampler filter = new FilterSampler(st.filter(), st.pixelFilterWidth()); // one table, shared by the threads
         // Adaptive sampling takes the samples in rounds, each drawn by a sampler of its size: one per size, per thread.
         SampleRounds rounds = st.adaptiveSampling() ? SampleRounds.adaptive(pass.samples, st.adaptiveMinSamples()) : SampleRounds.uniform(pass.samples);
-        long samplers = 0;
-        for (int k = 0; k < rounds.rounds(); k++) if (firstOfSize(rounds, k)) samplers = HeapBudget.sum(samplers, PixelSampler.bytes(rounds.size(k), filter));
-        long sampler = samplers, scratch = integrator.scratchBytes(st.samplesPerPixel());
+        // Adaptive: one sampler, as large as the largest round, draws each round's block of the pixel's sequence.
+        int largest = rounds.largest();
+        long sampler = PixelSampler.bytes(largest, filter), scratch = integrator.scratchBytes(st.samplesPerPixel());
         HeapBudget.Reservation reservation;
         try {
             reservation = HeapBudget.reserve(HeapBudget.product(workers.length, HeapBudget.sum(scratch, sampler)),
@@ -350,11 +351,7 @@ public final class Renderer {
                         // Time samples only where something moves (an object or the camera) and each sample has its own time.
                         LensPattern lens = scene.camera().usesLens() ? scene.camera().lensPattern() : null;
                         boolean times = (scene.hasMovingObjects() || scene.camera().moves()) && Double.isNaN(pass.time);
-                        // One sampler per round size, shared by the rounds of that size.
-                        PixelSampler[] ps = new PixelSampler[rounds.rounds()];
-                        for (int r = 0; r < ps.length; r++) {
-                            ps[r] = firstOfSize(rounds, r) ? new PixelSampler(rounds.size(r), lens, times, filter) : ps[sameSize(rounds, r)];
-                        }
+                        PixelSampler ps = new PixelSampler(largest, lens, times, filter);
                         reservation.release(sampler);
                         Ray ray = new Ray();
                         double[] colour = new double[4];
@@ -413,16 +410,16 @@ public final class Renderer {
      * stops after a checked round once its {@link NoiseEstimate} is below the threshold; the
      * samples it took are added to {@code taken[0]}.
      *
-     * @param samplers the sampler of each round (rounds of a size share one)
-     * @param noise    the thread's noise estimate
+     * @param sampler the thread's sampler, of the largest round's size
+     * @param noise   the thread's noise estimate
      */
     private static boolean renderTile(Camera camera, Integrator integrator, RenderSettings st, Pass pass, SampleRounds rounds,
-                                      PixelSampler[] samplers, NoiseEstimate noise, TracerScratch scratch, Ray ray, double[] colour,
+                                      PixelSampler sampler, NoiseEstimate noise, TracerScratch scratch, Ray ray, double[] colour,
                                       FrameBuffer fb, AovFrame aovs, FeatureFrame features, double[] fsum, int ox, int oy, int fx0, int fy0, int fx1, int fy1,
                                       BooleanSupplier stop, long[] taken) {
         int w = st.width(), h = st.height(), fw = fb.width();
         double aspect = st.aspect(), threshold = st.noiseThreshold();
-        boolean weighted = samplers[0].filter().hasNegativeWeights();
+        boolean weighted = sampler.filter().hasNegativeWeights();
         boolean ownTimes = Double.isNaN(pass.time);
         boolean centreRay = aovs != null && aovs.needsCentreRay();
         int last = rounds.rounds() - 1;
@@ -441,17 +438,18 @@ public final class Renderer {
                 if (features != null) java.util.Arrays.fill(fsum, 0);
                 for (int k = 0; k <= last; k++) {
                     int size = rounds.size(k);
-                    PixelSampler sampler = samplers[k];
-                    long seed = SampleRounds.seed(pass.seed, k);
                     // The round's own sums, for its mean.
                     double kr = r, kg = g, kb = b, kw = weights, kpr = plainR, kpg = plainG, kpb = plainB;
-                    sampler.startPixel(seed, x, y);
+                    // Rounds are blocks of the pixel's progressive sequence; one round is the stratified set of before rounds.
+                    if (byRound) sampler.startProgressive(pass.seed, x, y, n, size);
+                    else sampler.startPixel(pass.seed, x, y);
                     for (int i = 0; i < size; i++, n++) {
                         if ((n & (STOP_CHECK - 1)) == 0 && stop.getAsBoolean()) return false;
                         double time = ownTimes ? st.shutterTime(sampler.time(i)) : pass.time;
                         camera.generateRay(sampler.filmX(i) / w, sampler.filmY(i) / h, aspect,
                                 sampler.lensU(i), sampler.lensV(i), time, ray);
-                        scratch.setSample(seed, x, y, i, size);
+                        if (byRound) scratch.setProgressiveSample(pass.seed, x, y, n);
+                        else scratch.setSample(pass.seed, x, y, i, size);
                         integrator.traceCamera(ray, scratch, colour);
                         if (features != null) gather(scratch.features, colour, weighted ? sampler.weight(i) : 1, fsum);
                         if (weighted) {
@@ -503,16 +501,6 @@ public final class Renderer {
             }
         }
         return true;
-    }
-
-    /** Whether round k is the first of its size (and has a sampler made for it). */
-    private static boolean firstOfSize(SampleRounds rounds, int k) { return sameSize(rounds, k) == k; }
-
-    /** The first round of round k's size. */
-    private static int sameSize(SampleRounds rounds, int k) {
-        int j = 0;
-        while (rounds.size(j) != rounds.size(k)) j++;
-        return j;
     }
 
     /**

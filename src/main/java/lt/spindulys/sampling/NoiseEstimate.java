@@ -2,7 +2,7 @@ package lt.spindulys.sampling;
 
 /**
  * The estimated relative error of a pixel's value, for adaptive sampling: the standard error of
- * the pixel's mean, estimated from how the means of independent groups of its samples (the
+ * the pixel's mean, estimated from how the means of groups of its samples (the
  * rounds of {@link SampleRounds}, or single samples when there is one round) scatter about it,
  * made relative as Cycles makes its error relative
  * ({@code film_adaptive_sampling_convergence_check}).
@@ -11,8 +11,10 @@ package lt.spindulys.sampling;
  * of the order of I's standard error, but it is one random number (one degree of freedom), and a
  * pixel checked again and again stops early whenever it happens to be small. The scatter of G group means
  * has G - 1 degrees of freedom (3 at the first check of the default schedule, more at each
- * further check). Each group is a stratified set of its own, so the scatter of the group means
- * measures the error of stratified sampling, not the larger spread of single samples.
+ * further check). Each group is a stratified set by itself (an aligned block of the pixel's
+ * progressive sequence), so the scatter of the group means measures the error of stratified
+ * sampling, not the larger spread of single samples; the groups together are one better
+ * stratified set, so the estimate errs towards more samples.
  *
  * <p>For group means m_g of s_g samples, n in all and I = sum s_g m_g / n, the variance of I is
  * estimated as {@code sum s_g (m_g - I)^2 / ((G - 1) n)}, per channel: exact in expectation for

@@ -14,11 +14,20 @@ package lt.spindulys.sampling;
  * nothing is stored per pixel, and every number depends only on the seed, the pixel, the sample
  * index and the dimension: the same for any thread count and tile split. Not thread-safe: one per
  * render thread.
+ *
+ * <p><b>Progressive.</b> An adaptively sampled pixel does not know its count in advance:
+ * {@link #startProgressive} draws each dimension (or pair) from its own
+ * {@link ProgressiveSequence} instead, at the sample's index in the pixel, so that the samples
+ * the pixel has taken are stratified wherever it stops.
  */
 public final class PaddedStrata {
     private final Rng hash = new Rng();
     private long pixelHash;
     private int samples = 1, sample, cols = 1, rows = 1;
+    /** Drawing from the progressive sequences ({@link #startProgressive}) rather than from strata. */
+    private boolean progressive;
+    /** The pixel's hash for its sequences' keys ({@link ProgressiveSequence#pixel}). */
+    private long pixelKey;
 
     /**
      * Starts a pixel sample.
@@ -32,12 +41,29 @@ public final class PaddedStrata {
     public void start(long seed, int px, int py, int sample, int samples) {
         if (samples != this.samples) {
             this.samples = samples;
-            // Adaptive sampling changes the count with each round of a pixel: nothing is allocated for it.
+            // A count that changes (another pass, a pixel of one adaptive round) allocates nothing.
             cols = PixelSampler.gridColumns(samples);
             rows = (samples + cols - 1) / cols;
         }
         this.sample = sample;
+        progressive = false;
         pixelHash = hash.seed(seed, px, py, 0x73747261).nextLong(); // "stra"
+    }
+
+    /**
+     * Starts a pixel sample of a pixel whose count is open (adaptive sampling): every dimension
+     * is then point {@code sample} of its own {@link ProgressiveSequence}, and the jitter
+     * generators passed to {@link #get1D} and {@link #get2D} are not drawn from.
+     *
+     * @param seed   the pass's global seed
+     * @param px     pixel column
+     * @param py     pixel row
+     * @param sample the sample's index in the pixel, from 0
+     */
+    public void startProgressive(long seed, int px, int py, int sample) {
+        progressive = true;
+        pixelKey = ProgressiveSequence.pixel(seed, px, py);
+        this.sample = sample;
     }
 
     /**
@@ -48,6 +74,7 @@ public final class PaddedStrata {
      * @return the number
      */
     public double get1D(int dim, Rng rng) {
+        if (progressive) return ProgressiveSequence.get1D(sample, ProgressiveSequence.key(pixelKey, dim));
         int s = permute(sample, samples, seed(dim));
         return Math.min((s + rng.nextDouble()) / samples, Math.nextDown(1.0));
     }
@@ -62,6 +89,10 @@ public final class PaddedStrata {
      * @param out receives u and v in [0, 1)
      */
     public void get2D(int dim, Rng rng, double[] out) {
+        if (progressive) {
+            ProgressiveSequence.get2D(sample, ProgressiveSequence.key(pixelKey, dim), out);
+            return;
+        }
         // Distinct samples take distinct cells, also of a padded grid (a few cells left empty).
         int s = permute(sample, cols * rows, seed(dim));
         int row = s / cols, col = s - row * cols;

@@ -20,6 +20,10 @@ import lt.spindulys.camera.PixelFilter;
  * carries the filter's {@link #weight}. With the box of width 1 (the default) the film samples
  * are exactly the jittered strata of the pixel, as always; with one sample, the box's sample is
  * the pixel centre, and another filter's is drawn from that filter like any other.
+ *
+ * <p><b>Progressive.</b> A pixel whose count is open (adaptive sampling) takes its samples by
+ * {@link #startProgressive} instead: film, lens and time from {@link ProgressiveSequence}s at the
+ * samples' indices in the pixel, so that those taken are stratified wherever the pixel stops.
  */
 public final class PixelSampler {
     private final int n, cols, rows;
@@ -196,19 +200,68 @@ public final class PixelSampler {
         for (int i = 0; i < n; i++) time[i] = (perm[i] + rng.nextDouble()) / n;
     }
 
+    /** Sequence numbers of the film, lens and time samples' {@link ProgressiveSequence}s. */
+    private static final int FILM = 0, LENS = 1, TIME = 2;
+    private final double[] point = new double[2];
+
+    /**
+     * Draws samples {@code first} to {@code first + count - 1} of pixel (px, py), whose count is
+     * open (adaptive sampling), into slots 0 to count - 1: film, lens and time each from its own
+     * {@link ProgressiveSequence} at the sample's index in the pixel, so that the samples taken
+     * so far are stratified wherever the pixel stops (every power-of-two prefix is a (0,2)-net).
+     * Filter and lens map them as they map strata; the ring lens places the count's samples
+     * about its ring in order (the sequence's shuffle decorrelates them from the film).
+     *
+     * @param seed  the pass's seed
+     * @param px    pixel column
+     * @param py    pixel row
+     * @param first the index in the pixel of the first sample
+     * @param count how many, 1 to {@link #samplesPerPixel()}
+     */
+    public void startProgressive(long seed, int px, int py, int first, int count) {
+        if (count < 1 || count > n) throw new IllegalArgumentException("count must be between 1 and " + n + ", found " + count);
+        long film = ProgressiveSequence.key(seed, px, py, FILM), lensKey = ProgressiveSequence.key(seed, px, py, LENS);
+        long timeKey = ProgressiveSequence.key(seed, px, py, TIME);
+        for (int i = 0; i < count; i++) {
+            ProgressiveSequence.get2D(first + i, film, point);
+            double u = point[0], v = point[1];
+            if (unitBox) {
+                filmX[i] = px + u;
+                filmY[i] = py + v;
+            } else {
+                int bx = filter.bin(u), by = filter.bin(v);
+                filmX[i] = px + 0.5 + filter.offset(bx, u);
+                filmY[i] = py + 0.5 + filter.offset(by, v);
+                if (weight != null) weight[i] = filter.weight(bx, by);
+            }
+            if (lens != null) {
+                ProgressiveSequence.get2D(first + i, lensKey, point);
+                lensSample(i, i, point[0], point[1], count);
+            } else {
+                lensU[i] = 0; lensV[i] = 0;
+            }
+            time[i] = times ? ProgressiveSequence.get1D(first + i, timeKey) : 0;
+        }
+    }
+
     /** Lens sample i on the unit disk from lens stratum s and its jittered square sample (u, v). */
     private void lensSample(int i, int s, double u, double v) {
+        lensSample(i, s, u, v, n);
+    }
+
+    /** As {@link #lensSample(int, int, double, double)}, of a set of {@code count} samples. */
+    private void lensSample(int i, int s, double u, double v, int count) {
         if (lens == null) {
             // No lens: a pinhole ignores the samples, so the mapping's sine and cosine are spared.
             lensU[i] = 0; lensV[i] = 0;
             return;
         }
         if (lens == LensPattern.RING) {
-            if (n == 1) {
+            if (count == 1) {
                 lensU[i] = 0; lensV[i] = 0;
                 return;
             }
-            double angle = 2 * Math.PI * s / n, r = (s & 1) == 0 ? 1 : 0.5;
+            double angle = 2 * Math.PI * s / count, r = (s & 1) == 0 ? 1 : 0.5;
             lensU[i] = r * Math.cos(angle); lensV[i] = r * Math.sin(angle);
             return;
         }

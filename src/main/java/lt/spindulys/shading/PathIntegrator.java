@@ -46,7 +46,7 @@ import lt.spindulys.trace.TracedObject;
  * <p>Every random number of a path comes from one generator seeded from the global seed, the
  * pixel and the sample index, so the image is the same for any thread count or tile split; the
  * light samples and scattering at the first two surfaces are stratified over the pixel's samples
- * ({@link PaddedStrata}).
+ * ({@link PaddedStrata}; progressive over them when the pixel's count is open, under adaptive sampling).
  * Immutable; all per-path state lives in the thread's {@link TracerScratch}.
  */
 public final class PathIntegrator implements Integrator {
@@ -135,7 +135,8 @@ public final class PathIntegrator implements Integrator {
         s.mediaCount = 0;
         Rng rng = s.pathRng.seed(s.seed ^ PATH_STREAM, s.pixelX, s.pixelY, s.sample);
         PaddedStrata strata = s.strata;
-        strata.start(s.seed ^ PATH_STREAM, s.pixelX, s.pixelY, s.sample, s.samplesPerPixel);
+        if (s.progressive) strata.startProgressive(s.seed ^ PATH_STREAM, s.pixelX, s.pixelY, s.sample);
+        else strata.start(s.seed ^ PATH_STREAM, s.pixelX, s.pixelY, s.sample, s.samplesPerPixel);
         double[] square = s.square;
         double[] beta = s.throughput, sum = s.pathSum, c = s.contribution, f = s.bsdfValue;
         beta[0] = beta[1] = beta[2] = 1;

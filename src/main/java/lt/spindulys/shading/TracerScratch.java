@@ -42,6 +42,8 @@ public final class TracerScratch {
     // count. Set by setSample; a caller that never sets it traces as sample 0 of 1 of pixel (0, 0).
     long seed;
     int pixelX, pixelY, sample, samplesPerPixel = 1;
+    /** The pixel's count is open (adaptive sampling): the first dimensions come from progressive sequences, at the sample's index. */
+    boolean progressive;
     /** Bumped whenever the pixel or sample count changes, so per-pixel light strata are redrawn. */
     int pixelGeneration = 1;
     /** Per light that takes strata (the area lights, then the environment if it is a light): its strata in the order the pixel's samples take them, and the generation they were drawn for. */
@@ -94,6 +96,26 @@ public final class TracerScratch {
             pixelGeneration++;
         }
         this.sample = sample;
+        progressive = false;
+    }
+
+    /**
+     * Says which pixel sample the next camera ray is, of a pixel whose count is open (adaptive
+     * sampling): its stratified dimensions (the path's first vertices, the area lights' samples)
+     * are then points of progressive sequences ({@link lt.spindulys.sampling.ProgressiveSequence})
+     * at the sample's index, so that the samples taken are stratified wherever the pixel stops.
+     *
+     * @param seed   the pass's global seed
+     * @param px     pixel column
+     * @param py     pixel row
+     * @param sample sample index in the pixel, from 0
+     */
+    public void setProgressiveSample(long seed, int px, int py, int sample) {
+        this.seed = seed;
+        pixelX = px;
+        pixelY = py;
+        this.sample = sample;
+        progressive = true;
     }
 
     /**

@@ -10,6 +10,7 @@ import lt.spindulys.light.LightSample;
 import lt.spindulys.light.Lights;
 import lt.spindulys.limits.HeapBudget;
 import lt.spindulys.material.Material;
+import lt.spindulys.sampling.ProgressiveSequence;
 import lt.spindulys.sampling.Rng;
 import lt.spindulys.scene.AreaLight;
 import lt.spindulys.scene.Environment;
@@ -37,7 +38,9 @@ import lt.spindulys.texture.Channel;
  * its own samples ({@link Light#sampleLi}) into the scratch's {@link LightSample}. A point light
  * takes one; every other light takes {@link Light#samples()} per pixel sample at points of the
  * unit square drawn from strata of the light shared by the pixel's samples (seeded from the pass
- * seed, pixel, sample and light, as set by {@link TracerScratch#setSample}). Each sample's shadow
+ * seed, pixel, sample and light, as set by {@link TracerScratch#setSample}), or, for a pixel
+ * whose count is open (adaptive sampling), from the light's progressive sequence over the pixel's
+ * samples ({@link TracerScratch#setProgressiveSample}). Each sample's shadow
  * ray goes through the same transmission walk, to the sampled point or, for the environment, to
  * infinity, and brings the sample's weighted radiance. Rays that reach an area light before any
  * surface see its radiance.
@@ -258,6 +261,9 @@ public final class WhittedIntegrator implements Integrator {
     /** Slots of the thread's occluder cache (TraceContext#occluders), less one: a mask. */
     private static final int OCCLUDER_MASK = lt.spindulys.trace.TraceContext.OCCLUDER_SLOTS - 1;
 
+    /** Columns and rows of the grid whose cells are a progressively sampled light's occluder slots. */
+    private static final int PROGRESSIVE_CELLS = 8;
+
     /** Distinguishes the light strata's shuffle from the per-sample jitter and the pixel sampler's streams. */
     private static final long STRATA_STREAM = 0x61726561L, JITTER_STREAM = 0x6a697474L;
 
@@ -266,7 +272,8 @@ public final class WhittedIntegrator implements Integrator {
      * (material m). A point light takes one sample. Every other light takes its samples per pixel
      * sample, each in the stratum of the pixel's shuffled strata that its pixel sample and index
      * within the light select, jittered within it (the lights that take strata are numbered in
-     * order for their seeds). Each sample's shadow ray uses its own slot of the occluder cache:
+     * order for their seeds); or, when the pixel's count is open, point (pixel sample x samples
+     * + index) of the light's progressive sequence. Each sample's shadow ray uses its own slot of the occluder cache:
      * the point lights' one each, then each light's strata.
      */
     private void directIllumination(Material m, TracerScratch.PathVertex v, TracerScratch s, double[] out) {
@@ -287,7 +294,14 @@ public final class WhittedIntegrator implements Integrator {
             int k = light.samples(), n = 1, cols = 1, rows = 1, firstSlot = slots;
             int[] strata = null;
             Rng rng = null;
-            if (!light.isDelta()) {
+            boolean sequence = !light.isDelta() && s.progressive;
+            long key = 0;
+            if (sequence) {
+                // The pixel's count is open: the light's samples are one progressive sequence over
+                // the pixel's, and the occluder slot the cell of a fixed grid each falls in.
+                key = ProgressiveSequence.key(s.seed ^ STRATA_STREAM, s.pixelX, s.pixelY, stratified++);
+                n = PROGRESSIVE_CELLS * PROGRESSIVE_CELLS;
+            } else if (!light.isDelta()) {
                 int li = stratified++;
                 n = s.samplesPerPixel * k;
                 strata = strata(li, n, s);
@@ -299,7 +313,13 @@ public final class WhittedIntegrator implements Integrator {
             for (int j = 0; j < k; j++) {
                 double su = 0.5, sv = 0.5;
                 int st = 0;
-                if (rng != null) {
+                if (sequence) {
+                    double[] p = s.square;
+                    ProgressiveSequence.get2D(s.sample * k + j, key, p);
+                    su = p[0];
+                    sv = p[1];
+                    st = (int) (sv * PROGRESSIVE_CELLS) * PROGRESSIVE_CELLS + (int) (su * PROGRESSIVE_CELLS);
+                } else if (rng != null) {
                     int at = s.sample * k + j; // below n for a sample index below the pixel's count
                     st = strata[at < n ? at : at % n];
                     int row = st / cols;
@@ -348,8 +368,8 @@ public final class WhittedIntegrator implements Integrator {
 
     /**
      * The order in which the pixel's samples take stratified light li's n strata (the first n
-     * entries): a shuffle seeded from the pass seed, pixel and light, drawn once per pixel (or
-     * round of its samples) and thread.
+     * entries): a shuffle seeded from the pass seed, pixel and light, drawn once per pixel and
+     * thread.
      */
     private int[] strata(int li, int n, TracerScratch s) {
         if (s.lightStrata.length < stratifiedLights) { // a scratch not made by newScratch
@@ -360,7 +380,7 @@ public final class WhittedIntegrator implements Integrator {
         int[] p = s.lightStrata[li];
         // The generation changes with the pixel's sample count, so it fixes n for this light.
         if (p != null && p.length >= n && s.lightStrataGeneration[li] == s.pixelGeneration) return p;
-        // Sized for the settings' samples per pixel: adaptive sampling's rounds (fewer samples) reuse it.
+        // Sized for the settings' samples per pixel; a pass of fewer reuses it.
         if (p == null || p.length < n) p = s.lightStrata[li] = new int[n];
         s.lightStrataCols[li] = strataCols(n);
         for (int i = 0; i < n; i++) p[i] = i;

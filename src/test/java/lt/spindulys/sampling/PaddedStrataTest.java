@@ -61,4 +61,32 @@ class PaddedStrataTest {
         assertTrue(sameDims < 8, "dimensions 0 and 2 agree on " + sameDims + " of 64 samples");
         assertTrue(samePixels < 8, "two pixels agree on " + samePixels + " of 64 samples");
     }
+
+    /**
+     * Progressive (adaptive sampling): every dimension and pair is its own sequence over the
+     * pixel's sample index, so the first 2^k samples take each of 2^k strata of a dimension, and
+     * each cell of a 2^a x 2^(k-a) grid of a pair, once; the jitter generator is not drawn from.
+     */
+    @Test
+    void progressiveSamplesAreStratifiedAtEveryPowerOfTwo() {
+        PaddedStrata strata = new PaddedStrata();
+        Rng rng = new Rng().seed(5);
+        long before = new Rng().seed(5).nextLong();
+        double[] uv = new double[2];
+        for (int k = 0; k <= 8; k++) {
+            int n = 1 << k, cols = 1 << (k / 2), rows = n / cols;
+            boolean[] line = new boolean[n], square = new boolean[n];
+            for (int i = 0; i < n; i++) {
+                strata.startProgressive(42, 3, 5, i);
+                int s = (int) (strata.get1D(0, rng) * n);
+                assertFalse(line[s], "stratum " + s + " of " + n + " twice");
+                line[s] = true;
+                strata.get2D(1, rng, uv);
+                int cell = (int) (uv[1] * rows) * cols + (int) (uv[0] * cols);
+                assertFalse(square[cell], "cell " + cell + " of " + n + " twice");
+                square[cell] = true;
+            }
+        }
+        assertEquals(before, rng.nextLong(), "no jitter drawn");
+    }
 }

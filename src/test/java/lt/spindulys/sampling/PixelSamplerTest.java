@@ -160,4 +160,62 @@ class PixelSamplerTest {
             }
         }
     }
+
+    /**
+     * Adaptive sampling draws a pixel's rounds from one progressive sequence: at every check the
+     * film positions of all the samples taken so far are stratified as one set, in every
+     * elementary interval of area 2^-m for the largest power 2^m dividing the count (one sample
+     * each at 64, 128, 256; the lens and time samples likewise). Rounds drawn each as a
+     * stratified set of its own would put two samples in some interval.
+     */
+    @Test
+    void theRoundsTakenSoFarAreOneStratifiedSetAtEveryCheck() {
+        SampleRounds rounds = SampleRounds.adaptive(512, 64);
+        PixelSampler s = new PixelSampler(rounds.largest(), LensPattern.CONCENTRIC, true);
+        double[] fx = new double[512], fy = new double[512], time = new double[512];
+        int taken = 0, checked = 0;
+        for (int k = 0; k < rounds.rounds(); k++) {
+            s.startProgressive(42, 10, 20, taken, rounds.size(k));
+            for (int i = 0; i < rounds.size(k); i++, taken++) {
+                fx[taken] = s.filmX(i) - 10;
+                fy[taken] = s.filmY(i) - 20;
+                time[taken] = s.time(i);
+                assertTrue(s.lensU(i) * s.lensU(i) + s.lensV(i) * s.lensV(i) <= 1, "lens sample on the unit disk");
+            }
+            if (!rounds.checkAfter(k) && k < rounds.rounds() - 1) continue;
+            checked++;
+            int m = Integer.numberOfTrailingZeros(taken), per = taken >> m;
+            for (int a = 0; a <= m; a++) {
+                int cols = 1 << a, rows = 1 << (m - a);
+                int[] cells = new int[cols * rows];
+                for (int i = 0; i < taken; i++) {
+                    assertTrue(fx[i] >= 0 && fx[i] < 1 && fy[i] >= 0 && fy[i] < 1, "sample inside its pixel");
+                    cells[(int) (fy[i] * rows) * cols + (int) (fx[i] * cols)]++;
+                }
+                for (int c : cells) assertEquals(per, c, "after " + taken + " samples, grid " + cols + "x" + rows);
+            }
+            int[] strata = new int[1 << m];
+            for (int i = 0; i < taken; i++) strata[(int) (time[i] * strata.length)]++;
+            for (int c : strata) assertEquals(per, c, "time strata after " + taken + " samples");
+        }
+        assertEquals(7, checked, "checked at 64, 96, 128, 192, 256, 384 and at the end, 512");
+    }
+
+    /** A pixel's progressive samples depend on the seed, the pixel and their index only, not on the round they come in. */
+    @Test
+    void progressiveSamplesDependOnlyOnTheirIndex() {
+        PixelSampler whole = new PixelSampler(32, LensPattern.CONCENTRIC, true), parts = new PixelSampler(32, LensPattern.CONCENTRIC, true);
+        whole.startProgressive(7, 3, 4, 0, 32);
+        for (int first = 0; first < 32; first += 8) {
+            parts.startProgressive(7, 3, 4, first, 8);
+            for (int i = 0; i < 8; i++) {
+                assertEquals(whole.filmX(first + i), parts.filmX(i));
+                assertEquals(whole.filmY(first + i), parts.filmY(i));
+                assertEquals(whole.lensU(first + i), parts.lensU(i));
+                assertEquals(whole.time(first + i), parts.time(i));
+            }
+        }
+        parts.startProgressive(7, 4, 4, 0, 8);
+        assertNotEquals(whole.filmX(0) - 3, parts.filmX(0) - 4, "another pixel, other samples");
+    }
 }

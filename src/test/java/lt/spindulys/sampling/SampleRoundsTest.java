@@ -31,16 +31,37 @@ class SampleRoundsTest {
         assertEquals(1, r.rounds());
         assertEquals(37, r.size(0));
         assertEquals(List.of(), checks(r));
-        assertEquals(1234L, SampleRounds.seed(1234L, 0), "round 0 keeps the pass's seed: the samples of a render without rounds");
     }
 
     @Test
-    void theDefaultMinimumIsFourRoundsOfSixteenThenRoundsOfHalfThePixelsSamples() {
+    void theDefaultMinimumIsFourRoundsOfSixteenThenAlignedPowersOfTwo() {
         SampleRounds r = SampleRounds.adaptive(256, 64);
-        assertEquals(List.of(64, 96, 144, 208), checks(r));
+        assertEquals(List.of(64, 96, 128, 192), checks(r));
         assertEquals(256, total(r));
         assertEquals(16, r.size(0));
-        assertEquals(48, r.size(r.rounds() - 1), "the last round takes the remainder");
+        assertEquals(64, r.size(r.rounds() - 1));
+        assertEquals(64, r.largest());
+        assertEquals(List.of(64, 96, 128, 192, 256, 384, 512, 768), checks(SampleRounds.adaptive(1024, 64)));
+    }
+
+    /**
+     * Every round is a power of two that starts at a multiple of itself (an aligned block of the
+     * pixel's sequence, so a net by itself), but the last, which takes the remainder.
+     */
+    @Test
+    void roundsAreAlignedPowerOfTwoBlocks() {
+        for (int n = 1; n <= 600; n += 13) {
+            for (int m = 1; m <= n; m += 5) {
+                SampleRounds r = SampleRounds.adaptive(n, m);
+                int taken = 0;
+                for (int k = 0; k < r.rounds() - 1; k++) {
+                    int size = r.size(k);
+                    assertEquals(1, Integer.bitCount(size), n + "/" + m + " round " + k + " of " + size);
+                    assertEquals(0, taken % size, n + "/" + m + " round " + k + " starts at " + taken);
+                    taken += size;
+                }
+            }
+        }
     }
 
     @Test
@@ -58,13 +79,6 @@ class SampleRoundsTest {
                 assertFalse(c.contains(n), "no check after the last round");
             }
         }
-    }
-
-    @Test
-    void roundSeedsDiffer() {
-        assertNotEquals(SampleRounds.seed(7, 1), SampleRounds.seed(7, 2));
-        assertNotEquals(SampleRounds.seed(7, 1), SampleRounds.seed(8, 1));
-        assertNotEquals(7L, SampleRounds.seed(7, 1));
     }
 
     @Test
