@@ -1,6 +1,7 @@
 package lt.spindulys.render;
 
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.CancellationException;
@@ -435,7 +436,7 @@ public final class Renderer {
                 double r = 0, g = 0, b = 0, weights = 0, plainR = 0, plainG = 0, plainB = 0;
                 int n = 0;
                 noise.reset();
-                if (features != null) java.util.Arrays.fill(fsum, 0);
+                if (features != null) Arrays.fill(fsum, 0);
                 for (int k = 0; k <= last; k++) {
                     int size = rounds.size(k);
                     // The round's own sums, for its mean.
