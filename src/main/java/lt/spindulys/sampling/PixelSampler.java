@@ -171,17 +171,7 @@ public final class PixelSampler {
         for (int i = 0; i < n; i++) {
             int cell = padded ? perm[i] : i;
             int cx = cell % cols, cy = cell / cols;
-            double u = (cx + rng.nextDouble()) / cols, v = (cy + rng.nextDouble()) / rows;
-            if (unitBox) {
-                filmX[i] = px + u;
-                filmY[i] = py + v;
-            } else {
-                // The strata, mapped through the filter's inverted distribution, stay strata of the filter.
-                int bx = filter.bin(u), by = filter.bin(v);
-                filmX[i] = px + 0.5 + filter.offset(bx, u);
-                filmY[i] = py + 0.5 + filter.offset(by, v);
-                if (weight != null) weight[i] = filter.weight(bx, by);
-            }
+            filmSample(i, px, py, (cx + rng.nextDouble()) / cols, (cy + rng.nextDouble()) / rows);
         }
         if (!times && lens == null) return; // lens samples stay (0, 0), times 0
         // Lens: the same grid shape, assigned to film strata in a shuffled order. The ring pattern
@@ -198,6 +188,23 @@ public final class PixelSampler {
         // Time: n one-dimensional strata, shuffled independently.
         shuffle(n);
         for (int i = 0; i < n; i++) time[i] = (perm[i] + rng.nextDouble()) / n;
+    }
+
+    /**
+     * Film sample i of pixel (px, py) from its point (u, v) in the unit square: the pixel's own
+     * square for the unit box, else mapped through the filter's inverted distribution, so that
+     * strata of the square stay strata of the filter, with the filter's weight.
+     */
+    private void filmSample(int i, int px, int py, double u, double v) {
+        if (unitBox) {
+            filmX[i] = px + u;
+            filmY[i] = py + v;
+        } else {
+            int bx = filter.bin(u), by = filter.bin(v);
+            filmX[i] = px + 0.5 + filter.offset(bx, u);
+            filmY[i] = py + 0.5 + filter.offset(by, v);
+            if (weight != null) weight[i] = filter.weight(bx, by);
+        }
     }
 
     /** Sequence numbers of the film, lens and time samples' {@link ProgressiveSequence}s. */
@@ -224,16 +231,7 @@ public final class PixelSampler {
         long timeKey = ProgressiveSequence.key(seed, px, py, TIME);
         for (int i = 0; i < count; i++) {
             ProgressiveSequence.get2D(first + i, film, point);
-            double u = point[0], v = point[1];
-            if (unitBox) {
-                filmX[i] = px + u;
-                filmY[i] = py + v;
-            } else {
-                int bx = filter.bin(u), by = filter.bin(v);
-                filmX[i] = px + 0.5 + filter.offset(bx, u);
-                filmY[i] = py + 0.5 + filter.offset(by, v);
-                if (weight != null) weight[i] = filter.weight(bx, by);
-            }
+            filmSample(i, px, py, point[0], point[1]);
             if (lens != null) {
                 ProgressiveSequence.get2D(first + i, lensKey, point);
                 lensSample(i, i, point[0], point[1], count);
