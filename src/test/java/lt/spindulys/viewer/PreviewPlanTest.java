@@ -45,4 +45,19 @@ class PreviewPlanTest {
         RenderSettings last = plan.get(plan.size() - 1).apply(s);
         assertEquals(s.toBuilder().aovs(EnumSet.noneOf(Aov.class)).build(), last, "the last pass is the scene's settings, without passes");
     }
+
+    @Test
+    void coarsePassesOfAnAdaptivelySampledSceneAreValidSettings() {
+        // A minimum of 64 samples would refuse a one-sample pass: the coarse passes sample uniformly.
+        RenderSettings s = RenderSettings.builder().size(64, 32).samplesPerPixel(256).noiseThreshold(0.01).minSamples(64).build();
+        List<PreviewPlan.Pass> plan = PreviewPlan.of(s);
+        for (PreviewPlan.Pass p : plan.subList(0, plan.size() - 1)) {
+            RenderSettings coarse = p.apply(s);
+            assertFalse(coarse.adaptiveSampling(), p.describe());
+            assertSame(coarse, coarse.checkNoiseControl(), p.describe());
+        }
+        RenderSettings last = plan.get(plan.size() - 1).apply(s);
+        assertTrue(last.adaptiveSampling());
+        assertEquals(64, last.minSamples());
+    }
 }
