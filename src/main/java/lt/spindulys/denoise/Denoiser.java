@@ -107,15 +107,20 @@ public final class Denoiser {
         }
         if (threads < 1) throw new IllegalArgumentException("threads must be at least 1, found " + threads);
         int workers = Math.min(threads, (h + BAND - 1) / BAND);
-        HeapBudget.require(HeapBudget.sum(bytes(w, h), HeapBudget.product(workers, Band.bytes(w, patch))), "denoising the " + w + "x" + h + " frame");
-        FrameBuffer out = new FrameBuffer(w, h);
-        double[] c = colour.data(), f = features.data(), variance = smoothedVariance(f, w, h), raw = regressionFeatures(f, w, h);
-        double[] x = new double[raw.length], o = out.data();
-        double depthScale = depthScale(f, w, h);
-        int bands = (h + BAND - 1) / BAND;
-        inParallel(bands, workers, () -> null, (b, unused) -> prefilterFeatures(b * BAND, Math.min(h, (b + 1) * BAND), w, h, raw, f, depthScale, x));
-        inParallel(bands, workers, () -> new Band(w, patch), (b, band) -> band(b * BAND, Math.min(h, (b + 1) * BAND), w, h, c, variance, x, o, band));
-        return out;
+        // Reserved, not only checked, so that two denoisers (or a render beside one) started at once
+        // do not both count the same free heap; each part is released once it is allocated.
+        try (HeapBudget.Reservation r = HeapBudget.reserve(HeapBudget.sum(bytes(w, h), HeapBudget.product(workers, Band.bytes(w, patch))),
+                "denoising the " + w + "x" + h + " frame")) {
+            FrameBuffer out = new FrameBuffer(w, h);
+            double[] c = colour.data(), f = features.data(), variance = smoothedVariance(f, w, h), raw = regressionFeatures(f, w, h);
+            double[] x = new double[raw.length], o = out.data();
+            r.release(bytes(w, h)); // allocated: only the bands' scratch is still to come
+            double depthScale = depthScale(f, w, h);
+            int bands = (h + BAND - 1) / BAND;
+            inParallel(bands, workers, () -> null, (b, unused) -> prefilterFeatures(b * BAND, Math.min(h, (b + 1) * BAND), w, h, raw, f, depthScale, x));
+            inParallel(bands, workers, () -> new Band(w, patch), (b, band) -> band(b * BAND, Math.min(h, (b + 1) * BAND), w, h, c, variance, x, o, band));
+            return out;
+        }
     }
 
     /** One piece of work of {@link #inParallel}, with its thread's scratch. */

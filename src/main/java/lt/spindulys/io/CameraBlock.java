@@ -13,6 +13,7 @@ import lt.spindulys.camera.OrthographicCamera;
 import lt.spindulys.camera.PinholeCamera;
 import lt.spindulys.camera.ThinLensCamera;
 import lt.spindulys.files.AtomicFile;
+import lt.spindulys.limits.InputFiles;
 import lt.spindulys.math.Vec3;
 
 /**
@@ -186,7 +187,8 @@ public final class CameraBlock {
      * @throws IllegalArgumentException if the camera is animated and the file's camera has no keys to keep
      */
     public static String save(Path file, Camera camera) throws IOException {
-        byte[] bytes = Files.readAllBytes(file);
+        // Checked against the heap first: the bytes, the text (two bytes a character), the pieces cut from it.
+        byte[] bytes = InputFiles.readAllBytes(file, "scene file", 6);
         String name = file.toString();
         String text = SceneLexer.decodeUtf8(bytes, name, "the file");
         Located l = locate(text, name);

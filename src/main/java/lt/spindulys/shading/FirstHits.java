@@ -59,26 +59,36 @@ final class FirstHits {
         double dx = ray.dx / dlen, dy = ray.dy / dlen, dz = ray.dz / dlen;
         // The normal pass shows the bumped normal that shading uses.
         if (sd.material.texture(Channel.BUMP) != null) TextureShading.evaluate(sd.material, sd, footprint(sd, hit.t * dlen, dx, dy, dz), s, v);
-        // As in trace: flip both normals towards the ray by the geometric one, and fall back to
-        // the geometric normal where the interpolated one still faces away.
-        double sign = sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz < 0 ? 1 : -1;
-        double nx = sign * sd.ns[0], ny = sign * sd.ns[1], nz = sign * sd.ns[2];
-        if (nx * dx + ny * dy + nz * dz >= 0) { nx = sign * sd.ng[0]; ny = sign * sd.ng[1]; nz = sign * sd.ng[2]; }
         out[0] = hit.t * dlen;
-        out[1] = nx; out[2] = ny; out[3] = nz;
+        facingNormal(sd, dx, dy, dz, out, 1);
         return hit.object.id();
     }
 
     /**
-     * Records the first hit of a camera ray in {@link TracerScratch#features} when asked to:
-     * the albedo (a principled material's base colour; a Whitted one's kd colour + kr + kt
-     * filter, each channel clamped to 1: the tint of what it reflects and transmits, so a mirror
-     * or glass has an albedo too, its specular tint, instead of OIDN's following the path to
-     * the next rough surface), the shading normal n (facing the ray) and 1 / distance.
-     * The vertex's textured terms must be evaluated.
+     * Writes to out[at..at + 2] the shading normal of {@code sd} turned to face a ray along unit
+     * direction d, by the rule shading uses: both normals flipped towards the ray by the
+     * geometric one, and the geometric normal where the interpolated one still faces away.
      */
-    static void record(TracerScratch s, Material m, TracerScratch.PathVertex v, double nx, double ny, double nz, double distance) {
+    private static void facingNormal(ShadingData sd, double dx, double dy, double dz, double[] out, int at) {
+        double sign = sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz < 0 ? 1 : -1;
+        double nx = sign * sd.ns[0], ny = sign * sd.ns[1], nz = sign * sd.ns[2];
+        if (nx * dx + ny * dy + nz * dz >= 0) { nx = sign * sd.ng[0]; ny = sign * sd.ng[1]; nz = sign * sd.ng[2]; }
+        out[at] = nx; out[at + 1] = ny; out[at + 2] = nz;
+    }
+
+    /**
+     * Records, when asked, the first hit of a camera ray along unit direction d, which hit
+     * {@code sd} at {@code distance}, in {@link TracerScratch#features}: the albedo (a principled
+     * material's base colour; a Whitted one's kd colour + kr + kt filter, each channel clamped to
+     * 1: the tint of what it reflects and transmits, so a mirror or glass has an albedo too, its
+     * specular tint, instead of OIDN's following the path to the next rough surface), the shading
+     * normal facing the ray ({@link #facingNormal}) and 1 / distance. The vertex's textured terms
+     * must be evaluated.
+     */
+    static void recordHit(TracerScratch s, TracerScratch.PathVertex v, ShadingData sd, double dx, double dy, double dz, double distance) {
+        if (!s.recordFeatures) return;
         double[] f = s.features;
+        Material m = sd.material;
         if (m.model() == Material.Model.PRINCIPLED) {
             f[0] = v.colourR; f[1] = v.colourG; f[2] = v.colourB;
         } else {
@@ -88,20 +98,8 @@ final class FirstHits {
             f[1] = Math.min(1, kd * v.colourG + kr + kt * filter.g());
             f[2] = Math.min(1, kd * v.colourB + kr + kt * filter.b());
         }
-        f[3] = nx; f[4] = ny; f[5] = nz;
+        facingNormal(sd, dx, dy, dz, f, 3);
         f[6] = distance > 0 ? 1 / distance : 0;
-    }
-
-    /**
-     * {@link #record} for a camera ray along unit direction d that hit {@code sd} at {@code distance},
-     * when asked to: the normal turned towards the ray by the rule shading uses.
-     */
-    static void recordHit(TracerScratch s, TracerScratch.PathVertex v, ShadingData sd, double dx, double dy, double dz, double distance) {
-        if (!s.recordFeatures) return;
-        double sign = sd.ng[0] * dx + sd.ng[1] * dy + sd.ng[2] * dz < 0 ? 1 : -1;
-        double nx = sign * sd.ns[0], ny = sign * sd.ns[1], nz = sign * sd.ns[2];
-        if (nx * dx + ny * dy + nz * dz >= 0) { nx = sign * sd.ng[0]; ny = sign * sd.ng[1]; nz = sign * sd.ng[2]; }
-        record(s, sd.material, v, nx, ny, nz, distance);
     }
 
     /** Records, when asked, that a camera ray saw no surface (the sky, the background or a light's surface). */

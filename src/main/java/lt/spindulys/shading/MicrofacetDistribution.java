@@ -101,6 +101,17 @@ public final class MicrofacetDistribution {
     }
 
     /**
+     * What scales wo + wi to the unit half vector on the +z side: 0 when wo and wi lie on
+     * different sides or their sum vanishes (the half vector is then undefined).
+     */
+    private static double halfScale(double wox, double woy, double woz, double wix, double wiy, double wiz) {
+        if (!(woz * wiz > 0)) return 0;
+        double hx = wox + wix, hy = woy + wiy, hz = woz + wiz;
+        double len2 = hx * hx + hy * hy + hz * hz;
+        return len2 > 0 ? (hz < 0 ? -1 : 1) / Math.sqrt(len2) : 0;
+    }
+
+    /**
      * The single-scattering GGX reflection term D(h) G(wo, wi) / (4 |cos wo| |cos wi|) for wo and
      * wi on the same side, h their half vector, without the Fresnel factor, which the caller
      * applies at |wo . h|, written to {@code cosHalf[0]}.
@@ -109,12 +120,9 @@ public final class MicrofacetDistribution {
      * @return the term, 0 when wo and wi lie on different sides or h is undefined
      */
     double reflection(double wox, double woy, double woz, double wix, double wiy, double wiz, double[] cosHalf) {
-        if (!(woz * wiz > 0)) return 0;
-        double hx = wox + wix, hy = woy + wiy, hz = woz + wiz;
-        double len2 = hx * hx + hy * hy + hz * hz;
-        if (!(len2 > 0)) return 0;
-        double inv = (hz < 0 ? -1 : 1) / Math.sqrt(len2);
-        hx *= inv; hy *= inv; hz *= inv;
+        double inv = halfScale(wox, woy, woz, wix, wiy, wiz);
+        if (inv == 0) return 0;
+        double hx = (wox + wix) * inv, hy = (woy + wiy) * inv, hz = (woz + wiz) * inv;
         double d = d(hx, hy, hz);
         if (d == 0) return 0;
         cosHalf[0] = Math.abs(wox * hx + woy * hy + woz * hz);
@@ -128,12 +136,9 @@ public final class MicrofacetDistribution {
      * undefined or on the horizon of wo.
      */
     public double reflectionPdf(double wox, double woy, double woz, double wix, double wiy, double wiz) {
-        if (!(woz * wiz > 0)) return 0;
-        double hx = wox + wix, hy = woy + wiy, hz = woz + wiz;
-        double len2 = hx * hx + hy * hy + hz * hz;
-        if (!(len2 > 0)) return 0;
-        double inv = (hz < 0 ? -1 : 1) / Math.sqrt(len2);
-        hx *= inv; hy *= inv; hz *= inv;
+        double inv = halfScale(wox, woy, woz, wix, wiy, wiz);
+        if (inv == 0) return 0;
+        double hx = (wox + wix) * inv, hy = (woy + wiy) * inv, hz = (woz + wiz) * inv;
         double cosOM = Math.abs(wox * hx + woy * hy + woz * hz);
         if (cosOM == 0) return 0;
         return visibleNormalPdf(wox, woy, woz, hx, hy, hz) / (4 * cosOM);

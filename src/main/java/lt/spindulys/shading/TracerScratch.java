@@ -126,7 +126,7 @@ public final class TracerScratch {
     /**
      * What the last camera ray saw first ({@link #recordFeatures}): albedo r, g, b, the unit
      * shading normal facing the ray x, y, z, and the inverse of the distance; all 0 when it
-     * hit nothing (or reached a light's surface). See {@link FirstHits#record}.
+     * hit nothing (or reached a light's surface). See {@link FirstHits#recordHit}.
      */
     public final double[] features = new double[7];
 

@@ -19,7 +19,8 @@ import lt.spindulys.image.Images;
 class CliAovTest {
     @TempDir Path dir;
 
-    private static final String SCENE = """
+    /** A small lit scene with two objects, for the pass tests here and in {@link CliExrTest}. */
+    static final String SCENE = """
             settings { width 24 height 16 }
             camera { eye 0 1 -4 lookat 0 0.5 0 }
             light { position 3 5 -4 }

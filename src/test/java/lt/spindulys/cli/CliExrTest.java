@@ -17,13 +17,7 @@ import lt.spindulys.image.ExrTestDecoder;
 class CliExrTest {
     @TempDir Path dir;
 
-    private static final String SCENE = """
-            settings { width 24 height 16 }
-            camera { eye 0 1 -4 lookat 0 0.5 0 }
-            light { position 3 5 -4 }
-            plane { normal 0 1 0 }
-            sphere { center 0 0.5 0 radius 0.5 }
-            """;
+    private static final String SCENE = CliAovTest.SCENE;
     private static final String NL = System.lineSeparator();
 
     private Path scene() throws IOException {
