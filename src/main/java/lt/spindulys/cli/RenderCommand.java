@@ -101,7 +101,8 @@ final class RenderCommand {
             """ + FrameOptions.USAGE + """
               --denoise          denoise the image, guided by the albedo, normal and depth the samples saw
                                  (whole frames only: not with --region or --tile)
-              --keep-noisy       with --denoise, also write the image as rendered, as OUT.noisy.EXT
+              --keep-noisy       with --denoise (or the scene's denoise true), also write the image as
+                                 rendered, as OUT.noisy.EXT
               --quality Q        JPEG quality from 0 to 1 (default 0.92)
               --exr-precision P  .exr colour and normals as half (default) or float; depth and object id
                                  are always float
@@ -269,7 +270,6 @@ final class RenderCommand {
         }
         farm.checkOutput(output);
         farm.checkDenoise(denoise);
-        if (keepNoisy && !denoise) throw new UsageException("--keep-noisy keeps the noisy image of a denoised one: give --denoise too");
         assetRoots = assetRoots(assetFolders, env);
     }
 
@@ -405,7 +405,12 @@ final class RenderCommand {
         int n = threads != null ? threads : Runtime.getRuntime().availableProcessors();
         RenderJob job = RenderJob.of(scene).output(item.output()).jpegQuality(quality).exr(exrPrecision, exrCompression).threads(n);
         if (item.frame() != null) job.frame(item.frame());
-        job.denoise(denoise).keepNoisy(keepNoisy);
+        // Without --denoise the scene's own denoise setting decides.
+        if (denoise) job.denoise(true);
+        if (keepNoisy && !denoise && !scene.settings().denoise()) {
+            throw new UsageException("--keep-noisy keeps the noisy image of a denoised one: give --denoise too, or settings { denoise true }");
+        }
+        job.keepNoisy(keepNoisy);
         farm.apply(job);
         // A farm's manager reads lines; the bar redraws one line in place, for a person at a terminal.
         TerminalProgress bar = farmProgress == null && !quiet && System.console() != null ? new TerminalProgress(err) : null;

@@ -196,7 +196,8 @@ final class SceneGrammar {
             new Key("filter", Kind.CHOICE, false, false, null, PixelFilter.keywords()),
             opt("filterwidth", Kind.NUMBER),
             opt("noisethreshold", Kind.NUMBER),
-            opt("minsamples", Kind.INTEGER)));
+            opt("minsamples", Kind.INTEGER),
+            opt("denoise", Kind.BOOLEAN, false)));
 
     // A thin lens when any of the lens keys is given, else a pinhole. 'focus' and 'focuspoint'
     // exclude each other (checked by the parser); without either the look-at point is in focus.

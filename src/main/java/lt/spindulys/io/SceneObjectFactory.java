@@ -129,6 +129,7 @@ final class SceneObjectFactory {
                     case "filterwidth" -> sb.filterWidth((Double) v);
                     case "noisethreshold" -> sb.noiseThreshold((Double) v);
                     case "minsamples" -> sb.minSamples((Integer) v);
+                    case "denoise" -> sb.denoise((Boolean) v);
                     default -> throw unhandled(pr);
                 }
             } catch (IllegalArgumentException e) {

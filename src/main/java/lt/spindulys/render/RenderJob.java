@@ -78,8 +78,10 @@ public final class RenderJob {
     private int threads = Runtime.getRuntime().availableProcessors();
     private ProgressListener progress;
     private TileListener tiles;
-    /** Whether the frame is denoised ({@link #denoise}), and the noisy one written beside it ({@link #keepNoisy}). */
-    private boolean denoise, keepNoisy;
+    /** Whether the frame is denoised, overriding the settings' {@code denoise} (null: theirs; {@link #denoise}). */
+    private Boolean denoise;
+    /** Whether the noisy frame is written beside the denoised one ({@link #keepNoisy}). */
+    private boolean keepNoisy;
     /** The region to render for a frame's width and height; null: the whole frame. */
     private RegionOf regionOf;
     private final AtomicBoolean cancelled = new AtomicBoolean();
@@ -312,9 +314,10 @@ public final class RenderJob {
      * the variance of each pixel beside the colour, and {@link lt.spindulys.denoise.Denoiser}
      * filters the colour with them (on as many threads as the render). For whole frames only:
      * a region or tile is refused ({@link Renderer#DENOISE_OF_REGION}). The result's
-     * {@link RenderResult#noisy()} keeps the frame as rendered.
+     * {@link RenderResult#noisy()} keeps the frame as rendered. Overrides the settings'
+     * {@link RenderSettings#denoise()}, which decides when this is not called.
      *
-     * @param on true to denoise
+     * @param on true to denoise, false not to
      * @return this job
      */
     public RenderJob denoise(boolean on) {
@@ -434,7 +437,7 @@ public final class RenderJob {
             enter(Stage.SETTINGS);
             RenderSettings s = scene.settings();
             PixelRegion region = regionOf == null ? null : regionOf.of(s.width(), s.height());
-            Renderer.checkFrame(s, region, denoise);
+            Renderer.checkFrame(s, region, denoises(s));
             if (output != null) checkPassOutputs(s);
             return new Checked(scene, null, s, null, region, 0);
         }
@@ -451,11 +454,11 @@ public final class RenderJob {
         }
         PixelRegion region = regionOf == null ? null : regionOf.of(s.width(), s.height());
         // The frame is asked for by input: checked before anything is built for it.
-        Renderer.checkFrame(s, region, denoise);
+        Renderer.checkFrame(s, region, denoises(s));
         if (output != null) {
             checkPassOutputs(s);
             checkNotInput(output, s.aovs(), b.inputFiles());
-            if (writesNoisy()) InputFile.checkOutput(RenderResult.noisyFileBeside(output), b.inputFiles());
+            if (writesNoisy(s)) InputFile.checkOutput(RenderResult.noisyFileBeside(output), b.inputFiles());
         }
         Camera c = cameraOverride == null ? b.camera()
                 : cameraOverride.apply(b.camera() != null ? b.camera() : SceneBuilder.DEFAULT_CAMERA);
@@ -465,10 +468,13 @@ public final class RenderJob {
     /** The passes' files and the noisy image's can be written (the image itself was checked first). */
     private void checkPassOutputs(RenderSettings s) throws IOException {
         ImageWriter.checkPassOutputs(output, s.aovs());
-        if (writesNoisy()) lt.spindulys.files.AtomicFile.checkWritable(RenderResult.noisyFileBeside(output));
+        if (writesNoisy(s)) lt.spindulys.files.AtomicFile.checkWritable(RenderResult.noisyFileBeside(output));
     }
 
-    private boolean writesNoisy() { return denoise && keepNoisy && output != null; }
+    /** Whether a frame of these settings is denoised: as this job says, else as they say. */
+    private boolean denoises(RenderSettings s) { return denoise != null ? denoise : s.denoise(); }
+
+    private boolean writesNoisy(RenderSettings s) { return denoises(s) && keepNoisy && output != null; }
 
     private RenderResult runStarted() throws IOException, InterruptedException {
         Checked c = checked != null ? checked : prepare();
@@ -483,8 +489,9 @@ public final class RenderJob {
             build = (System.nanoTime() - t1) / 1e9;
         }
         enter(Stage.RENDER);
-        RenderResult result = Renderer.render(built, threads, progress, cancelled, tiles, c.region(), denoise).withTimes(c.load(), build).ofFrame(frame);
-        if (denoise) {
+        boolean denoising = denoises(c.settings());
+        RenderResult result = Renderer.render(built, threads, progress, cancelled, tiles, c.region(), denoising).withTimes(c.load(), build).ofFrame(frame);
+        if (denoising) {
             enter(Stage.RENDER);
             long t2 = System.nanoTime();
             FrameBuffer clean = new Denoiser().denoise(result.frame(), result.features().orElseThrow(), threads);

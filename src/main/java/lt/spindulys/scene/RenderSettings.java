@@ -54,12 +54,14 @@ import lt.spindulys.camera.PixelFilter;
  *                        0 (the default) for none, every pixel takes samplesPerPixel samples
  * @param minSamples      adaptive sampling: the samples every pixel takes before its error is
  *                        first checked, or 0 for Cycles' default ({@link #adaptiveMinSamples()})
+ * @param denoise         denoise the frame before it is written ({@link lt.spindulys.denoise.Denoiser}),
+ *                        as a {@link lt.spindulys.render.RenderJob} renders it; whole frames only
  */
 public record RenderSettings(int width, int height, int samplesPerPixel, int maxDepth, double minContribution,
                              Color background, Color ambient, boolean srgb, long seed, AcceleratorKind accelerator,
                              Set<Aov> aovs, double shutterOpen, double shutterClose, int timeSteps, AdaptiveSettings adaptive,
                              IntegratorKind integrator, double clamp, PixelFilter filter, double filterWidth,
-                             double noiseThreshold, int minSamples) {
+                             double noiseThreshold, int minSamples, boolean denoise) {
     /** Widest accepted pixel filter, in pixels: wider only blurs, and costs nothing but sharpness. */
     public static final double MAX_FILTER_WIDTH = 16;
 
@@ -71,11 +73,11 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      * sample per pixel, depth 8, minimum contribution 0.001, black background, white ambient,
      * linear encoding, seed 0, the default accelerator, no passes, shutter [0, 1] in one pass,
      * Whitted ray tracing, no clamp, the integrator's default pixel filter ({@link #defaultFilter}),
-     * no adaptive sampling.
+     * no adaptive sampling, no denoising.
      */
     public static final RenderSettings DEFAULT = new RenderSettings(640, 480, 1, 8, 0.001, Color.BLACK, Color.WHITE, false, 0,
             AcceleratorKind.DEFAULT, Set.of(), Placement.OPEN, Placement.CLOSE, 1, AdaptiveSettings.DEFAULT,
-            IntegratorKind.DEFAULT, 0, null, 0, 0, 0);
+            IntegratorKind.DEFAULT, 0, null, 0, 0, 0, false);
 
     /**
      * Checks every value as the {@link Builder}'s methods do, with the same messages; the
@@ -102,6 +104,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
      * @param filterWidth     its width in pixels, 0 for its default
      * @param noiseThreshold  adaptive sampling's noise threshold, 0 for none
      * @param minSamples      adaptive sampling's minimum samples, 0 for the default
+     * @param denoise         denoise the frame before it is written
      * @throws IllegalArgumentException if a value is out of its range
      * @throws NullPointerException     if accelerator or aovs is null
      */
@@ -223,6 +226,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         private double filterWidth;
         private double noiseThreshold;
         private int minSamples;
+        private boolean denoise;
 
         private Builder(RenderSettings s) {
             width = s.width;
@@ -246,6 +250,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
             filterWidth = s.filterWidth;
             noiseThreshold = s.noiseThreshold;
             minSamples = s.minSamples;
+            denoise = s.denoise;
         }
 
         /**
@@ -511,6 +516,18 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         }
 
         /**
+         * Whether the frame is denoised before it is written (whole frames only; see
+         * {@link lt.spindulys.render.RenderJob#denoise}, which overrides it).
+         *
+         * @param on true to denoise
+         * @return this builder
+         */
+        public Builder denoise(boolean on) {
+            denoise = on;
+            return this;
+        }
+
+        /**
          * The settings with the values given so far.
          *
          * @return new settings; the builder can go on to make more
@@ -518,7 +535,7 @@ public record RenderSettings(int width, int height, int samplesPerPixel, int max
         public RenderSettings build() {
             return new RenderSettings(width, height, samplesPerPixel, maxDepth, minContribution, background, ambient, srgb, seed,
                     accelerator, aovs, shutterOpen, shutterClose, timeSteps, adaptive, integrator, clamp, filter, filterWidth,
-                    noiseThreshold, minSamples);
+                    noiseThreshold, minSamples, denoise);
         }
     }
 

@@ -34,12 +34,13 @@ final class PreviewPlan {
         /**
          * The settings to render this pass with: the scene's, at this pass's size and samples
          * (one time step and no adaptive sampling, so one sample is allowed whatever the scene's
-         * time steps and minimum samples), without render passes (the preview shows only the
-         * picture, which passes do not change).
+         * time steps and minimum samples, and no denoising, which one sample gives nothing to
+         * go on), without render passes (the preview shows only the picture, which passes do not
+         * change).
          */
         RenderSettings apply(RenderSettings scene) {
             RenderSettings.Builder b = scene.toBuilder().aovs(Set.of());
-            if (!last) b.size(width, height).timeSteps(1).samplesPerPixel(samples).noiseThreshold(0).minSamples(0);
+            if (!last) b.size(width, height).timeSteps(1).samplesPerPixel(samples).noiseThreshold(0).minSamples(0).denoise(false);
             return b.build();
         }
 

@@ -98,11 +98,29 @@ class CliDenoiseTest {
     }
 
     @Test
+    void theScenesDenoiseSettingDenoisesAsTheOptionDoes() throws IOException {
+        Path option = scene();
+        assertEquals(0, CliTest.run(option.toString(), "-o", dir.resolve("option.pfm").toString(), "--denoise", "--quiet").status());
+        Path setting = dir.resolve("setting.dat");
+        Files.writeString(setting, SCENE.replace("samples 4 }", "samples 4 denoise true }"));
+        CliTest.Run r = CliTest.run(setting.toString(), "-o", dir.resolve("setting.pfm").toString(), "--keep-noisy", "--quiet");
+        assertEquals(0, r.status(), r.err());
+        assertArrayEquals(Images.read(dir.resolve("option.pfm")).data(), Images.read(dir.resolve("setting.pfm")).data());
+        assertTrue(Files.exists(dir.resolve("setting.noisy.pfm")));
+        // A tile of such a scene is refused in one line, before anything is written.
+        CliTest.Run tile = CliTest.run(setting.toString(), "-o", dir.resolve("tile.png").toString(), "--tile", "1/2");
+        assertNotEquals(0, tile.status());
+        assertEquals(1, tile.err().lines().count(), tile.err());
+        assertTrue(tile.err().contains("needs the whole frame"), tile.err());
+        assertFalse(Files.exists(dir.resolve("tile.png")));
+    }
+
+    @Test
     void oneLineErrors() throws IOException {
         Path scene = scene();
         CliTest.Run noisy = CliTest.run(scene.toString(), "-o", dir.resolve("out.png").toString(), "--keep-noisy");
         assertEquals(2, noisy.status());
-        assertEquals("render: --keep-noisy keeps the noisy image of a denoised one: give --denoise too" + System.lineSeparator(), noisy.err());
+        assertEquals("render: --keep-noisy keeps the noisy image of a denoised one: give --denoise too, or settings { denoise true }" + System.lineSeparator(), noisy.err());
         CliTest.Run tile = CliTest.run(scene.toString(), "-o", dir.resolve("out.png").toString(), "--denoise", "--tile", "1/2");
         assertEquals(2, tile.status());
         assertTrue(tile.err().startsWith("render: --tile 1/2: --denoise needs the whole frame"), tile.err());

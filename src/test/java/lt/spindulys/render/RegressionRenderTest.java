@@ -63,7 +63,8 @@ class RegressionRenderTest {
         // An animation is compared at its first frame (its shutter and seed).
         if (b.animation() != null) b = b.forFrame(b.animation().first());
         boolean srgb = s.srgb();
-        FrameBuffer actual = Renderer.render(b.build(), 2, ProgressListener.NONE).frame();
+        // Through a job, as the command line renders it: a scene that asks to be denoised is.
+        FrameBuffer actual = RenderJob.of(b).threads(2).run().frame();
 
         String name = SCENES.relativize(scene).toString().replace('\\', '/').replace('/', '_').replaceAll("\\.dat$", "");
         Path golden = GOLDEN.resolve(name + ".png");

@@ -37,10 +37,10 @@ class RenderSettingsTest {
         RenderSettings s = RenderSettings.builder().size(320, 200).samplesPerPixel(16).maxDepth(3).minContribution(0.25)
                 .background(Color.grey(0.5)).ambient(new Color(0.1, 0.2, 0.3)).srgb(true).seed(-9).accelerator(AcceleratorKind.OCTREE)
                 .aovs(EnumSet.of(Aov.OBJECT, Aov.DEPTH)).shutter(0.25, 0.75).timeSteps(4).integrator(IntegratorKind.PATH).clamp(10)
-                .filter(PixelFilter.MITCHELL).filterWidth(3).noiseThreshold(0.05).minSamples(8).build();
+                .filter(PixelFilter.MITCHELL).filterWidth(3).noiseThreshold(0.05).minSamples(8).denoise(true).build();
         assertEquals(new RenderSettings(320, 200, 16, 3, 0.25, Color.grey(0.5), new Color(0.1, 0.2, 0.3), true, -9, AcceleratorKind.OCTREE,
                 EnumSet.of(Aov.DEPTH, Aov.OBJECT), 0.25, 0.75, 4, AdaptiveSettings.DEFAULT, IntegratorKind.PATH, 10, PixelFilter.MITCHELL, 3,
-                0.05, 8), s);
+                0.05, 8, true), s);
         assertEquals(s, s.toBuilder().build());
         assertEquals(200, RenderSettings.builder().width(7).height(200).build().height());
         assertEquals(7, RenderSettings.builder().width(7).height(200).build().width());
@@ -100,7 +100,7 @@ class RenderSettingsTest {
         assertEquals(RenderSettings.DEFAULT, b.build());
         // The constructor words a refusal as the builder does.
         refused("width must be between 1 and 32768, found 0", () -> new RenderSettings(0, 1, 1, 0, 0, Color.BLACK, Color.BLACK, false, 0,
-                AcceleratorKind.DEFAULT, Set.of(), 0, 1, 1, AdaptiveSettings.DEFAULT, IntegratorKind.DEFAULT, 0, null, 0, 0, 0));
+                AcceleratorKind.DEFAULT, Set.of(), 0, 1, 1, AdaptiveSettings.DEFAULT, IntegratorKind.DEFAULT, 0, null, 0, 0, 0, false));
     }
 
     @Test

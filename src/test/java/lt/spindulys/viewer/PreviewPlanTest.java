@@ -47,17 +47,20 @@ class PreviewPlanTest {
     }
 
     @Test
-    void coarsePassesOfAnAdaptivelySampledSceneAreValidSettings() {
+    void coarsePassesOfAnAdaptivelySampledDenoisedSceneSampleUniformlyAndAreNotDenoised() {
         // A minimum of 64 samples would refuse a one-sample pass: the coarse passes sample uniformly.
-        RenderSettings s = RenderSettings.builder().size(64, 32).samplesPerPixel(256).noiseThreshold(0.01).minSamples(64).build();
+        RenderSettings s = RenderSettings.builder().size(64, 32).samplesPerPixel(256).noiseThreshold(0.01).minSamples(64)
+                .denoise(true).build();
         List<PreviewPlan.Pass> plan = PreviewPlan.of(s);
         for (PreviewPlan.Pass p : plan.subList(0, plan.size() - 1)) {
             RenderSettings coarse = p.apply(s);
             assertFalse(coarse.adaptiveSampling(), p.describe());
+            assertFalse(coarse.denoise(), p.describe());
             assertSame(coarse, coarse.checkNoiseControl(), p.describe());
         }
         RenderSettings last = plan.get(plan.size() - 1).apply(s);
         assertTrue(last.adaptiveSampling());
         assertEquals(64, last.minSamples());
+        assertTrue(last.denoise());
     }
 }
